@@ -1,0 +1,81 @@
+import {
+    DefaultWorkspaceManager, URI, type AstNode, type LangiumCoreServices, type LangiumDocument,
+    type LangiumSharedCoreServices, type Module, type PartialLangiumCoreServices, type PartialLangiumSharedCoreServices
+} from 'langium';
+import type { WorkspaceFolder } from 'vscode-languageserver-types';
+import { ModelRoots } from './model-roots.js';
+import { AdlScopeComputation } from './scoping/adl-scope-computation.js';
+import { AdlScopeProvider } from './scoping/adl-scope-provider.js';
+import { NameResolver } from './scoping/name-resolver.js';
+import { RootIndex } from './scoping/root-index.js';
+import { BUILTIN_DOCUMENTS } from './types/builtin-library.js';
+import { ExpressionTyper } from './types/expression-typer.js';
+import { TypeRelations } from './types/type-relations.js';
+import { AdlDocumentValidator } from './validation/document-validator.js';
+import { ReservedNames } from './validation/reserved-names.js';
+
+/** Services the host language adds to every language of a family (arc, cd, behavior languages). */
+export interface AdlAddedServices {
+    maa: {
+        NameResolver: NameResolver;
+        TypeRelations: TypeRelations;
+        ExpressionTyper: ExpressionTyper;
+    };
+}
+
+export interface AdlAddedSharedServices {
+    maa: {
+        ModelRoots: ModelRoots;
+        RootIndex: RootIndex;
+        ReservedNames: ReservedNames;
+    };
+}
+
+export type AdlSharedServices = LangiumSharedCoreServices & AdlAddedSharedServices;
+export type AdlServices = LangiumCoreServices & AdlAddedServices & { shared: AdlSharedServices };
+
+/** Loads the built-in `java.lang`/`java.util` library next to the workspace's model files. */
+export class AdlWorkspaceManager extends DefaultWorkspaceManager {
+    protected override async loadAdditionalDocuments(_folders: WorkspaceFolder[], collector: (document: LangiumDocument<AstNode>) => void): Promise<void> {
+        for (const { uri, text } of BUILTIN_DOCUMENTS) {
+            const u = URI.parse(uri);
+            if (!this.langiumDocuments.hasDocument(u)) collector(this.langiumDocuments.createDocument(u, text));
+        }
+    }
+}
+
+/** Creates (or returns the already loaded) documents of the built-in library. */
+export function builtinDocuments(shared: LangiumSharedCoreServices): LangiumDocument[] {
+    const docs = shared.workspace.LangiumDocuments;
+    return BUILTIN_DOCUMENTS.map(({ uri, text }) => {
+        const u = URI.parse(uri);
+        return docs.getDocument(u) ?? docs.createDocument(u, text);
+    });
+}
+
+export const AdlSharedModule: Module<AdlSharedServices, PartialLangiumSharedCoreServices & AdlAddedSharedServices> = {
+    workspace: {
+        WorkspaceManager: (s) => new AdlWorkspaceManager(s)
+    },
+    maa: {
+        ModelRoots: () => new ModelRoots(),
+        RootIndex: (s) => new RootIndex(s, s.workspace.IndexManager, s.maa.ModelRoots),
+        ReservedNames: (s) => new ReservedNames(s.maa.ModelRoots)
+    }
+};
+
+/** The host language's services; every language of the family is injected with them. */
+export const AdlModule: Module<AdlServices, PartialLangiumCoreServices & AdlAddedServices> = {
+    references: {
+        ScopeComputation: (s) => new AdlScopeComputation(s),
+        ScopeProvider: (s) => new AdlScopeProvider(s.maa.NameResolver, s.workspace.AstNodeDescriptionProvider)
+    },
+    validation: {
+        DocumentValidator: (s) => new AdlDocumentValidator(s)
+    },
+    maa: {
+        NameResolver: (s) => new NameResolver(s.shared.maa.RootIndex, s.shared.maa.ModelRoots, s.workspace.AstNodeDescriptionProvider),
+        TypeRelations: (s) => new TypeRelations(s.shared.maa.RootIndex),
+        ExpressionTyper: (s) => new ExpressionTyper(s.maa.TypeRelations, s.maa.NameResolver)
+    }
+};

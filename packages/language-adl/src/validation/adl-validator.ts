@@ -1,0 +1,14 @@
+import type { AdlServices } from '../adl-module.js';
+import { ConnectorChecks } from './checks/connector-checks.js';
+import { ExpressionChecks } from './checks/expression-checks.js';
+import { InstantiationChecks } from './checks/instantiation-checks.js';
+import { StructureChecks } from './checks/structure-checks.js';
+
+/** Registers the context conditions of the host language (ARCHITECTURE.md section 5, `arc/*`, `expr/*`). */
+export function registerAdlChecks(services: AdlServices): void {
+    const registry = services.validation.ValidationRegistry;
+    registry.register(new StructureChecks(services).checks);
+    registry.register(new ConnectorChecks(services).checks);
+    registry.register(new InstantiationChecks(services).checks);
+    registry.register(new ExpressionChecks(services).checks);
+}

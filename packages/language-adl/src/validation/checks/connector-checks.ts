@@ -1,0 +1,204 @@
+import type { ValidationAcceptor, ValidationChecks } from 'langium';
+import type { AdlAstType, ComponentType, Connector, PortAccess, Subcomponent } from '../../generated/ast.js';
+import type { AdlServices } from '../../adl-module.js';
+import {
+    allPorts, findPort, isComposed, subcomponentType, subcomponentsOf, type PortInfo, type Timing
+} from '../../components/component-model.js';
+import type { TypeRelations } from '../../types/type-relations.js';
+import { isErroneous, printType } from '../../types/sym-type.js';
+import { Codes } from '../codes.js';
+
+const STRENGTH: Readonly<Record<Timing, number>> = { untimed: 0, timed: 1, sync: 2 };
+
+interface End {
+    readonly access: PortAccess;
+    readonly info: PortInfo;
+    /** The subcomponent the port belongs to; undefined for the component's own ports. */
+    readonly sub?: Subcomponent;
+}
+
+/** Context conditions on connectors: directions, types, timings, senders, connectedness, causality. */
+export class ConnectorChecks {
+    private readonly rel: TypeRelations;
+
+    constructor(services: AdlServices) {
+        this.rel = services.maa.TypeRelations;
+    }
+
+    readonly checks: ValidationChecks<AdlAstType> = {
+        ComponentType: (c, accept) => {
+            const connectors = c.body.elements.filter((e): e is Connector => e.$type === 'Connector');
+            const resolved = connectors.map((con) => ({ con, source: this.end(c, con.source), targets: con.targets.map((t) => this.end(c, t)) }));
+            for (const r of resolved) this.checkConnector(r.source, r.targets, accept);
+            if (isComposed(c)) {
+                this.checkSenders(resolved, accept);
+                this.checkConnectedness(c, resolved, accept);
+                this.checkCausality(c, resolved, accept);
+            }
+        }
+    };
+
+    private end(c: ComponentType, access: PortAccess): End | undefined {
+        const name = access.port.$refText;
+        if (access.subcomponent) {
+            const sub = access.subcomponent.ref;
+            if (!sub) return undefined;
+            const { decl, subst } = subcomponentType(sub);
+            const info = decl && findPort(decl, name, subst);
+            return info ? { access, info, sub } : undefined;
+        }
+        const info = findPort(c, name);
+        return info ? { access, info } : undefined;
+    }
+
+    private checkConnector(source: End | undefined, targets: Array<End | undefined>, accept: ValidationAcceptor): void {
+        let sourceOk = true;
+        if (source) {
+            const ok = source.sub ? source.info.direction === 'out' : source.info.direction === 'in';
+            if (!ok) {
+                sourceOk = false;
+                accept('error', `Connector source '${text(source)}' must be an incoming port of the component or an outgoing port of a subcomponent, but it is ${source.sub ? 'an incoming port of subcomponent' : 'an outgoing port of component'} '${source.sub?.name ?? source.info.owner.name}'.`, { node: source.access, code: Codes.SourceDirectionMismatch });
+            }
+        }
+        for (const target of targets) {
+            if (!target) continue;
+            const ok = target.sub ? target.info.direction === 'in' : target.info.direction === 'out';
+            if (!ok) {
+                accept('error', `Connector target '${text(target)}' must be an outgoing port of the component or an incoming port of a subcomponent, but it is ${target.sub ? 'an outgoing port of subcomponent' : 'an incoming port of component'} '${target.sub?.name ?? target.info.owner.name}'.`, { node: target.access, code: Codes.TargetDirectionMismatch });
+                continue;
+            }
+            if (!source || !sourceOk) continue;
+            const st = source.info.type;
+            const tt = target.info.type;
+            if (!isErroneous(st) && !isErroneous(tt) && !this.rel.isAssignable(tt, st)) {
+                accept('error', `Connector '${text(source)} -> ${text(target)}' connects a port of type ${printType(st)} to a port of type ${printType(tt)}; ${printType(st)} is not assignable to ${printType(tt)}.`, { node: target.access, code: Codes.ConnectorTypeMismatch });
+            }
+            // An incoming port of a composed component without a declared timing takes the timing of the subcomponents it feeds.
+            const inferred = !source.sub && !source.info.explicitTiming && target.sub !== undefined;
+            if (!inferred && STRENGTH[source.info.timing] < STRENGTH[target.info.timing]) {
+                accept('error', `Connector '${text(source)} -> ${text(target)}' connects a ${source.info.timing} port to a ${target.info.timing} port; a ${target.info.timing} port needs a source that is at least as strongly timed.`, { node: target.access, code: Codes.TimingMismatch });
+            }
+        }
+    }
+
+    private checkSenders(resolved: Array<{ con: Connector; targets: Array<End | undefined> }>, accept: ValidationAcceptor): void {
+        const seen = new Map<string, PortAccess>();
+        for (const { targets } of resolved) {
+            for (const t of targets) {
+                if (!t) continue;
+                const key = `${t.sub?.name ?? ''}.${t.info.name}`;
+                const first = seen.get(key);
+                if (first) accept('error', `Port '${text(t)}' receives messages from more than one connector; every port has at most one sender.`, { node: t.access, code: Codes.MultipleSenders });
+                else seen.set(key, t.access);
+            }
+        }
+    }
+
+    private checkConnectedness(c: ComponentType, resolved: Array<{ source?: End; targets: Array<End | undefined> }>, accept: ValidationAcceptor): void {
+        const used = new Set<string>();
+        for (const r of resolved) {
+            for (const e of [r.source, ...r.targets]) if (e) used.add(`${e.sub?.name ?? ''}.${e.info.name}`);
+        }
+        for (const sub of subcomponentsOf(c)) {
+            const { decl, subst } = subcomponentType(sub);
+            if (!decl) continue;
+            for (const p of allPorts(decl, subst)) {
+                if (used.has(`${sub.name}.${p.name}`)) continue;
+                if (p.direction === 'in') {
+                    accept('error', `Incoming port '${p.name}' of subcomponent '${sub.name}' is not connected; it would never receive a message.`, { node: sub, property: 'name', code: Codes.UnconnectedSubInPort });
+                } else {
+                    accept('warning', `Outgoing port '${p.name}' of subcomponent '${sub.name}' is not connected; its messages are lost.`, { node: sub, property: 'name', code: Codes.UnconnectedSubOutPort });
+                }
+            }
+        }
+        for (const p of allPorts(c)) {
+            if (used.has(`.${p.name}`)) continue;
+            if (p.direction === 'in') {
+                accept('warning', `Incoming port '${p.name}' of composed component '${c.name}' is not forwarded to any subcomponent.`, { node: p.owner === c ? p.port : c, property: 'name', code: Codes.UnusedInPort });
+            } else {
+                accept('warning', `Outgoing port '${p.name}' of composed component '${c.name}' has no sender.`, { node: p.owner === c ? p.port : c, property: 'name', code: Codes.UnusedOutPort });
+            }
+        }
+    }
+
+    /**
+     * Feedback cycles must be strongly causal: every cycle through subcomponents passes a
+     * delayed port (directly or inside a composed subcomponent), else its value in a time slice
+     * would depend on itself.
+     */
+    private checkCausality(c: ComponentType, resolved: Array<{ con: Connector; source?: End; targets: Array<End | undefined> }>, accept: ValidationAcceptor): void {
+        const edges = new Map<string, Array<{ to: string; con?: Connector }>>();
+        const add = (from: string, to: string, con?: Connector): void => {
+            const list = edges.get(from) ?? [];
+            list.push({ to, con });
+            edges.set(from, list);
+        };
+        for (const r of resolved) {
+            if (!r.source?.sub) continue;
+            for (const t of r.targets) if (t?.sub) add(`${r.source.sub.name}.${r.source.info.name}`, `${t.sub.name}.${t.info.name}`, r.con);
+        }
+        for (const sub of subcomponentsOf(c)) {
+            const decl = subcomponentType(sub).decl;
+            if (!decl) continue;
+            for (const [i, o] of this.instantaneousPaths(decl, new Set())) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
+        }
+        const state = new Map<string, 1 | 2>();
+        const reported = new Set<Connector>();
+        const visit = (n: string, via: Connector[]): void => {
+            state.set(n, 1);
+            for (const e of edges.get(n) ?? []) {
+                const path = e.con ? [...via, e.con] : via;
+                const s = state.get(e.to);
+                if (s === 1) {
+                    const con = path[path.length - 1];
+                    if (con && !reported.has(con)) {
+                        reported.add(con);
+                        accept('error', `The feedback loop through port '${e.to}' has no delay: its value in a time slice would depend on itself. Make an outgoing port on the loop <<delayed>>.`, { node: con, code: Codes.FeedbackNotCausal });
+                    }
+                } else if (s === undefined) visit(e.to, path);
+            }
+            state.set(n, 2);
+        };
+        for (const n of edges.keys()) if (!state.has(n)) visit(n, []);
+    }
+
+    /** Pairs (incoming, outgoing) of a component type's ports between which messages pass within one time slice. */
+    private instantaneousPaths(decl: ComponentType, seen: Set<ComponentType>): Array<[string, string]> {
+        const ports = allPorts(decl);
+        const ins = ports.filter((p) => p.direction === 'in');
+        const outs = ports.filter((p) => p.direction === 'out');
+        if (!isComposed(decl) || seen.has(decl)) {
+            return ins.flatMap((i) => outs.filter((o) => !o.delayed).map((o) => [i.name, o.name] as [string, string]));
+        }
+        seen.add(decl);
+        const edges = new Map<string, string[]>();
+        const add = (a: string, b: string): void => {
+            edges.set(a, [...(edges.get(a) ?? []), b]);
+        };
+        for (const con of decl.body.elements) {
+            if (con.$type !== 'Connector') continue;
+            const s = `${con.source.subcomponent?.$refText ?? ''}.${con.source.port.$refText}`;
+            for (const t of con.targets) add(s, `${t.subcomponent?.$refText ?? ''}.${t.port.$refText}`);
+        }
+        for (const sub of subcomponentsOf(decl)) {
+            const d = subcomponentType(sub).decl;
+            if (d) for (const [i, o] of this.instantaneousPaths(d, seen)) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
+        }
+        const result: Array<[string, string]> = [];
+        for (const i of ins) {
+            const reach = new Set<string>();
+            const stack = [`.${i.name}`];
+            while (stack.length > 0) {
+                const n = stack.pop()!;
+                for (const m of edges.get(n) ?? []) if (!reach.has(m)) { reach.add(m); stack.push(m); }
+            }
+            for (const o of outs) if (reach.has(`.${o.name}`) && !o.delayed) result.push([i.name, o.name]);
+        }
+        seen.delete(decl);
+        return result;
+    }
+}
+
+function text(e: End): string {
+    return e.sub ? `${e.sub.name}.${e.info.name}` : e.info.name;
+}

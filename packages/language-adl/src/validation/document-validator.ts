@@ -1,0 +1,98 @@
+import { DefaultDocumentValidator, DocumentValidator, type LangiumDocument, type ParseResult, type ValidationOptions } from 'langium';
+import type { Diagnostic } from 'vscode-languageserver-types';
+import { Codes } from './codes.js';
+
+/**
+ * Gives every diagnostic of the family a stable code: lexer and parser errors become
+ * `syntax/...`, unresolved references the most specific `arc/...`/`expr/...` code for the kind
+ * of reference (else `link/unresolved-reference`). Expression names are reported by the
+ * expression checks instead, which know qualified names such as `java.lang.String.String()`.
+ */
+export class AdlDocumentValidator extends DefaultDocumentValidator {
+    /**
+     * Codes for unresolved references of embedded languages, keyed by `ContainerType.property`;
+     * the message is built from the unresolved name.
+     */
+    readonly linkCodes = new Map<string, { code: string; message: (name: string) => string }>();
+
+    protected override processLexingErrors(parseResult: ParseResult, diagnostics: Diagnostic[], options: ValidationOptions): void {
+        const start = diagnostics.length;
+        super.processLexingErrors(parseResult, diagnostics, options);
+        for (let i = start; i < diagnostics.length; i++) retag(diagnostics[i]!, Codes.SyntaxToken);
+    }
+
+    protected override processParsingErrors(parseResult: ParseResult, diagnostics: Diagnostic[], options: ValidationOptions): void {
+        const start = diagnostics.length;
+        super.processParsingErrors(parseResult, diagnostics, options);
+        for (let i = start; i < diagnostics.length; i++) {
+            const d = diagnostics[i]!;
+            retag(d, /end of input|EOF/i.test(d.message) ? Codes.SyntaxUnexpectedEnd : Codes.SyntaxUnexpected);
+        }
+    }
+
+    protected override processLinkingErrors(document: LangiumDocument, diagnostics: Diagnostic[], _options: ValidationOptions): void {
+        for (const reference of document.references) {
+            const error = reference.error;
+            if (!error) continue;
+            const { container, property } = error.info;
+            let code: string = Codes.LinkUnresolved;
+            let message = error.message;
+            const name = error.info.reference.$refText;
+            switch (`${container.$type}.${property}`) {
+                case 'PortAccess.port': {
+                    const pa = container as { subcomponent?: { ref?: unknown; error?: unknown } };
+                    if (pa.subcomponent && !pa.subcomponent.ref) continue; // reported on the subcomponent
+                    code = Codes.MissingPort;
+                    message = `Port '${name}' does not exist${pa.subcomponent ? ` in the type of subcomponent '${(pa.subcomponent as { $refText?: string }).$refText}'` : ''}.`;
+                    break;
+                }
+                case 'PortAccess.subcomponent':
+                    code = Codes.MissingSubcomponent;
+                    message = `Subcomponent '${name}' does not exist.`;
+                    break;
+                case 'ComponentTypeRef.ref':
+                    code = Codes.MissingComponentType;
+                    message = `Component type '${name}' cannot be resolved.`;
+                    break;
+                case 'ReferenceType.ref':
+                    code = Codes.UnresolvedType;
+                    message = `Type '${name}' cannot be resolved.`;
+                    break;
+                case 'NameExpression.ref': {
+                    const assign = container.$container;
+                    if (assign?.$type === 'AssignmentExpression' && (assign as { left?: unknown }).left === container
+                        && ['Subcomponent', 'ParentComponent'].includes(assign.$container?.$type ?? '')) {
+                        code = Codes.UnknownArgumentKey;
+                        message = `'${name}' is not a parameter of the instantiated component type.`;
+                        break;
+                    }
+                    // Reported by the expression checks, which also resolve qualified names.
+                    continue;
+                }
+                default: {
+                    const contributed = this.linkCodes.get(`${container.$type}.${property}`);
+                    if (contributed) {
+                        code = contributed.code;
+                        message = contributed.message(name);
+                    }
+                    break;
+                }
+            }
+            const range = reference.$refNode?.range ?? container.$cstNode?.range;
+            if (!range) continue;
+            diagnostics.push({
+                severity: 1,
+                range,
+                message,
+                code,
+                source: this.getSource(),
+                data: { code: DocumentValidator.LinkingError }
+            });
+        }
+    }
+}
+
+function retag(d: Diagnostic, code: string): void {
+    d.code = code;
+}
+

@@ -1,0 +1,155 @@
+import { readFile, readdir, stat } from 'node:fs/promises';
+import { join, resolve } from 'node:path';
+import { URI, type LangiumDocument } from 'langium';
+import { builtinDocuments } from '../adl-module.js';
+import type { HostLanguageServices } from '../services.js';
+import { ReservedNames, type RootConfiguration } from '../validation/reserved-names.js';
+
+export type Severity = 'error' | 'warning' | 'info' | 'hint';
+
+export interface CheckDiagnostic {
+    /** Absolute path of the model root the file was checked in. */
+    root: string;
+    /** Absolute path of the file. */
+    file: string;
+    /** 1-based positions. */
+    line: number;
+    column: number;
+    endLine: number;
+    endColumn: number;
+    severity: Severity;
+    code: string;
+    message: string;
+}
+
+export interface RootSpec {
+    /** A model root folder. */
+    root: string;
+    /** Report only these files (absolute paths); all model files of the root are still loaded. */
+    files?: string[];
+}
+
+export interface CheckOptions {
+    onProgress?: (message: string) => void;
+    /** File extensions of model files (default: every language registered in the services). */
+    extensions?: readonly string[];
+}
+
+/** A problem with the input itself (missing folder, unreadable file): a message for the user. */
+export class CheckInputError extends Error {}
+
+const SEVERITIES: readonly Severity[] = ['error', 'warning', 'info', 'hint'];
+
+/**
+ * The checking path of `maa-gen check` and the conformance tests: loads every model file of
+ * each root (each root an independent scope), builds and validates them in one workspace, and
+ * returns the diagnostics sorted by file and position.
+ */
+export async function checkRoots(services: HostLanguageServices, specs: readonly RootSpec[], options: CheckOptions = {}): Promise<CheckDiagnostic[]> {
+    const shared = services.shared;
+    const extensions = options.extensions ?? shared.ServiceRegistry.all.flatMap((s) => s.LanguageMetaData.fileExtensions);
+    const roots = new Map<string, Set<string> | undefined>();
+    for (const spec of specs) {
+        const root = resolve(spec.root);
+        if (spec.files === undefined) roots.set(root, undefined);
+        else if (!roots.has(root) || roots.get(root) !== undefined) {
+            const set = roots.get(root) ?? new Set<string>();
+            for (const f of spec.files) set.add(resolve(f));
+            roots.set(root, set);
+        }
+    }
+    shared.maa.ModelRoots.setRoots([...roots.keys()].map((r) => URI.file(r)));
+
+    const documents: LangiumDocument[] = [];
+    const rootOfDoc = new Map<string, string>();
+    let index = 0;
+    for (const root of roots.keys()) {
+        index++;
+        options.onProgress?.(`loading ${root} (${index}/${roots.size})`);
+        const files = await modelFiles(root, extensions);
+        const config = await readConfiguration(root);
+        if (config) shared.maa.ReservedNames.configure(URI.file(root), config);
+        for (const file of files) {
+            let text: string;
+            try {
+                text = await readFile(file, 'utf8');
+            } catch (e) {
+                throw new CheckInputError(`cannot read ${file}: ${(e as NodeJS.ErrnoException).code ?? (e as Error).message}`);
+            }
+            const uri = URI.file(file);
+            const langiumDocuments = shared.workspace.LangiumDocuments;
+            if (langiumDocuments.hasDocument(uri)) langiumDocuments.deleteDocument(uri);
+            documents.push(langiumDocuments.createDocument(uri, text));
+            rootOfDoc.set(uri.toString(), root);
+        }
+    }
+    const builtins = builtinDocuments(shared);
+    options.onProgress?.(`checking ${documents.length} files`);
+    await shared.workspace.DocumentBuilder.build([...builtins, ...documents], { validation: true });
+
+    const result: CheckDiagnostic[] = [];
+    for (const doc of documents) {
+        const root = rootOfDoc.get(doc.uri.toString())!;
+        const file = doc.uri.fsPath;
+        const only = roots.get(root);
+        if (only && !only.has(file)) continue;
+        for (const d of doc.diagnostics ?? []) {
+            result.push({
+                root,
+                file,
+                line: d.range.start.line + 1,
+                column: d.range.start.character + 1,
+                endLine: d.range.end.line + 1,
+                endColumn: d.range.end.character + 1,
+                severity: SEVERITIES[(d.severity ?? 1) - 1] ?? 'error',
+                code: typeof d.code === 'string' ? d.code : d.code !== undefined ? String(d.code) : 'internal/unclassified',
+                message: d.message
+            });
+        }
+    }
+    result.sort((a, b) => a.file.localeCompare(b.file) || a.line - b.line || a.column - b.column || a.code.localeCompare(b.code));
+    return result;
+}
+
+async function modelFiles(root: string, extensions: readonly string[]): Promise<string[]> {
+    let info;
+    try {
+        info = await stat(root);
+    } catch {
+        throw new CheckInputError(`no such folder: ${root}`);
+    }
+    if (!info.isDirectory()) throw new CheckInputError(`not a folder: ${root}`);
+    const out: string[] = [];
+    const walk = async (dir: string): Promise<void> => {
+        let entries;
+        try {
+            entries = await readdir(dir, { withFileTypes: true });
+        } catch (e) {
+            throw new CheckInputError(`cannot read folder ${dir}: ${(e as NodeJS.ErrnoException).code ?? (e as Error).message}`);
+        }
+        entries.sort((a, b) => a.name.localeCompare(b.name));
+        for (const e of entries) {
+            if (e.name.startsWith('.') || e.name === 'node_modules') continue;
+            const p = join(dir, e.name);
+            if (e.isDirectory()) await walk(p);
+            else if (extensions.some((x) => e.name.endsWith(x))) out.push(p);
+        }
+    };
+    await walk(root);
+    return out;
+}
+
+async function readConfiguration(root: string): Promise<RootConfiguration | undefined> {
+    const file = join(root, ReservedNames.CONFIG_FILE);
+    let text: string;
+    try {
+        text = await readFile(file, 'utf8');
+    } catch {
+        return undefined;
+    }
+    try {
+        return JSON.parse(text) as RootConfiguration;
+    } catch (e) {
+        throw new CheckInputError(`${file}: invalid JSON (${(e as Error).message})`);
+    }
+}
