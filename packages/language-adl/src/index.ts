@@ -16,3 +16,5 @@ export * from './validation/reserved-names.js';
 export * from './validation/checks/expression-checks.js';
 export * from './workspace/root-checker.js';
 export * as ast from './generated/ast.js';
+export * from './docs/diagnostic-catalog.js';
+export * from './docs/adl-diagnostics.js';

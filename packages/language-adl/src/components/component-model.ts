@@ -30,6 +30,11 @@ export interface PortInfo {
     readonly owner: ComponentType;
 }
 
+/** The elements of a component body (empty while the body is still being typed). */
+export function elementsOf(c: ComponentType): ComponentType['body']['elements'] {
+    return c.body?.elements ?? [];
+}
+
 export function stereotypeNames(...stereotypes: Array<Stereotype | undefined>): string[] {
     return stereotypes.flatMap((s) => s?.values.map((v) => v.name) ?? []);
 }
@@ -39,7 +44,7 @@ export function timingsOf(...stereotypes: Array<Stereotype | undefined>): Timing
 }
 
 export function behaviorsOf(c: ComponentType): BehaviorDeclaration[] {
-    return c.body.elements.filter((e): e is BehaviorDeclaration => e.$type === 'BehaviorDeclaration');
+    return elementsOf(c).filter((e): e is BehaviorDeclaration => e.$type === 'BehaviorDeclaration');
 }
 
 /** The timing a component's behavior declares (`<<sync>> automaton { }`), if any. */
@@ -58,7 +63,7 @@ export function portGroupOf(port: Port): PortGroup {
 export function ownPorts(c: ComponentType, s: Substitution = EMPTY_SUBSTITUTION): PortInfo[] {
     const result: PortInfo[] = [];
     const fromBehavior = behaviorTiming(c);
-    for (const e of c.body.elements) {
+    for (const e of elementsOf(c)) {
         if (e.$type !== 'PortDeclaration') continue;
         for (const g of e.groups) {
             const declared = timingsOf(g.stereotype, e.stereotype)[0];
@@ -84,7 +89,7 @@ export function ownPorts(c: ComponentType, s: Substitution = EMPTY_SUBSTITUTION)
 export function parentsOf(c: ComponentType, s: Substitution = EMPTY_SUBSTITUTION): Array<{ decl: ComponentType; subst: Substitution; ref: ComponentTypeRef }> {
     const result: Array<{ decl: ComponentType; subst: Substitution; ref: ComponentTypeRef }> = [];
     for (const p of c.parents) {
-        const decl = p.type.ref.ref;
+        const decl = p.type?.ref?.ref;
         if (!decl) continue;
         result.push({ decl, subst: substitutionFor(p.type, s), ref: p.type });
     }
@@ -93,7 +98,7 @@ export function parentsOf(c: ComponentType, s: Substitution = EMPTY_SUBSTITUTION
 
 /** The substitution that instantiating a component type through `ref` defines. */
 export function substitutionFor(ref: ComponentTypeRef, outer: Substitution = EMPTY_SUBSTITUTION): Substitution {
-    const decl = ref.ref.ref;
+    const decl = ref?.ref?.ref;
     if (!decl) return EMPTY_SUBSTITUTION;
     return bind(decl.typeParams, ref.typeArgs.map((a) => typeOfMCType(a, outer)));
 }
@@ -130,7 +135,7 @@ export function findPort(c: ComponentType, name: string, s: Substitution = EMPTY
 /** Subcomponents declared in a component: instantiations and in-place instances of inner types. */
 export function subcomponentsOf(c: ComponentType): Subcomponent[] {
     const result: Subcomponent[] = [];
-    for (const e of c.body.elements) {
+    for (const e of elementsOf(c)) {
         if (e.$type === 'ComponentInstantiation') result.push(...e.instances);
         else if (e.$type === 'ComponentType') result.push(...e.instances);
     }
@@ -145,7 +150,7 @@ export function isComposed(c: ComponentType): boolean {
 export function subcomponentType(sub: Subcomponent): { decl: ComponentType | undefined; subst: Substitution; ref?: ComponentTypeRef } {
     const container = sub.$container;
     if (container.$type === 'ComponentType') return { decl: container, subst: EMPTY_SUBSTITUTION };
-    return { decl: container.type.ref.ref, subst: substitutionFor(container.type), ref: container.type };
+    return { decl: container.type?.ref?.ref, subst: substitutionFor(container.type), ref: container.type };
 }
 
 /** The component type that (directly) contains a node. */
@@ -154,5 +159,5 @@ export function enclosingComponent(node: AstNode): ComponentType | undefined {
 }
 
 export function innerComponentTypes(c: ComponentType): ComponentType[] {
-    return c.body.elements.filter(isComponentType);
+    return elementsOf(c).filter(isComponentType);
 }

@@ -44,6 +44,7 @@ export namespace Arc {
         | "-="
         | "->"
         | "."
+        | ".*"
         | "/"
         | "/="
         | ":"
@@ -199,6 +200,7 @@ export namespace Cd {
         | "--"
         | "->"
         | "."
+        | ".*"
         | ".."
         | ";"
         | "<"
@@ -407,7 +409,7 @@ export interface BinaryExpression extends langium.AstNode {
     readonly $container: ArrayAccessExpression | AssignmentExpression | BinaryExpression | CallExpression | ConditionalExpression | ExpressionStatement | Field | FieldAccessExpression | ForStatement | IfStatement | LocalVariable | Parameter | ParentComponent | PostfixExpression | PrefixExpression | Subcomponent | WhileStatement;
     readonly $type: 'BinaryExpression';
     left: Expression;
-    op: '!=' | '%' | '&&' | '&' | '*' | '+' | '-' | '/' | '<' | '<=' | '==' | '>' | '>=' | '^' | '|' | '||' | ShiftOperator;
+    op: '!=' | '%' | '&&' | '&' | '*' | '+' | '-' | '/' | '==' | '^' | '|' | '||' | RelationalOperator;
     right: Expression;
 }
 
@@ -1374,9 +1376,9 @@ export function isReferenceType(item: unknown): item is ReferenceType {
     return reflection.isInstance(item, ReferenceType.$type);
 }
 
-export type ShiftOperator = string;
+export type RelationalOperator = string;
 
-export function isShiftOperator(item: unknown): item is ShiftOperator {
+export function isRelationalOperator(item: unknown): item is RelationalOperator {
     return typeof item === 'string';
 }
 

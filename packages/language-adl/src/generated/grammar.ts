@@ -1402,7 +1402,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
             "terminal": {
               "$type": "RuleCall",
               "rule": {
-                "$ref": "#/rules@85"
+                "$ref": "#/rules@84"
               },
               "arguments": []
             }
@@ -1465,17 +1465,8 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
             "arguments": []
           },
           {
-            "$type": "Group",
-            "elements": [
-              {
-                "$type": "Keyword",
-                "value": "."
-              },
-              {
-                "$type": "Keyword",
-                "value": "*"
-              }
-            ],
+            "$type": "Keyword",
+            "value": ".*",
             "cardinality": "?"
           }
         ]
@@ -3656,7 +3647,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
           {
             "$type": "RuleCall",
             "rule": {
-              "$ref": "#/rules@67"
+              "$ref": "#/rules@68"
             },
             "arguments": []
           },
@@ -3675,32 +3666,6 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
               {
                 "$type": "Assignment",
                 "feature": "op",
-                "operator": "=",
-                "terminal": {
-                  "$type": "Alternatives",
-                  "elements": [
-                    {
-                      "$type": "Keyword",
-                      "value": "<"
-                    },
-                    {
-                      "$type": "Keyword",
-                      "value": "<="
-                    },
-                    {
-                      "$type": "Keyword",
-                      "value": ">"
-                    },
-                    {
-                      "$type": "Keyword",
-                      "value": ">="
-                    }
-                  ]
-                }
-              },
-              {
-                "$type": "Assignment",
-                "feature": "right",
                 "operator": "=",
                 "terminal": {
                   "$type": "RuleCall",
@@ -3709,56 +3674,6 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
                   },
                   "arguments": []
                 }
-              }
-            ],
-            "cardinality": "*"
-          }
-        ]
-      },
-      "entry": false,
-      "fragment": false,
-      "parameters": []
-    },
-    {
-      "$type": "ParserRule",
-      "name": "ShiftExpression",
-      "inferredType": {
-        "$type": "InferredType",
-        "name": "Expression"
-      },
-      "definition": {
-        "$type": "Group",
-        "elements": [
-          {
-            "$type": "RuleCall",
-            "rule": {
-              "$ref": "#/rules@69"
-            },
-            "arguments": []
-          },
-          {
-            "$type": "Group",
-            "elements": [
-              {
-                "$type": "Action",
-                "inferredType": {
-                  "$type": "InferredType",
-                  "name": "BinaryExpression"
-                },
-                "feature": "left",
-                "operator": "="
-              },
-              {
-                "$type": "Assignment",
-                "feature": "op",
-                "operator": "=",
-                "terminal": {
-                  "$type": "RuleCall",
-                  "rule": {
-                    "$ref": "#/rules@68"
-                  },
-                  "arguments": []
-                }
               },
               {
                 "$type": "Assignment",
@@ -3767,7 +3682,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
                 "terminal": {
                   "$type": "RuleCall",
                   "rule": {
-                    "$ref": "#/rules@69"
+                    "$ref": "#/rules@68"
                   },
                   "arguments": []
                 }
@@ -3783,11 +3698,23 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
     },
     {
       "$type": "ParserRule",
-      "name": "ShiftOperator",
+      "name": "RelationalOperator",
       "dataType": "string",
       "definition": {
         "$type": "Alternatives",
         "elements": [
+          {
+            "$type": "Keyword",
+            "value": "<"
+          },
+          {
+            "$type": "Keyword",
+            "value": "<="
+          },
+          {
+            "$type": "Keyword",
+            "value": ">="
+          },
           {
             "$type": "Keyword",
             "value": "<<"
@@ -3800,12 +3727,18 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
                 "value": ">"
               },
               {
-                "$type": "Keyword",
-                "value": ">"
-              },
-              {
-                "$type": "Keyword",
-                "value": ">",
+                "$type": "Group",
+                "elements": [
+                  {
+                    "$type": "Keyword",
+                    "value": ">"
+                  },
+                  {
+                    "$type": "Keyword",
+                    "value": ">",
+                    "cardinality": "?"
+                  }
+                ],
                 "cardinality": "?"
               }
             ]
@@ -3829,7 +3762,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
           {
             "$type": "RuleCall",
             "rule": {
-              "$ref": "#/rules@70"
+              "$ref": "#/rules@69"
             },
             "arguments": []
           },
@@ -3870,7 +3803,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
                 "terminal": {
                   "$type": "RuleCall",
                   "rule": {
-                    "$ref": "#/rules@70"
+                    "$ref": "#/rules@69"
                   },
                   "arguments": []
                 }
@@ -3897,7 +3830,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
           {
             "$type": "RuleCall",
             "rule": {
-              "$ref": "#/rules@71"
+              "$ref": "#/rules@70"
             },
             "arguments": []
           },
@@ -3942,7 +3875,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
                 "terminal": {
                   "$type": "RuleCall",
                   "rule": {
-                    "$ref": "#/rules@71"
+                    "$ref": "#/rules@70"
                   },
                   "arguments": []
                 }
@@ -4017,7 +3950,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
                 "terminal": {
                   "$type": "RuleCall",
                   "rule": {
-                    "$ref": "#/rules@71"
+                    "$ref": "#/rules@70"
                   },
                   "arguments": []
                 }
@@ -4027,7 +3960,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
           {
             "$type": "RuleCall",
             "rule": {
-              "$ref": "#/rules@72"
+              "$ref": "#/rules@71"
             },
             "arguments": []
           }
@@ -4050,7 +3983,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
           {
             "$type": "RuleCall",
             "rule": {
-              "$ref": "#/rules@73"
+              "$ref": "#/rules@72"
             },
             "arguments": []
           },
@@ -4257,14 +4190,14 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
           {
             "$type": "RuleCall",
             "rule": {
-              "$ref": "#/rules@75"
+              "$ref": "#/rules@74"
             },
             "arguments": []
           },
           {
             "$type": "RuleCall",
             "rule": {
-              "$ref": "#/rules@74"
+              "$ref": "#/rules@73"
             },
             "arguments": []
           }
@@ -4500,7 +4433,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
             "terminal": {
               "$type": "RuleCall",
               "rule": {
-                "$ref": "#/rules@77"
+                "$ref": "#/rules@76"
               },
               "arguments": []
             },
@@ -4525,7 +4458,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
           {
             "$type": "RuleCall",
             "rule": {
-              "$ref": "#/rules@76"
+              "$ref": "#/rules@75"
             },
             "arguments": []
           },
@@ -4535,7 +4468,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
               {
                 "$type": "RuleCall",
                 "rule": {
-                  "$ref": "#/rules@78"
+                  "$ref": "#/rules@77"
                 },
                 "arguments": []
               },
@@ -4544,6 +4477,13 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
                 "value": ";"
               }
             ]
+          },
+          {
+            "$type": "RuleCall",
+            "rule": {
+              "$ref": "#/rules@79"
+            },
+            "arguments": []
           },
           {
             "$type": "RuleCall",
@@ -4570,13 +4510,6 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
             "$type": "RuleCall",
             "rule": {
               "$ref": "#/rules@83"
-            },
-            "arguments": []
-          },
-          {
-            "$type": "RuleCall",
-            "rule": {
-              "$ref": "#/rules@84"
             },
             "arguments": []
           }
@@ -4611,7 +4544,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
             "terminal": {
               "$type": "RuleCall",
               "rule": {
-                "$ref": "#/rules@79"
+                "$ref": "#/rules@78"
               },
               "arguments": []
             }
@@ -4630,7 +4563,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
                 "terminal": {
                   "$type": "RuleCall",
                   "rule": {
-                    "$ref": "#/rules@79"
+                    "$ref": "#/rules@78"
                   },
                   "arguments": []
                 }
@@ -4727,7 +4660,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
             "terminal": {
               "$type": "RuleCall",
               "rule": {
-                "$ref": "#/rules@77"
+                "$ref": "#/rules@76"
               },
               "arguments": []
             }
@@ -4746,7 +4679,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
                 "terminal": {
                   "$type": "RuleCall",
                   "rule": {
-                    "$ref": "#/rules@77"
+                    "$ref": "#/rules@76"
                   },
                   "arguments": []
                 }
@@ -4797,7 +4730,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
             "terminal": {
               "$type": "RuleCall",
               "rule": {
-                "$ref": "#/rules@77"
+                "$ref": "#/rules@76"
               },
               "arguments": []
             }
@@ -4829,7 +4762,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
             "terminal": {
               "$type": "RuleCall",
               "rule": {
-                "$ref": "#/rules@78"
+                "$ref": "#/rules@77"
               },
               "arguments": []
             },
@@ -4907,7 +4840,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
             "terminal": {
               "$type": "RuleCall",
               "rule": {
-                "$ref": "#/rules@77"
+                "$ref": "#/rules@76"
               },
               "arguments": []
             }
@@ -4978,14 +4911,14 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
           {
             "$type": "RuleCall",
             "rule": {
-              "$ref": "#/rules@86"
+              "$ref": "#/rules@85"
             },
             "arguments": []
           },
           {
             "$type": "RuleCall",
             "rule": {
-              "$ref": "#/rules@87"
+              "$ref": "#/rules@86"
             },
             "arguments": []
           }
@@ -5012,7 +4945,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
             "terminal": {
               "$type": "RuleCall",
               "rule": {
-                "$ref": "#/rules@76"
+                "$ref": "#/rules@75"
               },
               "arguments": []
             }
@@ -5040,7 +4973,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
             "terminal": {
               "$type": "RuleCall",
               "rule": {
-                "$ref": "#/rules@76"
+                "$ref": "#/rules@75"
               },
               "arguments": []
             }
@@ -5080,7 +5013,7 @@ export const ArcGrammar = (): Grammar => loadedArcGrammar ?? (loadedArcGrammar =
           {
             "$type": "SimpleType",
             "typeRef": {
-              "$ref": "#/rules@79"
+              "$ref": "#/rules@78"
             }
           },
           {
@@ -6310,17 +6243,8 @@ export const CdGrammar = (): Grammar => loadedCdGrammar ?? (loadedCdGrammar = lo
             "arguments": []
           },
           {
-            "$type": "Group",
-            "elements": [
-              {
-                "$type": "Keyword",
-                "value": "."
-              },
-              {
-                "$type": "Keyword",
-                "value": "*"
-              }
-            ],
+            "$type": "Keyword",
+            "value": ".*",
             "cardinality": "?"
           }
         ]

@@ -7,7 +7,7 @@ import {
     isAssignmentExpression, isBlock, isComponentType, isForStatement, isLocalVariableDeclaration,
     isParentComponent, isPortAccess, isStatement, isSubcomponent
 } from '../generated/ast.js';
-import { allPorts, subcomponentType, subcomponentsOf } from '../components/component-model.js';
+import { allPorts, subcomponentType, subcomponentsOf, elementsOf } from '../components/component-model.js';
 import { LookupScope } from './lookup-scope.js';
 import type { NameResolver } from './name-resolver.js';
 
@@ -122,7 +122,7 @@ export class AdlScopeProvider implements ScopeProvider {
 
     private *componentNames(c: ComponentType): Generator<{ name: string; node: AstNode }> {
         for (const p of c.params) yield { name: p.name, node: p };
-        for (const e of c.body.elements) {
+        for (const e of elementsOf(c)) {
             if (e.$type === 'FieldDeclaration') for (const f of e.fields) yield { name: f.name, node: f };
         }
         for (const p of allPorts(c)) yield { name: p.name, node: p.port };

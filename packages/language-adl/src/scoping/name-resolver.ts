@@ -1,6 +1,7 @@
 import { AstUtils, type AstNode, type AstNodeDescription, type AstNodeDescriptionProvider, type LangiumDocument } from 'langium';
 import type { ArcModel, CDModel, ComponentType, TypeParameter } from '../generated/ast.js';
 import { isArcModel, isCDClass, isCDMethod, isCDModel, isComponentType } from '../generated/ast.js';
+import { elementsOf } from '../components/component-model.js';
 import type { ModelRoots } from '../model-roots.js';
 import type { RootIndex } from './root-index.js';
 import { qualify } from './adl-scope-computation.js';
@@ -34,7 +35,7 @@ export class NameResolver {
     resolveComponent(context: AstNode, name: string): AstNodeDescription | undefined {
         if (!name.includes('.')) {
             for (let c = AstUtils.getContainerOfType(context, isComponentType); c; c = AstUtils.getContainerOfType(c.$container, isComponentType)) {
-                const inner = c.body.elements.find((e): e is ComponentType => isComponentType(e) && e.name === name);
+                const inner = elementsOf(c).find((e): e is ComponentType => isComponentType(e) && e.name === name);
                 if (inner) return this.descriptions.createDescription(inner, inner.name);
             }
             const top = AstUtils.getDocument(context).parseResult.value;

@@ -58,7 +58,8 @@ export class ExpressionTyper {
         }
     }
 
-    private type(e: Expression, p: TypeProblem[]): SymType {
+    private type(e: Expression | undefined, p: TypeProblem[]): SymType {
+        if (!e) return ERROR_TYPE; // partially parsed: the syntax error is reported already
         switch (e.$type) {
             case 'BooleanLiteral': return BOOLEAN;
             case 'IntLiteral': return INT;
@@ -124,9 +125,9 @@ export class ExpressionTyper {
     }
 
     /** The type of a sub-expression that must denote a value. */
-    private value(e: Expression, p: TypeProblem[]): SymType {
+    private value(e: Expression | undefined, p: TypeProblem[]): SymType {
         const t = this.type(e, p);
-        if (t.kind === 'qualifier') {
+        if (t.kind === 'qualifier' && e) {
             p.push(mismatch(e, `${t.description} is not a value`));
             return ERROR_TYPE;
         }

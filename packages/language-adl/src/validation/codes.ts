@@ -7,6 +7,7 @@ export const Codes = {
     SyntaxUnexpected: 'syntax/unexpected-token',
     SyntaxUnexpectedEnd: 'syntax/unexpected-end',
     LinkUnresolved: 'link/unresolved-reference',
+    InternalError: 'internal/check-failed',
 
     FileNameMismatch: 'arc/file-name-mismatch',
     PackageMismatch: 'arc/package-mismatch',

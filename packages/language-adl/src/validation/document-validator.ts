@@ -26,8 +26,18 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
         super.processParsingErrors(parseResult, diagnostics, options);
         for (let i = start; i < diagnostics.length; i++) {
             const d = diagnostics[i]!;
-            retag(d, /end of input|EOF/i.test(d.message) ? Codes.SyntaxUnexpectedEnd : Codes.SyntaxUnexpected);
+            const atEnd = /but found:? ?[`']{2}/.test(d.message);
+            d.message = concise(d.message, atEnd);
+            retag(d, atEnd ? Codes.SyntaxUnexpectedEnd : Codes.SyntaxUnexpected);
         }
+    }
+
+    override async validateDocument(...args: Parameters<DefaultDocumentValidator['validateDocument']>): Promise<Diagnostic[]> {
+        const diagnostics = await super.validateDocument(...args);
+        // A check that failed on an unusual (e.g. partially parsed) model must still be visible
+        // with a code, and must never take the other diagnostics with it.
+        for (const d of diagnostics) if (d.code === undefined) d.code = Codes.InternalError;
+        return diagnostics;
     }
 
     protected override processLinkingErrors(document: LangiumDocument, diagnostics: Diagnostic[], _options: ValidationOptions): void {
@@ -90,6 +100,23 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
             });
         }
     }
+}
+
+/**
+ * Chevrotain lists every expected token sequence (dozens in a component body); users need the
+ * unexpected token and the tokens that could start the text there.
+ */
+function concise(message: string, atEnd: boolean): string {
+    const found = /but found:? ?[`']([^`']*)[`']/.exec(message)?.[1];
+    const firsts = [...message.matchAll(/^\s*\d+\. \[([^,\]]+)/gm)].map((m) => m[1]!.trim());
+    const expected = [...new Set(firsts)];
+    const what = atEnd ? 'Unexpected end of file' : `Unexpected '${found ?? '?'}'`;
+    if (expected.length > 0) {
+        const shown = expected.slice(0, 12).map((t) => (t === 'ID' ? 'a name' : `'${t}'`));
+        return `${what}; expected ${shown.join(', ')}${expected.length > 12 ? ', ...' : ''}.`;
+    }
+    const single = /Expecting (?:token of type )?'?([^'\s]+)'?/.exec(message)?.[1];
+    return single ? `${what}; expected ${single === 'ID' ? 'a name' : `'${single}'`}.` : message;
 }
 
 function retag(d: Diagnostic, code: string): void {

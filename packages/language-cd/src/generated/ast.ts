@@ -25,6 +25,7 @@ export type ClassDiagramKeywordNames =
     | "--"
     | "->"
     | "."
+    | ".*"
     | ".."
     | ";"
     | "<"

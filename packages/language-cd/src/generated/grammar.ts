@@ -1169,17 +1169,8 @@ export const CdGrammar = (): Grammar => loadedCdGrammar ?? (loadedCdGrammar = lo
             "arguments": []
           },
           {
-            "$type": "Group",
-            "elements": [
-              {
-                "$type": "Keyword",
-                "value": "."
-              },
-              {
-                "$type": "Keyword",
-                "value": "*"
-              }
-            ],
+            "$type": "Keyword",
+            "value": ".*",
             "cardinality": "?"
           }
         ]

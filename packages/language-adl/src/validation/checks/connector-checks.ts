@@ -2,8 +2,7 @@ import type { ValidationAcceptor, ValidationChecks } from 'langium';
 import type { AdlAstType, ComponentType, Connector, PortAccess, Subcomponent } from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import {
-    allPorts, findPort, isComposed, subcomponentType, subcomponentsOf, type PortInfo, type Timing
-} from '../../components/component-model.js';
+    allPorts, findPort, isComposed, subcomponentType, subcomponentsOf, type PortInfo, type Timing, elementsOf } from '../../components/component-model.js';
 import type { TypeRelations } from '../../types/type-relations.js';
 import { isErroneous, printType } from '../../types/sym-type.js';
 import { Codes } from '../codes.js';
@@ -27,7 +26,7 @@ export class ConnectorChecks {
 
     readonly checks: ValidationChecks<AdlAstType> = {
         ComponentType: (c, accept) => {
-            const connectors = c.body.elements.filter((e): e is Connector => e.$type === 'Connector');
+            const connectors = elementsOf(c).filter((e): e is Connector => e.$type === 'Connector');
             const resolved = connectors.map((con) => ({ con, source: this.end(c, con.source), targets: con.targets.map((t) => this.end(c, t)) }));
             for (const r of resolved) this.checkConnector(r.source, r.targets, accept);
             if (isComposed(c)) {
@@ -175,7 +174,7 @@ export class ConnectorChecks {
         const add = (a: string, b: string): void => {
             edges.set(a, [...(edges.get(a) ?? []), b]);
         };
-        for (const con of decl.body.elements) {
+        for (const con of elementsOf(decl)) {
             if (con.$type !== 'Connector') continue;
             const s = `${con.source.subcomponent?.$refText ?? ''}.${con.source.port.$refText}`;
             for (const t of con.targets) add(s, `${t.subcomponent?.$refText ?? ''}.${t.port.$refText}`);

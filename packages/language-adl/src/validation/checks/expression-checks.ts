@@ -54,11 +54,12 @@ export class ExpressionChecks {
         Field: (f: Field, accept) => {
             if (!f.init) return;
             const decl = f.$container;
+            if (!decl?.type) return;
             this.checkStaticContext(f.init, accept, `the initializer of field '${f.name}'`);
             this.expectType(f.init, typeOfMCType(decl.type), accept, Codes.FieldInitTypeMismatch, `The initial value of field '${f.name}'`);
         },
         Parameter: (p: Parameter, accept) => {
-            if (!p.default) return;
+            if (!p.default || !p.type) return;
             this.checkStaticContext(p.default, accept, `the default value of parameter '${p.name}'`);
             this.expectType(p.default, typeOfMCType(p.type), accept, Codes.ParamDefaultTypeMismatch, `The default value of parameter '${p.name}'`);
         },

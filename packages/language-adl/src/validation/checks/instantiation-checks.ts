@@ -31,12 +31,12 @@ export class InstantiationChecks {
             if (container.$type === 'ComponentType') {
                 this.checkArguments(s, container, new Map(), s.args, accept);
             } else {
-                const decl = container.type.ref.ref;
+                const decl = container.type?.ref?.ref;
                 if (decl) this.checkArguments(s, decl, substitutionFor(container.type), s.args, accept);
             }
         },
         ParentComponent: (p, accept) => {
-            const decl = p.type.ref.ref;
+            const decl = p.type?.ref?.ref;
             if (decl) this.checkArguments(p, decl, substitutionFor(p.type), p.args, accept);
         },
         ComponentTypeRef: (r, accept) => this.checkTypeArguments(r, accept),
@@ -109,7 +109,7 @@ export class InstantiationChecks {
     }
 
     private checkTypeArguments(r: ComponentTypeRef, accept: ValidationAcceptor): void {
-        const decl = r.ref.ref;
+        const decl = r.ref?.ref;
         if (!decl) return;
         const params = decl.typeParams;
         if (r.typeArgs.length === 0) {
@@ -130,7 +130,7 @@ export class InstantiationChecks {
     }
 
     private checkDataTypeArguments(r: ReferenceType, accept: ValidationAcceptor): void {
-        const decl = r.ref.ref;
+        const decl = r.ref?.ref;
         if (!decl || r.typeArgs.length === 0) return;
         const params = decl.$type === 'CDClass' ? decl.typeParams : [];
         this.checkArity(r, decl.name, params.length, r.typeArgs.length, accept);

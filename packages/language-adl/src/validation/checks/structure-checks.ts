@@ -3,7 +3,7 @@ import type { AdlAstType, ArcModel, ComponentType, PortDeclaration, Stereotype }
 import { isArcModel } from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import type { ModelRoots } from '../../model-roots.js';
-import { behaviorsOf, isComposed, parentsOf, subcomponentType, subcomponentsOf, timingsOf } from '../../components/component-model.js';
+import { behaviorsOf, isComposed, parentsOf, subcomponentType, subcomponentsOf, timingsOf, elementsOf } from '../../components/component-model.js';
 import { Codes } from '../codes.js';
 import type { NamedKind, ReservedNames } from '../reserved-names.js';
 
@@ -28,7 +28,7 @@ export class StructureChecks {
             this.checkInheritanceCycle(c, accept);
             this.checkSubcomponentCycle(c, accept);
             if (!isComposed(c)) {
-                for (const e of c.body.elements) {
+                for (const e of elementsOf(c)) {
                     if (e.$type === 'Connector') {
                         accept('warning', `Component '${c.name}' has no subcomponents, so connector '${e.$cstNode?.text ?? ''}' connects nothing; atomic components compute outputs in their behavior.`, { node: e, code: Codes.ConnectorInAtomic });
                     }
@@ -72,13 +72,13 @@ export class StructureChecks {
         const named: Array<{ node: AstNode & { name: string }; kind: NamedKind }> = [];
         const members: Array<{ node: AstNode & { name: string }; kind: NamedKind }> = [];
         for (const p of c.params) members.push({ node: p, kind: 'parameter' });
-        for (const e of c.body.elements) {
+        for (const e of elementsOf(c)) {
             if (e.$type === 'PortDeclaration') for (const g of e.groups) for (const p of g.ports) members.push({ node: p, kind: 'port' });
             if (e.$type === 'FieldDeclaration') for (const f of e.fields) members.push({ node: f, kind: 'field' });
         }
         for (const s of subcomponentsOf(c)) members.push({ node: s, kind: 'subcomponent' });
         const typeParams = c.typeParams.map((t) => ({ node: t, kind: 'typeParameter' as const }));
-        const innerTypes = c.body.elements.filter((e): e is ComponentType => e.$type === 'ComponentType').map((t) => ({ node: t, kind: 'component' as const }));
+        const innerTypes = elementsOf(c).filter((e): e is ComponentType => e.$type === 'ComponentType').map((t) => ({ node: t, kind: 'component' as const }));
         named.push(...members, ...typeParams);
         const isTop = isArcModel(c.$container);
         if (isTop) named.push({ node: c, kind: 'component' });
