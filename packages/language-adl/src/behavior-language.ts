@@ -1,4 +1,5 @@
 import type { AdlServices } from './adl-module.js';
+import type { DiagnosticCatalog } from './docs/diagnostic-catalog.js';
 
 /**
  * An embedded behavior language, as registered in a language family's configuration.
@@ -16,5 +17,7 @@ export interface BehaviorLanguage {
     readonly keyword: string;
     /** The `$type` of the AST node its block parses to, e.g. `Automaton`. */
     readonly astType: string;
+    /** The language's diagnostics with tested examples (rendered into docs/diagnostics.md). */
+    readonly diagnostics?: DiagnosticCatalog;
     register(services: AdlServices): void;
 }
