@@ -1,6 +1,6 @@
 import { AstUtils, type AstNode } from 'langium';
 import type {
-    BehaviorDeclaration, ComponentType, ComponentTypeRef, Port, PortGroup, Stereotype, Subcomponent
+    BehaviorDeclaration, ComponentType, ComponentTypeRef, MCType, Port, Stereotype, Subcomponent
 } from '../generated/ast.js';
 import { isComponentType } from '../generated/ast.js';
 import { bind, typeOfMCType } from '../types/type-resolver.js';
@@ -56,8 +56,18 @@ export function behaviorTiming(c: ComponentType): Timing | undefined {
     return undefined;
 }
 
-export function portGroupOf(port: Port): PortGroup {
-    return port.$container;
+/**
+ * Direction, type and stereotypes of a port: in `port in int a, b, out int c;` the port `b`
+ * has none of its own and takes those of `a`.
+ */
+export function portHeader(port: Port): { direction: 'in' | 'out'; type: MCType | undefined; stereotype?: Stereotype; declaration?: Stereotype } {
+    const decl = port.$container;
+    const ports = decl?.ports ?? [port];
+    for (let i = Math.max(ports.indexOf(port), 0); i >= 0; i--) {
+        const p = ports[i]!;
+        if (p.direction) return { direction: p.direction, type: p.type, stereotype: p.stereotype, declaration: decl?.stereotype };
+    }
+    return { direction: 'in', type: undefined, declaration: decl?.stereotype };
 }
 
 export function ownPorts(c: ComponentType, s: Substitution = EMPTY_SUBSTITUTION): PortInfo[] {
@@ -65,21 +75,19 @@ export function ownPorts(c: ComponentType, s: Substitution = EMPTY_SUBSTITUTION)
     const fromBehavior = behaviorTiming(c);
     for (const e of elementsOf(c)) {
         if (e.$type !== 'PortDeclaration') continue;
-        for (const g of e.groups) {
-            const declared = timingsOf(g.stereotype, e.stereotype)[0];
-            const delayed = stereotypeNames(g.stereotype, e.stereotype).includes('delayed');
-            for (const p of g.ports) {
-                result.push({
-                    port: p,
-                    name: p.name,
-                    direction: g.direction,
-                    type: typeOfMCType(g.type, s),
-                    timing: declared ?? fromBehavior ?? DEFAULT_TIMING,
-                    explicitTiming: declared !== undefined,
-                    delayed,
-                    owner: c
-                });
-            }
+        for (const p of e.ports) {
+            const h = portHeader(p);
+            const declared = timingsOf(h.stereotype, h.declaration)[0];
+            result.push({
+                port: p,
+                name: p.name,
+                direction: h.direction,
+                type: typeOfMCType(h.type, s),
+                timing: declared ?? fromBehavior ?? DEFAULT_TIMING,
+                explicitTiming: declared !== undefined,
+                delayed: stereotypeNames(h.stereotype, h.declaration).includes('delayed'),
+                owner: c
+            });
         }
     }
     return result;

@@ -1,8 +1,9 @@
 import type { AstNode } from 'langium';
 import type {
-    BinaryExpression, CallExpression, CDAttribute, CDClass, CDMethod, CDType, Expression, FieldAccessExpression, NameExpression
+    BinaryExpression, CallExpression, CDAttribute, CDClass, CDMethod, CDType, Expression, FieldAccessExpression, NameExpression, Port
 } from '../generated/ast.js';
-import { isCDClass, isFieldAccessExpression, isFieldDeclaration, isLocalVariableDeclaration, isPortGroup } from '../generated/ast.js';
+import { isCDClass, isFieldAccessExpression, isFieldDeclaration, isLocalVariableDeclaration } from '../generated/ast.js';
+import { portHeader } from '../components/component-model.js';
 import type { NameResolver } from '../scoping/name-resolver.js';
 import { bind, typeOfMCType } from './type-resolver.js';
 import type { TypeRelations } from './type-relations.js';
@@ -34,7 +35,7 @@ export class ExpressionTyper {
     typeOfNamed(node: AstNode): SymType {
         switch (node.$type) {
             case 'Port':
-                return isPortGroup(node.$container) ? typeOfMCType(node.$container.type) : ERROR_TYPE;
+                return typeOfMCType(portHeader(node as Port).type);
             case 'Field':
                 return isFieldDeclaration(node.$container) ? typeOfMCType(node.$container.type) : ERROR_TYPE;
             case 'Parameter':

@@ -133,10 +133,15 @@ export class TypeRelations {
     }
 
     directSupertypes(t: SymType): SymType[] {
-        if (t.kind !== 'object' || t.decl.$type !== 'CDClass') return [];
+        if (t.kind !== 'object') return [];
+        const object = this.objectType('java.lang.Object');
+        const isObject = object.kind === 'object' && object.decl === t.decl;
+        if (t.decl.$type !== 'CDClass') return isObject ? [] : [object];
         const cls: CDClass = t.decl;
         const subst = bind(cls.typeParams, t.args);
-        return [...cls.superTypes, ...cls.interfaces].map((r) => substitute(typeOfMCType(r), subst));
+        const declared = [...cls.superTypes, ...cls.interfaces].map((r) => substitute(typeOfMCType(r), subst));
+        // Every class without a superclass extends Object (methods such as equals come from there).
+        return cls.superTypes.length === 0 && !isObject ? [...declared, object] : declared;
     }
 
     equal(a: SymType, b: SymType): boolean {

@@ -3,7 +3,7 @@ import type { AdlAstType, ArcModel, ComponentType, PortDeclaration, Stereotype }
 import { isArcModel } from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import type { ModelRoots } from '../../model-roots.js';
-import { behaviorsOf, isComposed, parentsOf, subcomponentType, subcomponentsOf, timingsOf, elementsOf } from '../../components/component-model.js';
+import { behaviorsOf, isComposed, parentsOf, portHeader, subcomponentType, subcomponentsOf, timingsOf, elementsOf } from '../../components/component-model.js';
 import { Codes } from '../codes.js';
 import type { NamedKind, ReservedNames } from '../reserved-names.js';
 
@@ -73,7 +73,7 @@ export class StructureChecks {
         const members: Array<{ node: AstNode & { name: string }; kind: NamedKind }> = [];
         for (const p of c.params) members.push({ node: p, kind: 'parameter' });
         for (const e of elementsOf(c)) {
-            if (e.$type === 'PortDeclaration') for (const g of e.groups) for (const p of g.ports) members.push({ node: p, kind: 'port' });
+            if (e.$type === 'PortDeclaration') for (const p of e.ports) members.push({ node: p, kind: 'port' });
             if (e.$type === 'FieldDeclaration') for (const f of e.fields) members.push({ node: f, kind: 'field' });
         }
         for (const s of subcomponentsOf(c)) members.push({ node: s, kind: 'subcomponent' });
@@ -132,20 +132,23 @@ export class StructureChecks {
     }
 
     private checkPortStereotypes(d: PortDeclaration, accept: ValidationAcceptor): void {
-        for (const g of d.groups) {
-            const st = [d.stereotype, g.stereotype];
-            if (timingsOf(...st).length > 1) this.multipleTimings((g.stereotype ?? d.stereotype)!, `port${g.ports.length > 1 ? 's' : ''} ${g.ports.map((p) => `'${p.name}'`).join(', ')}`, accept);
-            if (g.direction === 'in') {
-                for (const s of st) {
+        if (timingsOf(d.stereotype).length > 1) this.multipleTimings(d.stereotype!, 'port declaration', accept);
+        for (const p of d.ports) {
+            if (timingsOf(p.stereotype).length > 1 || (p.stereotype && timingsOf(p.stereotype).length > 0 && timingsOf(d.stereotype).length > 0)) {
+                this.multipleTimings(p.stereotype!, `port '${p.name}'`, accept);
+            }
+            const h = portHeader(p);
+            if (h.direction === 'in' && p.direction) {
+                for (const s of [p.stereotype, p === d.ports[0] ? d.stereotype : undefined]) {
                     const v = s?.values.find((x) => x.name === 'delayed');
-                    if (v) accept('error', `Incoming port${g.ports.length > 1 ? 's' : ''} ${g.ports.map((p) => `'${p.name}'`).join(', ')} cannot be <<delayed>>; only outgoing ports delay their messages.`, { node: v, code: Codes.DelayedInPort });
+                    if (v) accept('error', `Incoming port '${p.name}' cannot be <<delayed>>; only outgoing ports delay their messages.`, { node: v, code: Codes.DelayedInPort });
                 }
             }
         }
     }
 
     private multipleTimings(s: Stereotype, what: string, accept: ValidationAcceptor): void {
-        accept('error', `The ${what} declare${what.startsWith('port') && what.includes(',') ? '' : 's'} more than one timing (${timingsOf(s).map((t) => `<<${t}>>`).join(', ')}).`, { node: s, code: Codes.MultipleTimings });
+        accept('error', `The ${what} declares more than one timing (${timingsOf(s).map((t) => `<<${t}>>`).join(', ')}).`, { node: s, code: Codes.MultipleTimings });
     }
 
     private checkInheritanceCycle(c: ComponentType, accept: ValidationAcceptor): void {

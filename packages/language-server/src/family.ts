@@ -1,0 +1,17 @@
+import type { DefaultSharedCoreModuleContext } from 'langium';
+import { createHostServices, type HostLanguageServices } from '@maa/language-adl';
+import { BEHAVIOR_LANGUAGES } from './generated/behavior-languages.js';
+import { ArcGeneratedModule, CdGeneratedModule, MaaGeneratedSharedModule } from './generated/module.js';
+
+/**
+ * The language family of this workbench: the host language (`.arc`), class diagrams (`.cd`)
+ * and every behavior language listed in this package's `maa.family` (package.json), composed
+ * into one grammar (one AST reflection) and one set of services with one shared scope.
+ */
+export function createMaaServices(context: DefaultSharedCoreModuleContext): HostLanguageServices {
+    return createHostServices(context, { shared: MaaGeneratedSharedModule, arc: ArcGeneratedModule, cd: CdGeneratedModule }, BEHAVIOR_LANGUAGES);
+}
+
+export function behaviorLanguages(): readonly string[] {
+    return BEHAVIOR_LANGUAGES.map((b) => b.name);
+}
