@@ -1,6 +1,6 @@
 /**
  * The stable diagnostic codes of the automaton language (ARCHITECTURE.md section 5). Codes are
- * released API: never rename one. DIAGNOSTICS.md documents each with examples.
+ * released API: never rename one. docs/diagnostics.md documents each with examples.
  */
 export const AutomatonCodes = {
     NoInitialState: 'automaton/no-initial-state',

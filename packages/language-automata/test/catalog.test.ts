@@ -3,7 +3,7 @@ import { AUTOMATON_DIAGNOSTICS, AutomatonCodes } from '../src/index.js';
 import { dump, validate } from './helpers.js';
 
 // Every documented diagnostic is checked on its invalid and its valid example, so the catalog
-// (DIAGNOSTICS.md and the generated docs/diagnostics.md) cannot drift from the checker.
+// (and docs/diagnostics.md, generated from it) cannot drift from the checker.
 describe.each(AUTOMATON_DIAGNOSTICS.entries.map((e) => [e.code, e] as const))('%s', (code, entry) => {
     test('is reported on the invalid example', async () => {
         const found = await validate(entry.invalid.files);
