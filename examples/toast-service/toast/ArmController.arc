@@ -5,5 +5,5 @@ import toast.types.*;
 /* Runs arm motion programs: fetch the bread into the toaster, deliver the toast to the plate. */
 <<handwritten>> component ArmController {
   port in ArmProgram cmd;
-  port out ArmStatus status;
+  port <<sync>> out ArmStatus status;
 }

@@ -4,5 +4,5 @@ import toast.types.*;
 
 /* Browning of the toast, classified by the color sensor above the toaster slot (platform component). */
 <<handwritten>> component ColorSensor {
-  port out ToastColor value;
+  port <<sync>> out ToastColor value;
 }

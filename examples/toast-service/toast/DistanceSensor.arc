@@ -1,6 +1,6 @@
 package toast;
 
-/* Distance to the next object in front of the robot, in millimetres (platform component). */
+/* Distance to the next object in front of the robot in millimetres, sampled once per time slice (platform component). */
 <<handwritten>> component DistanceSensor {
-  port out int value;
+  port <<sync>> out int value;
 }

@@ -22,7 +22,7 @@ export function registerCdChecks(services: AdlServices): void {
             }
             const seen = new Map<string, number>();
             for (const e of m.diagram.elements) {
-                if (e.$type === 'CDAssociation') continue;
+                if (e.$type === 'CDAssociation' || !e.name) continue;
                 seen.set(e.name, (seen.get(e.name) ?? 0) + 1);
                 if (seen.get(e.name) === 2) accept('error', `Class diagram '${m.diagram.name}' declares '${e.name}' more than once.`, { node: e, property: 'name', code: Codes.CdDuplicateName });
                 if (e.$type === 'CDEnum') {
