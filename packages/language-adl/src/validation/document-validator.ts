@@ -1,4 +1,4 @@
-import { DefaultDocumentValidator, DocumentValidator, type LangiumDocument, type ParseResult, type ValidationOptions } from 'langium';
+import { DefaultDocumentValidator, DocumentValidator, GrammarAST, type LangiumCoreServices, type LangiumDocument, type ParseResult, type ValidationOptions } from 'langium';
 import type { Diagnostic } from 'vscode-languageserver-types';
 import { Codes } from './codes.js';
 
@@ -15,6 +15,23 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
      */
     readonly linkCodes = new Map<string, { code: string; message: (name: string) => string }>();
 
+    /** Keywords that the composed `Name` rule admits as identifiers (not worth listing in messages). */
+    private readonly softKeywords: ReadonlySet<string>;
+
+    constructor(services: LangiumCoreServices) {
+        super(services);
+        const nameRule = services.Grammar.rules.find((r) => r.name === 'Name');
+        const keywords = new Set<string>();
+        if (nameRule && GrammarAST.isParserRule(nameRule)) {
+            const collect = (e: GrammarAST.AbstractElement): void => {
+                if (GrammarAST.isKeyword(e)) keywords.add(e.value);
+                else if (GrammarAST.isAlternatives(e)) e.elements.forEach(collect);
+            };
+            collect(nameRule.definition);
+        }
+        this.softKeywords = keywords;
+    }
+
     protected override processLexingErrors(parseResult: ParseResult, diagnostics: Diagnostic[], options: ValidationOptions): void {
         const start = diagnostics.length;
         super.processLexingErrors(parseResult, diagnostics, options);
@@ -27,7 +44,7 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
         for (let i = start; i < diagnostics.length; i++) {
             const d = diagnostics[i]!;
             const atEnd = /but found:? ?[`']{2}/.test(d.message);
-            d.message = concise(d.message, atEnd);
+            d.message = concise(d.message, atEnd, this.softKeywords);
             retag(d, atEnd ? Codes.SyntaxUnexpectedEnd : Codes.SyntaxUnexpected);
         }
     }
@@ -106,15 +123,16 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
  * Chevrotain lists every expected token sequence (dozens in a component body); users need the
  * unexpected token and the tokens that could start the text there.
  */
-function concise(message: string, atEnd: boolean): string {
+function concise(message: string, atEnd: boolean, softKeywords: ReadonlySet<string>): string {
     const found = /but found:? ?[`']([^`']*)[`']/.exec(message)?.[1];
     const firsts = [...message.matchAll(/^\s*\d+\. \[([^,\]]+)/gm)].map((m) => m[1]!.trim());
-    const expected = [...new Set(firsts)];
+    const expected = [...new Set(firsts)].filter((t) => !softKeywords.has(t));
     const what = atEnd ? 'Unexpected end of file' : `Unexpected '${found ?? '?'}'`;
     if (expected.length > 0) {
         const shown = expected.slice(0, 12).map((t) => (t === 'ID' ? 'a name' : `'${t}'`));
         return `${what}; expected ${shown.join(', ')}${expected.length > 12 ? ', ...' : ''}.`;
     }
+    if (/Expecting:? end of (file|input)|token of type '?EOF/i.test(message)) return `${what}; expected the end of the file (one top-level element per file).`;
     const single = /Expecting (?:token of type )?'?([^'\s]+)'?/.exec(message)?.[1];
     return single ? `${what}; expected ${single === 'ID' ? 'a name' : `'${single}'`}.` : message;
 }

@@ -1,0 +1,122 @@
+import { accessSync, constants, readFileSync, statSync, type Stats } from 'node:fs';
+import path from 'node:path';
+import type { RootSpec } from '@maa/language-server';
+import { CliError } from './errors.js';
+
+/** File extensions of model files (kept in line with the language family's file discovery). */
+export const MODEL_FILE_EXTENSIONS: readonly string[] = ['.arc', '.cd'];
+
+export function isModelFile(file: string): boolean {
+  return MODEL_FILE_EXTENSIONS.includes(path.extname(file));
+}
+
+/**
+ * Turns the path arguments of `check` into model roots.
+ *
+ * - A directory is an independent model root: all its model files are checked and reported.
+ * - A file is checked within its model root (see modelRootOfFile): every model file of that
+ *   root is loaded for scoping, but only the named files are reported.
+ *
+ * Roots keep the order of their first mention; a directory argument wins over file arguments in
+ * the same root. All problems with the arguments are collected into one CliError, one per line.
+ */
+export function resolveRoots(args: readonly string[], cwd: string): RootSpec[] {
+  const roots = new Map<string, { whole: boolean; files: string[] }>();
+  const problems: string[] = [];
+
+  for (const arg of args) {
+    const abs = path.resolve(cwd, arg);
+    const stats = statOrProblem(abs, arg, problems);
+    if (!stats) continue;
+    if (stats.isDirectory()) {
+      if (!readable(abs, constants.R_OK | constants.X_OK)) {
+        problems.push(`cannot read directory: ${arg} (permission denied)`);
+        continue;
+      }
+      const entry = roots.get(abs);
+      if (entry) {
+        entry.whole = true;
+        entry.files = [];
+      } else {
+        roots.set(abs, { whole: true, files: [] });
+      }
+    } else if (stats.isFile()) {
+      if (!isModelFile(abs)) {
+        problems.push(`not a model file (expected ${MODEL_FILE_EXTENSIONS.join(' or ')}): ${arg}`);
+        continue;
+      }
+      let text: string;
+      try {
+        text = readFileSync(abs, 'utf8');
+      } catch (e) {
+        problems.push(`cannot read file: ${arg} (${describe(e)})`);
+        continue;
+      }
+      const root = modelRootOfFile(abs, text);
+      const entry = roots.get(root);
+      if (!entry) {
+        roots.set(root, { whole: false, files: [abs] });
+      } else if (!entry.whole && !entry.files.includes(abs)) {
+        entry.files.push(abs);
+      }
+    } else {
+      problems.push(`not a file or directory: ${arg}`);
+    }
+  }
+
+  if (problems.length > 0) {
+    throw new CliError(problems.join('\n'));
+  }
+  return [...roots].map(([root, { whole, files }]) => (whole ? { root } : { root, files }));
+}
+
+function statOrProblem(abs: string, arg: string, problems: string[]): Stats | undefined {
+  try {
+    return statSync(abs);
+  } catch (e) {
+    const code = (e as NodeJS.ErrnoException).code;
+    if (code === 'ENOENT' || code === 'ENOTDIR') {
+      problems.push(`path not found: ${arg}`);
+    } else {
+      problems.push(`cannot access: ${arg} (${describe(e)})`);
+    }
+    return undefined;
+  }
+}
+
+function describe(e: unknown): string {
+  const code = (e as NodeJS.ErrnoException).code;
+  if (code === 'EACCES' || code === 'EPERM') return 'permission denied';
+  if (code === 'EISDIR') return 'is a directory';
+  return code ?? (e instanceof Error ? e.message : String(e));
+}
+
+/** `package a.b;` at the start of a model file (after comments), if any. */
+const PACKAGE_DECLARATION = /^\uFEFF?(?:\s|\/\/[^\n]*|\/\*[\s\S]*?\*\/)*package\s+([\p{L}_$][\p{L}\p{N}_$]*(?:\s*\.\s*[\p{L}_$][\p{L}\p{N}_$]*)*)\s*;/u;
+
+/**
+ * The model root of a single file: the folder that holds its package folders. For
+ * `models/toast/ctrl/Controller.arc` declaring `package toast.ctrl;` that is `models/`; for a
+ * file without a package declaration, or whose folders do not match its package, the file's
+ * own folder.
+ */
+export function modelRootOfFile(file: string, text: string): string {
+  const folder = path.dirname(file);
+  const declared = PACKAGE_DECLARATION.exec(text)?.[1];
+  if (!declared) return folder;
+  const segments = declared.split('.').map((s) => s.trim());
+  const folders = folder.split(path.sep);
+  if (segments.length >= folders.length) return folder;
+  const tail = folders.slice(folders.length - segments.length);
+  if (tail.some((f, i) => f !== segments[i])) return folder;
+  return folders.slice(0, folders.length - segments.length).join(path.sep) || path.sep;
+}
+
+function readable(abs: string, mode: number): boolean {
+  try {
+    accessSync(abs, mode);
+    return true;
+  } catch {
+    return false;
+  }
+}
