@@ -13,6 +13,21 @@ export interface HostLanguageServices {
     shared: AdlSharedServices;
     Arc: AdlServices;
     Cd: AdlServices;
+    /** The services of every further language of the family (e.g. `ra`), by language id. */
+    languages: ReadonlyMap<string, AdlServices>;
+}
+
+/**
+ * A further language of a family with its own files (e.g. standalone RobotArm `.ra`): it gets a
+ * service container of its own, with the host's scoping and typing, plus what `register` adds.
+ */
+export interface LanguageRegistration {
+    readonly languageId: string;
+    register(services: AdlServices): void;
+}
+
+export interface FamilyLanguage extends LanguageRegistration {
+    readonly generated: Module<LangiumCoreServices, LangiumGeneratedCoreServices>;
 }
 
 /** The Langium modules a composed grammar build generated (see @maa/grammar-composer). */
@@ -30,6 +45,7 @@ export function createHostServices(
     context: DefaultSharedCoreModuleContext,
     generated: GeneratedModules,
     behaviors: readonly BehaviorLanguage[],
+    languages: readonly FamilyLanguage[] = [],
     defaults: {
         shared: (ctx: DefaultSharedCoreModuleContext) => Module<LangiumSharedCoreServices, object>;
         language: (ctx: { shared: LangiumSharedCoreServices }) => Module<LangiumCoreServices, object>;
@@ -43,7 +59,14 @@ export function createHostServices(
     registerAdlChecks(Arc);
     registerCdChecks(Cd);
     for (const b of behaviors) b.register(Arc);
-    return { shared, Arc, Cd };
+    const others = new Map<string, AdlServices>();
+    for (const l of languages) {
+        const services = inject(defaults.language({ shared }) as Module<AdlServices, object>, l.generated, AdlModule) as AdlServices;
+        shared.ServiceRegistry.register(services);
+        l.register(services);
+        others.set(l.languageId, services);
+    }
+    return { shared, Arc, Cd, languages: others };
 }
 
 /** The host language alone (`compute`/`init` as the only behaviors): for this package's tests. */

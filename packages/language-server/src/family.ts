@@ -1,6 +1,6 @@
 import type { DefaultSharedCoreModuleContext } from 'langium';
 import { createHostServices, type HostLanguageServices } from '@maa/language-adl';
-import { BEHAVIOR_LANGUAGES } from './generated/behavior-languages.js';
+import { BEHAVIOR_LANGUAGES, FAMILY_LANGUAGES } from './generated/behavior-languages.js';
 import { ArcGeneratedModule, CdGeneratedModule, MaaGeneratedSharedModule } from './generated/module.js';
 
 /**
@@ -9,7 +9,7 @@ import { ArcGeneratedModule, CdGeneratedModule, MaaGeneratedSharedModule } from 
  * into one grammar (one AST reflection) and one set of services with one shared scope.
  */
 export function createMaaServices(context: DefaultSharedCoreModuleContext): HostLanguageServices {
-    return createHostServices(context, { shared: MaaGeneratedSharedModule, arc: ArcGeneratedModule, cd: CdGeneratedModule }, BEHAVIOR_LANGUAGES);
+    return createHostServices(context, { shared: MaaGeneratedSharedModule, arc: ArcGeneratedModule, cd: CdGeneratedModule }, BEHAVIOR_LANGUAGES, FAMILY_LANGUAGES);
 }
 
 export function behaviorLanguages(): readonly string[] {
