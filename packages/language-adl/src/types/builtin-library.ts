@@ -34,9 +34,10 @@ ${boxes.map(([box, prim, numeric]) =>
     String toUpperCase(); String toLowerCase(); String trim(); String concat(String other);
   }
   class Math {
-    static double abs(double a); static double sqrt(double a); static double pow(double a, double b);
+    static int abs(int a); static long abs(long a); static double abs(double a); static double sqrt(double a); static double pow(double a, double b);
     static double sin(double a); static double cos(double a); static double tan(double a);
-    static double atan2(double y, double x); static double min(double a, double b); static double max(double a, double b);
+    static double atan2(double y, double x); static int min(int a, int b); static int max(int a, int b);
+    static double min(double a, double b); static double max(double a, double b);
     static double floor(double a); static double ceil(double a); static long round(double a);
     static double toRadians(double deg); static double toDegrees(double rad);
   }

@@ -215,7 +215,7 @@ export class ExpressionTyper {
             }
         }
         if (!decl) return unresolved(p, fa, `${printType(recv)} has no method '${name}'`);
-        const method = this.method({ kind: 'object', decl, args }, name, argTypes.length);
+        const method = this.method({ kind: 'object', decl, args }, name, argTypes);
         if (method) {
             const { m, subst } = method;
             m.params.forEach((param, i) => {
@@ -233,20 +233,28 @@ export class ExpressionTyper {
         return unresolved(p, fa, `type ${decl.name} has no method '${name}' with ${argTypes.length} argument(s)`);
     }
 
-    private method(t: SymType, name: string, arity: number): { m: CDMethod; subst: ReadonlyMap<never, SymType> } | undefined {
+    /** The method a call selects: the first declared overload whose parameters accept the arguments, else the first of that arity. */
+    private method(t: SymType, name: string, argTypes: readonly SymType[]): { m: CDMethod; subst: ReadonlyMap<never, SymType> } | undefined {
         const seen = new Set<CDType>();
         const queue: SymType[] = [t];
+        let fallback: { m: CDMethod; subst: ReadonlyMap<never, SymType> } | undefined;
         while (queue.length > 0) {
             const cur = queue.shift()!;
             if (cur.kind !== 'object' || seen.has(cur.decl)) continue;
             seen.add(cur.decl);
             if (cur.decl.$type === 'CDClass') {
-                const m = cur.decl.members.find((x): x is CDMethod => x.$type === 'CDMethod' && x.name === name && x.params.length === arity);
-                if (m) return { m, subst: bind(cur.decl.typeParams, cur.args) as ReadonlyMap<never, SymType> };
+                const subst = bind(cur.decl.typeParams, cur.args) as ReadonlyMap<never, SymType>;
+                const candidates = cur.decl.members.filter((x): x is CDMethod => x.$type === 'CDMethod' && x.name === name && x.params.length === argTypes.length);
+                const fitting = candidates.find((m) => m.params.every((p, i) => {
+                    const pt = substitute(typeOfMCType(p.type), subst);
+                    return pt.kind === 'typevar' || this.rel.isAssignable(pt, argTypes[i]!);
+                }));
+                if (fitting) return { m: fitting, subst };
+                if (candidates[0]) fallback ??= { m: candidates[0], subst };
             }
             queue.push(...this.rel.directSupertypes(cur));
         }
-        return undefined;
+        return fallback;
     }
 
     private attribute(decl: CDType, name: string): CDAttribute | undefined {
