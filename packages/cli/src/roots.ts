@@ -4,7 +4,7 @@ import type { RootSpec } from '@maa/language-server';
 import { CliError } from './errors.js';
 
 /** File extensions of model files (kept in line with the language family's file discovery). */
-export const MODEL_FILE_EXTENSIONS: readonly string[] = ['.arc', '.cd'];
+export const MODEL_FILE_EXTENSIONS: readonly string[] = ['.arc', '.cd', '.ra'];
 
 export function isModelFile(file: string): boolean {
   return MODEL_FILE_EXTENSIONS.includes(path.extname(file));

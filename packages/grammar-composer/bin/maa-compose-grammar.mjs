@@ -145,7 +145,8 @@ function main() {
         // Production mode: the parser must not print its ambiguity reports (Tick as a soft
         // keyword is one, resolved as intended) into the output of tools such as `maa-gen --format json`.
         mode: 'production',
-        languages: languages.map((l) => ({ ...l, grammar: basename(l.grammar) })),
+        // `export` is ours (the registration object), not langium-cli's: its schema rejects it.
+        languages: languages.map(({ export: _export, ...l }) => ({ ...l, grammar: basename(l.grammar) })),
         out: relative(buildDir, outDir)
     };
     writeFileSync(join(buildDir, 'langium-config.json'), JSON.stringify(config, null, 2) + '\n');
