@@ -2,27 +2,26 @@ package toast;
 
 import toast.types.*;
 
-/* Decides when to fetch bread, when the toast is done and when to deliver it. */
+/* Decides when to load bread, when the toast is done and when to serve it. */
 component Controller(int threshold = 30) {
   port in int distance,
        in ToastColor color,
        in ArmStatus armStatus,
-       out ToasterCmd toaster,
+       <<delayed>> out ToasterCmd toaster,
        <<delayed>> out ArmProgram arm;
 
-  int cycles = 0;
+  int served = 0;
 
   <<sync>> automaton {
     initial { toaster = ToasterCmd.STOP; arm = ArmProgram.NONE; } state Idle;
-    state Fetching;
-    state Toasting {
-      entry / { cycles++; }
-    };
-    state Delivering;
+    state Loading;
+    state Toasting;
+    state Serving;
 
-    Idle -> Fetching [distance < threshold] / { arm = ArmProgram.FETCH; };
-    Fetching -> Toasting [armStatus == ArmStatus.DONE] / { toaster = ToasterCmd.START; arm = ArmProgram.NONE; };
-    Toasting -> Delivering [color == ToastColor.GOLDEN] / { toaster = ToasterCmd.STOP; arm = ArmProgram.DELIVER; };
-    Delivering -> Idle [armStatus == ArmStatus.DONE] / { arm = ArmProgram.NONE; };
+    // A plate closer than `threshold` millimetres asks for toast.
+    Idle -> Loading [distance < threshold] / { arm = ArmProgram.LOAD_BREAD; };
+    Loading -> Toasting [armStatus == ArmStatus.DONE] / { toaster = ToasterCmd.START; };
+    Toasting -> Serving [color == ToastColor.GOLDEN] / { toaster = ToasterCmd.STOP; arm = ArmProgram.PICKUP_AND_DEPLOY; };
+    Serving -> Idle [armStatus == ArmStatus.DONE] / { served++; };
   }
 }

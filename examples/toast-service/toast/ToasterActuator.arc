@@ -1,8 +1,6 @@
 package toast;
 
-import toast.types.*;
-
-/* Pushes or releases the toaster lever (platform component). */
+/* Pushes the toaster lever down or releases it (platform component). */
 <<handwritten>> component ToasterActuator {
-  port in ToasterCmd cmd;
+  port <<sync>> in boolean leverDown;
 }

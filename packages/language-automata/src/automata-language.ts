@@ -5,6 +5,8 @@ import {
 import { allStates, enclosingAutomaton } from './automaton-model.js';
 import { AutomatonChecks } from './automaton-checks.js';
 import { AutomatonCodes } from './codes.js';
+import { AUTOMATON_DIAGNOSTICS } from './docs/automaton-diagnostics.js';
+import { registerAutomatonLsp } from './lsp/automaton-lsp.js';
 
 /**
  * The automaton language as registered in a language family: the `automaton { }` block
@@ -20,6 +22,7 @@ export const AutomataLanguage: BehaviorLanguage = {
     name: 'automaton',
     keyword: 'automaton',
     astType: 'Automaton',
+    diagnostics: AUTOMATON_DIAGNOSTICS,
     register(services: AdlServices): void {
         const scopes = services.references.ScopeProvider as AdlScopeProvider;
         const states = (ctx: ReferenceInfo): Scope => scopes.nodes(() => {
@@ -48,7 +51,8 @@ export const AutomataLanguage: BehaviorLanguage = {
 
         const checks = new AutomatonChecks(services);
         services.validation.ValidationRegistry.register(checks.checks, checks);
-    }
+    },
+    registerLsp: registerAutomatonLsp
 };
 
 /** The incoming ports of the component that encloses a node, inherited ones included. */

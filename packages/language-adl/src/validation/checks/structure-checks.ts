@@ -1,5 +1,5 @@
 import { AstUtils, type AstNode, type ValidationAcceptor, type ValidationChecks } from 'langium';
-import type { AdlAstType, ArcModel, ComponentType, PortDeclaration, Stereotype } from '../../generated/ast.js';
+import type { AdlAstType, ArcModel, BehaviorDeclaration, ComponentType, PortDeclaration, Stereotype } from '../../generated/ast.js';
 import { isArcModel } from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import type { ModelRoots } from '../../model-roots.js';
@@ -124,7 +124,7 @@ export class StructureChecks {
     private checkBehaviors(c: ComponentType, accept: ValidationAcceptor): void {
         const behaviors = behaviorsOf(c).filter((b) => b.behavior?.$type !== 'InitBlock');
         if (behaviors.length > 1) {
-            const kinds = behaviors.map((b) => behaviorName(b.behavior?.$type));
+            const kinds = behaviors.map((b) => behaviorName(b));
             for (const b of behaviors.slice(1)) {
                 accept('error', `Component '${c.name}' has more than one behavior (${kinds.join(', ')}); an atomic component has at most one.`, { node: b, code: Codes.MultipleBehaviors });
             }
@@ -202,11 +202,7 @@ function describe(kind: NamedKind): string {
     return kind === 'typeParameter' ? 'type parameter' : kind;
 }
 
-function behaviorName(type: string | undefined): string {
-    switch (type) {
-        case 'ComputeBlock': return 'compute';
-        case 'Automaton': return 'automaton';
-        case 'RobotArm': return 'robotarm';
-        default: return type ?? 'behavior';
-    }
+/** A behavior's name as written: the keyword that opens its block (`compute`, `automaton`, ...). */
+function behaviorName(b: BehaviorDeclaration): string {
+    return /^[A-Za-z_]\w*/.exec(b.behavior?.$cstNode?.text ?? '')?.[0] ?? b.behavior?.$type ?? 'behavior';
 }
