@@ -1,26 +1,10 @@
-import { describe, expect, test } from 'vitest';
-import { AUTOMATON_DIAGNOSTICS, AutomatonCodes } from '../src/index.js';
-import { dump, validate } from './helpers.js';
+import { expect, test } from 'vitest';
+import { describeCatalog } from '@maa/language-adl/testing';
+import { AUTOMATON_DIAGNOSTICS, AutomataLanguage, AutomatonCodes } from '../src/index.js';
+import { validate } from './helpers.js';
 
-// Every documented diagnostic is checked on its invalid and its valid example, so the catalog
-// (and docs/diagnostics.md, generated from it) cannot drift from the checker.
-describe.each(AUTOMATON_DIAGNOSTICS.entries.map((e) => [e.code, e] as const))('%s', (code, entry) => {
-    test('is reported on the invalid example', async () => {
-        const found = await validate(entry.invalid.files);
-        const hits = found.filter((f) => f.code === code);
-        expect(hits, dump(found)).not.toHaveLength(0);
-        expect(hits.map((h) => h.severity)).toContain(entry.severity);
-        if (entry.invalid.at !== undefined) expect(hits.map((h) => h.text)).toContain(entry.invalid.at);
-        // The invalid example shows this one problem only.
-        expect(found.filter((f) => f.code !== code), dump(found)).toEqual([]);
-    });
-    test('is not reported on the valid example, which has no diagnostics at all', async () => {
-        const found = await validate(entry.valid.files);
-        expect(found, dump(found)).toEqual([]);
-    });
-});
+describeCatalog(AUTOMATON_DIAGNOSTICS, validate, { strict: true, codes: Object.values(AutomatonCodes) });
 
-test('every automaton code is documented', () => {
-    const documented = new Set(AUTOMATON_DIAGNOSTICS.entries.map((e) => e.code));
-    for (const code of Object.values(AutomatonCodes)) expect(documented).toContain(code);
+test('the catalog is part of the registration, so docs/diagnostics.md includes it', () => {
+    expect(AutomataLanguage.diagnostics).toBe(AUTOMATON_DIAGNOSTICS);
 });

@@ -1,61 +1,28 @@
-import { URI, type LangiumDocument } from 'langium';
-import { builtinDocuments, type HostLanguageServices } from '@maa/language-adl';
+import type { LangiumDocument, URI } from 'langium';
+import type { HostLanguageServices } from '@maa/language-adl';
+import { ModelTestBench, type Finding } from '@maa/language-adl/testing';
 import { createAutomataServices } from '../src/index.js';
 
-export interface Finding {
-    file: string;
-    code: string;
-    severity: 'error' | 'warning' | 'info' | 'hint';
-    /** The source text the diagnostic covers. */
-    text: string;
-    message: string;
-    line: number;
-}
+export { dump, hits, type Finding } from '@maa/language-adl/testing';
 
-let shared: HostLanguageServices | undefined;
+const bench = new ModelTestBench(() => createAutomataServices(), 'automata');
 
 /** One set of services for a test file (building the parser is the expensive part). */
 export function services(): HostLanguageServices {
-    return (shared ??= createAutomataServices());
+    return bench.host;
 }
 
-let counter = 0;
-
 /** Builds a model root given as files (path relative to the root -> text) and returns its documents. */
-export async function build(files: Readonly<Record<string, string>>): Promise<{ root: URI; docs: LangiumDocument[] }> {
-    const s = services();
-    const root = URI.file(`/automata-test-${++counter}`);
-    s.shared.maa.ModelRoots.setRoots([root]);
-    const docs = Object.entries(files).map(([path, text]) =>
-        s.shared.workspace.LangiumDocuments.createDocument(URI.file(`${root.path}/${path}`), text));
-    await s.shared.workspace.DocumentBuilder.build([...builtinDocuments(s.shared), ...docs], { validation: true });
-    return { root, docs };
+export function build(files: Readonly<Record<string, string>>): Promise<{ root: URI; docs: LangiumDocument[] }> {
+    return bench.build(files);
 }
 
 /** Validates a model root and returns every diagnostic with the text it covers. */
-export async function validate(files: Readonly<Record<string, string>>): Promise<Finding[]> {
-    const { root, docs } = await build(files);
-    const severities = ['error', 'warning', 'info', 'hint'] as const;
-    return docs.flatMap((doc) => (doc.diagnostics ?? []).map((d) => ({
-        file: doc.uri.path.substring(root.path.length + 1),
-        code: String(d.code),
-        severity: severities[(d.severity ?? 1) - 1]!,
-        text: doc.textDocument.getText(d.range),
-        message: d.message,
-        line: d.range.start.line + 1
-    })));
+export function validate(files: Readonly<Record<string, string>>): Promise<Finding[]> {
+    return bench.validate(files);
 }
 
 /** A component `Comp` in `Comp.arc` with the given body. */
 export function comp(body: string, header = ''): Record<string, string> {
     return { 'Comp.arc': `component Comp${header} {\n${body}\n}\n` };
-}
-
-/** The findings with one of the given codes, as `code@text` strings. */
-export function hits(found: Finding[], ...codes: string[]): string[] {
-    return found.filter((f) => codes.includes(f.code)).map((f) => `${f.code}@${f.text}`);
-}
-
-export function dump(found: Finding[]): string {
-    return JSON.stringify(found, null, 1);
 }

@@ -1,0 +1,3 @@
+// Test support for the language packages (`@maa/language-adl/testing`); imports Vitest.
+export * from './model-validation.js';
+export * from './catalog-tests.js';
