@@ -10,7 +10,7 @@ component ArmController {
        <<sync>> out ArmStatus status;
 
   robotarm {
-    location breadbox 60deg 5cm;
+    location breadbox 0deg 7cm;
     location toaster 120deg 20cm;
 
     // Takes a slice of bread from the bread box and puts it into the toaster slot.

@@ -18,7 +18,7 @@ component Controller(int threshold = 30) {
     state Toasting;
     state Serving;
 
-    // A plate closer than `threshold` millimetres asks for toast.
+    // A slice of bread in the holder (closer than `threshold` millimetres to the distance sensor) starts the service.
     Idle -> Loading [distance < threshold] / { arm = ArmProgram.LOAD_BREAD; };
     Loading -> Toasting [armStatus == ArmStatus.DONE] / { toaster = ToasterCmd.START; };
     Toasting -> Serving [color == ToastColor.GOLDEN] / { toaster = ToasterCmd.STOP; arm = ArmProgram.PICKUP_AND_DEPLOY; };

@@ -1,6 +1,6 @@
 package toast;
 
-/* Distance to the next object in front of the robot in millimetres, sampled once per time slice (platform component). */
+/* Distance from the sensor at the bread holder to the next object in millimetres, sampled once per time slice (platform component). */
 <<handwritten>> component DistanceSensor {
   port <<sync>> out int value;
 }
