@@ -14,7 +14,9 @@ component ToasterController(int maxSlices = 600) {
     state On {
       entry / { slices = 0; leverDown = true; }
       exit / { leverDown = false; }
-      -> [slices < maxSlices] / { slices++; };
+      // (MontiArc fires the first enabled transition in declaration order: this internal
+      // transition must not shadow On -> Off on STOP below.)
+      -> [cmd != ToasterCmd.STOP && slices < maxSlices] / { slices++; };
     };
 
     Off -> On [cmd == ToasterCmd.START];

@@ -139,3 +139,27 @@ export function generateModels(root, components) {
   }
   return { root, files, lines, atomic: atomicCount, composed: composedCount, editable };
 }
+
+/**
+ * A top component `robot.System` instantiating every component type of a generated root, with
+ * the subcomponents' inputs fed from its own ports; returns the number of component types.
+ */
+export function writeSystemComponent(root, gen) {
+  const types = gen.files.filter((f) => f.endsWith('.arc')).map((f) => path.relative(root, f).replace(/\.arc$/, '').split(path.sep).join('.'));
+  const lines = ['package robot;', '', 'import types.Types.*;', '', 'component System {'];
+  const portTypes = (f) => ['int', 'double', 'boolean', `Mode${f}`, `Data${f}`];
+  for (let f = 0; f < 5; f++) portTypes(f).forEach((t, i) => lines.push(`  port in ${t} i${i}_${f};`));
+  const byFamily = [[], [], [], [], []];
+  types.forEach((qn, k) => {
+    const p = Number(/\.p(\d+)\./.exec(qn)[1]);
+    lines.push(`  ${qn} x${k};`);
+    byFamily[p % 5].push(`x${k}`);
+  });
+  for (let f = 0; f < 5; f++) {
+    if (byFamily[f].length === 0) continue;
+    for (let i = 0; i < 5; i++) lines.push(`  i${i}_${f} -> ${byFamily[f].map((x) => `${x}.i${i}`).join(', ')};`);
+  }
+  lines.push('}', '');
+  writeFileSync(path.join(root, 'robot', 'System.arc'), lines.join('\n'));
+  return types.length + 1;
+}

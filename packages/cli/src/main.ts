@@ -1,10 +1,16 @@
 import { Command, CommanderError } from 'commander';
 import { checkCommand } from './commands/check.js';
+import { generateCommand } from './commands/generate.js';
+import { generatorsCommand } from './commands/generators.js';
+import { testCommand } from './commands/test.js';
 import { CliError, ExitCode } from './errors.js';
 import { processIo, type CliIo } from './io.js';
 import { cliVersion } from './version.js';
 
 export { runCheck, type CheckOptions, type CheckFormat } from './commands/check.js';
+export { runGenerate, type GenerateCommandOptions, type GenerateFormat } from './commands/generate.js';
+export { runGenerators, type GeneratorsCommandOptions } from './commands/generators.js';
+export { runTest, type TestCommandOptions } from './commands/test.js';
 export { ExitCode, CliError } from './errors.js';
 export type { CliIo } from './io.js';
 
@@ -18,6 +24,9 @@ export function createProgram(io: CliIo, setExitCode: (code: ExitCode) => void):
     .configureOutput({ writeOut: (s) => io.out(s), writeErr: (s) => io.err(s) })
     .exitOverride();
   program.addCommand(checkCommand(io, setExitCode));
+  program.addCommand(generateCommand(io, setExitCode));
+  program.addCommand(generatorsCommand(io, setExitCode));
+  program.addCommand(testCommand(io, setExitCode));
   // Subcommands added with addCommand do not inherit these settings.
   for (const sub of program.commands) {
     sub

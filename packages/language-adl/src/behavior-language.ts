@@ -1,5 +1,6 @@
 import type { AdlServices } from './adl-module.js';
 import type { DiagnosticCatalog } from './docs/diagnostic-catalog.js';
+import type { AdlLspServices } from './lsp/lsp-module.js';
 
 /**
  * An embedded behavior language, as registered in a language family's configuration.
@@ -20,4 +21,18 @@ export interface BehaviorLanguage {
     /** The language's diagnostics with tested examples (rendered into docs/diagnostics.md). */
     readonly diagnostics?: DiagnosticCatalog;
     register(services: AdlServices): void;
+    /**
+     * LSP hook, called by language servers only (after `register`) with the LSP services of the
+     * host language `arc`, whose providers carry registries for the language's node types:
+     * - `lsp.Formatter.rules`: `$type` -> formatting rule (helpers `elementBlock`, `statementBlock`, `list`);
+     * - `lsp.SemanticTokenProvider.styles`: `$type` -> token of its declarations and of every reference to them;
+     * - `lsp.DocumentSymbolProvider.contributions`: `$type` -> outline entry (or `'skip'`);
+     * - `shared.lsp.NodeKindProvider.kinds`: `$type` -> outline and completion icon;
+     * - `lsp.HoverProvider.contributions`: `$type` -> Markdown;
+     * - `lsp.CompletionProvider.contributions`: extra completion per expected grammar feature;
+     * - `lsp.CodeActionProvider.register(code, fix)`: quick fixes for the language's diagnostic codes.
+     * Scopes registered in `register` already give completion, go-to-definition, references and
+     * rename for the language's cross-references; nothing in language-adl changes per language.
+     */
+    registerLsp?(services: AdlLspServices): void;
 }

@@ -18,3 +18,4 @@ export * from './workspace/root-checker.js';
 export * as ast from './generated/ast.js';
 export * from './docs/diagnostic-catalog.js';
 export * from './docs/adl-diagnostics.js';
+export * from './lsp/index.js';

@@ -6,6 +6,7 @@ import {
 import { AdlGeneratedSharedModule, ArcGeneratedModule, CdGeneratedModule } from './generated/module.js';
 import { AdlModule, AdlSharedModule, type AdlServices, type AdlSharedServices } from './adl-module.js';
 import type { BehaviorLanguage } from './behavior-language.js';
+import type { AdlLspServices } from './lsp/lsp-module.js';
 import { registerAdlChecks } from './validation/adl-validator.js';
 import { registerCdChecks } from './validation/cd-validator.js';
 
@@ -24,6 +25,13 @@ export interface HostLanguageServices {
 export interface LanguageRegistration {
     readonly languageId: string;
     register(services: AdlServices): void;
+    /** The language's diagnostics with tested examples (rendered into docs/diagnostics.md). */
+    readonly diagnostics?: import('./docs/diagnostic-catalog.js').DiagnosticCatalog;
+    /**
+     * Installs the language's LSP contributions into its own service container (called only by
+     * language servers, after `register`); see `BehaviorLanguage.registerLsp` for the registries.
+     */
+    registerLsp?(services: AdlLspServices): void;
 }
 
 export interface FamilyLanguage extends LanguageRegistration {
@@ -38,22 +46,35 @@ export interface GeneratedModules {
 }
 
 /**
+ * The Langium modules a family's services start from (core defaults for tools, LSP defaults for
+ * language servers) and further modules injected after the host's own ones.
+ */
+export interface HostServiceDefaults {
+    shared: (ctx: DefaultSharedCoreModuleContext) => Module<LangiumSharedCoreServices, object>;
+    language: (ctx: { shared: LangiumSharedCoreServices }) => Module<LangiumCoreServices, object>;
+    /** Injected after AdlSharedModule (e.g. language-adl's AdlLspSharedModule). */
+    sharedModules?: ReadonlyArray<Module<AdlSharedServices, object>>;
+    /** Injected after AdlModule into every language of the family (e.g. AdlLspModule). */
+    languageModules?: ReadonlyArray<Module<AdlServices, object>>;
+}
+
+/**
  * Creates the services of the host languages (`arc`, `cd`) for a composed grammar build and
- * installs the given behavior languages. Front ends with LSP pass the LSP default modules.
+ * installs the given behavior languages. Language servers use createHostLspServices (lsp/),
+ * which passes Langium's LSP defaults and the host's LSP modules.
  */
 export function createHostServices(
     context: DefaultSharedCoreModuleContext,
     generated: GeneratedModules,
     behaviors: readonly BehaviorLanguage[],
     languages: readonly FamilyLanguage[] = [],
-    defaults: {
-        shared: (ctx: DefaultSharedCoreModuleContext) => Module<LangiumSharedCoreServices, object>;
-        language: (ctx: { shared: LangiumSharedCoreServices }) => Module<LangiumCoreServices, object>;
-    } = { shared: createDefaultSharedCoreModule, language: createDefaultCoreModule }
+    defaults: HostServiceDefaults = { shared: createDefaultSharedCoreModule, language: createDefaultCoreModule }
 ): HostLanguageServices {
-    const shared = inject(defaults.shared(context) as Module<AdlSharedServices, object>, generated.shared, AdlSharedModule) as AdlSharedServices;
-    const Arc = inject(defaults.language({ shared }) as Module<AdlServices, object>, generated.arc, AdlModule) as AdlServices;
-    const Cd = inject(defaults.language({ shared }) as Module<AdlServices, object>, generated.cd, AdlModule) as AdlServices;
+    const sharedExtra = defaults.sharedModules ?? [];
+    const languageExtra = defaults.languageModules ?? [];
+    const shared = inject(defaults.shared(context) as Module<AdlSharedServices, object>, generated.shared, AdlSharedModule, ...sharedExtra) as AdlSharedServices;
+    const Arc = inject(defaults.language({ shared }) as Module<AdlServices, object>, generated.arc, AdlModule, ...languageExtra) as AdlServices;
+    const Cd = inject(defaults.language({ shared }) as Module<AdlServices, object>, generated.cd, AdlModule, ...languageExtra) as AdlServices;
     shared.ServiceRegistry.register(Arc);
     shared.ServiceRegistry.register(Cd);
     registerAdlChecks(Arc);
@@ -61,7 +82,7 @@ export function createHostServices(
     for (const b of behaviors) b.register(Arc);
     const others = new Map<string, AdlServices>();
     for (const l of languages) {
-        const services = inject(defaults.language({ shared }) as Module<AdlServices, object>, l.generated, AdlModule) as AdlServices;
+        const services = inject(defaults.language({ shared }) as Module<AdlServices, object>, l.generated, AdlModule, ...languageExtra) as AdlServices;
         shared.ServiceRegistry.register(services);
         l.register(services);
         others.set(l.languageId, services);

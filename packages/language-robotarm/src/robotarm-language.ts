@@ -6,6 +6,7 @@ import { ROBOTARM_DIAGNOSTICS } from './docs/robotarm-diagnostics.js';
 import { RobotArmChecks } from './robotarm-checks.js';
 import { enclosingRobotArm, moveTargetsOf } from './robotarm-model.js';
 import { RobotArmCodes } from './codes.js';
+import { registerRobotArmLsp } from './lsp/robotarm-lsp.js';
 
 /** The reference `move x` of a `MoveArgument` (scope and link-code key: `ContainerType.property`). */
 const MOVE_TARGET = 'MoveArgument.target';
@@ -39,7 +40,8 @@ export const RobotArmLanguage: BehaviorLanguage = {
     diagnostics: ROBOTARM_DIAGNOSTICS,
     register(services: AdlServices): void {
         install(services, (name) => `'${name}' is neither a location of this robotarm block, nor a constant ('top', 'bottom'), nor an incoming port of the component.`);
-    }
+    },
+    registerLsp: registerRobotArmLsp
 };
 
 /**
@@ -50,5 +52,6 @@ export const RobotArmFileLanguage: LanguageRegistration = {
     languageId: 'ra',
     register(services: AdlServices): void {
         install(services, (name) => `'${name}' is neither a location nor an input of this robot arm, nor a constant ('top', 'bottom').`);
-    }
+    },
+    registerLsp: registerRobotArmLsp
 };

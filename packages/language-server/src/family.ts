@@ -1,5 +1,6 @@
 import type { DefaultSharedCoreModuleContext } from 'langium';
-import { createHostServices, type HostLanguageServices } from '@maa/language-adl';
+import type { DefaultSharedModuleContext } from 'langium/lsp';
+import { createHostLspServices, createHostServices, type HostLanguageServices, type HostLspServices } from '@maa/language-adl';
 import { BEHAVIOR_LANGUAGES, FAMILY_LANGUAGES } from './generated/behavior-languages.js';
 import { ArcGeneratedModule, CdGeneratedModule, MaaGeneratedSharedModule } from './generated/module.js';
 
@@ -10,6 +11,15 @@ import { ArcGeneratedModule, CdGeneratedModule, MaaGeneratedSharedModule } from 
  */
 export function createMaaServices(context: DefaultSharedCoreModuleContext): HostLanguageServices {
     return createHostServices(context, { shared: MaaGeneratedSharedModule, arc: ArcGeneratedModule, cd: CdGeneratedModule }, BEHAVIOR_LANGUAGES, FAMILY_LANGUAGES);
+}
+
+/**
+ * The same family with the language-server services (Langium's LSP defaults and the host's
+ * AdlLspModule, plus every registered language's `registerLsp` contributions): for the node and
+ * browser entry points and for tests of LSP features. Model roots come from the workspace folders.
+ */
+export function createMaaLspServices(context: DefaultSharedModuleContext): HostLspServices {
+    return createHostLspServices(context, { shared: MaaGeneratedSharedModule, arc: ArcGeneratedModule, cd: CdGeneratedModule }, BEHAVIOR_LANGUAGES, FAMILY_LANGUAGES);
 }
 
 export function behaviorLanguages(): readonly string[] {

@@ -1,9 +1,14 @@
 import { ADL_DIAGNOSTICS, type CatalogEntry, type DiagnosticCatalog, type DiagnosticExample } from '@maa/language-adl';
-import { BEHAVIOR_LANGUAGES } from '../generated/behavior-languages.js';
+import { BEHAVIOR_LANGUAGES, FAMILY_LANGUAGES } from '../generated/behavior-languages.js';
 
 /** The diagnostic catalogs of every language of the family, host first. */
 export function familyDiagnostics(): DiagnosticCatalog[] {
-    return [ADL_DIAGNOSTICS, ...BEHAVIOR_LANGUAGES.flatMap((b) => (b.diagnostics ? [b.diagnostics] : []))];
+    return [
+        ADL_DIAGNOSTICS,
+        ...BEHAVIOR_LANGUAGES.flatMap((b) => (b.diagnostics ? [b.diagnostics] : [])),
+        // Languages with their own files (e.g. `.arcapp`), unless a behavior language already brought the catalog.
+        ...FAMILY_LANGUAGES.flatMap((l) => (l.diagnostics && !BEHAVIOR_LANGUAGES.some((b) => b.diagnostics === l.diagnostics) ? [l.diagnostics] : []))
+    ];
 }
 
 /** docs/diagnostics.md: every code with its rule, severity and a tested invalid and valid example. */

@@ -1,0 +1,181 @@
+import { statSync } from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { Command, Option } from 'commander';
+import type { CheckDiagnostic } from '@maa/language-server';
+import { CliError, ExitCode } from '../errors.js';
+import { displayPath, formatDiagnosticsText } from '../format/text.js';
+import type { CliIo } from '../io.js';
+import { createProgress } from '../progress.js';
+
+export type GenerateFormat = 'text' | 'json';
+
+export interface GenerateCommandOptions {
+  platform?: string[];
+  out?: string;
+  root?: string;
+  format: GenerateFormat;
+}
+
+/** The folder of this CLI's package: generators installed next to maa-gen are found too. */
+function installationDir(): string {
+  return path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+}
+
+/**
+ * `maa-gen generate APP.arcapp [--platform P]... [--out DIR] [--root DIR]`: generates code for
+ * the platforms of an application configuration. Exit 0 when generated (warnings allowed),
+ * 1 when checks or a generator failed (nothing is written then); usage and I/O problems throw.
+ */
+export async function runGenerate(appArg: string, options: GenerateCommandOptions, io: CliIo): Promise<ExitCode> {
+  const appFile = path.resolve(io.cwd, appArg);
+  let isFile = false;
+  try {
+    isFile = statSync(appFile).isFile();
+  } catch {
+    throw new CliError(`path not found: ${appArg}`);
+  }
+  if (!isFile) throw new CliError(`not a file: ${appArg}`);
+  if (path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
+  const root = options.root ? path.resolve(io.cwd, options.root) : path.dirname(appFile);
+  if (options.root) {
+    let dir = false;
+    try {
+      dir = statSync(root).isDirectory();
+    } catch {
+      dir = false;
+    }
+    if (!dir) throw new CliError(`model root not found: ${options.root}`);
+  }
+  const outDir = path.resolve(io.cwd, options.out ?? path.join(path.dirname(appFile), 'generated'));
+  const json = options.format === 'json';
+  const progress = createProgress(io);
+  // Per-generator lines are part of the text report (stderr), not just progress.
+  const report = (line: string): void => {
+    if (json) return;
+    progress?.done();
+    io.err(`${line}\n`);
+  };
+
+  let result;
+  try {
+    progress?.update('loading the language services');
+    // Loaded on demand, so that --help and usage errors stay fast.
+    const [{ createMaaServices }, { generate, GenerateInputError }, { NodeFileSystem }] = await Promise.all([
+      import('@maa/language-server'),
+      import('@maa/generator-core/node'),
+      import('langium/node'),
+    ]);
+    try {
+      result = await generate({
+        services: createMaaServices(NodeFileSystem),
+        appFile,
+        modelRoot: root,
+        platforms: options.platform,
+        outDir,
+        discoveryRoots: [installationDir()],
+        onProgress: (p) => {
+          if (p.phase === 'generate' && p.files !== undefined) report(`${p.message}`);
+          else progress?.update(p.message);
+        },
+      });
+    } catch (e) {
+      if (e instanceof GenerateInputError) throw new CliError(e.message);
+      throw e;
+    }
+  } finally {
+    progress?.done();
+  }
+
+  const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
+  const errors = diagnostics.filter((d) => d.severity === 'error').length;
+  const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
+  const files = result.platforms.reduce((n, p) => n + p.files.length, 0);
+  if (json) {
+    io.out(
+      `${JSON.stringify(
+        {
+          diagnostics: diagnostics.map((d) => ({
+            root: d.root, file: d.file, line: d.line, column: d.column, endLine: d.endLine, endColumn: d.endColumn,
+            severity: d.severity, code: d.code, message: d.message,
+          })),
+          platforms: result.platforms.map((p) => ({
+            platform: p.platform,
+            outDir: p.outDir,
+            generators: p.generators,
+            files: p.files,
+            written: p.written,
+            unchanged: p.unchanged,
+            kept: p.kept,
+            removed: p.removed,
+            keptStale: p.keptStale,
+          })),
+          summary: { ok: result.ok, errors, warnings, files, platforms: result.platforms.length },
+        },
+        null,
+        2,
+      )}\n`,
+    );
+  } else {
+    const color = io.stdoutIsTTY && !io.env['NO_COLOR'];
+    io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color }));
+    for (const p of result.platforms) {
+      const parts = [`${p.written.length} written`, `${p.unchanged.length} unchanged`];
+      if (p.kept.length > 0) parts.push(`${p.kept.length} user file${p.kept.length === 1 ? '' : 's'} kept`);
+      if (p.removed.length > 0) parts.push(`${p.removed.length} stale removed`);
+      io.err(`${p.platform}: ${plural(p.files.length, 'file')} in ${displayPath(p.outDir, io.cwd)} (${parts.join(', ')})\n`);
+    }
+    const counts = `${plural(errors, 'error')}, ${plural(warnings, 'warning')}`;
+    io.err(result.ok
+      ? `${counts}; generated ${plural(files, 'file')} for ${plural(result.platforms.length, 'platform')}\n`
+      : `${counts}; nothing was generated\n`);
+  }
+  return result.ok ? ExitCode.ok : ExitCode.errors;
+}
+
+function plural(n: number, word: string): string {
+  return `${n} ${word}${n === 1 ? '' : 's'}`;
+}
+
+export function generateCommand(io: CliIo, setExitCode: (code: ExitCode) => void): Command {
+  return new Command('generate')
+    .description('generate code for the platforms of an application configuration (.arcapp)')
+    .argument('<app>', 'the application configuration file (APP.arcapp)')
+    .addOption(
+      new Option('-p, --platform <name>', 'generate this platform only (repeatable; default: every platform)').argParser(
+        (value: string, previous: string[] | undefined) => [...(previous ?? []), value],
+      ),
+    )
+    .option('-o, --out <dir>', 'output folder; platform P is written to DIR/P (default: "generated" next to the .arcapp)')
+    .option('-r, --root <dir>', 'model root the names of the configuration resolve in (default: the folder of the .arcapp)')
+    .addOption(new Option('-f, --format <format>', 'output format').choices(['text', 'json']).default('text'))
+    .addHelpText(
+      'after',
+      `
+What it does:
+  loads the configuration and the architecture, runs the language checks, the configuration
+  checks (app/...) and the generators' own rules, then runs the data type generator and the
+  component generator (which hands each behavior block to the behavior generator of its
+  language) and writes every platform's files with a trace file (.maa-trace.json). Nothing is
+  written when any step fails; user files and protected regions are never overwritten.
+
+Output:
+  text  diagnostics on stdout ("file:line:col: severity code message"), one line per generator
+        with its file count and a summary on stderr
+  json  exactly one object on stdout: {"diagnostics", "platforms", "summary"}
+
+Exit codes:
+  0  generated (warnings allowed)
+  1  errors in the models, the configuration or a generator: nothing was written
+  2  usage or I/O problem (missing file, unknown platform)
+  3  internal error (a bug; MAA_GEN_DEBUG=1 prints the stack trace)
+
+Examples:
+  maa-gen generate examples/toast-service/TR.arcapp
+  maa-gen generate TR.arcapp --platform rospython --out build/gen
+  maa-gen generators            (lists the installed generators)`,
+    )
+    .action(async (app: string, options: GenerateCommandOptions) => {
+      setExitCode(await runGenerate(app, options, io));
+    });
+}

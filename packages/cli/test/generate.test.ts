@@ -1,0 +1,204 @@
+import { existsSync, readFileSync } from 'node:fs';
+import path from 'node:path';
+import { afterEach, beforeAll, describe, expect, it } from 'vitest';
+import { BIN, ModelDir, parseTextLines, requireBuiltCli, runCli } from './helpers.js';
+
+// `maa-gen generate` and `maa-gen generators` against a generator package installed in the
+// test folder's node_modules (small generators written here; the real ones are separate packages).
+
+const MODELS: Record<string, string> = {
+  'models/robot/Robot.arc':
+    'package robot;\n\nimport robot.types.*;\n\ncomponent Robot {\n  port out Mode mode;\n  Sensor sensor;\n  Ctrl ctrl;\n\n  sensor.value -> ctrl.distance;\n  ctrl.mode -> mode;\n}\n',
+  'models/robot/Sensor.arc': 'package robot;\n\n<<handwritten>> component Sensor {\n  port out int value;\n}\n',
+  'models/robot/Ctrl.arc': [
+    'package robot;',
+    '',
+    'import robot.types.*;',
+    '',
+    'component Ctrl {',
+    '  port in int distance;',
+    '  port out Mode mode;',
+    '',
+    '  automaton {',
+    '    initial { mode = Mode.IDLE; } state Idle;',
+    '    state Busy;',
+    '    Idle -> Busy [distance < 10] / { mode = Mode.BUSY; };',
+    '  }',
+    '}',
+    '',
+  ].join('\n'),
+  'models/robot/types/Types.cd': 'package robot.types;\n\nclassdiagram Types {\n  enum Mode { IDLE, BUSY; }\n}\n',
+  'models/App.arcapp': [
+    'application Demo for robot.Robot {',
+    '  platform alpha {',
+    '    t.Components;',
+    '    t.Automata;',
+    '    t.DataTypes;',
+    '  }',
+    '  platform beta {',
+    '    t.Components;',
+    '    t.DataTypes;',
+    '  }',
+    '}',
+    '',
+  ].join('\n'),
+};
+
+const GENERATORS: Record<string, string> = {
+  'node_modules/t-gens/package.json': JSON.stringify({
+    name: 't-gens',
+    version: '1.0.0',
+    type: 'module',
+    maa: {
+      generators: [
+        { name: 't.Components', kind: 'component', supports: ['compute'], output: { gpl: 'python', rte: 't-rte' }, entry: 'components.js', templates: 'templates', checks: ['components.BehaviorOrHandwritten'] },
+        'automata.json',
+        { name: 't.DataTypes', kind: 'datatype', output: { gpl: 'python' }, entry: 'datatypes.js' },
+      ],
+    },
+  }),
+  'node_modules/t-gens/automata.json': JSON.stringify({ name: 't.Automata', kind: 'behavior', language: 'automaton', output: { gpl: 'python', rte: 't-rte' }, entry: 'automata.js', requires: ['ports'] }),
+  'node_modules/t-gens/components.js': [
+    'export default function create() {',
+    '  return { kind: "component", async generate(ctx) {',
+    '    if (process.env.T_GENS_FAIL) throw new Error("components exploded");',
+    '    for (const c of ctx.architecture.components) {',
+    '      const f = ctx.out.file(`components/${c.name}.py`);',
+    '      f.render("component.py.njk", { c }, c.node);',
+    '      const d = await ctx.behavior(c);',
+    '      if (d) f.line(`# behavior: ${d.handledBy} ${d.language}`);',
+    '      if (c.handwritten) ctx.out.file(`user/${c.name}_impl.py`, { userFile: true }).line("# yours");',
+    '    }',
+    '  } };',
+    '}',
+    '',
+  ].join('\n'),
+  'node_modules/t-gens/automata.js':
+    'export default { kind: "behavior", generate(b, ctx) { ctx.out.file(`behaviors/${b.component}.py`).line(`# ports ${ctx.ports.map((p) => p.name)}`, b.node); return {}; } };\n',
+  'node_modules/t-gens/datatypes.js':
+    'export default { kind: "datatype", generate(ctx) { const f = ctx.out.file("types.py"); for (const t of ctx.dataTypes) f.line(`class ${t.name}: pass`, t.node); } };\n',
+  'node_modules/t-gens/templates/component.py.njk':
+    'class {{ c.name | pascal_case }}:\n{% for p in c.ports %}\n{% trace p %}\n    {{ p.name | snake_case }} = None  # {{ p.direction }} {{ p.typeName }}\n{% endtrace %}\n{% endfor %}\n',
+};
+
+beforeAll(() => requireBuiltCli());
+
+let dirs: ModelDir[] = [];
+function workspace(extra: Record<string, string> = {}): ModelDir {
+  const d = new ModelDir();
+  dirs.push(d);
+  for (const [rel, text] of Object.entries({ ...MODELS, ...GENERATORS, ...extra })) d.write(rel, text);
+  return d;
+}
+afterEach(() => {
+  for (const d of dirs) d.dispose();
+  dirs = [];
+});
+
+describe('maa-gen generators', () => {
+  it('lists the generators of installed packages', async () => {
+    const w = workspace();
+    const r = await runCli(['generators'], w.dir);
+    expect(r.code).toBe(0);
+    const lines = r.stdout.trim().split('\n');
+    expect(lines[0]).toMatch(/^NAME\s+KIND\s+LANGUAGE\s+GPL\s+RTE\s+CHECKS\s+PACKAGE$/);
+    // Generators installed next to maa-gen itself are listed too; these are the test folder's.
+    expect(lines.slice(1).map((l) => l.split(/\s{2,}/)).filter((cells) => cells[6] === 't-gens@1.0.0')).toEqual([
+      ['t.Automata', 'behavior', 'automaton', 'python', 't-rte', '-', 't-gens@1.0.0'],
+      ['t.Components', 'component', '(compute)', 'python', 't-rte', 'components.BehaviorOrHandwritten', 't-gens@1.0.0'],
+      ['t.DataTypes', 'datatype', '-', 'python', '-', '-', 't-gens@1.0.0'],
+    ]);
+    expect(r.stderr.trim()).toMatch(/^\d+ generators from \d+ packages?$/);
+  });
+
+  it('reports invalid manifests naming the package and the field, and exits 1', async () => {
+    const w = workspace({
+      'node_modules/bad-gens/package.json': JSON.stringify({ name: 'bad-gens', maa: { generators: [{ name: 'b.X', kind: 'behavior', output: { gpl: 'python', rte: 'r' }, entry: 'x.js' }] } }),
+    });
+    const r = await runCli(['generators', '--format', 'json'], w.dir);
+    expect(r.code).toBe(1);
+    const report = JSON.parse(r.stdout) as { generators: Array<{ name: string; package: string }>; problems: Array<{ package: string; field: string; message: string }> };
+    expect(report.generators.filter((g) => g.package === 't-gens').map((g) => g.name)).toEqual(['t.Automata', 't.Components', 't.DataTypes']);
+    expect(report.problems.filter((p) => p.package === 'bad-gens')).toEqual([{ package: 'bad-gens', file: path.join(w.dir, 'node_modules/bad-gens/package.json'), field: 'maa.generators[0]', message: "missing required field 'language'" }]);
+    const text = await runCli(['generators'], w.dir);
+    expect(text.code).toBe(1);
+    expect(text.stderr).toContain(`error: generator package bad-gens (${path.join(w.dir, 'node_modules/bad-gens/package.json')}): maa.generators[0]: missing required field 'language'`);
+  });
+});
+
+describe('maa-gen generate', () => {
+  it('generates a platform, reports each generator with its file count, and writes a trace', async () => {
+    const w = workspace();
+    const r = await runCli(['generate', 'models/App.arcapp', '--platform', 'alpha', '--out', 'out'], w.dir);
+    expect(r.stdout).toBe('');
+    expect(r.stderr.split('\n').filter(Boolean)).toEqual([
+      'alpha: t.Components: 4 files',
+      'alpha: t.Automata: 1 file',
+      'alpha: t.DataTypes: 1 file',
+      'alpha: 6 files in out/alpha (6 written, 0 unchanged)',
+      '0 errors, 0 warnings; generated 6 files for 1 platform',
+    ]);
+    expect(r.code).toBe(0);
+    expect(readFileSync(w.path('out/alpha/components/Ctrl.py'), 'utf8')).toBe(
+      'class Ctrl:\n    distance = None  # in int\n    mode = None  # out Mode\n# behavior: behavior-generator automaton\n',
+    );
+    const trace = JSON.parse(readFileSync(w.path('out/alpha/.maa-trace.json'), 'utf8')) as { files: Array<{ path: string; traces: Array<{ lines: number[]; element: { file: string; type: string } }> }> };
+    const ctrl = trace.files.find((f) => f.path === 'components/Ctrl.py')!;
+    expect(ctrl.traces.map((t) => `${t.lines.join('-')} ${t.element.type} ${t.element.file}`)).toEqual([
+      '1-3 ComponentType robot/Ctrl.arc',
+      '2-2 Port robot/Ctrl.arc',
+      '3-3 Port robot/Ctrl.arc',
+    ]);
+    // Again: nothing changes, the user file is kept.
+    const again = await runCli(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out'], w.dir);
+    expect(again.code).toBe(0);
+    expect(again.stderr).toContain('alpha: 6 files in out/alpha (0 written, 5 unchanged, 1 user file kept)');
+  });
+
+  it('reports configuration errors of the platform with exit 1 and writes nothing', async () => {
+    const w = workspace();
+    const r = await runCli(['generate', 'models/App.arcapp', '--platform', 'beta', '--out', 'out'], w.dir);
+    expect(r.code).toBe(1);
+    const lines = parseTextLines(r.stdout);
+    expect(lines.map((l) => `${l['file']}:${l['line']} ${l['code']}`)).toEqual(['models/App.arcapp:7 app/uncovered-behavior-language']);
+    expect(r.stderr.trim().split('\n').pop()).toBe('1 error, 0 warnings; nothing was generated');
+    expect(existsSync(w.path('out'))).toBe(false);
+  });
+
+  it('a failing generator writes nothing (text and JSON)', async () => {
+    const w = workspace();
+    const { execFile } = await import('node:child_process');
+    const run = (args: string[]) =>
+      new Promise<{ code: number; stdout: string }>((resolve) => {
+        execFile(process.execPath, [BIN, ...args], { cwd: w.dir, env: { ...process.env, NO_COLOR: '1', T_GENS_FAIL: '1' } }, (error, stdout) =>
+          resolve({ code: error ? (error.code as number) : 0, stdout }),
+        );
+      });
+    const r = await run(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out', '--format', 'json']);
+    expect(r.code).toBe(1);
+    const report = JSON.parse(r.stdout) as { diagnostics: Array<{ code: string; message: string }>; summary: { ok: boolean; errors: number } };
+    expect(report.summary).toMatchObject({ ok: false, errors: 1 });
+    expect(report.diagnostics[0]!.code).toBe('gen/generator-failed');
+    expect(report.diagnostics[0]!.message).toContain("Generator 't.Components' failed: components exploded");
+    expect(existsSync(w.path('out'))).toBe(false);
+  });
+
+  it('usage problems exit 2', async () => {
+    const w = workspace();
+    const missing = await runCli(['generate', 'nope.arcapp'], w.dir);
+    expect(missing.code).toBe(2);
+    expect(missing.stderr).toBe('maa-gen: error: path not found: nope.arcapp\n');
+    const wrong = await runCli(['generate', 'models/robot/Ctrl.arc'], w.dir);
+    expect(wrong.code).toBe(2);
+    expect(wrong.stderr).toContain('not an application configuration (expected .arcapp)');
+    const platform = await runCli(['generate', 'models/App.arcapp', '--platform', 'gamma'], w.dir);
+    expect(platform.code).toBe(2);
+    expect(platform.stderr).toBe("maa-gen: error: application 'Demo' has no platform 'gamma' (platforms: alpha, beta)\n");
+  });
+
+  it('is listed in the help', async () => {
+    const r = await runCli(['--help'], process.cwd());
+    expect(r.stdout).toMatch(/generate \[options\] <app>/);
+    expect(r.stdout).toMatch(/generators \[options\]/);
+  });
+});

@@ -1,0 +1,272 @@
+import type { AstNode } from 'langium';
+import type { ast } from '@maa/language-adl';
+import type { AppGeneratorRef, AppPlatform, Application } from '../generated/ast.js';
+import type { WellFormednessRule } from '../generators/types.js';
+import type { GeneratorManifest } from '../manifest/manifest.js';
+import { buildArchitecture, type ArchitectureModel, type BehaviorView } from '../model/architecture.js';
+import type { GeneratorRegistry, RegisteredGenerator } from '../registry/registry.js';
+import { standardRule } from '../rules/standard-rules.js';
+import { AppCodes, type AppCode } from './codes.js';
+
+/**
+ * A problem of an application configuration. `node`/`property` locate it in the `.arcapp`
+ * file; a violated generator rule also names the model element (`modelNode`) that violates it.
+ */
+export interface AppFinding {
+    readonly code: AppCode;
+    readonly severity: 'error' | 'warning';
+    readonly message: string;
+    readonly node: AstNode;
+    readonly property?: string;
+    readonly modelNode?: AstNode;
+    /** The generator a finding is about (rule violations, mismatches). */
+    readonly generator?: string;
+    readonly rule?: string;
+}
+
+/** The generators a platform selects, resolved and sorted into the three roles. */
+export interface PlatformSelection {
+    readonly platform: AppPlatform;
+    readonly references: ReadonlyArray<{ readonly ref: AppGeneratorRef; readonly generator: RegisteredGenerator }>;
+    readonly component?: RegisteredGenerator;
+    readonly datatype?: RegisteredGenerator;
+    /** The behavior generator of each language (the first one listed when there are several). */
+    readonly behaviors: ReadonlyMap<string, RegisteredGenerator>;
+}
+
+export interface AppCheckOptions {
+    /** Only this platform (all when undefined). */
+    readonly platform?: string;
+    /** Rules beyond the standard library (from generator code; the orchestrator passes them). */
+    readonly rules?: (generator: string, rule: string) => WellFormednessRule | undefined;
+    /** Called for a check name that no rule defines (the editor ignores them). */
+    readonly onUnknownRule?: (generator: RegisteredGenerator, rule: string, ref: AppGeneratorRef) => void;
+    /** The architecture, when the caller has built it already. */
+    readonly architecture?: ArchitectureModel;
+}
+
+/** The generators a platform names, resolved against the registry (unknown names are skipped). */
+export function selectGenerators(platform: AppPlatform, registry: GeneratorRegistry): PlatformSelection {
+    const references: Array<{ ref: AppGeneratorRef; generator: RegisteredGenerator }> = [];
+    let component: RegisteredGenerator | undefined;
+    let datatype: RegisteredGenerator | undefined;
+    const behaviors = new Map<string, RegisteredGenerator>();
+    for (const ref of platform.generators) {
+        const generator = registry.get(ref.generator.$refText);
+        if (!generator) continue;
+        references.push({ ref, generator });
+        const m = generator.manifest;
+        if (m.kind === 'component') component ??= generator;
+        else if (m.kind === 'datatype') datatype ??= generator;
+        else if (!behaviors.has(m.language)) behaviors.set(m.language, generator);
+    }
+    return { platform, references, component, datatype, behaviors };
+}
+
+/** The generator that translates a behavior language on a platform, if any. */
+export function generatorForLanguage(selection: PlatformSelection, language: string): { generator: RegisteredGenerator; role: 'behavior' | 'component' } | undefined {
+    const b = selection.behaviors.get(language);
+    if (b) return { generator: b, role: 'behavior' };
+    const c = selection.component;
+    if (c && c.manifest.kind === 'component' && c.manifest.supports.includes(language)) return { generator: c, role: 'component' };
+    return undefined;
+}
+
+/** The architecture of an application, or undefined while its component does not resolve. */
+export function applicationArchitecture(app: Application): ArchitectureModel | undefined {
+    const root = app.component?.ref as unknown as ast.ComponentType | undefined;
+    return root ? buildArchitecture(root) : undefined;
+}
+
+/**
+ * The `app/*` rules of ARCHITECTURE.md section 6 on one application configuration: generator
+ * roles per platform, behavior language coverage, GPL/RTE compatibility, and the generators'
+ * own well-formedness rules on the models they will translate. Unknown generators and an
+ * unresolved component are linking errors, reported by the document validator.
+ */
+export function checkApplication(app: Application, registry: GeneratorRegistry, options: AppCheckOptions = {}): AppFinding[] {
+    const findings: AppFinding[] = [];
+    const seenPlatforms = new Set<string>();
+    let architecture: ArchitectureModel | undefined | null = options.architecture ?? null;
+    const arch = (): ArchitectureModel | undefined => {
+        if (architecture === null) architecture = applicationArchitecture(app);
+        return architecture;
+    };
+    for (const platform of app.platforms) {
+        if (seenPlatforms.has(platform.name)) {
+            findings.push({
+                code: AppCodes.DuplicatePlatform, severity: 'error', node: platform, property: 'name',
+                message: `Platform '${platform.name}' is configured twice in application '${app.name}'.`
+            });
+            continue;
+        }
+        seenPlatforms.add(platform.name);
+        if (options.platform !== undefined && platform.name !== options.platform) continue;
+        findings.push(...checkPlatform(platform, registry, arch, options));
+    }
+    return findings;
+}
+
+function checkPlatform(
+    platform: AppPlatform, registry: GeneratorRegistry,
+    arch: () => ArchitectureModel | undefined, options: AppCheckOptions
+): AppFinding[] {
+    const findings: AppFinding[] = [];
+    const add = (f: Omit<AppFinding, 'severity'> & { severity?: 'error' | 'warning' }): void => {
+        findings.push({ severity: 'error', ...f });
+    };
+    const selection = selectGenerators(platform, registry);
+    const where = `platform '${platform.name}'`;
+
+    // Each generator once.
+    const distinct: Array<{ ref: AppGeneratorRef; generator: RegisteredGenerator }> = [];
+    const seen = new Set<string>();
+    for (const r of selection.references) {
+        const name = r.generator.manifest.name;
+        if (seen.has(name)) {
+            add({
+                code: AppCodes.RepeatedGenerator, severity: 'warning', node: r.ref, property: 'generator',
+                message: `Generator '${name}' is listed more than once in ${where}.`
+            });
+            continue;
+        }
+        seen.add(name);
+        distinct.push(r);
+    }
+
+    // Roles: exactly one component and one data type generator, one behavior generator per language.
+    const ofKind = (kind: GeneratorManifest['kind']) => distinct.filter((r) => r.generator.manifest.kind === kind);
+    const components = ofKind('component');
+    const datatypes = ofKind('datatype');
+    // An unknown generator (reported by linking) may be the one that fills a role: no follow-ups.
+    const complete = selection.references.length === platform.generators.length;
+    if (components.length === 0 && complete) {
+        add({
+            code: AppCodes.MissingComponentGenerator, node: platform, property: 'name',
+            message: `${capital(where)} has no component generator: add one (e.g. '${suggest(registry, 'component')}').`
+        });
+    }
+    for (const extra of components.slice(1)) {
+        add({
+            code: AppCodes.DuplicateComponentGenerator, node: extra.ref, property: 'generator',
+            message: `${capital(where)} has more than one component generator ('${components.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`
+        });
+    }
+    if (datatypes.length === 0 && complete) {
+        add({
+            code: AppCodes.MissingDataTypeGenerator, node: platform, property: 'name',
+            message: `${capital(where)} has no data type generator: add one (e.g. '${suggest(registry, 'datatype')}').`
+        });
+    }
+    for (const extra of datatypes.slice(1)) {
+        add({
+            code: AppCodes.DuplicateDataTypeGenerator, node: extra.ref, property: 'generator',
+            message: `${capital(where)} has more than one data type generator ('${datatypes.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`
+        });
+    }
+    const byLanguage = new Map<string, Array<{ ref: AppGeneratorRef; generator: RegisteredGenerator }>>();
+    for (const r of ofKind('behavior')) {
+        const m = r.generator.manifest;
+        if (m.kind !== 'behavior') continue;
+        const list = byLanguage.get(m.language) ?? [];
+        list.push(r);
+        byLanguage.set(m.language, list);
+    }
+    for (const [language, list] of byLanguage) {
+        for (const extra of list.slice(1)) {
+            add({
+                code: AppCodes.DuplicateBehaviorGenerator, node: extra.ref, property: 'generator',
+                message: `${capital(where)} has more than one behavior generator for '${language}' ('${list.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`
+            });
+        }
+    }
+
+    // Compatibility: one GPL for the family, one RTE for component and behavior generators.
+    const reference = components[0] ?? distinct[0];
+    if (reference) {
+        const gpl = reference.generator.manifest.output.gpl;
+        for (const r of distinct) {
+            if (r === reference || r.generator.manifest.output.gpl === gpl) continue;
+            add({
+                code: AppCodes.GplMismatch, node: r.ref, property: 'generator', generator: r.generator.manifest.name,
+                message: `Generator '${r.generator.manifest.name}' produces ${r.generator.manifest.output.gpl}, but '${reference.generator.manifest.name}' produces ${gpl}: all generators of ${where} must produce the same language.`
+            });
+        }
+    }
+    const component = components[0];
+    if (component) {
+        const rte = component.generator.manifest.output.rte;
+        for (const r of distinct) {
+            const m = r.generator.manifest;
+            if (m.kind !== 'behavior' || m.output.rte === rte || m.output.gpl !== component.generator.manifest.output.gpl) continue;
+            add({
+                code: AppCodes.RteMismatch, node: r.ref, property: 'generator', generator: m.name,
+                message: `Behavior generator '${m.name}' writes against the run-time environment '${m.output.rte}', but component generator '${component.generator.manifest.name}' wraps '${rte}'.`
+            });
+        }
+    }
+
+    const architecture = arch();
+    if (!architecture) return findings;
+
+    // Coverage: every behavior language of the architecture has exactly one translator.
+    if (component && complete) {
+        for (const language of architecture.languages) {
+            if (generatorForLanguage(selection, language)) continue;
+            const users = architecture.components.filter((c) => c.behavior?.language === language || (language === 'compute' && c.init));
+            const shown = users.slice(0, 3).map((c) => c.qualifiedName).join(', ') + (users.length > 3 ? ', ...' : '');
+            add({
+                code: AppCodes.UncoveredBehaviorLanguage, node: platform, property: 'name',
+                message: `${capital(where)} has no generator for the behavior language '${language}' (used by ${shown}): add a behavior generator for '${language}'${suggestBehavior(registry, language)}.`
+            });
+        }
+    }
+
+    // The generators' own well-formedness rules, on the models each will translate.
+    for (const { ref, generator } of distinct) {
+        const m = generator.manifest;
+        const behaviors: BehaviorView[] = m.kind === 'behavior'
+            ? architecture.behaviors.filter((b) => b.language === m.language)
+            : m.kind === 'component'
+                ? architecture.behaviors.filter((b) => m.supports.includes(b.language) && !selection.behaviors.has(b.language))
+                : [];
+        const scope = {
+            architecture,
+            components: m.kind === 'component' ? architecture.components : [],
+            behaviors,
+            dataTypes: m.kind === 'datatype' ? architecture.dataTypes : []
+        };
+        for (const name of m.checks) {
+            const rule = standardRule(name) ?? options.rules?.(m.name, name);
+            if (!rule) {
+                options.onUnknownRule?.(generator, name, ref);
+                continue;
+            }
+            for (const v of rule.check(scope)) {
+                add({
+                    code: AppCodes.GeneratorRuleViolated, node: ref, property: 'generator', modelNode: v.node, generator: m.name, rule: name,
+                    message: `Generator '${m.name}' requires ${name} (${lowerFirst(rule.description)}), but ${v.message}.`
+                });
+            }
+        }
+    }
+    return findings;
+}
+
+function suggest(registry: GeneratorRegistry, kind: GeneratorManifest['kind']): string {
+    return registry.all().find((g) => g.manifest.kind === kind)?.manifest.name ?? `a ${kind} generator`;
+}
+
+function suggestBehavior(registry: GeneratorRegistry, language: string): string {
+    const found = registry.all().filter((g) => g.manifest.kind === 'behavior' && g.manifest.language === language).map((g) => `'${g.manifest.name}'`);
+    return found.length > 0 ? ` (installed: ${found.join(', ')})` : '';
+}
+
+function capital(s: string): string {
+    return s.charAt(0).toUpperCase() + s.slice(1);
+}
+
+function lowerFirst(s: string): string {
+    const t = s.replace(/\.$/, '');
+    return t.charAt(0).toLowerCase() + t.slice(1);
+}

@@ -1,0 +1,341 @@
+import { AstUtils, CstUtils, type AstNode } from 'langium';
+import {
+    allPorts, ast, behaviorTiming, behaviorsOf, elementsOf, isComposed, stereotypeNames, subcomponentType, subcomponentsOf,
+    typeOfMCType, printType, type SymType, type Timing
+} from '@maa/language-adl';
+
+type ComponentType = ast.ComponentType;
+type CDType = ast.CDType;
+
+/**
+ * The generator-facing view of an architecture: every component type an application uses
+ * (the root, its subcomponent types, transitively, and their parents), the instance tree, the
+ * behavior blocks with their languages, and the class-diagram types the components use.
+ * Views keep their AST node, so generators can walk expressions and behaviors and the trace
+ * can name model elements. Everything is sorted, so generators that follow the lists emit
+ * deterministic output.
+ */
+export interface ArchitectureModel {
+    readonly root: ComponentView;
+    /** Every component type used, by qualified name (sorted). */
+    readonly components: readonly ComponentView[];
+    /** The instance tree, flattened in depth-first declaration order; the root instance has the path []. */
+    readonly instances: readonly InstanceView[];
+    /** Every behavior block of a used component type. */
+    readonly behaviors: readonly BehaviorView[];
+    /** The behavior languages used (sorted). */
+    readonly languages: readonly string[];
+    /** Class-diagram types used by ports, parameters and fields, transitively through attributes (sorted). */
+    readonly dataTypes: readonly DataTypeView[];
+    component(qualifiedName: string): ComponentView | undefined;
+    dataType(qualifiedName: string): DataTypeView | undefined;
+}
+
+export interface ComponentView {
+    readonly qualifiedName: string;
+    readonly name: string;
+    readonly packageName: string;
+    readonly node: ComponentType;
+    readonly typeParameters: readonly string[];
+    readonly parents: readonly string[];
+    readonly ports: readonly PortView[];
+    readonly parameters: readonly ParameterView[];
+    readonly fields: readonly FieldView[];
+    readonly subcomponents: readonly SubcomponentView[];
+    readonly connectors: readonly ConnectorView[];
+    /** The behavior (other than an `init` block) of an atomic component, if it has one. */
+    readonly behavior?: BehaviorView;
+    /** The `init { }` block, if any. */
+    readonly init?: AstNode;
+    /** Marked `<<handwritten>>`: the generator emits a base class and a user file. */
+    readonly handwritten: boolean;
+    /** No subcomponents. */
+    readonly atomic: boolean;
+    readonly stereotypes: readonly string[];
+}
+
+export interface TypeView {
+    readonly type: SymType;
+    /** The type as written in models (`int`, `ToastColor`, `List<Data>`). */
+    readonly typeName: string;
+    /** The type with qualified class-diagram names (`toast.types.Types.ToastColor`). */
+    readonly qualifiedTypeName: string;
+}
+
+export interface PortView extends TypeView {
+    readonly name: string;
+    readonly direction: 'in' | 'out';
+    readonly timing: Timing;
+    readonly delayed: boolean;
+    readonly node: AstNode;
+    /** Qualified name of the component type that declares the port (differs for inherited ports). */
+    readonly owner: string;
+}
+
+export interface ParameterView extends TypeView {
+    readonly name: string;
+    readonly default?: AstNode;
+    readonly node: AstNode;
+}
+
+export interface FieldView extends TypeView {
+    readonly name: string;
+    readonly init: AstNode;
+    readonly node: AstNode;
+}
+
+export interface SubcomponentView {
+    readonly name: string;
+    /** Qualified name of the instantiated component type. */
+    readonly type: string;
+    readonly args: readonly AstNode[];
+    readonly node: AstNode;
+}
+
+export interface PortRef {
+    /** The subcomponent, or undefined for a port of the component itself. */
+    readonly subcomponent?: string;
+    readonly port: string;
+}
+
+export interface ConnectorView {
+    readonly source: PortRef;
+    readonly targets: readonly PortRef[];
+    readonly node: AstNode;
+}
+
+export interface BehaviorView {
+    /** The behavior language: the keyword of its block (`automaton`, `robotarm`, `compute`). */
+    readonly language: string;
+    /** The AST of the block (e.g. an `Automaton`). */
+    readonly node: AstNode;
+    /** Qualified name of the component type. */
+    readonly component: string;
+    readonly timing?: Timing;
+}
+
+export interface InstanceView {
+    /** Subcomponent names from the root (the root instance has []). */
+    readonly path: readonly string[];
+    readonly component: ComponentView;
+    /** The subcomponent declaration (undefined for the root). */
+    readonly node?: AstNode;
+    readonly args: readonly AstNode[];
+}
+
+export interface DataTypeView {
+    readonly qualifiedName: string;
+    readonly name: string;
+    readonly packageName: string;
+    readonly diagram: string;
+    readonly kind: 'enum' | 'class' | 'interface';
+    readonly constants: readonly string[];
+    readonly attributes: ReadonlyArray<TypeView & { readonly name: string; readonly node: AstNode }>;
+    readonly typeParameters: readonly string[];
+    readonly superTypes: readonly string[];
+    readonly node: CDType;
+}
+
+/** The behavior language of a behavior block: `compute` for the host's blocks, else its block keyword. */
+export function behaviorLanguageOf(node: AstNode): string {
+    if (node.$type === 'ComputeBlock' || node.$type === 'InitBlock') return 'compute';
+    const first = node.$cstNode ? CstUtils.flattenCst(node.$cstNode).find((l) => !l.hidden) : undefined;
+    return first?.text ?? node.$type.toLowerCase();
+}
+
+/** `pkg.Outer.Inner` for (inner) component types. */
+export function componentQualifiedName(c: ComponentType): string {
+    const names: string[] = [];
+    for (let n: AstNode | undefined = c; n; n = n.$container) {
+        if (n.$type === 'ComponentType') names.unshift((n as ComponentType).name);
+    }
+    const pkg = packageOf(c);
+    return pkg ? `${pkg}.${names.join('.')}` : names.join('.');
+}
+
+/** `pkg.Diagram.Type` for class-diagram types. */
+export function dataTypeQualifiedName(t: CDType | AstNode & { name: string }): string {
+    const diagram = t.$container as AstNode & { name?: string };
+    const pkg = packageOf(t);
+    const local = diagram?.name ? `${diagram.name}.${t.name}` : t.name;
+    return pkg ? `${pkg}.${local}` : local;
+}
+
+export function packageOf(node: AstNode): string {
+    const root = AstUtils.findRootNode(node) as AstNode & { package?: string };
+    return root.package ?? '';
+}
+
+/** A type with qualified class-diagram names. */
+export function printQualifiedType(t: SymType): string {
+    switch (t.kind) {
+        case 'object': {
+            const name = dataTypeQualifiedName(t.decl);
+            return t.args.length === 0 ? name : `${name}<${t.args.map(printQualifiedType).join(', ')}>`;
+        }
+        case 'array':
+            return `${printQualifiedType(t.component)}[]`;
+        default:
+            return printType(t);
+    }
+}
+
+function typeView(type: SymType): TypeView {
+    return { type, typeName: printType(type), qualifiedTypeName: printQualifiedType(type) };
+}
+
+function isBuiltin(node: AstNode): boolean {
+    return AstUtils.getDocument(node).uri.scheme === 'builtin';
+}
+
+/** Builds the view of the architecture below a root component type. */
+export function buildArchitecture(root: ComponentType): ArchitectureModel {
+    const views = new Map<ComponentType, ComponentView>();
+    const order: ComponentType[] = [];
+    const visit = (c: ComponentType): void => {
+        if (views.has(c)) return;
+        views.set(c, undefined as unknown as ComponentView); // cycle guard
+        order.push(c);
+        for (const p of c.parents) {
+            const decl = p.type?.ref?.ref;
+            if (decl) visit(decl);
+        }
+        for (const sub of subcomponentsOf(c)) {
+            const decl = subcomponentType(sub).decl;
+            if (decl) visit(decl);
+        }
+    };
+    visit(root);
+    for (const c of order) views.set(c, componentView(c));
+
+    const components = [...views.values()].sort((a, b) => compare(a.qualifiedName, b.qualifiedName));
+    const byName = new Map(components.map((c) => [c.qualifiedName, c]));
+
+    const instances: InstanceView[] = [];
+    const walk = (c: ComponentType, path: string[], node: AstNode | undefined, args: readonly AstNode[], depth: number): void => {
+        const view = views.get(c);
+        if (!view || depth > 64) return;
+        instances.push({ path, component: view, node, args });
+        for (const sub of subcomponentsOf(c)) {
+            const decl = subcomponentType(sub).decl;
+            if (decl) walk(decl, [...path, sub.name], sub, sub.args, depth + 1);
+        }
+    };
+    walk(root, [], undefined, [], 0);
+
+    const behaviors = components.flatMap((c) => (c.behavior ? [c.behavior] : []));
+    const languages = [...new Set([...behaviors.map((b) => b.language), ...components.filter((c) => c.init).map(() => 'compute')])].sort(compare);
+    const dataTypes = collectDataTypes(components);
+    const typeByName = new Map(dataTypes.map((t) => [t.qualifiedName, t]));
+    return {
+        root: views.get(root)!,
+        components,
+        instances,
+        behaviors,
+        languages,
+        dataTypes,
+        component: (qn) => byName.get(qn),
+        dataType: (qn) => typeByName.get(qn)
+    };
+}
+
+function componentView(c: ComponentType): ComponentView {
+    const qualifiedName = componentQualifiedName(c);
+    const blocks = behaviorsOf(c);
+    const init = blocks.find((b) => b.behavior?.$type === 'InitBlock')?.behavior;
+    const main = blocks.find((b) => b.behavior && b.behavior.$type !== 'InitBlock')?.behavior;
+    const timing = behaviorTiming(c);
+    const elements = elementsOf(c);
+    return {
+        qualifiedName,
+        name: c.name,
+        packageName: packageOf(c),
+        node: c,
+        typeParameters: c.typeParams.map((t) => t.name),
+        parents: c.parents.flatMap((p) => (p.type?.ref?.ref ? [componentQualifiedName(p.type.ref.ref)] : [])),
+        ports: allPorts(c).map((p) => ({
+            ...typeView(p.type),
+            name: p.name,
+            direction: p.direction,
+            timing: p.timing,
+            delayed: p.delayed,
+            node: p.port,
+            owner: componentQualifiedName(p.owner)
+        })),
+        parameters: c.params.map((p) => ({ ...typeView(typeOfMCType(p.type)), name: p.name, default: p.default, node: p })),
+        fields: elements.flatMap((e) => (e.$type === 'FieldDeclaration'
+            ? e.fields.map((f) => ({ ...typeView(typeOfMCType(e.type)), name: f.name, init: f.init, node: f }))
+            : [])),
+        subcomponents: subcomponentsOf(c).map((s) => {
+            const decl = subcomponentType(s).decl;
+            return { name: s.name, type: decl ? componentQualifiedName(decl) : '', args: s.args, node: s };
+        }),
+        connectors: elements.flatMap((e) => (e.$type === 'Connector'
+            ? [{ source: portRef(e.source), targets: e.targets.map(portRef), node: e }]
+            : [])),
+        behavior: main ? { language: behaviorLanguageOf(main), node: main, component: qualifiedName, timing } : undefined,
+        init,
+        handwritten: stereotypeNames(c.stereotype).includes('handwritten'),
+        atomic: !isComposed(c),
+        stereotypes: stereotypeNames(c.stereotype)
+    };
+}
+
+function portRef(p: ast.PortAccess): PortRef {
+    return p.subcomponent ? { subcomponent: p.subcomponent.$refText, port: p.port.$refText } : { port: p.port.$refText };
+}
+
+function collectDataTypes(components: readonly ComponentView[]): DataTypeView[] {
+    const found = new Map<CDType, DataTypeView>();
+    const pending: SymType[] = [];
+    for (const c of components) {
+        for (const t of [...c.ports, ...c.parameters, ...c.fields]) pending.push(t.type);
+    }
+    const add = (decl: CDType): void => {
+        if (found.has(decl) || isBuiltin(decl)) return;
+        const view = dataTypeView(decl);
+        found.set(decl, view);
+        for (const a of view.attributes) pending.push(a.type);
+        if (decl.$type === 'CDClass') {
+            for (const s of [...decl.superTypes, ...decl.interfaces]) pending.push(typeOfMCType(s));
+        }
+    };
+    while (pending.length > 0) {
+        const t = pending.pop()!;
+        if (t.kind === 'object') {
+            add(t.decl);
+            pending.push(...t.args);
+        } else if (t.kind === 'array') pending.push(t.component);
+        else if (t.kind === 'wildcard') {
+            if (t.upper) pending.push(t.upper);
+            if (t.lower) pending.push(t.lower);
+        }
+    }
+    return [...found.values()].sort((a, b) => compare(a.qualifiedName, b.qualifiedName));
+}
+
+function dataTypeView(t: CDType): DataTypeView {
+    const diagram = t.$container as ast.ClassDiagram;
+    const base = { qualifiedName: dataTypeQualifiedName(t), name: t.name, packageName: packageOf(t), diagram: diagram?.name ?? '', node: t };
+    if (t.$type === 'CDEnum') {
+        return { ...base, kind: 'enum', constants: t.constants.map((c) => c.name), attributes: [], typeParameters: [], superTypes: [] };
+    }
+    return {
+        ...base,
+        kind: t.kind,
+        constants: [],
+        attributes: t.members.flatMap((m) => (m.$type === 'CDAttribute' ? [{ ...typeView(typeOfMCType(m.type)), name: m.name, node: m }] : [])),
+        typeParameters: t.typeParams.map((p) => p.name),
+        superTypes: [...t.superTypes, ...t.interfaces].map((s) => printQualifiedType(typeOfMCType(s)))
+    };
+}
+
+/** Code-point order: independent of the locale, so output is the same on every machine. */
+export function compare(a: string, b: string): number {
+    return a < b ? -1 : a > b ? 1 : 0;
+}
+
+/** The source text of a model element (e.g. an expression), whitespace as written. */
+export function sourceText(node: AstNode | undefined): string {
+    return node?.$cstNode?.text ?? '';
+}

@@ -1,0 +1,22 @@
+"""maa-python-behavior: the run-time environment of generated behavior classes.
+
+Every behavior generator of ``@maa/generators-python`` emits one class per component type
+that derives from :class:`Behavior` (see docs/runtime.md, "Behavior classes"). Platforms
+(python-timesync, ROS 2) wrap these classes; the classes know nothing about them.
+"""
+
+from maa_behavior.behavior import Behavior, Emit, NoBehavior
+from maa_behavior.jvm import f32, jconcat, jdiv, jmod, jordinal, jstr, jushr
+
+__all__ = [
+    "Behavior",
+    "Emit",
+    "NoBehavior",
+    "f32",
+    "jconcat",
+    "jdiv",
+    "jmod",
+    "jordinal",
+    "jstr",
+    "jushr",
+]

@@ -1,0 +1,81 @@
+"""The interface every generated behavior class implements."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from typing import ClassVar
+
+Emit = Callable[[str, object], None]
+"""``emit(port, value)``: sends one message on an out port (``None`` sends nothing)."""
+
+
+class Behavior:
+    """Base class of generated behaviors.
+
+    ``TIMING`` is ``"sync"`` (one :meth:`step` per time slice) or ``"timed"``/``"untimed"``
+    (:meth:`on_message` per message, :meth:`on_tick` per slice end). Ticks are the platform's
+    business: a behavior never sends one.
+    """
+
+    TIMING: ClassVar[str] = "sync"
+    IN_PORTS: ClassVar[tuple[str, ...]] = ()
+    OUT_PORTS: ClassVar[tuple[str, ...]] = ()
+    DELAYED: ClassVar[frozenset[str]] = frozenset()
+
+    def __init__(self, emit: Emit, params: Mapping[str, object] | None = None) -> None:
+        self._emit_fn = emit
+        self._params: Mapping[str, object] = params or {}
+        self._delay_hook: Callable[[], None] | None = None
+        self._delay_done = False
+
+    # -- the platform's side ------------------------------------------------------------
+    def set_delay_hook(self, hook: Callable[[], None]) -> None:
+        """Called by the platform: ``hook`` sends the initial tick of every delayed out port."""
+        self._delay_hook = hook
+
+    def start(self) -> None:
+        """Runs :meth:`init` and makes sure the delay point was passed exactly once."""
+        self._delay_done = False
+        self.init()
+        self._delay_point()
+
+    # -- the generated side -------------------------------------------------------------
+    def init(self) -> None:
+        """Produces the initial outputs (initial action, entry actions, ``init`` block)."""
+
+    def step(self, inputs: Mapping[str, object]) -> None:
+        """A sync behavior's time slice: the last message of every in port, or ``None``."""
+
+    def on_message(self, port: str, value: object) -> None:
+        """An event-driven behavior's message on an in port."""
+
+    def on_tick(self) -> None:
+        """The end of a time slice for an event-driven behavior."""
+
+    def current_state(self) -> str | None:
+        """The innermost current state (automata), for tests and tools."""
+        return None
+
+    def _emit(self, port: str, value: object) -> None:
+        if value is not None:
+            self._emit_fn(port, value)
+
+    def _delay_point(self) -> None:
+        """Where delayed out ports get their initial tick (between initial and entry actions)."""
+        if not self._delay_done:
+            self._delay_done = True
+            if self._delay_hook is not None:
+                self._delay_hook()
+
+    @staticmethod
+    def _in(inputs: Mapping[str, object], port: str, default: object) -> object:
+        """A slice's value of a port of primitive type: Java's default when it got no message."""
+        value = inputs.get(port)
+        return default if value is None else value
+
+    def _param(self, name: str, default: object = None) -> object:
+        return self._params.get(name, default)
+
+
+class NoBehavior(Behavior):
+    """The behavior of an atomic component without behavior: every slice only ends."""

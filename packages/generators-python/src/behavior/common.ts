@@ -1,0 +1,236 @@
+import type { BehaviorGenerationContext, ComponentView, DataTypeResult, FieldView, ParameterView, PortView, TypeView } from '@maa/generator-core';
+import { dataTypeQualifiedName } from '@maa/generator-core';
+import { GenerationError } from '@maa/generator-core/node';
+import { PythonTranslator, isInPort, isOutPort, pyName, type NameContext, type Node } from '../python/expressions.js';
+
+/** Names of the base class a generated attribute must not shadow. */
+const RESERVED = new Set([
+    'init', 'step', 'start', 'on_message', 'on_tick', 'current_state', 'set_delay_hook', 'TIMING', 'IN_PORTS', 'OUT_PORTS',
+    'DELAYED', 'PARAMETERS', 'self', 'emit', 'params', 'inputs', 'port', 'value', 'event'
+]);
+
+/** The attribute of a port, parameter or field in a behavior class. */
+export function attr(name: string): string {
+    const n = pyName(name);
+    return RESERVED.has(n) || n.startsWith('_') ? `${n}_` : n;
+}
+
+/** `a.b.C` to `a/b/c` style module path parts: package folders plus snake-case module name. */
+export function snake(name: string): string {
+    return name
+        .replace(/([a-z0-9])([A-Z])/g, '$1_$2')
+        .replace(/([A-Z]+)([A-Z][a-z])/g, '$1_$2')
+        .toLowerCase();
+}
+
+export function modulePath(packageName: string, moduleName: string): { module: string; file: string } {
+    const parts = packageName ? packageName.split('.').map(pyName) : [];
+    return { module: [...parts, moduleName].join('.'), file: [...parts, `${moduleName}.py`].join('/') };
+}
+
+/** Keeps the imports of a generated module, sorted. */
+export class Imports {
+    private readonly from = new Map<string, Set<string>>();
+    add(module: string, name: string): void {
+        let set = this.from.get(module);
+        if (!set) this.from.set(module, (set = new Set()));
+        set.add(name);
+    }
+    lines(): string[] {
+        // isort sections: standard library, then the build's own packages (model packages and
+        // run-time environments; ruff run inside the generated folder sees both as first-party).
+        const groups: string[][] = [[], []];
+        const modules = [...this.from.keys()].sort((a, b) => cmp(a.toLowerCase(), b.toLowerCase()));
+        for (const module of modules) {
+            const names = [...this.from.get(module)!].sort();
+            const top = module.split('.')[0];
+            const group = STDLIB.has(top) ? 0 : 1;
+            for (const n of names.filter((x) => x.includes(' as '))) groups[group].push(...importLine(module, [n]));
+            const plain = names.filter((n) => !n.includes(' as '));
+            if (plain.length) groups[group].push(...importLine(module, plain));
+        }
+        return groups.filter((g) => g.length).flatMap((g, i) => (i === 0 ? g : ['', ...g]));
+    }
+}
+
+/** `from m import a, b`, wrapped like isort when longer than the line length (140). */
+function importLine(module: string, names: readonly string[]): string[] {
+    const line = `from ${module} import ${names.join(', ')}`;
+    if (line.length <= 140) return [line];
+    return [`from ${module} import (`, ...names.map((n) => `    ${n},`), ')'];
+}
+
+const STDLIB = new Set(['collections', 'typing', 'enum', 'dataclasses', 'json', 'math', 'sys', 'importlib', 'struct', 'abc']);
+
+function cmp(a: string, b: string): number {
+    return a < b ? -1 : a > b ? 1 : 0;
+}
+
+const PRIMITIVE_PY: Record<string, string> = {
+    int: 'int', Integer: 'int', long: 'int', Long: 'int', short: 'int', Short: 'int', byte: 'int', Byte: 'int',
+    char: 'int', Character: 'int', float: 'float', Float: 'float', double: 'float', Double: 'float',
+    boolean: 'bool', Boolean: 'bool', String: 'str'
+};
+
+/** Resolves class-diagram types through the data type generator's result. */
+export function typeRef(datatypes: DataTypeResult | undefined, imports: Imports, decl: Node): string {
+    const qualified = dataTypeQualifiedName(decl as never);
+    const mapping = datatypes?.types?.[qualified];
+    if (mapping?.module && mapping.name) {
+        imports.add(mapping.module, mapping.name);
+        return mapping.name;
+    }
+    return pyName(String(decl.name));
+}
+
+/** A data type by its simple name (for qualified references such as `pkg.Types.Color.RED`). */
+export function typeBySimpleName(datatypes: DataTypeResult | undefined, imports: Imports, name: string): string | undefined {
+    const key = Object.keys(datatypes?.types ?? {}).sort().find((q) => q.split('.').pop() === name);
+    const mapping = key ? datatypes?.types?.[key] : undefined;
+    if (!mapping?.module || !mapping.name) return undefined;
+    imports.add(mapping.module, mapping.name);
+    return mapping.name;
+}
+
+/** A Python annotation for a model type. */
+export function pyType(t: TypeView, datatypes: DataTypeResult | undefined, imports: Imports): string {
+    const prim = PRIMITIVE_PY[t.typeName];
+    if (prim) return prim;
+    if (t.type.kind === 'object' && t.type.args.length === 0) {
+        const decl = t.type.decl as unknown as Node;
+        if (AstBuiltin(decl)) return 'object';
+        return typeRef(datatypes, imports, decl);
+    }
+    return 'object';
+}
+
+function AstBuiltin(decl: Node): boolean {
+    let root: Node = decl;
+    while (root.$container) root = root.$container as Node;
+    return (root.$document?.uri?.scheme ?? '') === 'builtin';
+}
+
+/** What a behavior class needs about its component. */
+export interface ClassSpec {
+    readonly className: string;
+    readonly timing: string;
+    readonly ports: readonly PortView[];
+    readonly parameters: readonly ParameterView[];
+    readonly fields: readonly FieldView[];
+    readonly datatypes?: DataTypeResult;
+}
+
+export function specFrom(ctx: BehaviorGenerationContext, component: ComponentView, timing: string): ClassSpec {
+    return {
+        className: `${component.name}Behavior`,
+        timing,
+        ports: ctx.ports ?? component.ports,
+        parameters: ctx.parameters ?? component.parameters,
+        fields: ctx.fields ?? component.fields,
+        datatypes: ctx.datatypes
+    };
+}
+
+/** A translator whose names are the attributes of a behavior class. */
+export function behaviorTranslator(spec: ClassSpec, imports: Imports): PythonTranslator {
+    const names: NameContext = {
+        name(target, ref) {
+            switch (target.$type) {
+                case 'Port':
+                case 'Field':
+                case 'Parameter':
+                    if (isOutPort(target)) return `self._last.get(${JSON.stringify(target.name)})`;
+                    return `self.${attr(target.name)}`;
+                case 'LocalVariable':
+                    return pyName(target.name);
+                case 'CDEnumConstant':
+                    return `${typeRef(spec.datatypes, imports, target.$container as Node)}.${pyName(target.name)}`;
+                case 'CDType':
+                case 'CDClass':
+                case 'CDInterface':
+                case 'CDEnum':
+                    return typeRef(spec.datatypes, imports, target);
+                default:
+                    throw new GenerationError(`'${target.name ?? target.$type}' (${target.$type}) cannot be used here by the Python generators`, ref);
+            }
+        },
+        send(target, value) {
+            return isOutPort(target) ? `self._emit(${JSON.stringify(target.name)}, ${value})` : undefined;
+        },
+        type: (decl) => typeRef(spec.datatypes, imports, decl),
+        typeBySimpleName: (name) => typeBySimpleName(spec.datatypes, imports, name)
+    };
+    return new PythonTranslator(names);
+}
+
+/** The class header, class variables and `__init__` of a behavior class. */
+export function classPrologue(spec: ClassSpec, imports: Imports, doc: string, extraInit: string[] = []): string[] {
+    const tr = behaviorTranslator(spec, imports);
+    imports.add('maa_behavior', 'Behavior');
+    imports.add('maa_behavior', 'Emit');
+    imports.add('collections.abc', 'Mapping');
+    const ins = spec.ports.filter((p) => p.direction === 'in');
+    const outs = spec.ports.filter((p) => p.direction === 'out');
+    const delayed = outs.filter((p) => p.delayed);
+    const tuple = (xs: readonly PortView[]): string => (xs.length === 0 ? '()' : `(${xs.map((p) => JSON.stringify(p.name)).join(', ')}${xs.length === 1 ? ',' : ''})`);
+    const lines = [
+        `class ${spec.className}(Behavior):`,
+        `    """${doc}"""`,
+        '',
+        `    TIMING = ${JSON.stringify(spec.timing)}`,
+        `    IN_PORTS = ${tuple(ins)}`,
+        `    OUT_PORTS = ${tuple(outs)}`,
+        `    DELAYED = ${delayed.length ? `frozenset({${delayed.map((p) => JSON.stringify(p.name)).join(', ')}})` : 'frozenset()'}`,
+        '',
+        '    def __init__(self, emit: Emit, params: Mapping[str, object] | None = None) -> None:',
+        '        super().__init__(emit, params)',
+        '        self._last: dict[str, object] = {}'
+    ];
+    for (const p of spec.parameters) {
+        const t = pyType(p, spec.datatypes, imports);
+        const def = p.default ? tr.expr(p.default as Node) : 'None';
+        lines.push(`        self.${attr(p.name)}: ${t} = self._params.get(${JSON.stringify(p.name)}, ${def})  # type: ignore[assignment]`);
+    }
+    for (const f of spec.fields) {
+        const t = pyType(f, spec.datatypes, imports);
+        lines.push(`        self.${attr(f.name)}: ${t} = ${tr.expr(f.init as Node)}`);
+    }
+    for (const p of ins) {
+        const t = pyType(p, spec.datatypes, imports);
+        lines.push(`        self.${attr(p.name)}: ${t} | None = None`);
+    }
+    lines.push(...extraInit.map((l) => `        ${l}`));
+    lines.push(
+        '',
+        '    def _emit(self, port: str, value: object) -> None:',
+        '        if value is not None:',
+        '            self._last[port] = value',
+        '        super()._emit(port, value)'
+    );
+    return lines;
+}
+
+/** Statements that copy a sync slice's inputs to the in-port attributes. */
+export function readInputs(spec: ClassSpec): string[] {
+    return spec.ports.filter((p) => p.direction === 'in').map((p) => {
+        const def = primitiveDefault(p);
+        return `self.${attr(p.name)} = ${def === 'None' ? `inputs.get(${JSON.stringify(p.name)})` : `self._in(inputs, ${JSON.stringify(p.name)}, ${def})`}  # type: ignore[assignment]`;
+    });
+}
+
+/** Java's default of a primitive type (what a sync slice reads from a port without message), else `None`. */
+export function primitiveDefault(t: TypeView): string {
+    switch (t.typeName) {
+        case 'int': case 'long': case 'short': case 'byte': case 'char': return '0';
+        case 'float': case 'double': return '0.0';
+        case 'boolean': return 'False';
+        default: return 'None';
+    }
+}
+
+export function indent(lines: readonly string[], n: number): string[] {
+    const pad = ' '.repeat(n);
+    return lines.map((l) => (l.length ? pad + l : l));
+}
+
+export { isInPort, isOutPort };

@@ -1,0 +1,238 @@
+import type { AstNode } from 'langium';
+import { GenerationError } from '@maa/generator-core/node';
+import { portHeader } from '@maa/language-adl';
+
+/** A loosely typed AST node: the translators read `$type` and fields, so they work on any family build. */
+// eslint-disable-next-line @typescript-eslint/no-explicit-any
+export type Node = AstNode & Record<string, any>;
+
+/** How names of the model appear in the generated Python code. */
+export interface NameContext {
+    /** Python for a name expression that refers to `target` (a port, field, parameter, local variable, type or constant). */
+    name(target: Node, ref: Node): string;
+    /** Python statement for writing `value` to an out port, or undefined when `target` is no out port. */
+    send?(target: Node, value: string): string | undefined;
+    /** Python for a class-diagram type (enum/class). */
+    type(decl: Node): string;
+    /** Python for a type named by its simple name (from a qualified name like `pkg.Types.Color`), if known. */
+    typeBySimpleName?(name: string): string | undefined;
+}
+
+/** `a.b.c` of a chain of names and field accesses whose first name does not resolve (a package prefix). */
+function qualifiedParts(e: Node): string[] | undefined {
+    if (e.$type === 'NameExpression') return e.ref?.ref ? undefined : [String(e.ref?.$refText)];
+    if (e.$type === 'FieldAccessExpression') {
+        const head = qualifiedParts(e.receiver as Node);
+        return head ? [...head, String(e.member)] : undefined;
+    }
+    return undefined;
+}
+
+const PY_KEYWORDS = new Set([
+    'False', 'None', 'True', 'and', 'as', 'assert', 'async', 'await', 'break', 'class', 'continue', 'def', 'del', 'elif',
+    'else', 'except', 'finally', 'for', 'from', 'global', 'if', 'import', 'in', 'is', 'lambda', 'nonlocal', 'not', 'or',
+    'pass', 'raise', 'return', 'try', 'while', 'with', 'yield', 'match', 'case', 'type'
+]);
+
+/** A Python-safe identifier for a model name. */
+export function pyName(name: string): string {
+    return PY_KEYWORDS.has(name) ? `${name}_` : name;
+}
+
+export function isOutPort(n: Node | undefined): boolean {
+    return !!n && n.$type === 'Port' && portHeader(n as never).direction === 'out';
+}
+
+export function isInPort(n: Node | undefined): boolean {
+    return !!n && n.$type === 'Port' && portHeader(n as never).direction === 'in';
+}
+
+const BINARY: Record<string, string> = {
+    '||': 'or', '&&': 'and', '==': '==', '!=': '!=', '<': '<', '<=': '<=', '>': '>', '>=': '>=',
+    '+': '+', '-': '-', '*': '*', '|': '|', '^': '^', '&': '&', '<<': '<<', '>>': '>>'
+};
+
+function stripSuffix(text: string): string {
+    return text.replace(/[lLfFdD]$/, '');
+}
+
+function pyString(s: string): string {
+    return JSON.stringify(s);
+}
+
+/** Translates the Java-like expressions and statements of the models to Python. */
+export class PythonTranslator {
+    constructor(private readonly names: NameContext) {}
+
+    expr(e: Node): string {
+        switch (e.$type) {
+            case 'BooleanLiteral': return e.value === 'true' ? 'True' : 'False';
+            case 'NullLiteral': return 'None';
+            case 'IntLiteral': return String(typeof e.value === 'number' ? e.value : Number(e.value));
+            case 'LongLiteral': return String(Number(stripSuffix(String(e.value))));
+            case 'FloatLiteral': {
+                const raw = String(e.value);
+                const text = /[eE.]/.test(raw) ? stripSuffix(raw) : `${stripSuffix(raw)}.0`;
+                return /[fF]$/.test(raw) ? `f32(${text})` : text;
+            }
+            case 'CharLiteral': {
+                const raw = String(e.value);
+                const inner = raw.startsWith("'") ? raw.slice(1, -1) : raw;
+                const ch = inner.startsWith('\\') ? JSON.parse(`"${inner}"`) as string : inner;
+                return String(ch.codePointAt(0) ?? 0);
+            }
+            case 'StringLiteral': {
+                const raw = String(e.value);
+                return raw.startsWith('"') ? pyString(JSON.parse(raw) as string) : pyString(raw);
+            }
+            case 'NameExpression': {
+                const target = e.ref?.ref as Node | undefined;
+                if (!target) throw new GenerationError(`unresolved name '${e.ref?.$refText}'`, e);
+                return this.names.name(target, e);
+            }
+            case 'FieldAccessExpression': {
+                const recv = e.receiver as Node;
+                const parts = qualifiedParts(e);
+                if (parts && parts.length >= 2) {
+                    const type = this.names.typeBySimpleName?.(parts[parts.length - 2]);
+                    if (type) return `${type}.${pyName(parts[parts.length - 1])}`;
+                    throw new GenerationError(`unresolved name '${parts.join('.')}'`, e);
+                }
+                const recvTarget = recv.$type === 'NameExpression' ? recv.ref?.ref as Node | undefined : undefined;
+                if (isTypeDecl(recvTarget)) return `${this.names.type(recvTarget)}.${pyName(e.member)}`;
+                return `${this.expr(recv)}.${pyName(e.member)}`;
+            }
+            case 'CallExpression': return this.call(e);
+            case 'ArrayAccessExpression': return `${this.expr(e.receiver)}[${this.expr(e.index)}]`;
+            case 'ConditionalExpression':
+                return `(${this.expr(e.then)} if ${this.expr(e.condition)} else ${this.expr(e.else)})`;
+            case 'BinaryExpression': {
+                const l = this.expr(e.left);
+                const r = this.expr(e.right);
+                if (e.op === '/') return `jdiv(${l}, ${r})`;
+                if (e.op === '%') return `jmod(${l}, ${r})`;
+                if (e.op === '>>>') return `jushr(${l}, ${r})`;
+                if (e.op === '+' && (this.isStringy(e.left) || this.isStringy(e.right))) return `jconcat(${l}, ${r})`;
+                const op = BINARY[e.op as string];
+                if (!op) throw new GenerationError(`operator '${e.op}' is not supported by the Python generators`, e);
+                return `(${l} ${op} ${r})`;
+            }
+            case 'PrefixExpression': {
+                const o = this.expr(e.operand);
+                switch (e.op) {
+                    case '!': return `(not ${o})`;
+                    case '-': return `(-${o})`;
+                    case '+': return o;
+                    case '~': return `(~${o})`;
+                    default: throw new GenerationError(`'${e.op}' inside an expression is not supported; use it as a statement`, e);
+                }
+            }
+            case 'AssignmentExpression':
+            case 'PostfixExpression':
+                throw new GenerationError('an assignment inside an expression is not supported by the Python generators; use it as a statement', e);
+            default:
+                if (e.$type === 'Expression' && e.expression) return this.expr(e.expression);
+                throw new GenerationError(`expression '${e.$type}' is not supported by the Python generators`, e);
+        }
+    }
+
+    private isStringy(e: Node): boolean {
+        return e.$type === 'StringLiteral' || (e.$type === 'BinaryExpression' && e.op === '+' && (this.isStringy(e.left) || this.isStringy(e.right)));
+    }
+
+    private call(e: Node): string {
+        const recv = e.receiver as Node;
+        const args = (e.args as Node[]).map((a) => this.expr(a));
+        if (recv.$type === 'FieldAccessExpression') {
+            const obj = this.expr(recv.receiver);
+            switch (recv.member) {
+                case 'equals': return `(${obj} == ${args[0]})`;
+                case 'length': case 'size': return `len(${obj})`;
+                case 'isEmpty': return `(len(${obj}) == 0)`;
+                case 'toString': return `jstr(${obj})`;
+                case 'ordinal': return `jordinal(${obj})`;
+                default: return `${obj}.${pyName(recv.member)}(${args.join(', ')})`;
+            }
+        }
+        return `${this.expr(recv)}(${args.join(', ')})`;
+    }
+
+    /** Python statements (one per line, unindented) for a statement. */
+    stmt(s: Node): string[] {
+        switch (s.$type) {
+            case 'Block': {
+                const out = (s.statements as Node[]).flatMap((x) => this.stmt(x));
+                return out;
+            }
+            case 'EmptyStatement': return [];
+            case 'LocalVariableDeclaration':
+                return (s.variables as Node[]).map((v) => `${pyName(v.name)} = ${v.init ? this.expr(v.init) : 'None'}`);
+            case 'IfStatement': {
+                const out = [`if ${this.expr(s.condition)}:`, ...this.body(s.then)];
+                if (s.else) {
+                    const elseLines = this.body(s.else);
+                    out.push('else:', ...elseLines);
+                }
+                return out;
+            }
+            case 'WhileStatement':
+                return [`while ${this.expr(s.condition)}:`, ...this.body(s.body)];
+            case 'ForStatement': {
+                const out: string[] = s.init ? this.stmt(s.init) : [];
+                const cond = s.condition ? this.expr(s.condition) : 'True';
+                const updates = (s.updates as Node[]).flatMap((u) => this.exprStmt(u));
+                out.push(`while ${cond}:`, ...this.body(s.body), ...updates.map((u) => `    ${u}`));
+                return out;
+            }
+            case 'ExpressionStatement': return this.exprStmt(s.expression);
+            default:
+                throw new GenerationError(`statement '${s.$type}' is not supported by the Python generators`, s);
+        }
+    }
+
+    /** An indented body (never empty). */
+    body(s: Node): string[] {
+        const lines = this.stmt(s);
+        return (lines.length ? lines : ['pass']).map((l) => `    ${l}`);
+    }
+
+    /** Statements for a block/statement, `pass` when empty. */
+    block(s: Node | undefined): string[] {
+        const lines = s ? this.stmt(s) : [];
+        return lines.length ? lines : ['pass'];
+    }
+
+    private exprStmt(e: Node): string[] {
+        if (e.$type === 'AssignmentExpression') {
+            const left = e.left as Node;
+            let value = this.expr(e.right);
+            if (e.op !== '=') {
+                const op = (e.op as string).slice(0, -1);
+                const cur = this.expr(left);
+                value = op === '/' ? `jdiv(${cur}, ${value})` : op === '%' ? `jmod(${cur}, ${value})` : op === '>>>' ? `jushr(${cur}, ${value})` : `(${cur} ${op} ${value})`;
+            }
+            return [this.assign(left, value)];
+        }
+        if ((e.$type === 'PostfixExpression' || e.$type === 'PrefixExpression') && (e.op === '++' || e.op === '--')) {
+            const operand = e.operand as Node;
+            return [this.assign(operand, `(${this.expr(operand)} ${e.op === '++' ? '+' : '-'} 1)`)];
+        }
+        return [this.expr(e)];
+    }
+
+    private assign(left: Node, value: string): string {
+        if (left.$type === 'NameExpression') {
+            const target = left.ref?.ref as Node | undefined;
+            if (!target) throw new GenerationError(`unresolved name '${left.ref?.$refText}'`, left);
+            const sent = this.names.send?.(target, value);
+            if (sent) return sent;
+            return `${this.names.name(target, left)} = ${value}`;
+        }
+        return `${this.expr(left)} = ${value}`;
+    }
+}
+
+/** Whether a node declares a class-diagram type (class, interface, enum). */
+export function isTypeDecl(n: Node | undefined): n is Node {
+    return !!n && ['CDType', 'CDClass', 'CDInterface', 'CDEnum'].includes(n.$type);
+}

@@ -1,0 +1,5 @@
+package robot;
+
+<<handwritten>> component Sensor {
+  port <<sync>> out int value;
+}

@@ -1,0 +1,289 @@
+"""One simulation session with everything around it: what `maa-sim run` starts.
+
+`SimApp.start()` builds the world, the transport (a real rclpy node in ROS 2 mode, the local
+bus in lock-step mode), starts the application (node processes or the in-process controller),
+the rosbridge endpoint and the viser panel, then the loop. `stop()` takes it all down again,
+every child process included.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import shutil
+import sys
+import tempfile
+import threading
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Literal
+
+from .deployment import Deployment
+from .lockstep import LockstepPackage
+from .messages import JsonMessage
+from .rosbridge import RosbridgeServer, ServiceError, ServiceHandler
+from .runs import lockstep_session
+from .session import DEFAULT_PERIOD, Runner, SimEvent, SimSession
+from .transport import LocalBus
+from .world import ToastKitchen, WorldConfig
+
+Mode = Literal["ros2", "lockstep"]
+
+
+@dataclass
+class RunOptions:
+    package: Path
+    mode: Mode = "ros2"
+    scene: str = "toast_kitchen"
+    speed: float | None = None  # None: 1.0 in ROS 2 mode, 0 (as fast as possible) in lock-step mode
+    period: float | None = None
+    seed: int = 0
+    host: str = "127.0.0.1"
+    rosbridge_port: int | None = 9090  # None: no rosbridge endpoint
+    viser_port: int | None = 8080  # None: no viser panel
+    max_sim_time: float | None = None
+    until_goal: bool = False
+    paused: bool = False
+    on_node_failure: Literal["continue", "stop"] = "continue"
+    startup_timeout: float = 30.0
+    hang_timeout: float = 5.0
+    log_dir: Path | None = None
+    golden_seconds: float = WorldConfig.golden_seconds
+
+
+class SimApp:
+    def __init__(self, options: RunOptions) -> None:
+        self.options = options
+        self.session: SimSession | None = None
+        self.runner: Runner | None = None
+        self.rosbridge: RosbridgeServer | None = None
+        self.viewer: Any = None
+        self.supervisor: Any = None
+        self.transport: Any = None
+        self.lease: Any = None
+        self.domain_id: int | None = None
+        self.log_dir: Path | None = None
+        self._own_log_dir = False
+        self._stopped = threading.Event()
+        self.failed = threading.Event()
+
+    # ----------------------------------------------------------------------------- start
+
+    def start(self) -> None:
+        try:
+            if self.options.mode == "lockstep":
+                self._start_lockstep()
+            else:
+                self._start_ros2()
+            assert self.session is not None and self.runner is not None
+            self.session.event_listeners.append(self._on_event)
+            if self.options.rosbridge_port is not None:
+                self.rosbridge = RosbridgeServer(
+                    self.session.transport,
+                    host=self.options.host,
+                    port=self.options.rosbridge_port,
+                    services=self.control_services(),
+                    on_publish=self._on_client_publish if self.options.mode == "lockstep" else None,
+                )
+                self.rosbridge.start()
+            if self.options.viser_port is not None:
+                from .viewer import SceneView
+
+                self.viewer = SceneView(self.runner, host=self.options.host, port=self.options.viser_port)
+                self.viewer.start()
+            if self.options.paused:
+                self.runner.pause()
+            self.runner.start()
+        except BaseException:
+            self.stop()
+            raise
+
+    def _world(self) -> ToastKitchen:
+        return ToastKitchen(
+            self.options.scene, WorldConfig(seed=self.options.seed, golden_seconds=self.options.golden_seconds)
+        )
+
+    def _start_lockstep(self) -> None:
+        package = LockstepPackage.load(self.options.package)
+        controller = package.create()
+        period = self.options.period or package.period or DEFAULT_PERIOD
+        session, _ = lockstep_session(controller, seed=self.options.seed, period=period, scene=self.options.scene)
+        session.world.config.golden_seconds = self.options.golden_seconds
+        self.session = session
+        self.transport = session.transport
+        speed = 0.0 if self.options.speed is None else self.options.speed
+        self.runner = Runner(
+            session,
+            speed=speed,
+            controller=controller,
+            stop_when=self._goal if self.options.until_goal else None,
+            max_sim_time=self.options.max_sim_time,
+        )
+
+    def _start_ros2(self) -> None:
+        from .ros2 import DomainLease, NodeSupervisor, RosTransport
+
+        deployment = Deployment.load(self.options.package)
+        for entry in reversed(deployment.python_path):
+            if str(entry) not in sys.path:
+                sys.path.insert(0, str(entry))  # custom message packages of the application
+        self.lease = DomainLease()
+        self.domain_id = self.lease.domain_id
+        self.transport = RosTransport(self.domain_id)
+        period = self.options.period or DEFAULT_PERIOD
+        self.session = SimSession(self._world(), self.transport, period)
+        speed = 1.0 if self.options.speed is None else self.options.speed
+        self.runner = Runner(
+            self.session,
+            speed=speed,
+            stop_when=self._goal if self.options.until_goal else None,
+            max_sim_time=self.options.max_sim_time,
+        )
+        if self.options.log_dir is not None:
+            self.log_dir = self.options.log_dir
+        else:
+            self.log_dir = Path(tempfile.mkdtemp(prefix="maa-sim-"))
+            self._own_log_dir = True
+        self.supervisor = NodeSupervisor(
+            deployment,
+            self.domain_id,
+            self.transport,
+            report=self._report_node,
+            log_dir=self.log_dir,
+            startup_timeout=self.options.startup_timeout,
+            hang_timeout=self.options.hang_timeout,
+            on_failure=self._on_node_failure,
+        )
+        # The clock starts once every node answers (so no node misses the first commands).
+        self.session.publish(self.session.observe())
+        self.supervisor.start()
+        if not self.supervisor.wait_ready(self.options.startup_timeout):
+            self.session.report("warning", "supervisor", "not every node came up; starting the simulation anyway")
+
+    @staticmethod
+    def _goal(session: SimSession) -> bool:
+        return session.world.toast_on_plate()
+
+    # ----------------------------------------------------------------------------- events
+
+    def _report_node(self, level: str, source: str, message: str, details: dict[str, Any]) -> None:
+        assert self.session is not None
+        self.session.report(level, source, message, **details)
+
+    def _on_node_failure(self, _node: Any) -> None:
+        self.failed.set()
+        if self.options.on_node_failure == "stop" and self.runner is not None:
+            self.runner.finish("a node failed")
+
+    def _on_event(self, event: SimEvent) -> None:
+        text = f"[maa-sim] {event.level}: {event.source}: {event.message}"
+        tail = event.details.get("stderr_tail")
+        if tail:
+            text += "\n  stderr (last lines):\n" + "\n".join("    " + line for line in str(tail).splitlines())
+        print(text, file=sys.stderr, flush=True)
+        if self.rosbridge is not None and event.level in ("error", "warning"):
+            self.rosbridge.broadcast_status(event.level, f"{event.source}: {event.message}")
+
+    def _on_client_publish(self, topic: str, msg: JsonMessage) -> bool:
+        """Lock-step mode: a client's message on a port topic goes to the controller's next slice."""
+        assert self.runner is not None and self.session is not None
+        transport = self.session.transport
+        if isinstance(transport, LocalBus):
+            type_name = transport.topic_type(topic)
+            if type_name is not None:
+                from .messages import validate
+
+                msg = validate(type_name, msg)
+        self.runner.inject(topic, msg)
+        if isinstance(transport, LocalBus):
+            transport.deliver(topic, msg)  # actuator topics reach the session this way
+        return True
+
+    # ----------------------------------------------------------------------------- services
+
+    def control_services(self) -> dict[str, ServiceHandler]:
+        def runner() -> Runner:
+            assert self.runner is not None
+            return self.runner
+
+        def ok(message: str = "") -> JsonMessage:
+            return {"success": True, "message": message, "status": runner().status()}
+
+        def pause(_args: JsonMessage) -> JsonMessage:
+            runner().pause()
+            return ok("paused")
+
+        def resume(_args: JsonMessage) -> JsonMessage:
+            runner().resume()
+            return ok("running")
+
+        def step(args: JsonMessage) -> JsonMessage:
+            steps = args.get("steps", 1)
+            if isinstance(steps, bool) or not isinstance(steps, int):
+                raise ServiceError("steps must be an integer")
+            runner().step(steps)
+            return ok(f"stepped {steps} period(s)")
+
+        def reset(args: JsonMessage) -> JsonMessage:
+            seed = args.get("seed")
+            if seed is not None and (isinstance(seed, bool) or not isinstance(seed, int)):
+                raise ServiceError("seed must be an integer")
+            runner().reset(seed)
+            return ok("reset")
+
+        def set_speed(args: JsonMessage) -> JsonMessage:
+            speed = args.get("speed")
+            if isinstance(speed, bool) or not isinstance(speed, int | float):
+                raise ServiceError("speed must be a number")
+            runner().set_speed(float(speed))
+            return ok(f"speed {speed}")
+
+        def get_status(_args: JsonMessage) -> JsonMessage:
+            return self.status()
+
+        return {
+            "sim/pause": pause,
+            "sim/resume": resume,
+            "sim/step": step,
+            "sim/reset": reset,
+            "sim/set_speed": set_speed,
+            "sim/get_status": get_status,
+        }
+
+    def status(self) -> JsonMessage:
+        assert self.runner is not None and self.session is not None
+        return {
+            "mode": self.options.mode,
+            **self.runner.status(),
+            "domain_id": self.domain_id,
+            "nodes": self.supervisor.statuses() if self.supervisor is not None else [],
+            "events": [e.as_json() for e in list(self.session.events)[-20:]],
+            "rosbridge": self.rosbridge.url if self.rosbridge is not None else None,
+            "viser": self.viewer.url if self.viewer is not None else None,
+        }
+
+    # ----------------------------------------------------------------------------- stop
+
+    def wait(self, timeout: float | None = None) -> bool:
+        """Waits until the run finishes (goal, time limit, failure policy); True when it did."""
+        assert self.runner is not None
+        return self.runner.finished.wait(timeout)
+
+    def stop(self) -> None:
+        if self._stopped.is_set():
+            return
+        self._stopped.set()
+        if self.runner is not None:
+            self.runner.stop()
+        if self.supervisor is not None:
+            self.supervisor.stop()
+        if self.viewer is not None:
+            self.viewer.stop()
+        if self.rosbridge is not None:
+            self.rosbridge.stop()
+        if self.transport is not None and hasattr(self.transport, "close"):
+            self.transport.close()
+        if self.lease is not None:
+            self.lease.release()
+        if self._own_log_dir and self.log_dir is not None and not self.failed.is_set():
+            with contextlib.suppress(OSError):
+                shutil.rmtree(self.log_dir)

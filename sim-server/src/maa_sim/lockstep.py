@@ -1,0 +1,128 @@
+"""Lock-step mode: the application runs in the simulator's process, one time slice per period.
+
+The python-timesync build of an application implements `LockstepController`; the simulator
+calls `step` once per control period with the messages of that instant and applies the
+actuator messages it returns before stepping the physics. A package directory for lock-step
+mode holds `lockstep.json`:
+
+    {
+      "format": "maa-lockstep/1",
+      "factory": "toast_service_robot_timesync.sim:create_controller",
+      "python_path": ["."],
+      "period": 0.02,
+      "parameters": {}
+    }
+
+`factory` is `module:callable`; it is called with `parameters` and returns the controller.
+"""
+
+from __future__ import annotations
+
+import importlib
+import json
+import math
+import sys
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Protocol, runtime_checkable
+
+from .messages import JsonMessage
+
+LOCKSTEP_FORMAT = "maa-lockstep/1"
+
+#: What `step` may return per topic: one message, or several (a port written twice in a slice).
+OutputValue = JsonMessage | Sequence[JsonMessage]
+
+
+@runtime_checkable
+class LockstepController(Protocol):
+    """An application that runs one architecture time slice per call.
+
+    `inputs` maps topic names to the latest message of each simulator topic (`/clock`,
+    `/joint_states`, `/sensors/distance`, `/sensors/color`) plus messages injected over
+    rosbridge. The result maps topic names to the messages emitted in this slice: actuator
+    topics (`/arm/joint_command`, `/arm/gripper_command`, `/toaster/command`) are applied to
+    the simulation; every other topic (internal port topics) is shown over rosbridge. A
+    controller may also have `reset()`, called when the simulation is reset, and `topics()`
+    returning `{topic: type}` of the port topics it emits.
+    """
+
+    def step(self, inputs: Mapping[str, JsonMessage]) -> Mapping[str, OutputValue]: ...
+
+
+def normalize_outputs(outputs: Mapping[str, OutputValue] | None) -> dict[str, list[JsonMessage]]:
+    """The controller's result as lists of messages per topic; rejects anything else."""
+    result: dict[str, list[JsonMessage]] = {}
+    if outputs is None:
+        return result
+    if not isinstance(outputs, Mapping):
+        raise TypeError("a lock-step controller must return a mapping of topic to message(s)")
+    for topic, value in outputs.items():
+        if not isinstance(topic, str):
+            raise TypeError("topic names must be strings")
+        if value is None:
+            continue
+        if isinstance(value, Mapping):
+            result[topic] = [dict(value)]
+        elif isinstance(value, Sequence) and not isinstance(value, str | bytes):
+            result[topic] = [dict(v) for v in value]
+        else:
+            raise TypeError(f"{topic}: a message must be an object (or a list of objects)")
+    return result
+
+
+@dataclass
+class LockstepPackage:
+    """A lock-step build described by its `lockstep.json`."""
+
+    directory: Path
+    factory: str
+    python_path: list[Path] = field(default_factory=list)
+    period: float | None = None
+    parameters: dict[str, Any] = field(default_factory=dict)
+
+    @classmethod
+    def load(cls, directory: Path) -> LockstepPackage:
+        path = directory / "lockstep.json"
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+        except FileNotFoundError:
+            raise ValueError(f"{path} does not exist (a lock-step package needs lockstep.json)") from None
+        except json.JSONDecodeError as exc:
+            raise ValueError(f"{path}: invalid JSON: {exc}") from None
+        if not isinstance(data, dict):
+            raise ValueError(f"{path}: expected an object")
+        if data.get("format") != LOCKSTEP_FORMAT:
+            raise ValueError(f"{path}: format must be {LOCKSTEP_FORMAT!r}")
+        factory = data.get("factory")
+        if not isinstance(factory, str) or ":" not in factory:
+            raise ValueError(f"{path}: factory must be 'module:callable'")
+        python_path = data.get("python_path", ["."])
+        if not isinstance(python_path, list) or not all(isinstance(p, str) for p in python_path):
+            raise ValueError(f"{path}: python_path must be a list of strings")
+        period = data.get("period")
+        if period is not None and (not isinstance(period, int | float) or not math.isfinite(period) or period <= 0):
+            raise ValueError(f"{path}: period must be a positive number of seconds")
+        parameters = data.get("parameters", {})
+        if not isinstance(parameters, dict):
+            raise ValueError(f"{path}: parameters must be an object")
+        return cls(
+            directory=directory,
+            factory=factory,
+            python_path=[(directory / p).resolve() for p in python_path],
+            period=float(period) if period is not None else None,
+            parameters=parameters,
+        )
+
+    def create(self) -> LockstepController:
+        for entry in reversed(self.python_path):
+            if str(entry) not in sys.path:
+                sys.path.insert(0, str(entry))
+        module_name, _, attr = self.factory.partition(":")
+        module = importlib.import_module(module_name)
+        factory = getattr(module, attr)
+        controller = factory(dict(self.parameters))
+        if not callable(getattr(controller, "step", None)):
+            raise TypeError(f"{self.factory} did not return a lock-step controller (no step method)")
+        return controller  # type: ignore[no-any-return]

@@ -1,0 +1,472 @@
+"""ROS 2 mode: a real rclpy node as the simulator's transport, and the supervisor of the app's nodes.
+
+Isolation: every session gets a ROS domain id of its own (reserved with a lock file, so that
+parallel sessions on one machine never share one) and `ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST`
+(the variable rcl of ROS 2 Kilted honours; `ROS_LOCALHOST_ONLY` is gone from it), for the
+simulator and for every node it starts.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import fcntl
+import json
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from collections import deque
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import IO, Any
+
+from .deployment import Deployment, NodeSpec
+from .messages import JsonMessage, MessageError, from_json, message_class, normalize_type, to_json
+from .transport import MessageCallback, Subscription
+
+DISCOVERY_ENV = {"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}
+
+#: Runs a node's command so that the kernel kills it when the simulator dies without cleaning up
+#: (SIGKILL, a crash): prctl(PR_SET_PDEATHSIG) survives the exec. argv: parent pid, command...
+_LAUNCHER = (
+    "import ctypes, os, signal, sys\n"
+    "ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)\n"
+    "os.getppid() == int(sys.argv[1]) or sys.exit(1)\n"
+    "os.execvp(sys.argv[2], sys.argv[2:])\n"
+)
+#: Domain ids handed out (0 is left to whatever else runs on the machine).
+DOMAIN_RANGE = range(1, 101)
+_LOCK_DIR = Path(tempfile.gettempdir()) / "maa-sim-domains"
+
+
+class DomainLease:
+    """A ROS domain id reserved for this process until `release()` (or its exit)."""
+
+    def __init__(self) -> None:
+        _LOCK_DIR.mkdir(parents=True, exist_ok=True)
+        start = (os.getpid() * 7919 + time.monotonic_ns()) % len(DOMAIN_RANGE)
+        for i in range(len(DOMAIN_RANGE)):
+            domain = DOMAIN_RANGE[(start + i) % len(DOMAIN_RANGE)]
+            handle = (_LOCK_DIR / f"{domain}.lock").open("a")
+            try:
+                fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except OSError:
+                handle.close()
+                continue
+            self.domain_id = domain
+            self._handle: IO[str] | None = handle
+            return
+        raise RuntimeError("no free ROS domain id (every one of 1..100 is in use on this machine)")
+
+    def release(self) -> None:
+        if self._handle is not None:
+            fcntl.flock(self._handle, fcntl.LOCK_UN)
+            self._handle.close()
+            self._handle = None
+
+
+class RosTransport:
+    """The simulator's rclpy node: publishes and subscribes topics in JSON form."""
+
+    def __init__(self, domain_id: int, node_name: str = "maa_sim") -> None:
+        import rclpy
+        from rclpy.executors import SingleThreadedExecutor
+        from rclpy.node import Node
+
+        for key, value in DISCOVERY_ENV.items():
+            os.environ[key] = value
+        self._rclpy = rclpy
+        self.context = rclpy.Context()
+        rclpy.init(context=self.context, domain_id=domain_id)
+        self.node = Node(node_name, context=self.context)
+        self.executor = SingleThreadedExecutor(context=self.context)
+        self.executor.add_node(self.node)
+        self._lock = threading.RLock()
+        self._publishers: dict[str, tuple[str, Any]] = {}
+        self._subscriptions: dict[str, tuple[str, Any, list[Subscription]]] = {}
+        self._thread = threading.Thread(target=self._spin, name="maa-sim-ros", daemon=True)
+        self._thread.start()
+
+    def _spin(self) -> None:
+        from rclpy.executors import ExternalShutdownException
+
+        with contextlib.suppress(ExternalShutdownException, RuntimeError):
+            while self.context.ok():
+                self.executor.spin_once(timeout_sec=0.1)
+
+    def close(self) -> None:
+        with contextlib.suppress(Exception):
+            self.executor.shutdown(timeout_sec=1.0)
+        with contextlib.suppress(Exception):
+            self.node.destroy_node()
+        with contextlib.suppress(Exception):
+            self._rclpy.shutdown(context=self.context)
+        self._thread.join(timeout=2)
+
+    # ----------------------------------------------------------------------------- Transport
+
+    def topics(self) -> list[tuple[str, str]]:
+        found: dict[str, str] = {}
+        for name, types in self.node.get_topic_names_and_types():
+            if types:
+                found[name] = types[0]
+        with self._lock:
+            for name, (type_name, _) in self._publishers.items():
+                found.setdefault(name, type_name)
+            for name, (type_name, _, _) in self._subscriptions.items():
+                found.setdefault(name, type_name)
+        return sorted(found.items())
+
+    def topic_type(self, topic: str) -> str | None:
+        with self._lock:
+            if topic in self._publishers:
+                return self._publishers[topic][0]
+            if topic in self._subscriptions:
+                return self._subscriptions[topic][0]
+        for name, types in self.node.get_topic_names_and_types():
+            if name == topic and types:
+                return str(types[0])
+        return None
+
+    def advertise(self, topic: str, type_name: str) -> None:
+        normalized = normalize_type(type_name)
+        with self._lock:
+            existing = self._publishers.get(topic)
+            if existing is not None:
+                if existing[0] != normalized:
+                    raise MessageError(f"{topic} is advertised with type {existing[0]}, not {normalized}")
+                return
+            known = self.topic_type(topic)
+            if known is not None and known != normalized:
+                raise MessageError(f"{topic} has type {known}, not {normalized}")
+            cls = message_class(normalized)
+            try:
+                publisher = self.node.create_publisher(cls, topic, 10)
+            except Exception as exc:  # noqa: BLE001 - rclpy raises several kinds for bad names
+                raise MessageError(f"cannot advertise {topic}: {exc}") from None
+            self._publishers[topic] = (normalized, publisher)
+
+    def publish(self, topic: str, msg: JsonMessage) -> None:
+        with self._lock:
+            entry = self._publishers.get(topic)
+        if entry is None:
+            type_name = self.topic_type(topic)
+            if type_name is None:
+                raise MessageError(f"{topic} has no type: advertise it first")
+            self.advertise(topic, type_name)
+            with self._lock:
+                entry = self._publishers[topic]
+        type_name, publisher = entry
+        publisher.publish(from_json(type_name, msg))
+
+    def subscribe(self, topic: str, type_name: str | None, callback: MessageCallback) -> Subscription:
+        with self._lock:
+            existing = self._subscriptions.get(topic)
+            normalized = normalize_type(type_name) if type_name else None
+            if existing is not None:
+                if normalized and normalized != existing[0]:
+                    raise MessageError(f"{topic} has type {existing[0]}, not {normalized}")
+                sub = Subscription(topic, callback)
+                existing[2].append(sub)
+                return sub
+            if normalized is None:
+                normalized = self.topic_type(topic)
+                if normalized is None:
+                    raise MessageError(f"the type of {topic} is unknown: give it in the subscribe request")
+            cls = message_class(normalized)
+            subs: list[Subscription] = []
+
+            def on_message(msg: Any, topic: str = topic, subs: list[Subscription] = subs) -> None:
+                if not subs:
+                    return
+                data = to_json(msg)
+                for s in list(subs):
+                    s.callback(topic, data)
+
+            try:
+                ros_sub = self.node.create_subscription(cls, topic, on_message, 10)
+            except Exception as exc:  # noqa: BLE001
+                raise MessageError(f"cannot subscribe to {topic}: {exc}") from None
+            sub = Subscription(topic, callback)
+            subs.append(sub)
+            self._subscriptions[topic] = (normalized, ros_sub, subs)
+            return sub
+
+    def unsubscribe(self, subscription: Subscription) -> None:
+        with self._lock:
+            entry = self._subscriptions.get(subscription.topic)
+            if entry is None:
+                return
+            subs = entry[2]
+            if subscription in subs:
+                subs.remove(subscription)
+            # The rclpy subscription stays: the simulator's own topics are subscribed for good,
+            # and re-creating subscriptions per client is not worth the discovery churn.
+
+    def nodes(self) -> list[str]:
+        result = []
+        for name, namespace in self.node.get_node_names_and_namespaces():
+            result.append(f"{namespace.rstrip('/')}/{name}")
+        return sorted(result)
+
+    # ----------------------------------------------------------------------------- liveness
+
+    def probe(self, fqn: str) -> Any:
+        """Starts a liveness probe of a node (its list_parameters service); returns a future."""
+        from rcl_interfaces.srv import ListParameters
+
+        with self._lock:
+            clients: dict[str, Any] = self.__dict__.setdefault("_probe_clients", {})
+            client = clients.get(fqn)
+            if client is None:
+                client = self.node.create_client(ListParameters, f"{fqn}/list_parameters")
+                clients[fqn] = client
+        if not client.service_is_ready():
+            return None
+        request = ListParameters.Request()
+        request.depth = 1
+        request.prefixes = ["use_sim_time"]
+        return client.call_async(request)
+
+
+@dataclass
+class NodeProcess:
+    spec: NodeSpec
+    process: subprocess.Popen[bytes]
+    log_path: Path
+    state: str = "starting"
+    returncode: int | None = None
+    started: float = field(default_factory=time.monotonic)
+    last_alive: float | None = None
+    probe: Any = None
+    probe_sent: float = 0.0
+    output: deque[str] = field(default_factory=lambda: deque(maxlen=40))
+    readers: list[threading.Thread] = field(default_factory=list)
+
+    def tail(self, lines: int = 20) -> str:
+        return "\n".join(list(self.output)[-lines:])
+
+    def as_json(self) -> JsonMessage:
+        return {
+            "name": self.spec.fqn,
+            "component": self.spec.component,
+            "instance": self.spec.instance,
+            "pid": self.process.pid,
+            "state": self.state,
+            "returncode": self.returncode,
+            "log": str(self.log_path),
+        }
+
+
+Reporter = Callable[[str, str, str, dict[str, Any]], None]
+
+
+class NodeSupervisor:
+    """Starts the deployment's nodes as processes, watches them, stops them all."""
+
+    def __init__(
+        self,
+        deployment: Deployment,
+        domain_id: int,
+        transport: RosTransport,
+        report: Reporter,
+        log_dir: Path,
+        startup_timeout: float = 30.0,
+        hang_timeout: float = 5.0,
+        probe_interval: float = 1.0,
+        on_failure: Callable[[NodeProcess], None] | None = None,
+    ) -> None:
+        self.deployment = deployment
+        self.domain_id = domain_id
+        self.transport = transport
+        self.report = report
+        self.log_dir = log_dir
+        self.startup_timeout = startup_timeout
+        self.hang_timeout = hang_timeout
+        self.probe_interval = probe_interval
+        self.on_failure = on_failure
+        self.processes: list[NodeProcess] = []
+        self._stopping = threading.Event()
+        self._monitor: threading.Thread | None = None
+        self._lock = threading.Lock()
+
+    def environment(self) -> dict[str, str]:
+        env = dict(os.environ)
+        env.update(self.deployment.env)
+        env["ROS_DOMAIN_ID"] = str(self.domain_id)
+        env.update(DISCOVERY_ENV)
+        env.pop("ROS_LOCALHOST_ONLY", None)
+        env.pop("ROS_STATIC_PEERS", None)
+        env["PYTHONUNBUFFERED"] = "1"
+        env["RCUTILS_COLORIZED_OUTPUT"] = "0"
+        paths = [str(p) for p in self.deployment.python_path]
+        if env.get("PYTHONPATH"):
+            paths.append(env["PYTHONPATH"])
+        env["PYTHONPATH"] = os.pathsep.join(paths)
+        return env
+
+    def command(self, spec: NodeSpec, params_file: Path) -> list[str]:
+        if spec.module is not None:
+            cmd = [sys.executable, "-m", spec.module]
+        else:
+            assert spec.executable is not None
+            exe = Path(spec.executable)
+            if not exe.is_absolute() and (self.deployment.directory / exe).exists():
+                exe = self.deployment.directory / exe
+            cmd = [str(exe)]
+        ros_args = ["--ros-args", "-r", f"__node:={spec.name}", "-r", f"__ns:={spec.namespace}"]
+        ros_args += ["-p", "use_sim_time:=true", "--params-file", str(params_file)]
+        full = [*cmd, *spec.args, *ros_args]
+        if sys.platform == "linux":
+            return [sys.executable, "-c", _LAUNCHER, str(os.getpid()), *full]
+        return full
+
+    def start(self) -> None:
+        self.log_dir.mkdir(parents=True, exist_ok=True)
+        env = self.environment()
+        for spec in self.deployment.nodes:
+            safe = spec.fqn.strip("/").replace("/", "__")
+            params_file = self.log_dir / f"{safe}.params.yaml"
+            # JSON is YAML: rcl's parameter file parser reads this as is.
+            params = {spec.fqn: {"ros__parameters": spec.parameters}}
+            params_file.write_text(json.dumps(params, indent=1), encoding="utf-8")
+            log_path = self.log_dir / f"{safe}.log"
+            process = subprocess.Popen(
+                self.command(spec, params_file),
+                cwd=self.deployment.directory,
+                env=env,
+                stdin=subprocess.DEVNULL,
+                stdout=subprocess.PIPE,
+                stderr=subprocess.PIPE,
+                start_new_session=True,
+            )
+            node = NodeProcess(spec, process, log_path)
+            log = log_path.open("a", encoding="utf-8", errors="replace")
+            for stream in (process.stdout, process.stderr):
+                assert stream is not None
+                reader = threading.Thread(target=self._read, args=(node, stream, log), daemon=True)
+                reader.start()
+                node.readers.append(reader)
+            self.processes.append(node)
+            self.report("info", spec.fqn, f"started (pid {process.pid})", {"pid": process.pid})
+        self._monitor = threading.Thread(target=self._watch, name="maa-sim-supervisor", daemon=True)
+        self._monitor.start()
+
+    @staticmethod
+    def _read(node: NodeProcess, stream: IO[bytes], log: IO[str]) -> None:
+        with contextlib.suppress(ValueError, OSError):
+            for raw in iter(stream.readline, b""):
+                line = raw.decode("utf-8", errors="replace").rstrip("\n")
+                node.output.append(line)
+                log.write(line + "\n")
+                log.flush()
+
+    def ready(self) -> bool:
+        """Every node has answered a liveness probe at least once."""
+        return all(p.last_alive is not None for p in self.processes)
+
+    def wait_ready(self, timeout: float) -> bool:
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if self.ready():
+                return True
+            if all(p.state not in ("starting", "running") for p in self.processes):
+                return False
+            time.sleep(0.05)
+        return self.ready()
+
+    def _fail(self, node: NodeProcess, state: str, message: str) -> None:
+        node.state = state
+        details = {"pid": node.process.pid, "returncode": node.returncode, "stderr_tail": node.tail()}
+        self.report("error", node.spec.fqn, message, details)
+        if self.on_failure is not None:
+            self.on_failure(node)
+
+    def _watch(self) -> None:
+        while not self._stopping.wait(0.1):
+            now = time.monotonic()
+            for node in list(self.processes):
+                if node.state not in ("starting", "running"):
+                    continue
+                code = node.process.poll()
+                if code is not None:
+                    node.returncode = code
+                    for reader in node.readers:
+                        reader.join(timeout=1)
+                    if self._stopping.is_set():
+                        break
+                    if code == 0:
+                        self._fail(node, "exited", f"node {node.spec.fqn} exited (code 0)")
+                    else:
+                        self._fail(node, "crashed", f"node {node.spec.fqn} crashed (exit code {code})")
+                    continue
+                self._check_alive(node, now)
+
+    def _check_alive(self, node: NodeProcess, now: float) -> None:
+        if node.probe is not None:
+            if node.probe.done():
+                node.probe = None
+                node.last_alive = now
+                if node.state == "starting":
+                    node.state = "running"
+                    self.report("info", node.spec.fqn, "running", {})
+            elif now - node.probe_sent > self.hang_timeout:
+                self._hung(
+                    node, f"node {node.spec.fqn} hangs: no answer to a liveness probe for {self.hang_timeout:g} s"
+                )
+            return
+        if node.state == "starting" and now - node.started > self.startup_timeout:
+            self._hung(node, f"node {node.spec.fqn} did not come up within {self.startup_timeout:g} s")
+            return
+        last = node.last_alive or 0.0
+        if now - last >= self.probe_interval:
+            future = self.transport.probe(node.spec.fqn)
+            if future is not None:
+                node.probe, node.probe_sent = future, now
+
+    def _hung(self, node: NodeProcess, message: str) -> None:
+        node.probe = None
+        _kill_group(node.process, signal.SIGKILL)
+        with contextlib.suppress(subprocess.TimeoutExpired):
+            node.process.wait(timeout=2)
+        node.returncode = node.process.returncode
+        for reader in node.readers:
+            reader.join(timeout=1)
+        self._fail(node, "hung", message + " (killed)")
+
+    def statuses(self) -> list[JsonMessage]:
+        return [p.as_json() for p in self.processes]
+
+    def stop(self, grace: float = 3.0) -> None:
+        """SIGINT to every node's process group, SIGKILL after the grace period, then reap."""
+        self._stopping.set()
+        if self._monitor is not None:
+            self._monitor.join(timeout=2)
+        alive = [p for p in self.processes if p.process.poll() is None]
+        for p in alive:
+            _kill_group(p.process, signal.SIGINT)
+        deadline = time.monotonic() + grace
+        for p in alive:
+            with contextlib.suppress(subprocess.TimeoutExpired):
+                p.process.wait(timeout=max(0.0, deadline - time.monotonic()))
+        for p in self.processes:
+            # the group too: a node may have started children of its own
+            _kill_group(p.process, signal.SIGKILL)
+            with contextlib.suppress(subprocess.TimeoutExpired):
+                p.process.wait(timeout=2)
+            if p.state in ("starting", "running"):
+                p.state = "stopped"
+                p.returncode = p.process.returncode
+            for stream in (p.process.stdout, p.process.stderr):
+                if stream is not None:
+                    with contextlib.suppress(OSError):
+                        stream.close()
+
+
+def _kill_group(process: subprocess.Popen[bytes], sig: signal.Signals) -> None:
+    with contextlib.suppress(ProcessLookupError, PermissionError):
+        os.killpg(process.pid, sig)

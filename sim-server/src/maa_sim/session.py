@@ -1,0 +1,339 @@
+"""A simulation session: the world, its topics, and the loop that advances it.
+
+`SimSession` advances the world by one control period at a time: it applies the actuator
+commands received since the last period, steps the physics and publishes the sensor topics.
+`Runner` drives a session in a thread, paced to real time times a speed factor (or as fast as
+possible), and implements the control services: pause, resume, step, reset, speed. With a
+lock-step controller the runner calls it once per period, in the loop, synchronously.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import threading
+import time
+from collections import deque
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from . import interface
+from .lockstep import LockstepController, normalize_outputs
+from .messages import JsonMessage, MessageError
+from .transport import LocalBus, Transport
+from .world import ToastKitchen
+
+#: Default control period (s): one architecture time slice in lock-step mode, one /clock tick.
+DEFAULT_PERIOD = 0.02
+
+
+@dataclass
+class SimEvent:
+    """Something the user should know: a rejected command, a crashed node, ..."""
+
+    time: float
+    level: str
+    source: str
+    message: str
+    details: dict[str, Any] = field(default_factory=dict)
+
+    def as_json(self) -> JsonMessage:
+        return {
+            "time": self.time,
+            "level": self.level,
+            "source": self.source,
+            "message": self.message,
+            **({"details": self.details} if self.details else {}),
+        }
+
+
+class SimSession:
+    """The world plus its topics on a transport."""
+
+    def __init__(
+        self,
+        world: ToastKitchen,
+        transport: Transport,
+        period: float = DEFAULT_PERIOD,
+        publish_outputs: bool = True,
+    ) -> None:
+        steps = round(period / world.timestep)
+        if steps < 1 or not math.isclose(steps * world.timestep, period, rel_tol=1e-9):
+            raise ValueError(f"the period {period} s is not a multiple of the physics step {world.timestep} s")
+        self.world = world
+        self.transport = transport
+        self.period = period
+        self.steps_per_period = steps
+        self.publish_outputs = publish_outputs
+        self.lock = threading.RLock()
+        self.clock_offset = 0.0
+        self.periods = 0
+        self._pending: list[tuple[str, JsonMessage]] = []
+        self._pending_lock = threading.Lock()
+        self.events: deque[SimEvent] = deque(maxlen=200)
+        self.event_listeners: list[Callable[[SimEvent], None]] = []
+        if isinstance(transport, LocalBus):
+            for spec in (*interface.SIM_OUTPUTS, *interface.SIM_INPUTS):
+                transport.declare(spec.name, spec.type)
+        else:
+            for spec in interface.SIM_OUTPUTS:
+                transport.advertise(spec.name, spec.type)
+        for spec in interface.SIM_INPUTS:
+            transport.subscribe(spec.name, spec.type, self._on_command)
+
+    @property
+    def clock(self) -> float:
+        """The published simulation time: monotonic across resets."""
+        return self.clock_offset + self.world.time
+
+    def report(self, level: str, source: str, message: str, **details: Any) -> SimEvent:
+        event = SimEvent(self.clock, level, source, message, details)
+        self.events.append(event)
+        for listener in list(self.event_listeners):
+            with contextlib.suppress(Exception):  # a listener must not stop the simulation
+                listener(event)
+        return event
+
+    def _on_command(self, topic: str, msg: JsonMessage) -> None:
+        with self._pending_lock:
+            self._pending.append((topic, msg))
+
+    def command(self, topic: str, msg: JsonMessage) -> None:
+        """Queues an actuator message for the next period (as if it had arrived on its topic)."""
+        self._on_command(topic, msg)
+
+    def _apply_pending(self) -> None:
+        with self._pending_lock:
+            pending, self._pending = self._pending, []
+        for topic, msg in pending:
+            try:
+                interface.apply_command(self.world, topic, msg)
+            except MessageError as exc:
+                self.report("warning", topic, f"command rejected: {exc}")
+
+    def observe(self) -> dict[str, JsonMessage]:
+        """The sensor and state messages of the current instant."""
+        return interface.sim_outputs(self.world, self.clock)
+
+    def advance(self) -> dict[str, JsonMessage]:
+        """One control period: apply commands, step the physics, publish and return the outputs."""
+        with self.lock:
+            self._apply_pending()
+            self.world.step(self.steps_per_period)
+            self.periods += 1
+            outputs = self.observe()
+        if self.publish_outputs:
+            self.publish(outputs)
+        return outputs
+
+    def publish(self, outputs: Mapping[str, JsonMessage]) -> None:
+        transport = self.transport
+        if isinstance(transport, LocalBus):
+            for topic, msg in outputs.items():
+                if transport.has_subscribers(topic):
+                    transport.deliver(topic, msg)
+            return
+        for topic, msg in outputs.items():
+            transport.publish(topic, msg)
+
+    def reset(self, seed: int | None = None) -> None:
+        """Back to the initial scene; the clock keeps running forward."""
+        with self.lock:
+            self.clock_offset += self.world.time
+            with self._pending_lock:
+                self._pending.clear()
+            self.world.reset(seed)
+
+
+class Runner:
+    """Runs a session in a thread: paced (speed > 0) or as fast as possible (speed == 0)."""
+
+    def __init__(
+        self,
+        session: SimSession,
+        speed: float = 1.0,
+        controller: LockstepController | None = None,
+        stop_when: Callable[[SimSession], bool] | None = None,
+        max_sim_time: float | None = None,
+    ) -> None:
+        if speed < 0 or not math.isfinite(speed):
+            raise ValueError("speed must be a finite number >= 0")
+        self.session = session
+        self.speed = speed
+        self.controller = controller
+        self.stop_when = stop_when
+        self.max_sim_time = max_sim_time
+        self.paused = False
+        self.finished = threading.Event()
+        self.finish_reason = ""
+        self._wake = threading.Condition()
+        self._stop = False
+        self._thread: threading.Thread | None = None
+        self._inputs: dict[str, JsonMessage] | None = None
+        # pacing statistics
+        self.lateness: deque[float] = deque(maxlen=5000)
+        self._rtf_window: deque[tuple[float, float]] = deque(maxlen=100)
+        self.injected: dict[str, JsonMessage] = {}
+        self._injected_lock = threading.Lock()
+
+    # ----------------------------------------------------------------------------- one period
+
+    def cycle(self) -> None:
+        """One control period, with the lock-step controller if there is one."""
+        session = self.session
+        if self.controller is not None:
+            with session.lock:
+                inputs = self._inputs if self._inputs is not None else session.observe()
+                with self._injected_lock:
+                    if self.injected:
+                        inputs = {**inputs, **self.injected}
+                        self.injected = {}
+                outputs = normalize_outputs(self.controller.step(inputs))
+                for topic, messages in outputs.items():
+                    for msg in messages:
+                        self._emit(topic, msg)
+                self._inputs = session.advance()
+        else:
+            session.advance()
+        self._rtf_window.append((time.perf_counter(), session.clock))
+        if self.stop_when is not None and self.stop_when(session):
+            self.finish("goal reached")
+        elif self.max_sim_time is not None and session.world.time >= self.max_sim_time - 1e-9:
+            self.finish("time limit reached")
+
+    def _emit(self, topic: str, msg: JsonMessage) -> None:
+        """A controller's message: actuator topics reach the session, every topic its observers."""
+        transport = self.session.transport
+        if isinstance(transport, LocalBus):
+            if transport.has_subscribers(topic):
+                transport.deliver(topic, msg)
+        elif topic in interface.ALL_TOPICS and interface.ALL_TOPICS[topic].publisher == "controller":
+            self.session.command(topic, msg)
+
+    def inject(self, topic: str, msg: JsonMessage) -> None:
+        """A message for the lock-step controller's next period (input injection from the IDE)."""
+        with self._injected_lock:
+            self.injected[topic] = msg
+
+    # ----------------------------------------------------------------------------- thread
+
+    def start(self) -> None:
+        self._thread = threading.Thread(target=self._loop, name="maa-sim-runner", daemon=True)
+        self._thread.start()
+
+    def run_blocking(self) -> None:
+        """Runs in the calling thread until finished or stopped."""
+        self._loop()
+
+    def stop(self) -> None:
+        with self._wake:
+            self._stop = True
+            self._wake.notify_all()
+        if self._thread is not None and self._thread is not threading.current_thread():
+            self._thread.join(timeout=5)
+
+    def finish(self, reason: str) -> None:
+        self.finish_reason = reason
+        self._stop = True
+        self.finished.set()
+
+    def _loop(self) -> None:
+        period = self.session.period
+        start_wall = time.perf_counter()
+        start_sim = self.session.clock
+        try:
+            while True:
+                with self._wake:
+                    while self.paused and not self._stop:
+                        self._wake.wait()
+                        start_wall, start_sim = time.perf_counter(), self.session.clock
+                    if self._stop:
+                        break
+                    speed = self.speed
+                with self.session.lock:
+                    if self.paused:  # paused meanwhile: no cycle may start after pause() returned
+                        continue
+                    self.cycle()
+                if speed > 0:
+                    due = start_wall + (self.session.clock - start_sim) / speed
+                    now = time.perf_counter()
+                    if due > now:
+                        time.sleep(due - now)
+                        now = time.perf_counter()
+                    late = now - due
+                    self.lateness.append(late)
+                    if late > max(0.5, 10 * period / speed):
+                        # fell far behind (machine too slow for this speed): do not race to catch up
+                        start_wall, start_sim = now, self.session.clock
+        except Exception as exc:  # noqa: BLE001 - reported, the servers stay up
+            self.session.report("error", "runner", f"simulation stopped: {exc!r}")
+            self.finish(f"error: {exc!r}")
+        finally:
+            self.finished.set()
+
+    # ----------------------------------------------------------------------------- control services
+
+    def pause(self) -> None:
+        """Pauses; when it returns, no period is in progress and none starts until resumed."""
+        with self._wake:
+            self.paused = True
+        with self.session.lock:
+            pass
+
+    def resume(self) -> None:
+        with self._wake:
+            self.paused = False
+            self._wake.notify_all()
+
+    def step(self, periods: int = 1) -> None:
+        """Advances by a number of periods while paused (pauses first)."""
+        if periods < 1 or periods > 100_000:
+            raise ValueError("steps must be between 1 and 100000")
+        self.pause()
+        with self.session.lock:
+            for _ in range(periods):
+                self.cycle()
+
+    def reset(self, seed: int | None = None) -> None:
+        with self.session.lock:
+            self.session.reset(seed)
+            self._inputs = None
+            reset = getattr(self.controller, "reset", None)
+            if callable(reset):
+                reset()
+
+    def set_speed(self, speed: float) -> None:
+        if speed < 0 or not math.isfinite(speed) or speed > 1000:
+            raise ValueError("speed must be between 0 (as fast as possible) and 1000")
+        with self._wake:
+            self.speed = speed
+            self._wake.notify_all()
+
+    def real_time_factor(self) -> float:
+        """Simulated seconds per wall second over the last periods (0 when not running)."""
+        if len(self._rtf_window) < 2:
+            return 0.0
+        (w0, s0), (w1, s1) = self._rtf_window[0], self._rtf_window[-1]
+        if w1 - w0 <= 0 or time.perf_counter() - w1 > 1.0:
+            return 0.0
+        return (s1 - s0) / (w1 - w0)
+
+    def status(self) -> JsonMessage:
+        session = self.session
+        with session.lock:
+            return self._status(session)
+
+    def _status(self, session: SimSession) -> JsonMessage:
+        return {
+            "time": session.clock,
+            "world_time": session.world.time,
+            "paused": self.paused,
+            "speed": self.speed,
+            "real_time_factor": self.real_time_factor(),
+            "periods": session.periods,
+            "period": session.period,
+            "toast_level": session.world.toast_level,
+            "toast_on_plate": session.world.toast_on_plate(),
+            "finished": self.finish_reason,
+        }

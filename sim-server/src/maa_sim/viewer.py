@@ -1,0 +1,232 @@
+"""The viser panel: the MuJoCo scene in the browser, updated at 30 fps.
+
+Every body becomes a frame node `/world/<body>`, every visible geom a primitive under it
+(boxes, cylinders, spheres, capsules, planes; meshes as triangle meshes), so an update only
+moves the frames. The bread's colour follows its toast level. A HUD shows the simulation time,
+the real-time factor and the toast; buttons pause, resume, step and reset the simulation; camera
+presets look at the whole kitchen, the toaster, the plate or the bread. viser serves its own
+web client (shipped in the wheel), which can be embedded in an iframe.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import sys
+import threading
+import time
+from collections.abc import Callable
+from typing import Any
+
+import mujoco
+import numpy as np
+import viser
+
+from .session import Runner
+from .world import PLATE_CENTER
+
+FPS = 30.0
+
+#: Camera presets: name -> (position, look-at).
+CAMERA_PRESETS: dict[str, tuple[tuple[float, float, float], tuple[float, float, float]]] = {
+    "Overview": ((0.75, -0.75, 0.65), (0.0, 0.0, 0.1)),
+    "Toaster": ((-0.45, 0.65, 0.45), (-0.15, 0.26, 0.12)),
+    "Plate": ((-0.5, -0.7, 0.35), (PLATE_CENTER[0], PLATE_CENTER[1], 0.03)),
+    "Bread": ((0.75, 0.25, 0.3), (0.3, 0.0, 0.05)),
+}
+
+
+def _rgb(rgba: Any) -> tuple[int, int, int]:
+    return (round(float(rgba[0]) * 255), round(float(rgba[1]) * 255), round(float(rgba[2]) * 255))
+
+
+class SceneView:
+    """A viser server showing one session's world."""
+
+    def __init__(self, runner: Runner, host: str = "127.0.0.1", port: int = 8080, fps: float = FPS) -> None:
+        self.runner = runner
+        self.session = runner.session
+        self.world = runner.session.world
+        self.fps = fps
+        # viser prints a banner on stdout; stdout belongs to maa-sim's own output (--status-json)
+        with contextlib.redirect_stdout(sys.stderr):
+            self.server = viser.ViserServer(host=host, port=port, label="maa-sim: toast kitchen", verbose=False)
+        self.port = self.server.get_port()
+        self.host = host
+        self.frames: dict[int, Any] = {}
+        self.geoms: dict[int, Any] = {}
+        self._geom_rgb: dict[int, tuple[int, int, int]] = {}
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        self.updates = 0
+        self._build_scene()
+        self._build_gui()
+
+    @property
+    def url(self) -> str:
+        return f"http://{self.host}:{self.port}"
+
+    # ----------------------------------------------------------------------------- scene
+
+    def _build_scene(self) -> None:
+        m = self.world.model
+        scene = self.server.scene
+        scene.set_up_direction("+z")
+        cam_pos, cam_look = CAMERA_PRESETS["Overview"]
+        self.server.initial_camera.position = cam_pos
+        self.server.initial_camera.look_at = cam_look
+        for body in range(m.nbody):
+            name = mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, body) or f"body{body}"
+            path = "/world" if body == 0 else f"/world/{name}"
+            if body != 0:
+                self.frames[body] = scene.add_frame(path, show_axes=False)
+        for geom in range(m.ngeom):
+            if int(m.geom_group[geom]) >= 3 or float(m.geom_rgba[geom][3]) == 0.0:
+                continue
+            body = int(m.geom_bodyid[geom])
+            body_name = mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_BODY, body) or f"body{body}"
+            parent = "/world" if body == 0 else f"/world/{body_name}"
+            name = mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_GEOM, geom) or f"geom{geom}"
+            handle = self._add_geom(f"{parent}/{name}", geom)
+            if handle is not None:
+                self.geoms[geom] = handle
+                self._geom_rgb[geom] = _rgb(m.geom_rgba[geom])
+        self._update_poses()
+
+    def _add_geom(self, path: str, geom: int) -> Any:
+        m = self.world.model
+        scene = self.server.scene
+        kind = int(m.geom_type[geom])
+        size = m.geom_size[geom]
+        rgba = m.geom_rgba[geom]
+        pose: dict[str, Any] = {"position": tuple(m.geom_pos[geom]), "wxyz": tuple(m.geom_quat[geom])}
+        color = _rgb(rgba)
+        opacity = float(rgba[3]) if rgba[3] < 1 else None
+        g = mujoco.mjtGeom
+        if kind == g.mjGEOM_PLANE:
+            sx = float(size[0]) * 2 if size[0] > 0 else 4.0
+            sy = float(size[1]) * 2 if size[1] > 0 else 4.0
+            pose["position"] = (pose["position"][0], pose["position"][1], pose["position"][2] - 0.001)
+            return scene.add_box(path, color=color, dimensions=(sx, sy, 0.002), opacity=opacity, **pose)
+        if kind == g.mjGEOM_BOX:
+            dims = (2 * float(size[0]), 2 * float(size[1]), 2 * float(size[2]))
+            return scene.add_box(path, color=color, dimensions=dims, opacity=opacity, **pose)
+        if kind == g.mjGEOM_CYLINDER:
+            return scene.add_cylinder(
+                path, radius=float(size[0]), height=2 * float(size[1]), color=color, opacity=opacity, **pose
+            )
+        if kind == g.mjGEOM_SPHERE:
+            return scene.add_icosphere(path, radius=float(size[0]), color=color, opacity=opacity, **pose)
+        if kind == g.mjGEOM_CAPSULE:
+            handle = scene.add_frame(path, show_axes=False, **pose)
+            r, h = float(size[0]), float(size[1])
+            scene.add_cylinder(f"{path}/body", radius=r, height=2 * h, color=color, opacity=opacity)
+            scene.add_icosphere(f"{path}/top", radius=r, color=color, position=(0, 0, h), opacity=opacity)
+            scene.add_icosphere(f"{path}/bottom", radius=r, color=color, position=(0, 0, -h), opacity=opacity)
+            return handle
+        if kind == g.mjGEOM_ELLIPSOID:
+            return scene.add_icosphere(
+                path, radius=1.0, color=color, scale=(float(size[0]), float(size[1]), float(size[2])), **pose
+            )
+        if kind == g.mjGEOM_MESH:
+            mesh = int(m.geom_dataid[geom])
+            v0, nv = int(m.mesh_vertadr[mesh]), int(m.mesh_vertnum[mesh])
+            f0, nf = int(m.mesh_faceadr[mesh]), int(m.mesh_facenum[mesh])
+            vertices = np.array(m.mesh_vert[v0 : v0 + nv], dtype=np.float32)
+            faces = np.array(m.mesh_face[f0 : f0 + nf], dtype=np.uint32)
+            return scene.add_mesh_simple(path, vertices, faces, color=color, opacity=opacity, **pose)
+        return None
+
+    def _update_poses(self) -> None:
+        d = self.world.data
+        with self.session.lock:
+            xpos = np.array(d.xpos)
+            xquat = np.array(d.xquat)
+            rgba = {g: _rgb(self.world.model.geom_rgba[g]) for g in self.geoms}
+        with self.server.atomic():
+            for body, frame in self.frames.items():
+                frame.position = tuple(float(v) for v in xpos[body])
+                frame.wxyz = tuple(float(v) for v in xquat[body])
+            for geom, rgb in rgba.items():
+                if self._geom_rgb.get(geom) != rgb:
+                    self._geom_rgb[geom] = rgb
+                    self.geoms[geom].color = rgb
+        self.updates += 1
+
+    # ----------------------------------------------------------------------------- GUI
+
+    def _build_gui(self) -> None:
+        gui = self.server.gui
+        self.hud = gui.add_markdown(self._hud_text())
+        with gui.add_folder("Simulation"):
+            pause = gui.add_button("Pause")
+            resume = gui.add_button("Resume")
+            step = gui.add_button("Step")
+            reset = gui.add_button("Reset")
+            speed = gui.add_slider(
+                "Speed", min=0.1, max=10.0, step=0.1, initial_value=max(0.1, self.runner.speed or 1.0)
+            )
+        pause.on_click(lambda _e: self.runner.pause())
+        resume.on_click(lambda _e: self.runner.resume())
+        step.on_click(lambda _e: self._guard(lambda: self.runner.step(1)))
+        reset.on_click(lambda _e: self._guard(self.runner.reset))
+        speed.on_update(lambda _e: self._guard(lambda: self.runner.set_speed(float(speed.value))))
+        with gui.add_folder("Camera"):
+            for name in CAMERA_PRESETS:
+                button = gui.add_button(name)
+                button.on_click(self._look_handler(name))
+
+    def _look_handler(self, preset: str) -> Callable[[Any], None]:
+        def handler(_event: Any) -> None:
+            self.look(preset)
+
+        return handler
+
+    @staticmethod
+    def _guard(action: Callable[[], None]) -> None:
+        with contextlib.suppress(ValueError):
+            action()
+
+    def look(self, preset: str) -> None:
+        position, look_at = CAMERA_PRESETS[preset]
+        for client in self.server.get_clients().values():
+            with client.atomic():
+                client.camera.position = position
+                client.camera.look_at = look_at
+
+    def _hud_text(self) -> str:
+        status = self.runner.status()
+        world = self.world
+        state = "paused" if status["paused"] else "running"
+        return (
+            f"**sim time** {status['time']:.2f} s &nbsp; **real-time factor** {status['real_time_factor']:.2f}x"
+            f" &nbsp; ({state})  \n**toast** {world.color()} (level {world.toast_level:.2f})"
+            f"{' &nbsp; **on the plate**' if status['toast_on_plate'] else ''}"
+        )
+
+    # ----------------------------------------------------------------------------- loop
+
+    def start(self) -> None:
+        self._thread = threading.Thread(target=self._loop, name="maa-sim-viser", daemon=True)
+        self._thread.start()
+
+    def _loop(self) -> None:
+        period = 1.0 / self.fps
+        next_time = time.perf_counter()
+        hud_every = max(1, round(self.fps / 5))
+        while not self._stop.is_set():
+            with contextlib.suppress(Exception):  # a disconnecting client must not stop the panel
+                self._update_poses()
+                if self.updates % hud_every == 0:
+                    self.hud.content = self._hud_text()
+            next_time += period
+            delay = next_time - time.perf_counter()
+            if delay < -1.0:
+                next_time = time.perf_counter()
+            self._stop.wait(max(0.0, delay))
+
+    def stop(self) -> None:
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(timeout=2)
+        with contextlib.suppress(Exception), contextlib.redirect_stdout(sys.stderr):
+            self.server.stop()

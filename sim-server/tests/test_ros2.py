@@ -1,0 +1,191 @@
+"""ROS 2 mode with real rclpy processes: the toast ends on the plate; failures are reported; shutdown is clean."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from rosbridge_client import Client
+
+from maa_sim.app import RunOptions, SimApp
+from maa_sim.ros2 import DomainLease
+
+SIM_SERVER = Path(__file__).resolve().parent.parent
+
+
+def test_domain_leases_are_distinct() -> None:
+    a, b = DomainLease(), DomainLease()
+    try:
+        assert a.domain_id != b.domain_id
+        assert 1 <= a.domain_id <= 100
+    finally:
+        a.release()
+        b.release()
+
+
+def test_toast_ends_on_the_plate_with_real_nodes(toast_app_dir: Path) -> None:
+    app = SimApp(
+        RunOptions(
+            package=toast_app_dir,
+            mode="ros2",
+            speed=3.0,
+            rosbridge_port=0,
+            viser_port=None,
+            until_goal=True,
+            max_sim_time=40.0,
+            paused=True,
+        )
+    )
+    app.start()
+    try:
+        assert app.supervisor is not None and app.rosbridge is not None
+        assert [n["state"] for n in app.supervisor.statuses()] == ["running", "running"]
+        client = Client(app.rosbridge.url)
+        # a port topic between two generated nodes, seen through rosbridge
+        client.send({"op": "subscribe", "topic": "/toast/arm/status", "type": "std_msgs/msg/String"})
+        time.sleep(1.0)  # let the new subscription match the arm node's publisher
+        assert client.call("/sim/resume")["result"] is True
+        assert app.wait(timeout=60), "the run did not finish"
+        assert app.runner is not None
+        assert app.runner.finish_reason == "goal reached", app.status()
+        assert app.session is not None and app.session.world.toast_on_plate()
+        assert app.session.world.time < 40.0
+        statuses = []
+        while True:
+            try:
+                message = client.recv(timeout=0.5)
+            except TimeoutError:
+                break
+            if message.get("topic") == "/toast/arm/status":
+                statuses.append(message["msg"]["data"])
+        assert [s for s in statuses if s != "IDLE"][:3] == ["BUSY", "DONE", "BUSY"], statuses  # FETCH, DELIVER
+        topics = client.call("rosapi/topics")["values"]["topics"]
+        assert {"/clock", "/joint_states", "/toast/ctrl/arm", "/toast/arm/status"} <= set(topics)
+        nodes = client.call("rosapi/nodes")["values"]["nodes"]
+        assert {"/toast/ctrl", "/toast/arm", "/maa_sim"} <= set(nodes)
+        client.close()
+    finally:
+        app.stop()
+    assert app.supervisor is not None
+    for process in app.supervisor.processes:
+        assert process.process.poll() is not None
+
+
+def test_crashed_and_hung_nodes_are_reported(faulty_app_dir: Path) -> None:
+    app = SimApp(
+        RunOptions(
+            package=faulty_app_dir,
+            mode="ros2",
+            speed=1.0,
+            rosbridge_port=0,
+            viser_port=None,
+            hang_timeout=2.0,
+            startup_timeout=20.0,
+        )
+    )
+    app.start()
+    try:
+        assert app.rosbridge is not None and app.supervisor is not None
+        client = Client(app.rosbridge.url)
+        deadline = time.monotonic() + 30
+        states: dict[str, str] = {}
+        while time.monotonic() < deadline:
+            states = {n["name"]: n["state"] for n in app.supervisor.statuses()}
+            if states.get("/faulty/crasher") == "crashed" and states.get("/faulty/hanger") == "hung":
+                break
+            time.sleep(0.2)
+        assert states == {"/faulty/echo": "running", "/faulty/crasher": "crashed", "/faulty/hanger": "hung"}
+        events = [e for e in app.session.events if e.level == "error"] if app.session else []
+        crash = next(e for e in events if e.source == "/faulty/crasher")
+        assert "simulated failure in the crasher node" in crash.details["stderr_tail"]
+        assert "exit code 1" in crash.message
+        hang = next(e for e in events if e.source == "/faulty/hanger")
+        assert "hangs" in hang.message or "did not come up" in hang.message
+        assert "blocking in a timer callback" in hang.details["stderr_tail"]
+        # the simulation keeps serving: time advances, the healthy node still echoes
+        status = client.call("/sim/get_status")["values"]
+        time.sleep(0.5)
+        assert client.call("/sim/get_status")["values"]["time"] > status["time"]
+        client.send({"op": "subscribe", "topic": "/faulty/echo", "type": "std_msgs/msg/Int32"})
+        echo = client.recv_until(lambda m: m.get("topic") == "/faulty/echo", timeout=10)
+        assert echo["msg"]["data"] < 25
+        client.close()
+    finally:
+        app.stop()
+
+
+def _alive(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().split()[2] != "Z"
+    except FileNotFoundError:
+        return False
+
+
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
+def test_signal_stops_every_child(toast_app_dir: Path, sig: signal.Signals) -> None:
+    command = [
+        sys.executable,
+        "-m",
+        "maa_sim.cli",
+        "run",
+        "--package",
+        str(toast_app_dir),
+        "--mode",
+        "ros2",
+        "--rosbridge-port",
+        "0",
+        "--viser-port",
+        "0",
+        "--status-json",
+    ]
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=SIM_SERVER)
+    try:
+        assert process.stdout is not None
+        line = process.stdout.readline()
+        ready = json.loads(line)
+        assert ready["event"] == "ready", line
+        pids = [n["pid"] for n in ready["nodes"]]
+        assert len(pids) == 2 and all(_alive(p) for p in pids)
+        time.sleep(1.0)
+        process.send_signal(sig)
+        process.wait(timeout=20)
+        assert process.returncode == 0, process.stderr.read() if process.stderr else ""
+        deadline = time.monotonic() + 5
+        while any(_alive(p) for p in pids) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert not any(_alive(p) for p in pids)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+
+
+def test_nodes_die_with_a_killed_simulator(toast_app_dir: Path) -> None:
+    command = [
+        sys.executable, "-m", "maa_sim.cli", "run", "--package", str(toast_app_dir), "--mode", "ros2",
+        "--rosbridge-port", "off", "--viser-port", "off", "--status-json",
+    ]  # fmt: skip
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, cwd=SIM_SERVER)
+    pids: list[int] = []
+    try:
+        assert process.stdout is not None
+        ready = json.loads(process.stdout.readline())
+        pids = [n["pid"] for n in ready["nodes"]]
+        assert all(_alive(p) for p in pids)
+        process.kill()  # no chance to clean up
+        process.wait(timeout=10)
+        deadline = time.monotonic() + 5
+        while any(_alive(p) for p in pids) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert not any(_alive(p) for p in pids)
+    finally:
+        for pid in pids:
+            if _alive(pid):
+                os.kill(pid, signal.SIGKILL)

@@ -1,0 +1,264 @@
+"""The rosbridge v2 endpoint: protocol operations, errors, a fuzz test, a real roslib client."""
+
+from __future__ import annotations
+
+import json
+import random
+import shutil
+import subprocess
+import time
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from rosbridge_client import Client
+
+from maa_sim.app import RunOptions, SimApp
+from maa_sim.rosbridge import MAX_FRAME_BYTES, RosbridgeServer
+from maa_sim.transport import LocalBus
+
+JS_DIR = Path(__file__).resolve().parent / "js"
+
+
+@pytest.fixture
+def bus_server() -> Iterator[tuple[LocalBus, RosbridgeServer]]:
+    bus = LocalBus()
+    bus.declare("/sensors/distance", "std_msgs/msg/Int32")
+    server = RosbridgeServer(bus, port=0)
+    server.start()
+    yield bus, server
+    server.stop()
+
+
+@pytest.fixture
+def lockstep_app(toast_app_dir: Path) -> Iterator[SimApp]:
+    app = SimApp(
+        RunOptions(package=toast_app_dir, mode="lockstep", speed=1.0, rosbridge_port=0, viser_port=None, paused=True)
+    )
+    app.start()
+    yield app
+    app.stop()
+
+
+def test_publish_subscribe_round_trip(bus_server: tuple[LocalBus, RosbridgeServer]) -> None:
+    bus, server = bus_server
+    a, b = Client(server.url), Client(server.url)
+    try:
+        b.send({"op": "subscribe", "id": "s1", "topic": "/chatter", "type": "std_msgs/String"})
+        a.send({"op": "advertise", "id": "a1", "topic": "/chatter", "type": "std_msgs/msg/String"})
+        time.sleep(0.1)
+        a.send({"op": "publish", "topic": "/chatter", "msg": {"data": "hello"}})
+        message = b.recv_until(lambda m: m.get("op") == "publish")
+        assert message == {"op": "publish", "topic": "/chatter", "msg": {"data": "hello"}}
+        # a message from the simulator side reaches the client too
+        b.send({"op": "subscribe", "topic": "/sensors/distance"})
+        time.sleep(0.1)
+        bus.deliver("/sensors/distance", {"data": 17})
+        assert b.recv_until(lambda m: m.get("topic") == "/sensors/distance")["msg"] == {"data": 17}
+        b.send({"op": "unsubscribe", "id": "s1", "topic": "/chatter"})
+        time.sleep(0.1)
+        a.send({"op": "publish", "topic": "/chatter", "msg": {"data": "again"}})
+        with pytest.raises(TimeoutError):
+            b.recv(timeout=0.3)
+    finally:
+        a.close()
+        b.close()
+
+
+def test_throttle_rate_and_queue_length(bus_server: tuple[LocalBus, RosbridgeServer]) -> None:
+    bus, server = bus_server
+    client = Client(server.url)
+    try:
+        client.send({"op": "subscribe", "topic": "/sensors/distance", "throttle_rate": 200, "queue_length": 1})
+        time.sleep(0.1)
+        start = time.monotonic()
+        while time.monotonic() - start < 1.0:
+            bus.deliver("/sensors/distance", {"data": int((time.monotonic() - start) * 1000)})
+            time.sleep(0.005)
+        received = []
+        with pytest.raises(TimeoutError):
+            while True:
+                received.append(client.recv(timeout=0.5))
+        assert 3 <= len(received) <= 8, len(received)  # about 1 s / 200 ms, not ~200 messages
+        assert received[-1]["msg"]["data"] > 800  # the latest value wins with queue_length 1
+    finally:
+        client.close()
+
+
+def test_errors_get_status_replies(bus_server: tuple[LocalBus, RosbridgeServer]) -> None:
+    _, server = bus_server
+    client = Client(server.url)
+    try:
+        cases = [
+            "not json",
+            json.dumps([1, 2]),
+            json.dumps({"no": "op"}),
+            json.dumps({"op": "fly", "id": "x1"}),
+            json.dumps({"op": "publish", "id": "x2", "topic": "/unknown", "msg": {}}),
+            json.dumps({"op": "advertise", "id": "x3", "topic": "/t", "type": "no_such/Type"}),
+            json.dumps({"op": "subscribe", "id": "x4", "topic": 5}),
+            json.dumps(
+                {"op": "subscribe", "id": "x5", "topic": "/a", "type": "std_msgs/Int32", "throttle_rate": "fast"}
+            ),
+            json.dumps({"op": "publish", "id": "x6", "topic": "/sensors/distance", "msg": {"data": "many"}}),
+        ]
+        for frame in cases:
+            client.send(frame)
+            reply = client.recv()
+            assert reply["op"] == "status" and reply["level"] == "error", (frame, reply)
+        client.send({"op": "publish", "id": "x9", "topic": "/sensors/distance", "msg": {"data": 1.5}})
+        assert client.recv() == {
+            "op": "status",
+            "level": "error",
+            "msg": "std_msgs/msg/Int32.data: expected an integer (int32)",
+            "id": "x9",
+        }
+        reply = client.call("rosapi/no_such_service")
+        assert reply["result"] is False
+    finally:
+        client.close()
+
+
+def fuzz_frames(count: int, seed: int) -> list[str | bytes]:
+    """Malformed and hostile frames, deterministic for a seed."""
+    rng = random.Random(seed)
+    ops = ["publish", "subscribe", "advertise", "unsubscribe", "unadvertise", "call_service", "set_level"]
+    junk: list[object] = [None, True, -1, 2**70, 1.5, "", "x" * 300, [], {}, [1, [2]], {"a": {"b": None}}]
+
+    def frame() -> str | bytes:
+        kind = rng.randrange(10)
+        if kind == 0:
+            text = json.dumps({"op": rng.choice(ops), "topic": "/t"})
+            return text[: rng.randrange(1, len(text))]  # truncated JSON
+        if kind == 1:
+            return bytes(rng.randrange(256) for _ in range(rng.randrange(1, 64)))  # binary frame
+        if kind == 2:
+            return json.dumps({"op": "".join(rng.choice("abcxyz_") for _ in range(8)), "id": rng.randrange(1000)})
+        if kind == 3:
+            return json.dumps(rng.choice([*junk[:-1], [{"op": "publish"}]]))  # not an object
+        if kind == 4:
+            return '{"op": "publish", "topic": "/t", "msg": ' + "[" * 5000 + "]" * 5000 + "}"  # deep nesting
+        if kind == 5 and rng.random() < 0.05:
+            return json.dumps({"op": "publish", "topic": "/t", "msg": {"data": "x" * (MAX_FRAME_BYTES + 10)}})  # huge
+        if kind == 6:
+            return json.dumps({"op": rng.choice(ops), "id": "f", "topic": rng.choice(junk), "type": rng.choice(junk)})
+        if kind == 7:
+            return json.dumps({"op": "publish", "topic": "/sensors/distance", "msg": {"data": rng.choice(junk[3:])}})
+        if kind == 8:
+            return json.dumps({"op": "call_service", "service": rng.choice(junk), "args": rng.choice(junk)})
+        return json.dumps(
+            {
+                "op": "subscribe",
+                "topic": "/x",
+                "type": "std_msgs/Int32",
+                "queue_length": rng.choice([-5, 10**9, "q", 2.5]),
+            }
+        )
+
+    return [frame() for _ in range(count)]
+
+
+def test_fuzz_1000_malformed_frames(lockstep_app: SimApp) -> None:
+    assert lockstep_app.rosbridge is not None
+    client = Client(lockstep_app.rosbridge.url)
+    try:
+        frames = fuzz_frames(1000, seed=1234)
+        errors = 0
+        for frame in frames:
+            client.send(frame)
+            reply = client.recv(timeout=5)
+            assert reply["op"] in ("status", "service_response"), reply
+            if reply["op"] == "service_response":
+                assert reply["result"] is False
+                reply = client.recv(timeout=5)
+            assert reply["op"] == "status" and reply["level"] == "error", (frame[:200], reply)
+            errors += 1
+        assert errors == 1000
+        # still answering, on this connection and on a new one
+        assert client.call("rosapi/topics")["result"] is True
+        fresh = Client(lockstep_app.rosbridge.url)
+        assert "/clock" in fresh.call("rosapi/topics")["values"]["topics"]
+        fresh.close()
+    finally:
+        client.close()
+
+
+def test_control_services(lockstep_app: SimApp) -> None:
+    assert lockstep_app.rosbridge is not None
+    client = Client(lockstep_app.rosbridge.url)
+    try:
+        status = client.call("/sim/get_status")["values"]
+        assert status["paused"] is True and status["mode"] == "lockstep"
+        reply = client.call("/sim/step", {"steps": 10})
+        assert reply["result"] is True
+        assert reply["values"]["status"]["time"] == pytest.approx(0.2)
+        assert client.call("/sim/step", {"steps": "ten"})["result"] is False
+        assert client.call("/sim/set_speed", {"speed": 5})["values"]["status"]["speed"] == 5
+        assert client.call("/sim/set_speed", {"speed": -1})["result"] is False
+        client.call("/sim/resume")
+        time.sleep(0.3)
+        client.call("/sim/pause")
+        t = client.call("/sim/get_status")["values"]["time"]
+        assert t > 0.2
+        time.sleep(0.2)
+        assert client.call("/sim/get_status")["values"]["time"] == t  # paused
+        client.call("/sim/reset")
+        assert client.call("/sim/get_status")["values"]["world_time"] == 0.0
+        types = client.call("rosapi/topics")["values"]
+        assert dict(zip(types["topics"], types["types"], strict=True))["/toast/ctrl/arm"] == "std_msgs/msg/String"
+        assert (
+            client.call("rosapi/topic_type", {"topic": "/joint_states"})["values"]["type"]
+            == "sensor_msgs/msg/JointState"
+        )
+        assert "/sim/step" in client.call("rosapi/services")["values"]["services"]
+    finally:
+        client.close()
+
+
+def test_input_injection_in_lockstep(lockstep_app: SimApp) -> None:
+    assert lockstep_app.rosbridge is not None
+    client = Client(lockstep_app.rosbridge.url)
+    try:
+        client.call("/sim/step", {"steps": 1})  # the controller's initial slice writes STOP
+        client.send({"op": "advertise", "topic": "/toaster/command", "type": "std_msgs/msg/String"})
+        client.send({"op": "publish", "topic": "/toaster/command", "msg": {"data": "START"}})
+        time.sleep(0.1)
+        client.call("/sim/step", {"steps": 50})
+        world = lockstep_app.session.world if lockstep_app.session else None
+        assert world is not None and world.lever_position() < -0.05
+    finally:
+        client.close()
+
+
+@pytest.fixture(scope="module")
+def roslib_installed() -> Path:
+    npm = shutil.which("npm")
+    if npm is None or shutil.which("node") is None:
+        pytest.skip("node and npm are needed for the roslib test")
+    if not (JS_DIR / "node_modules" / "roslib").is_dir():
+        subprocess.run(
+            [npm, "install", "--prefix", str(JS_DIR), "--no-audit", "--no-fund", "--loglevel=error"],
+            check=True,
+            timeout=300,
+        )
+    return JS_DIR
+
+
+def test_roslib_client(roslib_installed: Path, lockstep_app: SimApp) -> None:
+    assert lockstep_app.rosbridge is not None and lockstep_app.runner is not None
+    assert lockstep_app.runner.paused  # the client resumes it once it has subscribed
+    result = subprocess.run(
+        ["node", str(roslib_installed / "roslib_client.mjs"), lockstep_app.rosbridge.url],
+        capture_output=True,
+        text=True,
+        check=False,
+        timeout=60,
+    )
+    assert result.returncode == 0, result.stdout + result.stderr
+    report = json.loads(result.stdout.strip().splitlines()[-1])
+    assert "/toast/ctrl/arm" in report["topics"]
+    assert report["topicType"] == "sensor_msgs/msg/JointState"
+    assert report["distance"] < 25  # a port value read through roslib
+    assert report["armCommand"] == "FETCH"  # the controller's port, live
+    assert report["echo"] == "hello from roslib"  # an input published by roslib came back
+    assert report["serviceError"]  # a failing service reached the failed callback
