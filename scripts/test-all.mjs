@@ -42,6 +42,15 @@ if (buildStatus !== 0) {
   finish(buildStatus, `test-all: FAILED: the build failed (exit ${buildStatus}); no test was run`);
 }
 
+// Some Vitest suites use the simulator (the generated example runs in it), so its Python
+// environment is set up before Vitest; the setup script is idempotent and fast when up to date.
+if (process.env.MAA_TEST_PYTHON !== '0') {
+  const simSetup = step('sim-server setup (used by Vitest too)', 'bash', [path.join(repo, 'sim-server', 'scripts', 'setup_env.sh')]);
+  if (simSetup !== 0) {
+    finish(simSetup, `test-all: FAILED: sim-server setup exited with ${simSetup}; no test was run`);
+  }
+}
+
 const reportDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-'));
 const reportFile = path.join(reportDir, 'vitest.json');
 const testStatus = step('test', npx, [
