@@ -1,13 +1,12 @@
 #!/usr/bin/env node
-// `npm test`: builds every workspace package, then runs every Vitest suite of the workspace
-// (vitest.config.ts at the root), then the simulation sidecar's Python tests (sim-server/: its
-// setup script creates sim-server/.venv when needed, then pytest, ruff and mypy), and closes with
-// one line "tests: N passed, N failed, N skipped" counting both.
+// `npm test`: builds every workspace package, sets up the simulator's venv (Vitest uses it), runs
+// every Vitest suite of the workspace (vitest.config.ts at the root), then the Python suites
+// (PYTHON_SUITES below: sim-server, the ROS 2 family with real rclpy, the Python RTEs; each with
+// its own idempotent venv setup, pytest and linters), and closes with one line
+// "tests: N passed, N failed, N skipped" counting everything.
 // Installs no npm packages: run `npm ci` first (the README's test command does).
-// Extra arguments go to Vitest, e.g. `npm test -- packages/cli`; MAA_TEST_PYTHON=0 skips sim-server
-// and the Python generators' RTE tests (packages/generators-python/test/python).
-// The ros2-python family's tests (packages/generators-python/test/ros2: real ROS 2 in its .venv-ros2)
-// run too; MAA_TEST_ROS2=0 skips them.
+// Extra arguments go to Vitest, e.g. `npm test -- packages/cli`; MAA_TEST_PYTHON=0 skips the
+// Python suites except ROS 2, MAA_TEST_ROS2=0 skips ROS 2.
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -81,47 +80,50 @@ let skipped = (report.numPendingTests ?? 0) + (report.numTodoTests ?? 0);
 let code = testStatus !== 0 ? testStatus : failed > 0 || passed === 0 ? 1 : 0;
 if (passed === 0 && failed === 0) console.log('test-all: no vitest test was run');
 
-// The simulation sidecar (Python): set up its venv, run pytest (JUnit XML for the counts), lint.
-if (process.env.MAA_TEST_PYTHON !== '0') {
-  const python = simPython();
-  passed += python.passed;
-  failed += python.failed;
-  skipped += python.skipped;
-  if (python.failed > 0 || python.passed === 0) code = code || 1;
-}
-// The ros2-python generator family (packages/generators-python): its venv with real ROS 2 (rclpy
-// and the rosidl toolchain), then pytest over test/ros2 (generated code compiles and is ruff-clean,
-// the interface package builds, the ToastService nodes run on ROS 2). MAA_TEST_ROS2=0 skips it.
-if (process.env.MAA_TEST_ROS2 !== '0') {
-  const ros2 = ros2Python();
-  passed += ros2.passed;
-  failed += ros2.failed;
-  skipped += ros2.skipped;
-  if (ros2.failed > 0 || ros2.passed === 0) code = code || 1;
-}
-// The Python generators' run-time environments (packages/generators-python: maa_behavior,
-// maa_timesync): their venv (pytest, ruff), pytest over test/python, ruff. MAA_TEST_PYTHON=0 skips it.
-if (process.env.MAA_TEST_PYTHON !== '0') {
-  const timesync = timesyncPython();
-  passed += timesync.passed;
-  failed += timesync.failed;
-  skipped += timesync.skipped;
-  if (timesync.failed > 0 || timesync.passed === 0) code = code || 1;
+// The Python suites: each sets up its venv (idempotent scripts), runs pytest (JUnit XML for the
+// counts), then its linters; a failing linter counts as one failed check.
+const PYTHON_SUITES = [
+  {
+    // The simulation sidecar (MuJoCo, rclpy, rosbridge, viser).
+    title: 'sim-server', enabled: process.env.MAA_TEST_PYTHON !== '0', dir: 'sim-server',
+    setup: 'sim-server/scripts/setup_env.sh', python: 'sim-server/.venv/bin/python', tests: 'sim-server/tests',
+    lint: [['ruff', ['-m', 'ruff', 'check', '.']], ['mypy', ['-m', 'mypy']]],
+  },
+  {
+    // The ros2-python family with real ROS 2 (rclpy, the rosidl toolchain): generated code
+    // compiles and is ruff-clean, the interface package builds, the ToastService nodes run.
+    title: 'ros2', enabled: process.env.MAA_TEST_ROS2 !== '0', dir: 'packages/generators-python',
+    setup: 'packages/generators-python/scripts/setup_ros2_venv.sh', python: 'packages/generators-python/.venv-ros2/bin/python',
+    tests: 'packages/generators-python/test/ros2', lint: [],
+  },
+  {
+    // The Python generators' run-time environments (maa_behavior, maa_timesync).
+    title: 'generators-python', enabled: process.env.MAA_TEST_PYTHON !== '0', dir: 'packages/generators-python',
+    setup: 'packages/generators-python/scripts/setup_venv.sh', python: 'packages/generators-python/.venv/bin/python',
+    tests: 'packages/generators-python/test/python',
+    lint: [['ruff', ['-m', 'ruff', 'check', '--config', 'ruff.toml', '--no-cache', 'rte/maa_behavior', 'rte/maa_timesync', 'test/python']]],
+  },
+];
+for (const suite of PYTHON_SUITES.filter((x) => x.enabled)) {
+  const counts = pythonSuite(suite);
+  passed += counts.passed;
+  failed += counts.failed;
+  skipped += counts.skipped;
+  if (counts.failed > 0 || counts.passed === 0) code = code || 1;
 }
 finish(code, `tests: ${passed} passed, ${failed} failed, ${skipped} skipped`);
 
-function simPython() {
-  const simDir = path.join(repo, 'sim-server');
-  const setupStatus = step('sim-server setup', 'bash', [path.join(simDir, 'scripts', 'setup_env.sh')]);
+function pythonSuite(suite) {
+  const setupStatus = step(`${suite.title} setup`, 'bash', [path.join(repo, suite.setup)]);
   if (setupStatus !== 0) {
-    console.error(`test-all: FAILED: sim-server setup exited with ${setupStatus}; no Python test was run`);
+    console.error(`test-all: FAILED: ${suite.title} setup exited with ${setupStatus}; none of its tests was run`);
     return { passed: 0, failed: 1, skipped: 0 };
   }
-  const venvPython = path.join(simDir, '.venv', 'bin', 'python');
-  const junitDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-py-'));
+  const python = path.join(repo, suite.python);
+  const junitDir = mkdtempSync(path.join(tmpdir(), `maa-test-all-${suite.title}-`));
   const junitFile = path.join(junitDir, 'pytest.xml');
-  const pytestStatus = step('sim-server tests', venvPython, [
-    '-m', 'pytest', 'sim-server/tests', '-q', '-p', 'no:cacheprovider', `--junitxml=${junitFile}`,
+  const pytestStatus = step(`${suite.title} tests`, python, [
+    '-m', 'pytest', suite.tests, '-q', '-p', 'no:cacheprovider', `--junitxml=${junitFile}`,
   ]);
   let counts;
   try {
@@ -132,18 +134,14 @@ function simPython() {
     rmSync(junitDir, { recursive: true, force: true });
   }
   if (!counts) {
-    console.error(`test-all: FAILED: pytest exited with ${pytestStatus} and wrote no report`);
+    console.error(`test-all: FAILED: pytest (${suite.title}) exited with ${pytestStatus} and wrote no report`);
     return { passed: 0, failed: 1, skipped: 0 };
   }
   if (pytestStatus !== 0 && counts.failed === 0) counts.failed = 1; // e.g. an error outside any test
-  // Lint failures count as one failed check each.
-  for (const [title, args] of [
-    ['sim-server ruff', ['-m', 'ruff', 'check', '.']],
-    ['sim-server mypy', ['-m', 'mypy']],
-  ]) {
-    const lintStatus = step(title, venvPython, args, simDir);
+  for (const [name, args] of suite.lint) {
+    const lintStatus = step(`${suite.title} ${name}`, python, args, path.join(repo, suite.dir));
     if (lintStatus !== 0) {
-      console.error(`test-all: FAILED: ${title} exited with ${lintStatus}`);
+      console.error(`test-all: FAILED: ${suite.title} ${name} exited with ${lintStatus}`);
       counts.failed += 1;
     }
   }
@@ -159,68 +157,4 @@ function junitCounts(xml) {
   const failures = attribute('failures') + attribute('errors');
   const skippedTests = attribute('skipped');
   return { passed: tests - failures - skippedTests, failed: failures, skipped: skippedTests };
-}
-
-function ros2Python() {
-  const pkgDir = path.join(repo, 'packages', 'generators-python');
-  const setupStatus = step('ros2 setup', 'bash', [path.join(pkgDir, 'scripts', 'setup_ros2_venv.sh')]);
-  if (setupStatus !== 0) {
-    console.error(`test-all: FAILED: ros2 venv setup exited with ${setupStatus}; no ROS 2 test was run`);
-    return { passed: 0, failed: 1, skipped: 0 };
-  }
-  const junitDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-ros2-'));
-  const junitFile = path.join(junitDir, 'pytest.xml');
-  const pytestStatus = step('ros2 tests', path.join(pkgDir, '.venv-ros2', 'bin', 'python'), [
-    '-m', 'pytest', 'packages/generators-python/test/ros2', '-q', '-p', 'no:cacheprovider', `--junitxml=${junitFile}`,
-  ]);
-  let counts;
-  try {
-    counts = junitCounts(readFileSync(junitFile, 'utf8'));
-  } catch {
-    counts = undefined;
-  } finally {
-    rmSync(junitDir, { recursive: true, force: true });
-  }
-  if (!counts) {
-    console.error(`test-all: FAILED: pytest (ros2) exited with ${pytestStatus} and wrote no report`);
-    return { passed: 0, failed: 1, skipped: 0 };
-  }
-  if (pytestStatus !== 0 && counts.failed === 0) counts.failed = 1;
-  return counts;
-}
-
-function timesyncPython() {
-  const pkgDir = path.join(repo, 'packages', 'generators-python');
-  const setupStatus = step('generators-python setup', 'bash', [path.join(pkgDir, 'scripts', 'setup_venv.sh')]);
-  if (setupStatus !== 0) {
-    console.error(`test-all: FAILED: generators-python venv setup exited with ${setupStatus}; no Python test was run`);
-    return { passed: 0, failed: 1, skipped: 0 };
-  }
-  const venvPython = path.join(pkgDir, '.venv', 'bin', 'python');
-  const junitDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-timesync-'));
-  const junitFile = path.join(junitDir, 'pytest.xml');
-  const pytestStatus = step('generators-python tests', venvPython, [
-    '-m', 'pytest', 'packages/generators-python/test/python', '-q', '-p', 'no:cacheprovider', `--junitxml=${junitFile}`,
-  ]);
-  let counts;
-  try {
-    counts = junitCounts(readFileSync(junitFile, 'utf8'));
-  } catch {
-    counts = undefined;
-  } finally {
-    rmSync(junitDir, { recursive: true, force: true });
-  }
-  if (!counts) {
-    console.error(`test-all: FAILED: pytest (generators-python) exited with ${pytestStatus} and wrote no report`);
-    return { passed: 0, failed: 1, skipped: 0 };
-  }
-  if (pytestStatus !== 0 && counts.failed === 0) counts.failed = 1;
-  const ruffStatus = step('generators-python ruff', venvPython, [
-    '-m', 'ruff', 'check', '--config', 'ruff.toml', '--no-cache', 'rte/maa_behavior', 'rte/maa_timesync', 'test/python',
-  ], pkgDir);
-  if (ruffStatus !== 0) {
-    console.error(`test-all: FAILED: generators-python ruff exited with ${ruffStatus}`);
-    counts.failed += 1;
-  }
-  return counts;
 }

@@ -30,6 +30,11 @@ describe('the ToastServiceRobot example', () => {
         expect(found.map((d) => `${d.file}:${d.line} ${d.code} ${d.message}`)).toEqual([]);
     });
 
+    test('checks without diagnostics as part of examples/ (its maa.json makes it a model root of its own)', async () => {
+        const found = await checkModelRoots([{ root: resolve(example, '..') }]);
+        expect(found.map((d) => `${d.file}:${d.line} ${d.code} ${d.message}`)).toEqual([]);
+    });
+
     test.each([
         ['a connector to a port that does not exist', 'toast/ToastServiceRobot.arc', (t: string) => t.replace('-> ctrl.distance', '-> ctrl.dist'), 'arc/missing-port'],
         ['a connector between ports of different types', 'toast/ToastServiceRobot.arc', (t: string) => t.replace('color.value -> ctrl.color', 'dist.value -> ctrl.color'), 'arc/connector-type-mismatch'],

@@ -58,18 +58,29 @@ export async function checkRoots(services: HostLanguageServices, specs: readonly
             roots.set(root, set);
         }
     }
-    shared.maa.ModelRoots.setRoots([...roots.keys()].map((r) => URI.file(r)));
+    // Folders below a root that hold a `maa.json` are model roots of their own, as in the editor
+    // (so `maa-gen check examples/` checks every example as the project it is).
+    const scans = new Map<string, { files: string[]; nested: string[] }>();
+    for (const root of roots.keys()) scans.set(root, await scanRoot(root, extensions));
+    const allRoots = [...roots.keys(), ...[...scans.values()].flatMap((x) => x.nested)];
+    shared.maa.ModelRoots.setRoots(allRoots.map((r) => URI.file(r)));
+    const ownRoot = (file: string): string => {
+        const r = shared.maa.ModelRoots.rootOf(URI.file(file));
+        return URI.parse(r).fsPath.replace(/[\\/]$/, '');
+    };
 
     const documents: LangiumDocument[] = [];
     const rootOfDoc = new Map<string, string>();
+    const specOfDoc = new Map<string, string>();
     let index = 0;
-    for (const root of roots.keys()) {
+    for (const [specRoot, scan] of scans) {
         index++;
-        options.onProgress?.(`loading ${root} (${index}/${roots.size})`);
-        const files = await modelFiles(root, extensions);
-        const config = await readConfiguration(root);
-        if (config) shared.maa.ReservedNames.configure(URI.file(root), config);
-        for (const file of files) {
+        options.onProgress?.(`loading ${specRoot} (${index}/${scans.size})`);
+        for (const root of [specRoot, ...scan.nested]) {
+            const config = await readConfiguration(root);
+            if (config) shared.maa.ReservedNames.configure(URI.file(root), config);
+        }
+        for (const file of scan.files) {
             let text: string;
             try {
                 text = await readFile(file, 'utf8');
@@ -80,7 +91,8 @@ export async function checkRoots(services: HostLanguageServices, specs: readonly
             const langiumDocuments = shared.workspace.LangiumDocuments;
             if (langiumDocuments.hasDocument(uri)) langiumDocuments.deleteDocument(uri);
             documents.push(langiumDocuments.createDocument(uri, text));
-            rootOfDoc.set(uri.toString(), root);
+            rootOfDoc.set(uri.toString(), ownRoot(file));
+            specOfDoc.set(uri.toString(), specRoot);
         }
     }
     const builtins = builtinDocuments(shared);
@@ -91,7 +103,7 @@ export async function checkRoots(services: HostLanguageServices, specs: readonly
     for (const doc of documents) {
         const root = rootOfDoc.get(doc.uri.toString())!;
         const file = doc.uri.fsPath;
-        const only = roots.get(root);
+        const only = roots.get(specOfDoc.get(doc.uri.toString())!);
         if (only && !only.has(file)) continue;
         for (const d of doc.diagnostics ?? []) {
             result.push({
@@ -111,7 +123,8 @@ export async function checkRoots(services: HostLanguageServices, specs: readonly
     return result;
 }
 
-async function modelFiles(root: string, extensions: readonly string[]): Promise<string[]> {
+/** The model files below a root and the folders below it that are roots of their own (`maa.json`). */
+async function scanRoot(root: string, extensions: readonly string[]): Promise<{ files: string[]; nested: string[] }> {
     let info;
     try {
         info = await stat(root);
@@ -119,7 +132,8 @@ async function modelFiles(root: string, extensions: readonly string[]): Promise<
         throw new CheckInputError(`no such folder: ${root}`);
     }
     if (!info.isDirectory()) throw new CheckInputError(`not a folder: ${root}`);
-    const out: string[] = [];
+    const files: string[] = [];
+    const nested: string[] = [];
     const walk = async (dir: string): Promise<void> => {
         let entries;
         try {
@@ -128,15 +142,16 @@ async function modelFiles(root: string, extensions: readonly string[]): Promise<
             throw new CheckInputError(`cannot read folder ${dir}: ${(e as NodeJS.ErrnoException).code ?? (e as Error).message}`);
         }
         entries.sort((a, b) => a.name.localeCompare(b.name));
+        if (dir !== root && entries.some((e) => e.isFile() && e.name === ReservedNames.CONFIG_FILE)) nested.push(dir);
         for (const e of entries) {
             if (e.name.startsWith('.') || e.name === 'node_modules') continue;
             const p = join(dir, e.name);
             if (e.isDirectory()) await walk(p);
-            else if (extensions.some((x) => e.name.endsWith(x))) out.push(p);
+            else if (extensions.some((x) => e.name.endsWith(x))) files.push(p);
         }
     };
     await walk(root);
-    return out;
+    return { files, nested };
 }
 
 async function readConfiguration(root: string): Promise<RootConfiguration | undefined> {
