@@ -1,5 +1,6 @@
-import { EmptyFileSystem, URI, type DefaultSharedCoreModuleContext, type LangiumDocument } from 'langium';
-import { builtinDocuments, createHostServices, type HostLanguageServices } from '@maa/language-adl';
+import { EmptyFileSystem, type DefaultSharedCoreModuleContext } from 'langium';
+import { createHostServices, type HostLanguageServices } from '@maa/language-adl';
+import { ModelTestBench } from '@maa/language-adl/testing';
 import { AutomataLanguage } from '@maa/language-automata';
 import { ArcAppGeneratedModule, ArcGeneratedModule, CdGeneratedModule, TestFamilyGeneratedSharedModule } from '../build/test-family/module.js';
 import { ArcAppLanguage, configureGeneratorRegistry, DEMO_GENERATOR_MANIFESTS, GeneratorRegistry } from '../src/index.js';
@@ -25,22 +26,16 @@ export interface Finding {
     related: string[];
 }
 
-let shared: HostLanguageServices | undefined;
-let counter = 0;
+const bench = new ModelTestBench(() => createTestFamily(), 'app');
 
 export function services(): HostLanguageServices {
-    return (shared ??= createTestFamily());
+    return bench.host;
 }
 
 /** Validates a model root given as files (path -> text) with the given generators installed. */
 export async function validate(files: Readonly<Record<string, string>>, registry: GeneratorRegistry = DEMO_REGISTRY): Promise<Finding[]> {
-    const s = services();
-    configureGeneratorRegistry(s.shared, registry);
-    const root = URI.file(`/app-test-${++counter}`);
-    s.shared.maa.ModelRoots.setRoots([root]);
-    const docs: LangiumDocument[] = Object.entries(files).map(([path, text]) =>
-        s.shared.workspace.LangiumDocuments.createDocument(URI.file(`${root.path}/${path}`), text));
-    await s.shared.workspace.DocumentBuilder.build([...builtinDocuments(s.shared), ...docs], { validation: true });
+    configureGeneratorRegistry(services().shared, registry);
+    const { root, docs } = await bench.build(files);
     const severities = ['error', 'warning', 'info', 'hint'] as const;
     return docs.flatMap((doc) => (doc.diagnostics ?? []).map((d) => ({
         file: doc.uri.path.substring(root.path.length + 1),
