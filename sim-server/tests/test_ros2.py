@@ -189,3 +189,52 @@ def test_nodes_die_with_a_killed_simulator(toast_app_dir: Path) -> None:
         for pid in pids:
             if _alive(pid):
                 os.kill(pid, signal.SIGKILL)
+
+
+def test_reset_restarts_the_nodes_for_a_fresh_run(toast_app_dir: Path) -> None:
+    app = SimApp(
+        RunOptions(
+            package=toast_app_dir,
+            mode="ros2",
+            speed=4.0,
+            rosbridge_port=0,
+            viser_port=None,
+            until_goal=True,
+            max_sim_time=120.0,
+            startup_timeout=60.0,
+            hang_timeout=20.0,
+        )
+    )
+    app.start()
+    try:
+        assert app.supervisor is not None and app.rosbridge is not None and app.session is not None
+        old_pids = {n["name"]: n["pid"] for n in app.supervisor.statuses()}
+        client = Client(app.rosbridge.url)
+        # mid-run: the bread is in the toaster and browning, the controller waits for GOLDEN
+        deadline = time.monotonic() + 120
+        while app.session.world.toast_level < 0.3 and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert app.session.world.toast_level >= 0.3, app.status()
+        before = client.call("/sim/get_status")["values"]["time"]
+        reply = client.call("/sim/reset", timeout=90)
+        assert reply["result"] is True, reply
+        assert "2 node(s) restarted" in reply["values"]["message"]
+        nodes = {n["name"]: n for n in app.supervisor.statuses()}
+        assert set(nodes) == set(old_pids)
+        assert all(n["state"] == "running" for n in nodes.values()), nodes
+        assert all(nodes[name]["pid"] != pid for name, pid in old_pids.items())
+        for process in app.supervisor.processes:
+            assert process.process.poll() is None
+        status = reply["values"]["status"]
+        assert status["time"] >= before  # the clock never goes back
+        # a fresh run: the restarted controller starts from Idle and serves the toast again (with the old
+        # state it would still wait in Toasting for a GOLDEN that never comes, the bread being back in its holder)
+        assert app.wait(timeout=120), app.status()
+        assert app.runner is not None and app.runner.finish_reason == "goal reached", app.status()
+        assert app.session.world.toast_on_plate()
+        assert app.session.world.time < 40.0  # counted from the reset
+        client.close()
+    finally:
+        app.stop()
+    for process in app.supervisor.processes:
+        assert process.process.poll() is not None

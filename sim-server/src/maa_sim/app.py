@@ -9,6 +9,7 @@ every child process included.
 from __future__ import annotations
 
 import contextlib
+import json
 import shutil
 import sys
 import tempfile
@@ -19,14 +20,16 @@ from typing import Any, Literal
 
 from .deployment import Deployment
 from .lockstep import LockstepPackage
-from .messages import JsonMessage
-from .rosbridge import RosbridgeServer, ServiceError, ServiceHandler
+from .messages import JsonMessage, MessageError
+from .rosbridge import BlockingService, RosbridgeServer, ServiceError, ServiceHandler
 from .runs import lockstep_session
 from .session import DEFAULT_PERIOD, Runner, SimEvent, SimSession
 from .transport import LocalBus
 from .world import ToastKitchen, WorldConfig
 
 Mode = Literal["ros2", "lockstep"]
+#: The automaton states of the application (docs/ide.md, "Live values").
+STATES_TOPIC = "/maa/automaton_states"
 
 
 @dataclass
@@ -64,6 +67,11 @@ class SimApp:
         self.log_dir: Path | None = None
         self._own_log_dir = False
         self._stopped = threading.Event()
+        self._reset_lock = threading.Lock()
+        self._port_topics: set[str] = set()
+        #: the latest state of every automaton by node name (from /maa/automaton_states)
+        self.automaton_states: dict[str, str] = {}
+        self._states_lock = threading.Lock()
         self.failed = threading.Event()
 
     # ----------------------------------------------------------------------------- start
@@ -76,6 +84,7 @@ class SimApp:
                 self._start_ros2()
             assert self.session is not None and self.runner is not None
             self.session.event_listeners.append(self._on_event)
+            self._watch_states()
             if self.options.rosbridge_port is not None:
                 self.rosbridge = RosbridgeServer(
                     self.session.transport,
@@ -83,6 +92,7 @@ class SimApp:
                     port=self.options.rosbridge_port,
                     services=self.control_services(),
                     on_publish=self._on_client_publish if self.options.mode == "lockstep" else None,
+                    latched=self._latched,
                 )
                 self.rosbridge.start()
             if self.options.viser_port is not None:
@@ -105,6 +115,10 @@ class SimApp:
     def _start_lockstep(self) -> None:
         package = LockstepPackage.load(self.options.package)
         controller = package.create()
+        topics = getattr(controller, "topics", None)
+        if callable(topics) and callable(getattr(controller, "validate_input", None)):
+            # a generated timesync build: it shows the inputs it is fed in the slice that reads them
+            self._port_topics = set(dict(topics()).keys())
         period = self.options.period or package.period or DEFAULT_PERIOD
         session, _ = lockstep_session(controller, seed=self.options.seed, period=period, scene=self.options.scene)
         session.world.config.golden_seconds = self.options.golden_seconds
@@ -159,6 +173,34 @@ class SimApp:
         if not self.supervisor.wait_ready(self.options.startup_timeout):
             self.session.report("warning", "supervisor", "not every node came up; starting the simulation anyway")
 
+    def _watch_states(self) -> None:
+        """Keeps the latest automaton state of every node (`/maa/automaton_states`, docs/ide.md):
+        for `/sim/get_status`, and for a client that subscribes to the topic later."""
+        assert self.session is not None
+        transport = self.session.transport
+        if isinstance(transport, LocalBus) and transport.topic_type(STATES_TOPIC) is None:
+            return  # a lock-step controller without automaton states
+        transport.subscribe(STATES_TOPIC, "std_msgs/msg/String", self._on_states)
+
+    def _on_states(self, _topic: str, msg: JsonMessage) -> None:
+        try:
+            states = json.loads(str(msg.get("data", "")))
+        except ValueError:
+            return
+        if isinstance(states, dict):
+            with self._states_lock:
+                self.automaton_states.update({str(k): str(v) for k, v in states.items()})
+
+    def _clear_states(self) -> None:
+        with self._states_lock:
+            self.automaton_states.clear()
+
+    def _latched(self, topic: str) -> JsonMessage | None:
+        if topic != STATES_TOPIC:
+            return None
+        with self._states_lock:
+            return {"data": json.dumps(self.automaton_states)} if self.automaton_states else None
+
     @staticmethod
     def _goal(session: SimSession) -> bool:
         return session.world.toast_on_plate()
@@ -193,9 +235,17 @@ class SimApp:
                 from .messages import validate
 
                 msg = validate(type_name, msg)
+        check = getattr(self.runner.controller, "validate_input", None)
+        if callable(check):
+            try:
+                check(topic, msg)  # e.g. an enum constant's name on a root in-port topic
+            except ValueError as exc:
+                raise MessageError(f"{topic}: {exc}") from None
         self.runner.inject(topic, msg)
-        if isinstance(transport, LocalBus):
-            transport.deliver(topic, msg)  # actuator topics reach the session this way
+        if isinstance(transport, LocalBus) and topic not in self._port_topics:
+            # actuator topics reach the session this way, other topics their subscribers; a port
+            # topic of the controller is shown by the controller in the slice that reads it
+            transport.deliver(topic, msg)
         return True
 
     # ----------------------------------------------------------------------------- services
@@ -227,6 +277,11 @@ class SimApp:
             seed = args.get("seed")
             if seed is not None and (isinstance(seed, bool) or not isinstance(seed, int)):
                 raise ServiceError("seed must be an integer")
+            if self.supervisor is not None:
+                restarted = self.reset_ros2(seed)
+                return ok(f"reset; {len(self.supervisor.processes)} node(s) restarted" + ("" if restarted else
+                          " (not every node came up again)"))
+            self._clear_states()  # the controller emits its states again in its next first slice
             runner().reset(seed)
             return ok("reset")
 
@@ -244,10 +299,38 @@ class SimApp:
             "sim/pause": pause,
             "sim/resume": resume,
             "sim/step": step,
-            "sim/reset": reset,
+            "sim/reset": BlockingService(reset),  # restarting nodes takes seconds
             "sim/set_speed": set_speed,
             "sim/get_status": get_status,
         }
+
+    def reset_ros2(self, seed: int | None = None) -> bool:
+        """ROS 2 mode's reset: every node restarts (a fresh run), the scene goes back to its start.
+
+        The loop is paused meanwhile and the clock held until every new node answers its liveness
+        probe (as at the start); then the loop continues unless it was paused before. The clock
+        keeps running forward across the reset. True when every node came up again.
+        """
+        assert self.runner is not None and self.session is not None and self.supervisor is not None
+        with self._reset_lock:
+            runner, session = self.runner, self.session
+            was_paused = runner.paused
+            runner.pause()
+            session.report("info", "supervisor", "reset: restarting every node")
+            self.supervisor.restart()
+            self._clear_states()
+            runner.reset(seed)
+            session.publish(session.observe())
+            ready: bool = self.supervisor.wait_ready(self.options.startup_timeout)
+            if not ready:
+                session.report("warning", "supervisor", "reset: not every node came up again")
+            if not was_paused and not self._stopped.is_set():
+                runner.resume()
+            return ready
+
+    def _latched_states(self) -> dict[str, str]:
+        with self._states_lock:
+            return dict(self.automaton_states)
 
     def status(self) -> JsonMessage:
         assert self.runner is not None and self.session is not None
@@ -256,6 +339,7 @@ class SimApp:
             **self.runner.status(),
             "domain_id": self.domain_id,
             "nodes": self.supervisor.statuses() if self.supervisor is not None else [],
+            "automaton_states": self._latched_states(),
             "events": [e.as_json() for e in list(self.session.events)[-20:]],
             "rosbridge": self.rosbridge.url if self.rosbridge is not None else None,
             "viser": self.viewer.url if self.viewer is not None else None,
@@ -275,7 +359,9 @@ class SimApp:
         if self.runner is not None:
             self.runner.stop()
         if self.supervisor is not None:
-            self.supervisor.stop()
+            self.supervisor.closing.set()  # a reset waiting for its nodes gives up
+            with self._reset_lock:  # a reset in progress finishes first (it holds node processes)
+                self.supervisor.close()
         if self.viewer is not None:
             self.viewer.stop()
         if self.rosbridge is not None:

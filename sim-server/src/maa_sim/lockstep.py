@@ -18,6 +18,7 @@ mode holds `lockstep.json`:
 
 from __future__ import annotations
 
+import contextlib
 import importlib
 import json
 import math
@@ -120,9 +121,34 @@ class LockstepPackage:
             if str(entry) not in sys.path:
                 sys.path.insert(0, str(entry))
         module_name, _, attr = self.factory.partition(":")
+        self._forget_other_build(module_name)
         module = importlib.import_module(module_name)
         factory = getattr(module, attr)
         controller = factory(dict(self.parameters))
         if not callable(getattr(controller, "step", None)):
             raise TypeError(f"{self.factory} did not return a lock-step controller (no step method)")
         return controller  # type: ignore[no-any-return]
+
+    def _forget_other_build(self, module_name: str) -> None:
+        """Every timesync build has a `maa_app` (and its own RTE copies): when one process loads a
+        second build, the first build's modules leave `sys.modules` so that the second one's load.
+        """
+        loaded = sys.modules.get(module_name)
+        file = getattr(loaded, "__file__", None)
+        if loaded is None or file is None:
+            return
+        roots = [p.resolve() for p in self.python_path]
+        where = Path(file).resolve()
+        if any(where.is_relative_to(r) for r in roots):
+            return
+        old_root = where.parent if where.name != "__init__.py" else where.parent.parent
+        for _ in range(module_name.count(".")):
+            old_root = old_root.parent
+        if not (old_root / "lockstep.json").is_file():
+            return  # not another lock-step build's folder: leave it alone
+        for name, module in list(sys.modules.items()):
+            path = getattr(module, "__file__", None)
+            if path is not None and Path(path).resolve().is_relative_to(old_root):
+                del sys.modules[name]
+        with contextlib.suppress(ValueError):
+            sys.path.remove(str(old_root))

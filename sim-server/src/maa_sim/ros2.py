@@ -12,6 +12,7 @@ import contextlib
 import fcntl
 import json
 import os
+import queue
 import signal
 import subprocess
 import sys
@@ -20,6 +21,7 @@ import threading
 import time
 from collections import deque
 from collections.abc import Callable
+from concurrent.futures import Future
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import IO, Any
@@ -29,6 +31,9 @@ from .messages import JsonMessage, MessageError, from_json, message_class, norma
 from .transport import MessageCallback, Subscription
 
 DISCOVERY_ENV = {"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}
+#: Topics whose publishers keep their last message for late subscribers (transient local): the
+#: generated nodes' automaton states. The simulator subscribes to them with the same durability.
+TRANSIENT_LOCAL_TOPICS = frozenset({"/maa/automaton_states"})
 
 #: Runs a node's command so that the kernel kills it when the simulator dies without cleaning up
 #: (SIGKILL, a crash): prctl(PR_SET_PDEATHSIG) survives the exec. argv: parent pid, command...
@@ -187,8 +192,13 @@ class RosTransport:
                 for s in list(subs):
                     s.callback(topic, data)
 
+            qos: Any = 10
+            if topic in TRANSIENT_LOCAL_TOPICS:
+                from rclpy.qos import DurabilityPolicy, QoSProfile
+
+                qos = QoSProfile(depth=10, durability=DurabilityPolicy.TRANSIENT_LOCAL)
             try:
-                ros_sub = self.node.create_subscription(cls, topic, on_message, 10)
+                ros_sub = self.node.create_subscription(cls, topic, on_message, qos)
             except Exception as exc:  # noqa: BLE001
                 raise MessageError(f"cannot subscribe to {topic}: {exc}") from None
             sub = Subscription(topic, callback)
@@ -290,9 +300,13 @@ class NodeSupervisor:
         self.probe_interval = probe_interval
         self.on_failure = on_failure
         self.processes: list[NodeProcess] = []
+        self.generation = 0  # how often the nodes were (re)started
         self._stopping = threading.Event()
         self._monitor: threading.Thread | None = None
         self._lock = threading.Lock()
+        self._spawner = _Spawner()
+        #: set when the session ends: a `wait_ready` (of a reset) gives up at once
+        self.closing = threading.Event()
 
     def environment(self) -> dict[str, str]:
         env = dict(os.environ)
@@ -327,6 +341,7 @@ class NodeSupervisor:
 
     def start(self) -> None:
         self.log_dir.mkdir(parents=True, exist_ok=True)
+        self.generation += 1
         env = self.environment()
         for spec in self.deployment.nodes:
             safe = spec.fqn.strip("/").replace("/", "__")
@@ -335,7 +350,10 @@ class NodeSupervisor:
             params = {spec.fqn: {"ros__parameters": spec.parameters}}
             params_file.write_text(json.dumps(params, indent=1), encoding="utf-8")
             log_path = self.log_dir / f"{safe}.log"
-            process = subprocess.Popen(
+            if self.generation > 1:
+                with log_path.open("a", encoding="utf-8") as log:
+                    log.write(f"--- restart {self.generation - 1} (simulation reset)\n")
+            process = self._spawner.popen(
                 self.command(spec, params_file),
                 cwd=self.deployment.directory,
                 env=env,
@@ -371,7 +389,7 @@ class NodeSupervisor:
 
     def wait_ready(self, timeout: float) -> bool:
         deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
+        while time.monotonic() < deadline and not self.closing.is_set():
             if self.ready():
                 return True
             if all(p.state not in ("starting", "running") for p in self.processes):
@@ -441,8 +459,32 @@ class NodeSupervisor:
     def statuses(self) -> list[JsonMessage]:
         return [p.as_json() for p in self.processes]
 
+    def restart(self, grace: float = 3.0, gone_timeout: float = 10.0) -> None:
+        """Stops every node (as `stop`) and starts the deployment again: fresh processes, fresh state.
+
+        Waits (at most ``gone_timeout`` s) until the old nodes have left the ROS graph, so that a
+        liveness probe cannot reach an old node and the new ones do not share names with ghosts.
+        """
+        old = {p.spec.fqn for p in self.processes}
+        self._stop_nodes(grace)
+        deadline = time.monotonic() + gone_timeout
+        while time.monotonic() < deadline and old & set(self.transport.nodes()):
+            time.sleep(0.05)
+        self._stopping.clear()
+        self.processes = []
+        self.start()
+
+    def close(self) -> None:
+        """`stop`, and ends the thread that started the nodes."""
+        self.closing.set()
+        self.stop()
+        self._spawner.close()
+
     def stop(self, grace: float = 3.0) -> None:
         """SIGINT to every node's process group, SIGKILL after the grace period, then reap."""
+        self._stop_nodes(grace)
+
+    def _stop_nodes(self, grace: float) -> None:
         self._stopping.set()
         if self._monitor is not None:
             self._monitor.join(timeout=2)
@@ -465,6 +507,42 @@ class NodeSupervisor:
                 if stream is not None:
                     with contextlib.suppress(OSError):
                         stream.close()
+
+
+class _Spawner:
+    """The one thread that starts every node process of a supervisor, for the supervisor's lifetime.
+
+    The kernel's parent-death signal (``PR_SET_PDEATHSIG``, set by `_LAUNCHER`) follows the *thread*
+    that forked the child: nodes started from a short-lived thread (a rosbridge service worker
+    restarting them on a reset) would be killed when that thread ends. Starting them all here
+    ties them to this thread, which lives until `close()`.
+    """
+
+    def __init__(self) -> None:
+        self._requests: queue.Queue[tuple[Callable[[], Any], Future[Any]] | None] = queue.Queue()
+        self._thread = threading.Thread(target=self._run, name="maa-sim-spawner", daemon=True)
+        self._thread.start()
+
+    def _run(self) -> None:
+        while True:
+            item = self._requests.get()
+            if item is None:
+                return
+            call, future = item
+            try:
+                future.set_result(call())
+            except BaseException as exc:  # noqa: BLE001 - handed to the caller
+                future.set_exception(exc)
+
+    def popen(self, cmd: list[str], **kwargs: Any) -> subprocess.Popen[bytes]:
+        if threading.current_thread() is self._thread or not self._thread.is_alive():
+            return subprocess.Popen(cmd, **kwargs)
+        future: Future[subprocess.Popen[bytes]] = Future()
+        self._requests.put((lambda: subprocess.Popen(cmd, **kwargs), future))
+        return future.result()
+
+    def close(self) -> None:
+        self._requests.put(None)
 
 
 def _kill_group(process: subprocess.Popen[bytes], sig: signal.Signals) -> None:

@@ -45,6 +45,18 @@ _LEVELS = {"none": 0, "error": 1, "warning": 2, "info": 3}
 ServiceHandler = Callable[[JsonMessage], JsonMessage]
 
 
+class BlockingService:
+    """A service handler that may take long (seconds): it runs on a worker thread, not the server's loop."""
+
+    blocking = True
+
+    def __init__(self, handler: ServiceHandler) -> None:
+        self.handler = handler
+
+    def __call__(self, args: JsonMessage) -> JsonMessage:
+        return self.handler(args)
+
+
 class ServiceError(Exception):
     """A service that fails with a message for the client."""
 
@@ -211,6 +223,7 @@ class RosbridgeServer:
         port: int = 9090,
         services: dict[str, ServiceHandler] | None = None,
         on_publish: Callable[[str, JsonMessage], bool] | None = None,
+        latched: Callable[[str], JsonMessage | None] | None = None,
     ) -> None:
         self.transport = transport
         self.host = host
@@ -224,6 +237,8 @@ class RosbridgeServer:
         self.services.update(services or {})
         #: Called before a client's message is published; returning True means it was consumed.
         self.on_publish = on_publish
+        #: The current message of a latched topic (None: none), sent to a client when it subscribes.
+        self.latched = latched
         self.clients: set[_Client] = set()
         self._advertisers: dict[str, int] = {}
         self._loop: asyncio.AbstractEventLoop | None = None
@@ -231,6 +246,7 @@ class RosbridgeServer:
         self._server: Server | None = None
         self._ready = threading.Event()
         self._error: BaseException | None = None
+        self._tasks: set[asyncio.Task[None]] = set()
         self.frames = 0
         self.errors = 0
 
@@ -431,6 +447,9 @@ class RosbridgeServer:
             sub = _TopicSubscription(topic)
             sub.handle = self.transport.subscribe(topic, type_name, client.on_message)
             client.subscriptions[topic] = sub
+            initial = self.latched(topic) if self.latched is not None else None
+            if initial is not None:
+                client.on_message(topic, initial)  # the current value of a latched topic, at once
         elif type_name is not None:
             known = self.transport.topic_type(topic)
             if known is not None and known != type_name:
@@ -468,15 +487,40 @@ class RosbridgeServer:
             client.send(reply)
             client.status("error", f"unknown service {service}", request.get("id"))
             return
+        if getattr(handler, "blocking", False):
+            # a slow service (a reset that restarts node processes): runs on a worker thread, so
+            # the endpoint keeps serving every client meanwhile; the reply comes when it is done
+            task = asyncio.get_running_loop().create_task(self._call_blocking(client, request, handler, args, reply))
+            self._tasks.add(task)
+            task.add_done_callback(self._tasks.discard)
+            return
         try:
             values = handler(args)
         except (ServiceError, MessageError, ValueError, TypeError) as exc:
-            reply.update(result=False, values=str(exc))
-            client.send(reply)
-            client.status("error", f"{service}: {exc}", request.get("id"))
+            self._service_failed(client, request, reply, exc)
             return
         reply.update(result=True, values=values)
         client.send(reply)
+
+    async def _call_blocking(
+        self, client: _Client, request: JsonMessage, handler: ServiceHandler, args: JsonMessage, reply: JsonMessage
+    ) -> None:
+        try:
+            values = await asyncio.to_thread(handler, args)
+        except (ServiceError, MessageError, ValueError, TypeError) as exc:
+            self._service_failed(client, request, reply, exc)
+            return
+        except Exception as exc:  # noqa: BLE001 - never let a service stop the server
+            self._service_failed(client, request, reply, RuntimeError(f"internal error: {exc!r}"))
+            return
+        reply.update(result=True, values=values)
+        client.send(reply)
+
+    @staticmethod
+    def _service_failed(client: _Client, request: JsonMessage, reply: JsonMessage, exc: Exception) -> None:
+        reply.update(result=False, values=str(exc))
+        client.send(reply)
+        client.status("error", f"{request.get('service')}: {exc}", request.get("id"))
 
     def _op_set_level(self, client: _Client, request: JsonMessage) -> None:
         level = _field(request, "level", str)

@@ -56,6 +56,22 @@ class Behavior:
         """The innermost current state (automata), for tests and tools."""
         return None
 
+    def state_path(self) -> str | None:
+        """The current state of an automaton as a dotted path from its top state (``Outer.Inner``).
+
+        ``None`` for behaviors that are no automaton (they have no ``_PARENT`` table of states).
+        """
+        parents: Mapping[str, str | None] | None = getattr(type(self), "_PARENT", None)
+        state = self.current_state() if parents is not None else None
+        if state is None or parents is None:
+            return None
+        path = [state]
+        parent = parents.get(state)
+        while parent is not None and len(path) <= len(parents):
+            path.append(parent)
+            parent = parents.get(parent)
+        return ".".join(reversed(path))
+
     def _emit(self, port: str, value: object) -> None:
         if value is not None:
             self._emit_fn(port, value)

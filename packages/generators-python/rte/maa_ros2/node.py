@@ -21,6 +21,7 @@ Semantics (docs/generating-ros2.md, "Time and messages"):
 from __future__ import annotations
 
 import contextlib
+import json
 import sys
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
@@ -33,7 +34,8 @@ from maa_ros2.arm import RosArm
 from maa_ros2.ports import PortCodec
 from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
-from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy
+from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
+from std_msgs.msg import String
 
 #: QoS of every port topic: reliable delivery, volatile, the last 10 messages per topic kept.
 #: Events (commands, status changes) must not be lost; volatile keeps a restarted node from
@@ -42,6 +44,18 @@ from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy
 PORT_QOS = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=10, reliability=ReliabilityPolicy.RELIABLE)
 
 DEFAULT_PERIOD = 0.02
+
+#: Where every node with an automaton publishes its current state (docs/ide.md, "Live values"):
+#: std_msgs/String, data = JSON ``{"<node name>": "<state path>"}`` (one key per message), in the
+#: first period and in every period in which the state changed. Transient-local (the last message
+#: of each node is kept for subscribers that ask for it) and reliable.
+STATES_TOPIC = "/maa/automaton_states"
+STATES_QOS = QoSProfile(
+    history=HistoryPolicy.KEEP_LAST,
+    depth=1,
+    reliability=ReliabilityPolicy.RELIABLE,
+    durability=DurabilityPolicy.TRANSIENT_LOCAL,
+)
 
 
 @dataclass(frozen=True)
@@ -118,6 +132,10 @@ class ComponentNode(Node):
             self.behavior.arm = RosArm(self, PORT_QOS)  # type: ignore[attr-defined]
         self.behavior.start()
         self._maa_delay_passed = True
+        self._maa_state: str | None = None
+        self._maa_state_publisher = (
+            self.create_publisher(String, STATES_TOPIC, STATES_QOS) if self.behavior.state_path() is not None else None
+        )
         self.slice_timer = self.create_timer(self.period, self._on_period)
 
     # -- messages ---------------------------------------------------------------------------
@@ -156,6 +174,7 @@ class ComponentNode(Node):
             self._publish(name, value)
         if self.behavior.TIMING == "sync":
             if any(spec.sampled and name not in self._maa_held for name, spec in self._maa_inputs.items()):
+                self._publish_state()  # the initial state, before the first step
                 return  # not started: a data port has not received its first value yet
             inputs: dict[str, object] = {}
             for name, spec in self._maa_inputs.items():
@@ -164,6 +183,19 @@ class ComponentNode(Node):
             self.behavior.step(inputs)
         else:
             self.behavior.on_tick()
+        self._publish_state()
+
+    def _publish_state(self) -> None:
+        """The automaton's state on STATES_TOPIC, in the first period and whenever it changed."""
+        if self._maa_state_publisher is None:
+            return
+        state = self.behavior.state_path()
+        if state is None or state == self._maa_state:
+            return
+        self._maa_state = state
+        msg = String()
+        msg.data = json.dumps({self.get_fully_qualified_name(): state})
+        self._maa_state_publisher.publish(msg)
 
 
 def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> None:

@@ -7,11 +7,15 @@ the same way; the result maps topic names to the messages published in the slice
 
 from __future__ import annotations
 
+import json
+import math
 from collections.abc import Mapping
+from enum import Enum
 from typing import Any
 
 from maa_behavior.robotarm import Arm, RobotArmExecutor
-from maa_timesync.runtime import ComponentType, System
+from maa_timesync.runtime import TICK, ComponentType, System
+from maa_timesync.streams import decode_value, encode_item
 
 JsonMessage = dict[str, Any]
 
@@ -86,12 +90,62 @@ class SimulatorArm(Arm):
         return False
 
 
-class LockstepApp:
-    """One architecture time slice per ``step``; implements the simulator's lock-step protocol."""
+#: The topic of the automaton states (docs/ide.md, "Live values").
+STATES_TOPIC = "/maa/automaton_states"
+STATES_TYPE = "std_msgs/msg/String"
 
-    def __init__(self, root: type[ComponentType], parameters: Mapping[str, object] | None = None) -> None:
+
+def port_message(value: object) -> JsonMessage:
+    """A port value as a rosbridge-JSON message of its lock-step type.
+
+    Numbers, booleans and strings: ``{"data": v}`` (``std_msgs`` Int32, Float64, Bool, String...);
+    enums: the constant's name, ``{"data": "GOLDEN"}`` (``std_msgs/String``); class-diagram objects:
+    ``{"data": "<JSON of the fields>"}`` (``std_msgs/String``).
+    """
+    if isinstance(value, Enum):
+        return {"data": value.name}
+    if isinstance(value, bool | int | str):
+        return {"data": value}
+    if isinstance(value, float):
+        return {"data": value if math.isfinite(value) else str(value)}
+    encoded = encode_item(value)
+    return {"data": json.dumps(encoded.get("msg"), sort_keys=True)}
+
+
+def port_value(message: Mapping[str, Any], port_type: object) -> object:
+    """The inverse of :func:`port_message` for an in port of the root (input injection)."""
+    data = message.get("data")
+    if isinstance(port_type, type) and issubclass(port_type, Enum):
+        if not isinstance(data, str) or data not in port_type.__members__:
+            raise ValueError(f"{data!r} is not a constant of {port_type.__name__}")
+        return port_type[data]
+    if isinstance(port_type, type) and isinstance(data, str):  # a class-diagram type: JSON of its fields
+        return decode_value(json.loads(data))
+    return data
+
+
+class LockstepApp:
+    """One architecture time slice per ``step``; implements the simulator's lock-step protocol.
+
+    With ``port_topics`` (``"<instance path>.<out port>"`` of atomic instances and ``"<in port>"`` of
+    the root -> ``(topic, type)``, generated into ``maa_app.PORT_TOPICS``) every slice's result also
+    holds the value of every port that got one in that slice, under its ROS 2 topic name, and the
+    automaton states on :data:`STATES_TOPIC` (in the first slice and whenever one changed). Messages
+    on the root's in-port topics among the inputs are fed into those ports for the slice.
+    """
+
+    def __init__(
+        self,
+        root: type[ComponentType],
+        parameters: Mapping[str, object] | None = None,
+        port_topics: Mapping[str, tuple[str, str]] | None = None,
+        node_names: Mapping[str, str] | None = None,
+    ) -> None:
         self.root = root
         self.parameters = dict(parameters or {})
+        self.port_topics = dict(port_topics or {})
+        self.node_names = dict(node_names or {})
+        self._in_topics = {topic: port for port, (topic, _) in self.port_topics.items() if "." not in port}
         self.system: System = self._start()
 
     def _start(self) -> System:
@@ -102,7 +156,22 @@ class LockstepApp:
         for inst in system.instances:
             if isinstance(inst.behavior, RobotArmExecutor):
                 inst.behavior.arm = SimulatorArm()
+        # Observers of the live values: the out ports of atomic instances with a topic.
+        self._observed: list[tuple[str, list[object]]] = []
+        for inst in system.instances:
+            if inst.behavior is None:
+                continue
+            for port in inst.ctype.OUT_PORTS:
+                entry = self.port_topics.get(f"{'.'.join(inst.path)}.{port}")
+                if entry is not None:
+                    self._observed.append((entry[0], inst.observers.setdefault(port, [])))
+        self._states: dict[str, str] | None = None
         system.init()
+        self._automata = [
+            (self.node_names.get(".".join(inst.path), ".".join(inst.path)), inst.behavior)
+            for inst in system.instances
+            if inst.behavior is not None and inst.behavior.state_path() is not None
+        ]
         return system
 
     def reset(self) -> None:
@@ -111,13 +180,49 @@ class LockstepApp:
 
     def step(self, inputs: Mapping[str, JsonMessage]) -> dict[str, list[JsonMessage]]:
         """Runs one time slice with the simulator's messages of this instant."""
+        fed: dict[str, list[JsonMessage]] = {}
         for topic, message in inputs.items():
-            _PLATFORM.inputs[topic] = dict(message)
+            port = self._in_topics.get(topic)
+            if port is None:
+                _PLATFORM.inputs[topic] = dict(message)
+                continue
+            try:
+                value = port_value(message, self.root.PORT_TYPES.get(port))
+            except ValueError:
+                continue  # not a value of the port's type (validate_input tells the sender)
+            self.system.receive(port, value)
+            fed[topic] = [dict(message)]
+        for port in self.root.IN_PORTS:
+            self.system.receive(port, TICK)  # the slice ends on every input stream of the root
         self.system.run(1)
         out = _PLATFORM.outbox
         _PLATFORM.outbox = {}
+        if self.port_topics:
+            out.update(fed)
+            for topic, items in self._observed:
+                values = [port_message(v) for v in items if v is not TICK]
+                items.clear()
+                if values:
+                    out.setdefault(topic, []).extend(values)
+            states = {node: b.state_path() or "" for node, b in self._automata}
+            if states != self._states:
+                self._states = states
+                out[STATES_TOPIC] = [{"data": json.dumps(states)}]
         return out
 
+    def validate_input(self, topic: str, message: Mapping[str, Any]) -> None:
+        """Raises ValueError when a message for a root in-port topic does not fit the port's type."""
+        port = self._in_topics.get(topic)
+        if port is not None:
+            port_value(message, self.root.PORT_TYPES.get(port))
+
+    def states(self) -> dict[str, str]:
+        """The current state path of every automaton, by ROS 2 node name."""
+        return {node: b.state_path() or "" for node, b in self._automata}
+
     def topics(self) -> dict[str, str]:
-        """Port topics this build emits (none besides the actuator topics)."""
-        return {}
+        """The port topics this build emits (and the root's in ports it reads), with their types."""
+        result = {topic: type_name for topic, type_name in self.port_topics.values()}
+        if self.port_topics:
+            result[STATES_TOPIC] = STATES_TYPE
+        return result

@@ -7,6 +7,7 @@ import { Imports, indent, modulePath, pyType, snake, typeBySimpleName, typeRef }
 import { computeClass } from '../behavior/compute.js';
 import { moduleText } from '../behavior/automata.js';
 import { PythonTranslator, isTypeDecl, pyName, type Node } from '../python/expressions.js';
+import { primitiveOf, rosName } from '../ros2/naming.js';
 
 const str = (s: string): string => JSON.stringify(s);
 
@@ -218,6 +219,23 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             return `${str(c.qualifiedName)}: ${alias},`;
         });
         const enums = ctx.architecture.dataTypes.filter((t) => t.kind === 'enum').map((t) => `${str(t.name)}: ${typeRef(datatypes, imports, t.node as unknown as Node)},`);
+        // Live values in the simulator's lock-step mode: every port value under its ROS 2 topic name
+        // (the ros2 generator's rule), so the IDE sees the same topics in both modes. Primitives travel
+        // as their std_msgs type; enums as their constant name and classes as JSON, both in std_msgs/String.
+        const rootNs = `/${rosName(root.name)}`;
+        const topicType = (p: PortView): string => `std_msgs/msg/${primitiveOf(p.type)?.std ?? 'String'}`;
+        const portTopics: string[] = [];
+        const nodeNames: string[] = [];
+        for (const p of root.ports.filter((x) => x.direction === 'in')) {
+            portTopics.push(`${str(p.name)}: (${str(`${rootNs}/${rosName(p.name)}`)}, ${str(topicType(p))}),`);
+        }
+        for (const inst of ctx.architecture.instances.filter((i) => i.component.atomic)) {
+            const node = [rootNs, ...inst.path.map(rosName)].join('/');
+            nodeNames.push(`${str(inst.path.join('.'))}: ${str(node)},`);
+            for (const p of inst.component.ports.filter((x) => x.direction === 'out')) {
+                portTopics.push(`${str(`${inst.path.join('.')}.${p.name}`)}: (${str(`${node}/${rosName(p.name)}`)}, ${str(topicType(p))}),`);
+            }
+        }
         const app = ctx.out.file('maa_app.py');
         app.write([
             `"""The application ${ctx.platform.application} (${root.qualifiedName}) on the python-timesync platform (generated)."""`,
@@ -234,11 +252,20 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             'ENUMS: dict[str, type[Enum]] = {',
             ...indent(enums, 4),
             '}',
+            '#: Port topics of the lock-step mode (ROS 2 names): "<instance path>.<out port>" of atomic instances',
+            '#: and "<in port>" of the root -> (topic, ROS 2 message type).',
+            'PORT_TOPICS: dict[str, tuple[str, str]] = {',
+            ...indent(portTopics, 4),
+            '}',
+            '#: ROS 2 node names of the atomic instances (keys of /maa/automaton_states).',
+            'NODE_NAMES: dict[str, str] = {',
+            ...indent(nodeNames, 4),
+            '}',
             '',
             '',
             'def create_controller(parameters: Mapping[str, object]) -> LockstepApp:',
             '    """The simulator\'s lock-step factory (lockstep.json)."""',
-            '    return LockstepApp(ROOT, parameters)',
+            '    return LockstepApp(ROOT, parameters, PORT_TOPICS, NODE_NAMES)',
             ''
         ].join('\n'), root.node);
         ctx.out.file('lockstep.json').write(`${JSON.stringify({

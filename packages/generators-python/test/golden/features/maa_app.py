@@ -22,8 +22,32 @@ COMPONENTS: dict[str, type[ComponentType]] = {
 ENUMS: dict[str, type[Enum]] = {
     "Mode": Mode,
 }
+#: Port topics of the lock-step mode (ROS 2 names): "<instance path>.<out port>" of atomic instances
+#: and "<in port>" of the root -> (topic, ROS 2 message type).
+PORT_TOPICS: dict[str, tuple[str, str]] = {
+    "inc": ("/features/inc", "std_msgs/msg/Int32"),
+    "mode": ("/features/mode", "std_msgs/msg/String"),
+    "press": ("/features/press", "std_msgs/msg/Bool"),
+    "level": ("/features/level", "std_msgs/msg/Int32"),
+    "counter.total": ("/features/counter/total", "std_msgs/msg/Int32"),
+    "counter.text": ("/features/counter/text", "std_msgs/msg/String"),
+    "counter.reading": ("/features/counter/reading", "std_msgs/msg/String"),
+    "counter.pair": ("/features/counter/pair", "std_msgs/msg/String"),
+    "lamp.log": ("/features/lamp/log", "std_msgs/msg/String"),
+    "lamp.brightness": ("/features/lamp/brightness", "std_msgs/msg/Int32"),
+    "other.total": ("/features/other/total", "std_msgs/msg/Int32"),
+    "other.text": ("/features/other/text", "std_msgs/msg/String"),
+    "other.reading": ("/features/other/reading", "std_msgs/msg/String"),
+    "other.pair": ("/features/other/pair", "std_msgs/msg/String"),
+}
+#: ROS 2 node names of the atomic instances (keys of /maa/automaton_states).
+NODE_NAMES: dict[str, str] = {
+    "counter": "/features/counter",
+    "lamp": "/features/lamp",
+    "other": "/features/other",
+}
 
 
 def create_controller(parameters: Mapping[str, object]) -> LockstepApp:
     """The simulator's lock-step factory (lockstep.json)."""
-    return LockstepApp(ROOT, parameters)
+    return LockstepApp(ROOT, parameters, PORT_TOPICS, NODE_NAMES)

@@ -35,8 +35,30 @@ ENUMS: dict[str, type[Enum]] = {
     "ToastColor": ToastColor,
     "ToasterCmd": ToasterCmd,
 }
+#: Port topics of the lock-step mode (ROS 2 names): "<instance path>.<out port>" of atomic instances
+#: and "<in port>" of the root -> (topic, ROS 2 message type).
+PORT_TOPICS: dict[str, tuple[str, str]] = {
+    "dist.value": ("/toast_service_robot/dist/value", "std_msgs/msg/Int32"),
+    "color.value": ("/toast_service_robot/color/value", "std_msgs/msg/String"),
+    "plate.angle": ("/toast_service_robot/plate/angle", "std_msgs/msg/Int32"),
+    "plate.height": ("/toast_service_robot/plate/height", "std_msgs/msg/Int32"),
+    "ctrl.toaster": ("/toast_service_robot/ctrl/toaster", "std_msgs/msg/String"),
+    "ctrl.arm": ("/toast_service_robot/ctrl/arm", "std_msgs/msg/String"),
+    "toasterCtrl.leverDown": ("/toast_service_robot/toaster_ctrl/lever_down", "std_msgs/msg/Bool"),
+    "arm.status": ("/toast_service_robot/arm/status", "std_msgs/msg/String"),
+}
+#: ROS 2 node names of the atomic instances (keys of /maa/automaton_states).
+NODE_NAMES: dict[str, str] = {
+    "dist": "/toast_service_robot/dist",
+    "color": "/toast_service_robot/color",
+    "plate": "/toast_service_robot/plate",
+    "ctrl": "/toast_service_robot/ctrl",
+    "toasterCtrl": "/toast_service_robot/toaster_ctrl",
+    "toaster": "/toast_service_robot/toaster",
+    "arm": "/toast_service_robot/arm",
+}
 
 
 def create_controller(parameters: Mapping[str, object]) -> LockstepApp:
     """The simulator's lock-step factory (lockstep.json)."""
-    return LockstepApp(ROOT, parameters)
+    return LockstepApp(ROOT, parameters, PORT_TOPICS, NODE_NAMES)
