@@ -1,21 +1,4 @@
-export * from './adl-module.js';
-export * from './behavior-language.js';
-export * from './model-roots.js';
-export * from './services.js';
-export * from './components/component-model.js';
-export * from './scoping/adl-scope-provider.js';
-export * from './scoping/lookup-scope.js';
-export * from './scoping/name-resolver.js';
-export * from './types/sym-type.js';
-export * from './types/type-resolver.js';
-export * from './types/type-relations.js';
-export * from './types/expression-typer.js';
-export * from './validation/codes.js';
-export * from './validation/document-validator.js';
-export * from './validation/reserved-names.js';
-export * from './validation/checks/expression-checks.js';
+// @maa/language-adl: the host language, its services and the extension API (./browser.js), plus
+// the checker of model roots on disk, which needs Node.
+export * from './browser.js';
 export * from './workspace/root-checker.js';
-export * as ast from './generated/ast.js';
-export * from './docs/diagnostic-catalog.js';
-export * from './docs/adl-diagnostics.js';
-export * from './lsp/index.js';

@@ -2,3 +2,4 @@ export { createMaaServices, createMaaLspServices, behaviorLanguages } from './fa
 export { checkModelRoots } from './check.js';
 export { CheckInputError, type CheckDiagnostic, type CheckOptions, type RootSpec, type Severity } from '@maa/language-adl';
 export { familyDiagnostics, renderDiagnosticsMarkdown } from './docs/render-diagnostics.js';
+export * from './diagram/index.js';

@@ -2,12 +2,13 @@
 /**
  * `maa-language-server`: the language server of the family for editors that start it as a
  * process (VS Code, other LSP clients). Transport by the usual flags of vscode-languageserver:
- * `--stdio`, `--node-ipc` or `--socket=<port>`.
+ * `--stdio`, `--node-ipc` or `--socket=<port>`. Serves diagrams too (`diagram/accept`, docs/ide.md).
  */
 import { readFileSync } from 'node:fs';
 import { startLanguageServer } from 'langium/lsp';
 import { NodeFileSystem } from 'langium/node';
 import { createConnection, ProposedFeatures } from 'vscode-languageserver/node.js';
+import { addMaaDiagramServer } from '../diagram/index.js';
 import { createMaaLspServices } from '../family.js';
 
 const USAGE = `Usage: maa-language-server (--stdio | --node-ipc | --socket=<port>)
@@ -23,8 +24,9 @@ Options:
 /** Starts the server on the transport the command line names. */
 export function startNodeLanguageServer(): void {
     const connection = createConnection(ProposedFeatures.all);
-    const { shared } = createMaaLspServices({ connection, ...NodeFileSystem });
-    startLanguageServer(shared);
+    const family = createMaaLspServices({ connection, ...NodeFileSystem });
+    addMaaDiagramServer(family);
+    startLanguageServer(family.shared);
 }
 
 function main(args: readonly string[]): void {

@@ -1,0 +1,139 @@
+import type { AstNode } from 'langium';
+import {
+    allPorts, ast, behaviorsOf, elementsOf, isComposed, printType, stereotypeNames, subcomponentType, subcomponentsOf, type PortInfo
+} from '@maa/language-adl';
+import { behaviorLanguageOf, componentQualifiedName } from '@maa/generator-core';
+import type { SModelElement } from 'sprotty-protocol';
+import type { BuildContext } from './context.js';
+import { connectorId, instanceId, labelId, portId } from './ids.js';
+import { TYPES, type ComponentNode, type ConnectorEdge, type MaaGraph, type MaaLabel, type PortNode } from './model.js';
+import { PORT_SIZE, labelSize } from './sizes.js';
+import { atomicSourcePath, portName, type PortName } from './source-ports.js';
+
+type ComponentType = ast.ComponentType;
+
+/**
+ * The component & connector view of a component: the component with its ports on the border,
+ * its subcomponent instances as nested nodes with their ports, its connectors as edges.
+ * Composed subcomponents are shown closed unless their instance path is in `expanded`; an
+ * expanded one shows its own subcomponents and connectors the same way.
+ */
+export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet<string>, ctx: BuildContext): MaaGraph {
+    const qualifiedName = componentQualifiedName(root);
+    const types = new Map<string, ComponentType>();
+    const typeAt = (path: readonly string[]): ComponentType | undefined => types.get(path.join('.'));
+    const ports = new Set<string>();
+    const rootNode = componentNode(root, [], undefined, true);
+    return { type: TYPES.graph, id: ctx.id(`graph:${qualifiedName}`), component: qualifiedName, children: [rootNode] };
+
+    function componentNode(type: ComponentType, path: string[], decl: ast.Subcomponent | undefined, open: boolean): ComponentNode {
+        types.set(path.join('.'), type);
+        const id = ctx.id(instanceId(path), decl ?? type);
+        const composed = isComposed(type);
+        const name = decl?.name ?? type.name;
+        const componentType = componentQualifiedName(type);
+        const node: ComponentNode = {
+            type: TYPES.component,
+            id,
+            name,
+            componentType,
+            instancePath: path.join('.'),
+            behaviorKind: behaviorKind(type),
+            composed,
+            expanded: composed && open,
+            children: []
+        };
+        const severity = ctx.severity(decl, type);
+        if (severity) node.severity = severity;
+        ctx.trace(node, decl ?? type);
+        node.children!.push(
+            label(TYPES.nameLabel, labelId(id, 'name'), name, decl ?? type),
+            label(TYPES.typeLabel, labelId(id, 'type'), decl ? type.name : componentType, type),
+            label(TYPES.badgeLabel, labelId(id, 'badge'), node.behaviorKind, type)
+        );
+        for (const p of allPorts(type)) node.children!.push(portNode(p, path));
+        if (composed && open) {
+            for (const sub of subcomponentsOf(type)) {
+                const subType = subcomponentType(sub).decl;
+                if (!subType) continue;
+                const subPath = [...path, sub.name];
+                node.children!.push(componentNode(subType, subPath, sub, expanded.has(subPath.join('.'))));
+            }
+            node.children!.push(...connectors(type, path));
+        }
+        return node;
+    }
+
+    function portNode(p: PortInfo, path: string[]): PortNode {
+        const id = ctx.id(portId(path, p.name));
+        ports.add(id);
+        const node: PortNode = {
+            type: TYPES.port,
+            id,
+            name: p.name,
+            direction: p.direction,
+            portType: printType(p.type),
+            portPath: [...path, p.name].join('.'),
+            size: { width: PORT_SIZE, height: PORT_SIZE },
+            children: [label(TYPES.portLabel, labelId(id, 'name'), p.name, p.port)]
+        };
+        const severity = ctx.severity(p.port);
+        if (severity) node.severity = severity;
+        ctx.trace(node, p.port);
+        return node;
+    }
+
+    function connectors(type: ComponentType, path: string[]): ConnectorEdge[] {
+        const edges: ConnectorEdge[] = [];
+        for (const e of elementsOf(type)) {
+            if (e.$type !== 'Connector') continue;
+            const source = portName(e.source);
+            const sourceId = endpointId(path, source);
+            if (!ports.has(sourceId)) continue; // a broken reference: nothing to connect
+            const sourcePortPath = atomicSourcePath(typeAt, path, source);
+            for (const t of e.targets) {
+                const target = portName(t);
+                const targetId = endpointId(path, target);
+                if (!ports.has(targetId)) continue;
+                const edge: ConnectorEdge = {
+                    type: TYPES.connector,
+                    id: ctx.id(connectorId(path, local(source), local(target))),
+                    sourceId,
+                    targetId,
+                    sourcePortPath
+                };
+                ctx.trace(edge, e);
+                edges.push(edge);
+            }
+        }
+        return edges;
+    }
+
+    function label(type: string, id: string, text: string, source: AstNode): MaaLabel {
+        const l: MaaLabel = { type, id: ctx.id(id), text, size: labelSize(type, text) };
+        ctx.trace(l, source);
+        return l;
+    }
+}
+
+function endpointId(scope: readonly string[], p: PortName): string {
+    return portId(p.sub !== undefined ? [...scope, p.sub] : scope, p.port);
+}
+
+function local(p: PortName): string {
+    return p.sub !== undefined ? `${p.sub}.${p.port}` : p.port;
+}
+
+/** What implements a component: `composed`, `handwritten`, or its behavior block's language (`compute` without one). */
+export function behaviorKind(c: ComponentType): ComponentNode['behaviorKind'] {
+    if (isComposed(c)) return 'composed';
+    if (stereotypeNames(c.stereotype).includes('handwritten')) return 'handwritten';
+    const main = behaviorsOf(c).find((b) => b.behavior && b.behavior.$type !== 'InitBlock')?.behavior;
+    return main ? behaviorLanguageOf(main) : 'compute';
+}
+
+/** Every element of a model below (and including) `element`, depth first. */
+export function* allElements(element: SModelElement): Generator<SModelElement> {
+    yield element;
+    for (const child of element.children ?? []) yield* allElements(child);
+}

@@ -1,0 +1,99 @@
+import type { SEdge, SGraph, SLabel, SNode, SPort } from 'sprotty-protocol';
+
+/**
+ * The diagram model the IDE's Sprotty client renders (docs/ide.md, "Diagram protocol"): element
+ * types and the properties the client relies on. Positions and sizes come from the server's
+ * ELK layout, so the client needs no layout of its own.
+ */
+
+export const DIAGRAM_TYPES = ['maa-cc', 'maa-automaton'] as const;
+export type DiagramType = (typeof DIAGRAM_TYPES)[number];
+
+/** The options of a RequestModelAction for our diagrams. */
+export interface MaaDiagramOptions {
+    readonly diagramType: DiagramType;
+    readonly sourceUri: string;
+    /** Qualified name of the component to show (default: the component of `sourceUri`). */
+    readonly component?: string;
+    /** Instance paths of composed subcomponents to show opened. */
+    readonly expanded?: readonly string[];
+    readonly needsClientLayout?: boolean;
+}
+
+export type BehaviorKind = 'automaton' | 'robotarm' | 'compute' | 'handwritten' | 'composed';
+export type MarkerSeverity = 'error' | 'warning';
+
+export const TYPES = {
+    graph: 'graph',
+    component: 'node:component',
+    port: 'port',
+    connector: 'edge:connector',
+    state: 'node:state',
+    transition: 'edge:transition',
+    nameLabel: 'label:name',
+    typeLabel: 'label:type',
+    badgeLabel: 'label:badge',
+    portLabel: 'label:port',
+    stateLabel: 'label:state',
+    transitionLabel: 'label:transition'
+} as const;
+
+interface Traced {
+    /** langium-sprotty's trace: `<document uri>?<start line>:<start col>-<end line>:<end col>#<AST path>`. */
+    trace?: string;
+}
+
+export interface MaaGraph extends SGraph {
+    /** Qualified name of the shown component. */
+    component: string;
+}
+
+export interface ComponentNode extends SNode, Traced {
+    type: typeof TYPES.component;
+    name: string;
+    /** Qualified name of the component type. */
+    componentType: string;
+    /** Subcomponent names from the shown component (`""` for the shown component itself). */
+    instancePath: string;
+    /** One of BehaviorKind, or the block keyword of a further behavior language. */
+    behaviorKind: BehaviorKind | (string & Record<never, never>);
+    composed: boolean;
+    expanded: boolean;
+    severity?: MarkerSeverity;
+}
+
+export interface PortNode extends SPort, Traced {
+    type: typeof TYPES.port;
+    name: string;
+    direction: 'in' | 'out';
+    portType: string;
+    /** Instance path and port name (`ctrl.arm`; just `arm` for a port of the shown component). */
+    portPath: string;
+    severity?: MarkerSeverity;
+}
+
+export interface ConnectorEdge extends SEdge, Traced {
+    type: typeof TYPES.connector;
+    /** The out port of an atomic instance whose values flow through this connector (`""` if none). */
+    sourcePortPath: string;
+}
+
+export interface StateNode extends SNode, Traced {
+    type: typeof TYPES.state;
+    name: string;
+    initial: boolean;
+    /** State names from the top level (`Outer.Inner`). */
+    statePath: string;
+    severity?: MarkerSeverity;
+}
+
+export interface TransitionEdge extends SEdge, Traced {
+    type: typeof TYPES.transition;
+    /** `trigger [guard] / action` as written (whitespace collapsed). */
+    label: string;
+}
+
+export interface MaaLabel extends SLabel, Traced {
+    /** The whole text of a label shown shortened (a long transition label), for a tooltip. */
+    fullText?: string;
+}
