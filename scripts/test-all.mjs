@@ -1,12 +1,13 @@
 #!/usr/bin/env node
 // `npm test`: builds every workspace package, sets up the simulator's venv (Vitest uses it), runs
-// every Vitest suite of the workspace (vitest.config.ts at the root), then the Python suites
+// every Vitest suite of the workspace (vitest.config.ts at the root), the browser end-to-end
+// suite (e2e/), then the Python suites
 // (PYTHON_SUITES below: sim-server, the ROS 2 family with real rclpy, the Python RTEs; each with
 // its own idempotent venv setup, pytest and linters), and closes with one line
 // "tests: N passed, N failed, N skipped" counting everything.
 // Installs no npm packages: run `npm ci` first (the README's test command does).
 // Extra arguments go to Vitest, e.g. `npm test -- packages/cli`; MAA_TEST_PYTHON=0 skips the
-// Python suites except ROS 2, MAA_TEST_ROS2=0 skips ROS 2.
+// Python suites except ROS 2, MAA_TEST_ROS2=0 skips ROS 2, MAA_TEST_E2E=0 the browser tests.
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -50,6 +51,14 @@ if (process.env.MAA_TEST_PYTHON !== '0') {
   }
 }
 
+// The IDE backend's ROS 2 session test runs the generated nodes from the ROS 2 venv.
+if (process.env.MAA_TEST_ROS2 !== '0') {
+  const ros2Setup = step('ROS 2 venv setup (used by Vitest too)', 'bash', [path.join(repo, 'packages', 'generators-python', 'scripts', 'setup_ros2_venv.sh')]);
+  if (ros2Setup !== 0) {
+    finish(ros2Setup, `test-all: FAILED: the ROS 2 venv setup exited with ${ros2Setup}; no test was run`);
+  }
+}
+
 const reportDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-'));
 const reportFile = path.join(reportDir, 'vitest.json');
 const testStatus = step('test', npx, [
@@ -80,6 +89,16 @@ let skipped = (report.numPendingTests ?? 0) + (report.numTodoTests ?? 0);
 let code = testStatus !== 0 ? testStatus : failed > 0 || passed === 0 ? 1 : 0;
 if (passed === 0 && failed === 0) console.log('test-all: no vitest test was run');
 
+// The browser end-to-end suite (e2e/run.mjs): maa-ide with the built app on a fresh copy of
+// examples/, driven through playwright-core in Debian's chromium (installed here when missing).
+// Its results (one per scenario) are in e2e/artifacts/results.json, screenshots beside them.
+if (process.env.MAA_TEST_E2E !== '0') {
+  const counts = e2eSuite();
+  passed += counts.passed;
+  failed += counts.failed;
+  if (counts.failed > 0 || counts.passed === 0) code = code || 1;
+}
+
 // The Python suites: each sets up its venv (idempotent scripts), runs pytest (JUnit XML for the
 // counts), then its linters; a failing linter counts as one failed check.
 const PYTHON_SUITES = [
@@ -91,7 +110,8 @@ const PYTHON_SUITES = [
   },
   {
     // The ros2-python family with real ROS 2 (rclpy, the rosidl toolchain): generated code
-    // compiles and is ruff-clean, the interface package builds, the ToastService nodes run.
+    // compiles and is ruff-clean, the interface package builds, the ToastService nodes run, and
+    // serve the toast in the simulator (maa-sim is installed into this venv by its setup script).
     title: 'ros2', enabled: process.env.MAA_TEST_ROS2 !== '0', dir: 'packages/generators-python',
     setup: 'packages/generators-python/scripts/setup_ros2_venv.sh', python: 'packages/generators-python/.venv-ros2/bin/python',
     tests: 'packages/generators-python/test/ros2', lint: [],
@@ -146,6 +166,26 @@ function pythonSuite(suite) {
     }
   }
   return counts;
+}
+
+function e2eSuite() {
+  const chromium = step('e2e: chromium', process.execPath, [path.join(repo, 'scripts', 'ensure-chromium.mjs')]);
+  if (chromium !== 0) {
+    console.error('test-all: FAILED: chromium for the e2e tests is missing and could not be installed');
+    return { passed: 0, failed: 1 };
+  }
+  const resultsFile = path.join(repo, 'e2e', 'artifacts', 'results.json');
+  rmSync(resultsFile, { force: true });
+  const status = step('e2e', process.execPath, [path.join(repo, 'e2e', 'run.mjs')]);
+  let results;
+  try {
+    results = JSON.parse(readFileSync(resultsFile, 'utf8'));
+  } catch {
+    console.error(`test-all: FAILED: the e2e run exited with ${status} and wrote no results`);
+    return { passed: 0, failed: 1 };
+  }
+  const failedScenarios = results.filter((r) => !r.ok).length;
+  return { passed: results.length - failedScenarios, failed: failedScenarios || (status !== 0 ? 1 : 0) };
 }
 
 function junitCounts(xml) {

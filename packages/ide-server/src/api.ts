@@ -1,0 +1,102 @@
+import { readFile, stat } from 'node:fs/promises';
+import { listApps, readApp } from './apps.js';
+import type { GenerationService } from './generation.js';
+import { HttpError, readBody, readJsonObject, requireQuery, requireString, sendJson, sendText } from './http-util.js';
+import { ROSBRIDGE_PATH, VISER_PATH } from './proxy.js';
+import { Router } from './router.js';
+import type { SimMode, SimSessions } from './sim-session.js';
+import type { Workspace } from './workspace.js';
+
+export interface ApiOptions {
+  workspace: Workspace;
+  generation: GenerationService;
+  sims: SimSessions;
+  /** Largest accepted file body (PUT /api/file). */
+  maxFileBytes: number;
+}
+
+/** The generator family a simulation mode runs (docs/ide.md: lockstep = timesync, ros2 = ros2). */
+const MODE_KIND: Record<SimMode, string> = { lockstep: 'timesync', ros2: 'ros2' };
+
+/** The routes of docs/ide.md "Backend HTTP API". */
+export function createApiRouter({ workspace, generation, sims, maxFileBytes }: ApiOptions): Router {
+  const router = new Router();
+
+  router.on('GET', '/api/files', async ({ res }) => {
+    sendJson(res, 200, { root: workspace.name, entries: await workspace.list() });
+  });
+
+  router.on('GET', '/api/file', async ({ res, query }) => {
+    sendText(res, 200, (await workspace.read(requireQuery(query, 'path'))).toString('utf8'));
+  });
+  router.on('PUT', '/api/file', async ({ req, res, query }) => {
+    const rel = requireQuery(query, 'path');
+    await workspace.write(rel, await readBody(req, maxFileBytes));
+    sendJson(res, 200, { ok: true });
+  });
+  router.on('DELETE', '/api/file', async ({ res, query }) => {
+    await workspace.delete(requireQuery(query, 'path'));
+    sendJson(res, 200, { ok: true });
+  });
+
+  router.on('GET', '/api/apps', async ({ res }) => {
+    sendJson(res, 200, { apps: await listApps(workspace) });
+  });
+
+  router.on('POST', '/api/generate', async ({ req, res }) => {
+    const body = await readJsonObject(req);
+    const { platformDir: _dir, ...answer } = await generation.generate(requireString(body, 'app'), requireString(body, 'platform'));
+    sendJson(res, 200, answer);
+  });
+  router.on('GET', '/api/generated/file', async ({ res, query }) => {
+    const root = generation.platformRoot(requireQuery(query, 'app'), requireQuery(query, 'platform'));
+    const rel = requireQuery(query, 'path');
+    const abs = await root.resolve(rel);
+    const info = await stat(abs).catch(() => undefined);
+    if (!info?.isFile()) throw new HttpError(404, `not generated: ${rel}`);
+    sendText(res, 200, await readFile(abs, 'utf8'));
+  });
+  router.on('GET', '/api/generated/trace', async ({ res, query }) => {
+    const app = requireQuery(query, 'app');
+    const platform = requireQuery(query, 'platform');
+    const abs = await generation.platformRoot(app, platform).resolve('.maa-trace.json');
+    const text = await readFile(abs, 'utf8').catch(() => {
+      throw new HttpError(404, `no trace: ${app} has not been generated for ${platform}`);
+    });
+    sendText(res, 200, text, 'application/json; charset=utf-8');
+  });
+
+  router.on('POST', '/api/sim/start', async ({ req, res }) => {
+    const body = await readJsonObject(req);
+    const appPath = requireString(body, 'app');
+    const platformName = requireString(body, 'platform');
+    const app = await readApp(workspace, appPath);
+    const platform = app?.platforms.find((p) => p.name === platformName);
+    if (!app || !platform) throw new HttpError(400, `${appPath} has no platform '${platformName}'`);
+    const mode = body['mode'] ?? (platform.kind === 'ros2' ? 'ros2' : 'lockstep');
+    if (mode !== 'lockstep' && mode !== 'ros2') throw new HttpError(400, `mode must be "lockstep" or "ros2", not ${JSON.stringify(mode)}`);
+    if (platform.kind !== MODE_KIND[mode]) {
+      throw new HttpError(400, `${mode} mode needs a ${MODE_KIND[mode]} platform; '${platformName}' is a ${platform.kind || 'unknown'} platform`);
+    }
+    const speed = body['speed'];
+    if (speed !== undefined && (typeof speed !== 'number' || !Number.isFinite(speed) || speed < 0 || speed > 1000)) {
+      throw new HttpError(400, 'speed must be a number from 0 (as fast as possible) to 1000');
+    }
+    const generated = await generation.generate(appPath, platformName);
+    if (!generated.ok) {
+      const errors = generated.diagnostics.filter((d) => d.severity === 'error').length;
+      throw new HttpError(409, `generating ${platformName} failed with ${errors} error${errors === 1 ? '' : 's'}`, { diagnostics: generated.diagnostics });
+    }
+    const { session } = await sims.start({ app: appPath, platform: platformName, mode, speed, platformDir: generated.platformDir });
+    sendJson(res, 200, { ok: true, session, mode, rosbridge: ROSBRIDGE_PATH, viser: `${VISER_PATH}/` });
+  });
+  router.on('POST', '/api/sim/stop', async ({ res }) => {
+    await sims.stop();
+    sendJson(res, 200, { ok: true });
+  });
+  router.on('GET', '/api/sim/status', ({ res }) => {
+    sendJson(res, 200, sims.status());
+  });
+
+  return router;
+}

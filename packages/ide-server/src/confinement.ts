@@ -1,0 +1,76 @@
+import { lstat, realpath } from 'node:fs/promises';
+import path from 'node:path';
+import { HttpError } from './http-util.js';
+
+/**
+ * Checks the syntax of a client path (relative, POSIX, no `..`): 400 otherwise. Query values
+ * arrive URL-decoded, so `%2e%2e/` is checked as `../`.
+ */
+export function checkRelativePath(rel: string, what = 'path'): string[] {
+  if (rel === '') throw new HttpError(400, `empty ${what}`);
+  if (rel.includes('\0')) throw new HttpError(400, `${what} contains a NUL byte: ${JSON.stringify(rel)}`);
+  if (rel.includes('\\')) throw new HttpError(400, `${what} contains a backslash (use '/'): ${rel}`);
+  if (rel.startsWith('/') || /^[A-Za-z]:/.test(rel)) throw new HttpError(400, `absolute ${what} not allowed: ${rel}`);
+  const segments = rel.split('/').filter((s) => s !== '' && s !== '.');
+  if (segments.some((s) => s === '..')) throw new HttpError(400, `'..' segments are not allowed in ${what}: ${rel}`);
+  if (segments.length === 0) throw new HttpError(400, `${what} names no file: ${rel}`);
+  return segments;
+}
+
+function inside(root: string, target: string): boolean {
+  return target === root || target.startsWith(root.endsWith(path.sep) ? root : root + path.sep);
+}
+
+async function exists(p: string): Promise<boolean> {
+  try {
+    await lstat(p);
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+/**
+ * A folder that client paths are confined to (the workspace, the generated output). Symlinks
+ * are resolved: a path whose real location, or for a new file the real location of its
+ * nearest existing parent, lies outside the root is refused with 403.
+ */
+export class ConfinedRoot {
+  private realRoot: string | undefined;
+
+  constructor(readonly root: string, private readonly label = 'the workspace') {}
+
+  private async real(): Promise<string> {
+    // Resolved on first use: the output root may appear only after the first generation.
+    this.realRoot ??= await realpath(this.root);
+    return this.realRoot;
+  }
+
+  /** The absolute path of `rel` after the syntax and symlink checks (the file need not exist). */
+  async resolve(rel: string, what = 'path'): Promise<string> {
+    const segments = checkRelativePath(rel, what);
+    const target = path.join(this.root, ...segments);
+    let realRoot: string;
+    try {
+      realRoot = await this.real();
+    } catch {
+      throw new HttpError(404, `not found: ${rel} (${this.label} does not exist)`);
+    }
+    // The nearest existing ancestor (the target itself when it exists) decides where it lies.
+    let probe = target;
+    while (!(await exists(probe))) {
+      const parent = path.dirname(probe);
+      if (parent === probe) break;
+      probe = parent;
+    }
+    let real: string;
+    try {
+      real = await realpath(probe);
+    } catch {
+      // lstat saw it but realpath fails: a dangling symlink, whose target we cannot vouch for.
+      throw new HttpError(403, `${rel} is a symlink whose target does not exist`);
+    }
+    if (!inside(realRoot, real)) throw new HttpError(403, `${rel} resolves outside ${this.label}`);
+    return target;
+  }
+}

@@ -1,0 +1,289 @@
+import { spawn, type ChildProcess } from 'node:child_process';
+import { randomUUID } from 'node:crypto';
+import { existsSync, readdirSync } from 'node:fs';
+import { connect } from 'node:net';
+import path from 'node:path';
+import { createInterface } from 'node:readline';
+import { HttpError } from './http-util.js';
+import type { Ros2Environment } from './ros2-environment.js';
+
+export type SimMode = 'lockstep' | 'ros2';
+
+/** The file a generated package must hold for a mode (docs/simulation.md). */
+const PACKAGE_FILE: Record<SimMode, string> = { lockstep: 'lockstep.json', ros2: 'deployment.json' };
+const LOG_LINES = 200;
+const STATUS_LOG_LINES = 60;
+/**
+ * maa-sim's node supervision in ros2 mode: how long a node may take to come up, and to answer a
+ * liveness probe. maa-sim's defaults (30 s, 5 s) are tight for seven rclpy processes on a loaded
+ * 2-core machine; a crash is still reported at once.
+ */
+const ROS2_SUPERVISION = ['--startup-timeout', '60', '--hang-timeout', '15'];
+
+export interface SimStartRequest {
+  app: string;
+  platform: string;
+  mode: SimMode;
+  /** Simulated seconds per wall second; undefined leaves maa-sim's default. */
+  speed?: number;
+  /** The generated platform folder. */
+  platformDir: string;
+}
+
+export interface SimEndpoints {
+  rosbridge: URL;
+  viser: URL | undefined;
+}
+
+interface Session {
+  id: string;
+  request: SimStartRequest;
+  /** Set while the environment is prepared (ros2: venv setup, interface build), before maa-sim runs. */
+  preparing?: AbortController;
+  /** maa-sim, once spawned. */
+  child?: ChildProcess;
+  log: string[];
+  endpoints?: SimEndpoints;
+  exitCode?: number | null;
+  exited?: Promise<void>;
+}
+
+export interface SimStatus {
+  running: boolean;
+  /** A start is under way: the ROS 2 environment is being set up or the interface package built (log shows progress). */
+  preparing?: boolean;
+  session?: string;
+  mode?: SimMode;
+  app?: string;
+  platform?: string;
+  exitCode?: number | null;
+  log: string[];
+}
+
+/**
+ * One `maa-sim run` child at a time. Ports are chosen by maa-sim (`0`) and read from its
+ * `--status-json` ready line, so there is no window in which another process could take a port
+ * we picked. Start and stop are serialized; a crashed child stays visible in the status.
+ */
+export class SimSessions {
+  private current: Session | undefined;
+  private lock: Promise<unknown> = Promise.resolve();
+
+  /**
+   * @param maaSim the maa-sim of lockstep sessions (and of ros2 ones when there is no `ros2` environment)
+   * @param ros2 the environment ros2 sessions run in (its maa-sim, the interface packages installed into it)
+   */
+  constructor(
+    private readonly maaSim: string,
+    private readonly readyTimeoutMs = 90_000,
+    private readonly ros2?: Ros2Environment,
+  ) {}
+
+  /** The endpoints of the running session (undefined when none runs). */
+  endpoints(): SimEndpoints | undefined {
+    const s = this.current;
+    return s && s.child && s.exitCode === undefined ? s.endpoints : undefined;
+  }
+
+  start(request: SimStartRequest): Promise<{ session: string }> {
+    return this.serialized(async () => {
+      await this.stopCurrent();
+      return this.spawnSession(request);
+    });
+  }
+
+  /** Stops the session; a start still preparing its environment is cancelled at once (its answer is 409). */
+  stop(): Promise<void> {
+    this.current?.preparing?.abort();
+    return this.serialized(() => this.stopCurrent());
+  }
+
+  status(): SimStatus {
+    const s = this.current;
+    if (!s) return { running: false, log: [] };
+    const running = s.child !== undefined && s.exitCode === undefined;
+    return {
+      running,
+      ...(s.preparing ? { preparing: true } : {}),
+      session: s.id,
+      mode: s.request.mode,
+      app: s.request.app,
+      platform: s.request.platform,
+      ...(running || s.exitCode === undefined ? {} : { exitCode: s.exitCode }),
+      log: s.log.slice(-STATUS_LOG_LINES),
+    };
+  }
+
+  private serialized<T>(body: () => Promise<T>): Promise<T> {
+    const run = this.lock.then(body);
+    this.lock = run.catch(() => undefined);
+    return run;
+  }
+
+  private async spawnSession(request: SimStartRequest): Promise<{ session: string }> {
+    const ros2 = request.mode === 'ros2' ? this.ros2 : undefined;
+    if (!ros2 && !existsSync(this.maaSim)) {
+      throw new HttpError(500, `the simulator is not installed (${this.maaSim} is missing); run "bash sim-server/scripts/setup_env.sh"`);
+    }
+    const packageDir = findPackageDir(request.platformDir, PACKAGE_FILE[request.mode]);
+    if (!packageDir) {
+      throw new HttpError(409, `the generated platform ${request.platform} has no ${PACKAGE_FILE[request.mode]}, so it cannot run in ${request.mode} mode`);
+    }
+    const log: string[] = [];
+    const push = (line: string): void => {
+      log.push(line);
+      if (log.length > LOG_LINES) log.splice(0, log.length - LOG_LINES);
+    };
+    let maaSim = this.maaSim;
+    const extraArgs: string[] = [];
+    if (ros2) {
+      // The session is visible (status: preparing, with the progress in its log) while the venv is
+      // set up and the interface package built; a stop cancels it.
+      const preparing = new AbortController();
+      const session: Session = { id: randomUUID(), request, log, preparing };
+      this.current = session;
+      try {
+        maaSim = await ros2.prepare(request.platformDir, push, preparing.signal);
+      } catch (e) {
+        const message = e instanceof Error ? e.message : String(e);
+        push(`maa-ide: ${message.split('\n')[0]}`);
+        if (e instanceof HttpError && !(e.extra && 'log' in e.extra)) throw withLog(e.status, e.message, log);
+        throw e;
+      } finally {
+        delete session.preparing;
+      }
+    }
+    if (request.mode === 'ros2') extraArgs.push(...ROS2_SUPERVISION);
+    const args = ['run', '--package', packageDir, '--mode', request.mode, '--rosbridge-port', '0', '--viser-port', '0', '--host', '127.0.0.1', '--status-json', ...extraArgs];
+    if (request.speed !== undefined) args.push('--speed', String(request.speed));
+    if (request.mode === 'ros2') push(`maa-ide: starting ${maaSim} (ros2 mode)`);
+    const child = spawn(maaSim, args, { cwd: packageDir, stdio: ['ignore', 'pipe', 'pipe'], env: { ...process.env, PYTHONUNBUFFERED: '1' } });
+    let markExited!: () => void;
+    const session: Session = {
+      id: this.current?.request === request ? this.current.id : randomUUID(),
+      request,
+      child,
+      log,
+      exited: new Promise<void>((resolve) => (markExited = resolve)),
+    };
+    this.current = session;
+    const ready = new Promise<SimEndpoints>((resolve, reject) => {
+      createInterface({ input: child.stdout! }).on('line', (line) => {
+        const endpoints = parseReadyLine(line);
+        if (endpoints) resolve(endpoints);
+        push(line);
+      });
+      createInterface({ input: child.stderr! }).on('line', push);
+      // 'close' comes after the last output line was read; 'exit' is the fallback should a
+      // grandchild keep the pipes open.
+      let finished = false;
+      const finish = (code: number | null, signal: NodeJS.Signals | null): void => {
+        if (finished) return;
+        finished = true;
+        session.exitCode = code ?? (signal ? null : -1);
+        const how = signal ? `signal ${signal}` : `exit code ${code}`;
+        push(`maa-ide: maa-sim ended (${how})`);
+        markExited();
+        reject(withLog(500, `the simulator exited before it was ready (${how})`, session.log));
+      };
+      child.on('close', finish);
+      child.on('error', (e) => {
+        // Failing to spawn, or (rarely) to signal the process.
+        push(`maa-ide: maa-sim process error: ${e.message}`);
+        reject(new HttpError(500, `cannot start the simulator ${maaSim}: ${e.message}`));
+        if (child.pid === undefined) finish(null, null); // never started: no 'exit' will come
+      });
+      child.on('exit', (code, signal) => setTimeout(() => finish(code, signal), 2_000).unref());
+    });
+    // The race below may be decided by the timeout; a later rejection must not be unhandled.
+    ready.catch(() => undefined);
+    let timer: NodeJS.Timeout | undefined;
+    const timeout = new Promise<never>((_, reject) => {
+      timer = setTimeout(
+        () => reject(withLog(504, `the simulator was not ready after ${this.readyTimeoutMs / 1000} s`, session.log)),
+        this.readyTimeoutMs,
+      );
+    });
+    try {
+      const endpoints = await Promise.race([ready, timeout]);
+      await waitForPort(endpoints.rosbridge, 10_000);
+      session.endpoints = endpoints;
+      return { session: session.id };
+    } catch (e) {
+      await this.stopCurrent();
+      throw e;
+    } finally {
+      clearTimeout(timer);
+    }
+  }
+
+  /** SIGTERM (maa-sim then stops its nodes and exits 0), SIGKILL after a grace period. */
+  private async stopCurrent(): Promise<void> {
+    const s = this.current;
+    if (!s?.child || !s.exited || s.exitCode !== undefined) return;
+    s.child.kill('SIGTERM');
+    const child = s.child;
+    const killed = setTimeout(() => child.kill('SIGKILL'), 8_000);
+    await s.exited;
+    clearTimeout(killed);
+  }
+}
+
+/** An error whose message ends with the log tail; the answer also carries the tail as `log`. */
+function withLog(status: number, message: string, log: readonly string[]): HttpError {
+  const tail = log.slice(-STATUS_LOG_LINES);
+  return new HttpError(status, `${message}:\n${tail.slice(-20).join('\n')}`, { log: tail });
+}
+
+/** `{"event": "ready", "rosbridge": "ws://...", "viser": "http://..."}` → its endpoints. */
+export function parseReadyLine(line: string): SimEndpoints | undefined {
+  if (!line.startsWith('{')) return undefined;
+  try {
+    const value = JSON.parse(line) as { event?: unknown; rosbridge?: unknown; viser?: unknown };
+    if (value.event !== 'ready' || typeof value.rosbridge !== 'string') return undefined;
+    return {
+      rosbridge: new URL(value.rosbridge.replace(/^ws/, 'http')),
+      viser: typeof value.viser === 'string' ? new URL(value.viser) : undefined,
+    };
+  } catch {
+    return undefined;
+  }
+}
+
+/** The platform folder itself or a folder at most two levels below it that holds `file`. */
+export function findPackageDir(platformDir: string, file: string): string | undefined {
+  const queue: Array<[string, number]> = [[platformDir, 0]];
+  while (queue.length > 0) {
+    const [dir, depth] = queue.shift()!;
+    if (existsSync(path.join(dir, file))) return dir;
+    if (depth === 2) continue;
+    let entries;
+    try {
+      entries = readdirSync(dir, { withFileTypes: true });
+    } catch {
+      continue;
+    }
+    for (const e of entries.sort((a, b) => a.name.localeCompare(b.name))) {
+      if (e.isDirectory() && !e.name.startsWith('.')) queue.push([path.join(dir, e.name), depth + 1]);
+    }
+  }
+  return undefined;
+}
+
+/** Resolves once a TCP connection to the URL's port succeeds ("once its rosbridge answers"). */
+async function waitForPort(url: URL, timeoutMs: number): Promise<void> {
+  const deadline = Date.now() + timeoutMs;
+  for (;;) {
+    const ok = await new Promise<boolean>((resolve) => {
+      const socket = connect(Number(url.port), url.hostname);
+      socket.once('connect', () => {
+        socket.destroy();
+        resolve(true);
+      });
+      socket.once('error', () => resolve(false));
+    });
+    if (ok) return;
+    if (Date.now() > deadline) throw new HttpError(504, `the simulator's rosbridge (${url.host}) does not accept connections`);
+    await new Promise((r) => setTimeout(r, 100));
+  }
+}

@@ -1,0 +1,111 @@
+import { existsSync } from 'node:fs';
+import path from 'node:path';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import WebSocket from 'ws';
+import { json, repo, startSite, type TestSite } from './helpers.js';
+
+const MAA_SIM = path.join(repo, 'sim-server', '.venv', 'bin', 'maa-sim');
+const haveSim = existsSync(MAA_SIM);
+const APP = 'toast-service/TR.arcapp';
+
+interface RosbridgeMessage {
+  op: string;
+  id?: string;
+  topic?: string;
+  service?: string;
+  result?: boolean;
+  values?: { topics?: string[] };
+  msg?: { clock?: { sec: number; nanosec: number } };
+}
+
+/** A rosbridge v2 client over the backend's proxy that waits for the first message matching a predicate. */
+function rosbridge(url: string): Promise<{ ws: WebSocket; next(match: (m: RosbridgeMessage) => boolean): Promise<RosbridgeMessage> }> {
+  return new Promise((resolve, reject) => {
+    const ws = new WebSocket(url);
+    const waiting: Array<{ match: (m: RosbridgeMessage) => boolean; done: (m: RosbridgeMessage) => void }> = [];
+    ws.on('message', (data) => {
+      const m = JSON.parse(String(data)) as RosbridgeMessage;
+      for (const w of [...waiting]) {
+        if (w.match(m)) {
+          waiting.splice(waiting.indexOf(w), 1);
+          w.done(m);
+        }
+      }
+    });
+    ws.once('error', reject);
+    ws.once('open', () =>
+      resolve({
+        ws,
+        next: (match) =>
+          new Promise((done, fail) => {
+            const timer = setTimeout(() => fail(new Error('no matching rosbridge message within 15 s')), 15_000);
+            waiting.push({ match, done: (m) => (clearTimeout(timer), done(m)) });
+          }),
+      }),
+    );
+  });
+}
+
+describe.skipIf(!haveSim)(`simulation session${haveSim ? '' : ` (skipped: ${MAA_SIM} is missing; run bash sim-server/scripts/setup_env.sh)`}`, () => {
+  let site: TestSite;
+  beforeAll(async () => {
+    site = await startSite({ maaSim: MAA_SIM });
+  });
+  afterAll(() => site?.dispose());
+
+  const start = (body: unknown) => fetch(site.url('/api/sim/start'), { method: 'POST', body: JSON.stringify(body) });
+
+  it('refuses a platform of the wrong kind for the mode', async () => {
+    const res = await start({ app: APP, platform: 'rospython', mode: 'lockstep', speed: 1 });
+    expect(res.status).toBe(400);
+    expect((await json(res))['error']).toContain('lockstep mode needs a timesync platform');
+    expect((await start({ app: APP, platform: 'timesync', mode: 'fast' })).status).toBe(400);
+    expect((await start({ app: APP, platform: 'timesync', mode: 'lockstep', speed: -1 })).status).toBe(400);
+  });
+
+  it('runs lockstep (timesync): rosbridge and viser through the proxy, status, stop', async () => {
+    const res = await start({ app: APP, platform: 'timesync', mode: 'lockstep', speed: 1 });
+    const answer = await json(res);
+    expect(res.status, JSON.stringify(answer)).toBe(200);
+    expect(answer).toMatchObject({ ok: true, mode: 'lockstep', rosbridge: '/sim/rosbridge', viser: '/sim/viser/' });
+
+    const status = await json(await fetch(site.url('/api/sim/status')));
+    expect(status).toMatchObject({ running: true, session: answer['session'], mode: 'lockstep', app: APP, platform: 'timesync' });
+
+    const client = await rosbridge(site.url('/sim/rosbridge').replace(/^http/, 'ws'));
+    try {
+      client.ws.send(JSON.stringify({ op: 'call_service', id: 'topics', service: '/rosapi/topics', args: {} }));
+      const topics = await client.next((m) => m.op === 'service_response' && m.id === 'topics');
+      expect(topics.result).toBe(true);
+      expect(topics.values?.topics).toContain('/clock');
+      client.ws.send(JSON.stringify({ op: 'subscribe', id: 'clock', topic: '/clock' }));
+      const clock = await client.next((m) => m.op === 'publish' && m.topic === '/clock');
+      expect(typeof clock.msg?.clock?.sec).toBe('number');
+    } finally {
+      client.ws.close();
+    }
+
+    const viser = await fetch(site.url('/sim/viser/'));
+    expect(viser.status).toBe(200);
+    expect(viser.headers.get('content-type')).toContain('text/html');
+    expect(await viser.text()).toContain('<title>Viser</title>');
+    const redirect = await fetch(site.url('/sim/viser'), { redirect: 'manual' });
+    expect(redirect.status).toBe(301);
+    expect(redirect.headers.get('location')).toBe('/sim/viser/');
+    // viser's client opens its WebSocket at the page URL without the trailing slash.
+    const viserWs = new WebSocket(site.url('/sim/viser').replace(/^http/, 'ws'), ['viser-v1']);
+    await new Promise<void>((resolve, reject) => {
+      viserWs.once('open', () => resolve());
+      viserWs.once('error', reject);
+    });
+    viserWs.close();
+
+    const stopped = await fetch(site.url('/api/sim/stop'), { method: 'POST' });
+    expect(await json(stopped)).toEqual({ ok: true });
+    const after = await json<{ running: boolean; exitCode: number; log: string[] }>(await fetch(site.url('/api/sim/status')));
+    expect(after.running).toBe(false);
+    expect(after.exitCode).toBe(0);
+    expect(after.log.some((l) => l.includes('"event": "finished"'))).toBe(true);
+    expect((await fetch(site.url('/sim/viser/'))).status).toBe(502);
+  });
+});
