@@ -1,4 +1,5 @@
 import { existsSync } from 'node:fs';
+import { randomUUID } from 'node:crypto';
 import { lstat, mkdir, readdir, readFile, realpath, rename, rm, stat, writeFile } from 'node:fs/promises';
 import path from 'node:path';
 import { ConfinedRoot } from './confinement.js';
@@ -94,7 +95,8 @@ export class Workspace {
     }
     // A symlinked target (already checked to point inside) is written through, not replaced.
     const target = (await lstat(abs).catch(() => undefined))?.isSymbolicLink() ? await realpath(abs) : abs;
-    const temp = path.join(path.dirname(target), `.${path.basename(target)}.maa-ide-${process.pid}-${Date.now()}.tmp`);
+    // A name of its own per write: two saves of one file in the same millisecond must not share it.
+    const temp = path.join(path.dirname(target), `.${path.basename(target)}.maa-ide-${process.pid}-${randomUUID()}.tmp`);
     await writeFile(temp, content);
     try {
       await rename(temp, target);

@@ -44,6 +44,14 @@ describe('workspace file API', () => {
     }
   });
 
+  it('takes concurrent saves of one file (the last one wins, none fails)', async () => {
+    const bodies = Array.from({ length: 20 }, (_, i) => `component A { /* save ${i} */ }\n`);
+    const statuses = await Promise.all(bodies.map(async (body) => (await file('models/Concurrent.arc', { method: 'PUT', body })).status));
+    expect(statuses.every((s) => s >= 200 && s < 300), statuses.join(',')).toBe(true);
+    expect(bodies).toContain(readFileSync(path.join(site.workspace, 'models', 'Concurrent.arc'), 'utf8'));
+    expect((await file('models/Concurrent.arc', { method: 'DELETE' })).status).toBeLessThan(300);
+  });
+
   it('decodes %2e%2e/ before checking it', async () => {
     const res = await fetch(site.url('/api/file?path=%2e%2e/outside/secret.txt'));
     expect(res.status).toBe(400);
