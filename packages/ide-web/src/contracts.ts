@@ -1,0 +1,77 @@
+/**
+ * The seams between the parts of the browser app: the workbench shell (editor, explorer,
+ * problems, generate panel) owns the language client and the layout; the diagram and the
+ * simulate panel are mounted into containers it hands out. Only these types cross the seams.
+ */
+import type { ActionMessage } from 'sprotty-protocol';
+
+/** Something that can be undone/removed. */
+export interface Disposable {
+    dispose(): void;
+}
+
+/** A position in a workspace file, 0-based like LSP. */
+export interface TextPosition {
+    line: number;
+    character: number;
+}
+
+/** A range in a workspace file, 0-based like LSP. */
+export interface TextRange {
+    start: TextPosition;
+    end: TextPosition;
+}
+
+/** What the shell gives the diagram: the language server's diagram channel and the editor. */
+export interface DiagramHost {
+    /** Sends a Sprotty action message to the diagram server (LSP notification `diagram/accept`). */
+    sendDiagramMessage(message: ActionMessage): void;
+    /** Receives the diagram server's action messages (notifications `diagram/accept`). */
+    onDiagramMessage(handler: (message: ActionMessage) => void): Disposable;
+    /** Opens the file of a langium-sprotty trace (`<uri>?<range>`) and selects the range. */
+    revealTrace(trace: string): void;
+}
+
+/** Which diagram to show. */
+export interface DiagramTarget {
+    /** `file:///workspace/...` of a model file of the root to show. */
+    uri: string;
+    /** Qualified component name; default: the first component of the file. */
+    component?: string;
+    /** `maa-cc` (architecture) or `maa-automaton` (the component's state machine). */
+    diagramType: 'maa-cc' | 'maa-automaton';
+}
+
+/** The mounted diagram, as the shell and the simulate panel drive it. */
+export interface DiagramView extends Disposable {
+    /** Shows (or switches to) a diagram; later edits of the model update it. */
+    show(target: DiagramTarget): void;
+    /** Selects the innermost element whose trace contains the position (editor → diagram). */
+    revealPosition(uri: string, position: TextPosition): void;
+    /** The current diagram as a standalone SVG document. */
+    exportSvg(): Promise<string>;
+    /** Live values by port path (`"ctrl.arm"`); shown on connectors and ports. Empty map clears. */
+    setLiveValues(values: ReadonlyMap<string, string>): void;
+    /** Active automaton state by instance path (`"ctrl"` → `"Toasting"`). Empty map clears. */
+    setActiveStates(states: ReadonlyMap<string, string>): void;
+    /** Called when the user selects diagram elements (their traces). */
+    onSelect(handler: (traces: string[]) => void): Disposable;
+}
+
+/** One application configuration of the workspace (`GET /api/apps`). */
+export interface AppInfo {
+    path: string;
+    name: string;
+    component: string;
+    platforms: { name: string; kind: 'ros2' | 'timesync' | string }[];
+}
+
+/** What the shell gives the simulate panel. */
+export interface SimulateHost {
+    /** The diagram, for live values and active states during a run. */
+    diagram: DiagramView;
+    /** The application configurations of the workspace (fresh from the backend). */
+    apps(): Promise<AppInfo[]>;
+    /** Reports a message in the shell's status line / notifications. */
+    notify(severity: 'info' | 'warning' | 'error', message: string): void;
+}

@@ -1,0 +1,50 @@
+/** Client model classes of the diagram's element types (docs/ide.md "Diagram protocol"). */
+import { SEdgeImpl, SGraphImpl, SNodeImpl, SPortImpl } from 'sprotty';
+
+export type BehaviorKind = 'automaton' | 'robotarm' | 'compute' | 'handwritten' | 'composed' | string;
+export type Severity = 'error' | 'warning' | undefined;
+
+export class MaaGraph extends SGraphImpl {
+    declare component?: string;
+    declare diagramType?: string;
+}
+
+export class ComponentNode extends SNodeImpl {
+    declare name?: string;
+    declare componentType?: string;
+    declare instancePath?: string;
+    declare behaviorKind?: BehaviorKind;
+    declare composed?: boolean;
+    declare expanded?: boolean;
+    declare severity?: Severity;
+    declare trace?: string;
+}
+
+export class MaaPort extends SPortImpl {
+    declare name?: string;
+    declare direction?: 'in' | 'out';
+    declare portType?: string;
+    declare portPath?: string;
+    declare severity?: Severity;
+    declare trace?: string;
+}
+
+export class ConnectorEdge extends SEdgeImpl {
+    declare sourcePortPath?: string;
+    declare severity?: Severity;
+    declare trace?: string;
+}
+
+export class StateNode extends SNodeImpl {
+    declare name?: string;
+    declare initial?: boolean;
+    declare statePath?: string;
+    declare severity?: Severity;
+    declare trace?: string;
+}
+
+export class TransitionEdge extends SEdgeImpl {
+    declare label?: string;
+    declare severity?: Severity;
+    declare trace?: string;
+}
