@@ -1,0 +1,94 @@
+// Shared helpers of the e2e tests and the IDE benchmark: a fresh workspace, the maa-ide
+// backend on a free port, and Debian's chromium driven by playwright-core.
+import { spawn } from 'node:child_process';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import { ensureChromium } from '../scripts/ensure-chromium.mjs';
+
+export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+/** The built app (MAA_IDE_APP_DIR overrides packages/ide-web/dist). */
+export const appDir = process.env.MAA_IDE_APP_DIR ? path.resolve(process.env.MAA_IDE_APP_DIR) : path.join(repo, 'packages', 'ide-web', 'dist');
+export const artifacts = path.join(repo, 'e2e', 'artifacts');
+
+export const CHROMIUM_FLAGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync'];
+
+/** A temp folder with a fresh copy of examples/ (or of `from`) as the workspace. */
+export function freshWorkspace(from = path.join(repo, 'examples')) {
+  const base = mkdtempSync(path.join(os.tmpdir(), 'maa-e2e-'));
+  const workspace = path.join(base, 'workspace');
+  cpSync(from, workspace, { recursive: true });
+  return { base, workspace, dispose: () => rmSync(base, { recursive: true, force: true }) };
+}
+
+/** Starts maa-ide on a free port; resolves with its URL once it prints it. */
+export async function startIde(workspace, { log = false } = {}) {
+  const bin = path.join(repo, 'packages', 'ide-server', 'bin', 'maa-ide.js');
+  if (!existsSync(path.join(appDir, 'index.html'))) {
+    throw new Error(`${appDir} has no built app: run "npm run build -w @maa/ide-web" first`);
+  }
+  const child = spawn(process.execPath, [bin, '--workspace', workspace, '--port', '0', '--app-dir', appDir],
+    { cwd: repo, stdio: ['ignore', 'pipe', 'pipe'] });
+  const output = [];
+  const url = await new Promise((resolve, reject) => {
+    const timer = setTimeout(() => reject(new Error(`maa-ide did not print its URL within 60 s:\n${output.join('')}`)), 60_000);
+    const onData = (chunk) => {
+      const text = chunk.toString();
+      output.push(text);
+      if (log) process.stderr.write(`[maa-ide] ${text}`);
+      const match = /https?:\/\/[^\s]+/.exec(output.join(''));
+      if (match) { clearTimeout(timer); resolve(match[0].replace(/\/?$/, '/')); }
+    };
+    child.stdout.on('data', onData);
+    child.stderr.on('data', onData);
+    child.on('exit', (code) => { clearTimeout(timer); reject(new Error(`maa-ide exited (${code}):\n${output.join('')}`)); });
+  });
+  child.stdout.on('data', (c) => output.push(c.toString()));
+  child.stderr.on('data', (c) => output.push(c.toString()));
+  return {
+    url, output,
+    async stop() {
+      if (child.exitCode !== null) return;
+      const exited = new Promise((resolve) => child.once('exit', resolve));
+      child.kill('SIGTERM');
+      const timer = setTimeout(() => child.kill('SIGKILL'), 5000);
+      await exited;
+      clearTimeout(timer);
+    },
+  };
+}
+
+/** Launches chromium with a fresh profile; returns { context, page, close }. */
+export async function launchBrowser({ width = 1600, height = 1000 } = {}) {
+  const executablePath = ensureChromium();
+  const userDataDir = mkdtempSync(path.join(os.tmpdir(), 'maa-chromium-'));
+  const context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath, headless: true, args: CHROMIUM_FLAGS, viewport: { width, height },
+  });
+  const page = context.pages()[0] ?? await context.newPage();
+  const consoleLines = [];
+  page.on('console', (m) => consoleLines.push(`${m.type()}: ${m.text()}`));
+  page.on('pageerror', (e) => consoleLines.push(`pageerror: ${e.message}`));
+  return {
+    context, page, consoleLines,
+    async close() {
+      await context.close().catch(() => undefined);
+      rmSync(userDataDir, { recursive: true, force: true });
+    },
+  };
+}
+
+export async function screenshot(page, name) {
+  mkdirSync(artifacts, { recursive: true });
+  const file = path.join(artifacts, `${name}.png`);
+  await page.screenshot({ path: file });
+  return file;
+}
+
+/** Waits until the workbench reports ready (editor, language client, diagram mounted). */
+export async function waitForWorkbench(page, timeout = 60_000) {
+  await page.waitForFunction(() => window.maaIde?.ready === true, undefined, { timeout });
+}

@@ -1,0 +1,61 @@
+#!/usr/bin/env node
+// The IDE's end-to-end tests (issue 7): maa-ide on a fresh copy of examples/ (port 0), Debian's
+// chromium through playwright-core, one scenario after the other, screenshots in e2e/artifacts/.
+//
+//   node e2e/run.mjs                 all scenarios (needs packages/ide-web/dist: npm run build -w @maa/ide-web)
+//   node e2e/run.mjs --only 'error|fix'   scenarios whose name matches the regular expression
+//   node e2e/run.mjs --log           also print maa-ide's output
+import { mkdirSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { artifacts, freshWorkspace, launchBrowser, screenshot, startIde } from './lib.mjs';
+import { scenarios } from './scenarios.mjs';
+
+const args = process.argv.slice(2);
+const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : undefined;
+const log = args.includes('--log');
+
+const selected = scenarios.filter((s) => !only || new RegExp(only, 'i').test(s.name));
+if (selected.length === 0) {
+  console.error(`e2e: no scenario matches "${only}"`);
+  process.exit(2);
+}
+
+mkdirSync(artifacts, { recursive: true });
+const ws = freshWorkspace();
+let ide;
+let browser;
+const results = [];
+try {
+  ide = await startIde(ws.workspace, { log });
+  console.log(`e2e: maa-ide at ${ide.url} on ${ws.workspace}`);
+  browser = await launchBrowser();
+  for (const scenario of selected) {
+    const started = Date.now();
+    const ctx = { page: browser.page, url: ide.url, workspace: ws.workspace, shot: (name) => screenshot(browser.page, `${scenario.id}-${name}`) };
+    try {
+      await scenario.run(ctx);
+      await screenshot(browser.page, `${scenario.id}-pass`);
+      results.push({ name: scenario.name, ok: true, ms: Date.now() - started });
+      console.log(`  ✓ ${scenario.name} (${Date.now() - started} ms)`);
+    } catch (error) {
+      const file = await screenshot(browser.page, `${scenario.id}-FAIL`).catch(() => undefined);
+      results.push({ name: scenario.name, ok: false, ms: Date.now() - started, error: String(error?.stack ?? error) });
+      console.log(`  ✗ ${scenario.name} (${Date.now() - started} ms)\n    ${String(error?.message ?? error).split('\n').join('\n    ')}`);
+      if (file) console.log(`    screenshot: ${path.relative(process.cwd(), file)}`);
+      const consoleTail = browser.consoleLines.slice(-15);
+      if (consoleTail.length) console.log(`    browser console (last lines):\n      ${consoleTail.join('\n      ')}`);
+    }
+  }
+} catch (error) {
+  console.error(`e2e: ${error?.stack ?? error}`);
+  results.push({ name: 'setup', ok: false, error: String(error) });
+} finally {
+  await browser?.close();
+  await ide?.stop();
+  ws.dispose();
+}
+
+writeFileSync(path.join(artifacts, 'results.json'), JSON.stringify(results, null, 2));
+const failed = results.filter((r) => !r.ok);
+console.log(`\ne2e: ${results.length - failed.length} passed, ${failed.length} failed; screenshots in ${path.relative(process.cwd(), artifacts) || artifacts}`);
+process.exit(failed.length ? 1 : 0);
