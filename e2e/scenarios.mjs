@@ -159,6 +159,46 @@ export const scenarios = [
     },
   },
   {
+    id: '5b-diagram', name: 'diagram: selection synced both ways, port types on hover, stable layout on edits, SVG export',
+    async run({ page, url, shot }) {
+      await openIde(page, url);
+      const arm = diagram(page).locator('.maa-component[data-instance-path=arm]').first();
+      await arm.waitFor({ timeout: 20_000 });
+      // Text → diagram: the cursor on the instance declaration selects its node.
+      await select(page, 'ArmController arm;', { offset: 15, length: 0 });
+      await diagram(page).locator('.maa-component.selected[data-instance-path=arm]').waitFor({ timeout: 10_000 })
+        .catch(() => fail('the cursor on "ArmController arm;" did not select the node "arm"'));
+      // Diagram → text: clicking the node "ctrl" moves the cursor to its declaration (line 15).
+      await diagram(page).locator('.maa-component[data-instance-path=ctrl] .maa-label-type').first().click();
+      await page.waitForFunction(() => window.maaIde.editor.getPosition()?.lineNumber === 15, undefined, { timeout: 10_000 })
+        .catch(async () => fail(`clicking the node "ctrl" moved the cursor to line ${await page.evaluate(() => window.maaIde.editor.getPosition()?.lineNumber)}, expected 15`));
+      // Port types on hover (the SVG title of the port).
+      const portTitle = await diagram(page).locator('.maa-port[data-port-path="arm.status"] title').first().textContent();
+      if (!/ArmStatus/.test(portTitle ?? '')) await fail(`the hover text of arm.status is "${portTitle}", expected its type ArmStatus`);
+      // An edit elsewhere in the file updates the diagram without moving the nodes.
+      const before = await arm.boundingBox();
+      const updates = await page.evaluate(() => window.maaIde.diagramUpdates);
+      await select(page, 'ArmController arm;', { offset: 'ArmController arm;'.length, length: 0 });
+      await page.keyboard.type(' // the arm');
+      await page.waitForFunction((n) => window.maaIde.diagramUpdates > n, updates, { timeout: 10_000 })
+        .catch(() => fail('the diagram did not update after the edit'));
+      await page.waitForTimeout(600); // the update animation
+      const after = await arm.boundingBox();
+      if (!before || !after || Math.abs(before.x - after.x) > 3 || Math.abs(before.y - after.y) > 3) {
+        await fail(`the node "arm" moved on an unrelated edit: ${JSON.stringify(before)} → ${JSON.stringify(after)}`);
+      }
+      // Export SVG downloads a standalone SVG of the shown diagram.
+      const download = page.waitForEvent('download', { timeout: 15_000 });
+      await page.locator('[data-testid=diagram-export]').click();
+      const file = await (await download).path();
+      const svgText = readFileSync(file, 'utf8');
+      if (!svgText.includes('<svg') || !svgText.includes('xmlns="http://www.w3.org/2000/svg"') || !svgText.includes('ToastServiceRobot')) {
+        await fail(`the exported SVG lacks the diagram (${svgText.length} bytes: ${svgText.slice(0, 200)})`);
+      }
+      await shot('diagram');
+    },
+  },
+  {
     id: '6-generate', name: 'generate for rospython and open a generated node',
     async run({ page, url, shot }) {
       await openIde(page, url);

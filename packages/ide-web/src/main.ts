@@ -14,7 +14,8 @@ import { registerFileSystemOverlay, RegisteredFileSystemProvider } from '@coding
 import { BrowserMessageReader, BrowserMessageWriter } from 'vscode-languageclient/browser.js';
 import { DidChangeWatchedFilesNotification, FileChangeType } from 'vscode-languageserver-protocol';
 import type { ActionMessage } from 'sprotty-protocol';
-import { api, pathOf, uriOf, type FileEntry } from './api.js';
+import { api, pathOf, uriOf, WORKSPACE_URI, type FileEntry } from './api.js';
+import { parseTrace } from './diagram/trace.js';
 import type { DiagramHost, DiagramView, Disposable, SimulateHost, TextPosition, TextRange } from './contracts.js';
 import { isModelFile, MODEL_LANGUAGE_IDS, registerLanguages } from './languages.js';
 import { basename, byId, h } from './workbench/dom.js';
@@ -181,15 +182,12 @@ class NoDiagram implements DiagramView {
     dispose(): void { /* nothing */ }
 }
 
-/** Parses a langium-sprotty trace `<uri>?<sl>:<sc>-<el>:<ec>` (0-based). */
-export function parseTrace(trace: string): { path: string; range: TextRange } | undefined {
-    const q = trace.lastIndexOf('?');
-    if (q < 0) return undefined;
-    const path = pathOf(trace.slice(0, q));
-    const match = /^(\d+):(\d+)-(\d+):(\d+)$/.exec(trace.slice(q + 1));
-    if (!path || !match) return undefined;
-    const [sl, sc, el, ec] = match.slice(1).map(Number);
-    return { path, range: { start: { line: sl, character: sc }, end: { line: el, character: ec } } };
+/** The workspace file and range a langium-sprotty trace points to (see diagram/trace.ts for the format). */
+function traceTarget(trace: string): { path: string; range: TextRange } | undefined {
+    const parsed = parseTrace(trace);
+    // parseTrace decodes the URI already: take the path as it is, without a second decoding.
+    if (!parsed || !parsed.uri.startsWith(WORKSPACE_URI)) return undefined;
+    return { path: parsed.uri.slice(WORKSPACE_URI.length), range: parsed.range };
 }
 
 async function mountDiagramPane(client: MonacoLanguageClient, area: EditorArea): Promise<DiagramView> {
@@ -210,7 +208,7 @@ async function mountDiagramPane(client: MonacoLanguageClient, area: EditorArea):
             return { dispose: () => disposable.dispose() };
         },
         revealTrace: (trace) => {
-            const target = parseTrace(trace);
+            const target = traceTarget(trace);
             if (target) void area.open(target.path, target.range, false);
         },
     };
@@ -317,7 +315,7 @@ async function main(): Promise<void> {
         try {
             diagram = await mountDiagramPane(languageClient, area);
             diagram.onSelect((traces) => {
-                const target = traces.map(parseTrace).find((t) => t !== undefined);
+                const target = traces.map(traceTarget).find((t) => t !== undefined);
                 if (target) void area.open(target.path, target.range, false);
             });
         } catch (error) {
