@@ -1,5 +1,6 @@
-import { readFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
+import { generateModels, writeSystemComponent } from '../packages/cli/bench/generate-models.mjs';
 
 // The e2e scenarios of issue 7, in order. Each gets { page, url, workspace, shot(name) }.
 const ROBOT = 'toast-service/toast/ToastServiceRobot.arc';
@@ -279,6 +280,31 @@ export const scenarios = [
       await page.waitForTimeout(2000);
       await shot('viser');
       await panel.locator('[data-testid=sim-stop]').click().catch(() => undefined);
+    },
+  },
+  {
+    // Last: it adds a model root of 200 component types to the workspace.
+    id: '8-large', name: 'a component with 200 subcomponents: its diagram is drawn, readable, from the top',
+    async run({ page, url, workspace, shot }) {
+      const root = path.join(workspace, 'large');
+      mkdirSync(root, { recursive: true });
+      const gen = generateModels(root, 200);
+      writeFileSync(path.join(root, 'maa.json'), '{}\n');
+      writeSystemComponent(root, gen);
+      await page.goto(`${url}?open=${encodeURIComponent('large/robot/System.arc')}`);
+      await page.waitForFunction(() => window.maaIde?.ready === true, undefined, { timeout: 120_000 });
+      await page.waitForFunction(() => document.querySelector('[data-testid=diagram] .maa-root > title')?.textContent?.startsWith('System:'), undefined, { timeout: 120_000 })
+        .catch(() => fail('the diagram of System (200 subcomponents) was not drawn'));
+      // Readable: the subcomponents in view are drawn at a zoom where their names can be read.
+      const zoom = await page.evaluate(() => Number(/scale\(([\d.]+)\)/.exec(document.querySelector('[data-testid=diagram] svg > g')?.getAttribute('transform') ?? '')?.[1]));
+      if (!(zoom >= 0.3)) await fail(`the diagram opened at zoom ${zoom}, unreadable`);
+      const drawn = await diagram(page).locator('.maa-component:not(.maa-root)').count();
+      if (drawn < 2) await fail(`only ${drawn} subcomponents are drawn in the view`);
+      await shot('system');
+      // Fit shows the whole diagram (every subcomponent drawn).
+      await page.locator('[data-testid=diagram-fit]').click();
+      await page.waitForFunction(() => document.querySelectorAll('[data-testid=diagram] .maa-component:not(.maa-root)').length >= 200, undefined, { timeout: 15_000 })
+        .catch(async () => fail(`after Fit ${await diagram(page).locator('.maa-component:not(.maa-root)').count()} of 200 subcomponents are drawn`));
     },
   },
 ];

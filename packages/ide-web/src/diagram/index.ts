@@ -35,7 +35,6 @@ import {
 } from 'sprotty';
 import {
     CenterAction,
-    FitToScreenAction,
     GetViewportAction,
     RequestExportSvgAction,
     RequestModelAction,
@@ -66,6 +65,7 @@ import {
     type SchemaElement,
 } from './schema.js';
 import { findInnermostElement, type TracedElement } from './trace.js';
+import { fitViewport, unionBounds } from './viewport.js';
 import { createViews, type ViewState } from './views.js';
 
 export { parseTrace, findInnermostElement, normalizeUri, rangeContains } from './trace.js';
@@ -162,6 +162,7 @@ decorate(injectable(), ClearHiddenCommand);
 decorate(inject(TYPES.Action), ClearHiddenCommand, 0);
 
 const SELECTION_HANDLER = Symbol('MaaSelectionHandler');
+const ZOOM_LIMITS = { min: 0.01, max: 5 };
 /** Element types that can be selected (labels and compartments select their parent). */
 const SELECTABLE_TYPES = new Set(['node:component', 'port', 'edge:connector', 'node:state', 'edge:transition', 'node:generic', 'edge:generic']);
 let mountCounter = 0;
@@ -295,7 +296,7 @@ export function mountDiagram(container: HTMLElement, host: DiagramHost): MaaDiag
             baseDiv,
             hiddenDiv: `${baseDiv}-hidden`,
             popupDiv: `${baseDiv}-popup`,
-            zoomLimits: { min: 0.05, max: 5 },
+            zoomLimits: ZOOM_LIMITS,
         });
         configureCommand(context, RedrawCommand);
         configureCommand(context, ClearHiddenCommand);
@@ -343,7 +344,8 @@ export function mountDiagram(container: HTMLElement, host: DiagramHost): MaaDiag
         if (kind === 'setModel') {
             if (fitPending) {
                 fitPending = false;
-                void dispatch(FitToScreenAction.create([], { padding: 20, maxZoom: 1.5, animate: false }));
+                // A new diagram opens readable (a huge one from its top); the Fit button shows it all.
+                void fit(1.5, false, 0.3);
             } else if (restoreViewport) {
                 const vp = restoreViewport;
                 void dispatch(SetViewportAction.create(root.id, vp, { animate: false }));
@@ -376,13 +378,28 @@ export function mountDiagram(container: HTMLElement, host: DiagramHost): MaaDiag
         void dispatch(RequestModelAction.create(options));
     };
 
+    /** Fits the diagram into the canvas (viewport.ts: also diagrams too large for the minimum zoom). */
+    const fit = async (maxZoom: number, animate: boolean, readableZoom?: number): Promise<void> => {
+        const root = schema;
+        if (!root) return;
+        const content = unionBounds((root.children ?? []).map((c) => absoluteBounds(root, c.id)).filter((b) => b !== undefined));
+        if (!content) return;
+        try {
+            const { canvasBounds } = await dispatcher.request<ViewportResult>(GetViewportAction.create());
+            const viewport = fitViewport(content, canvasBounds, { padding: 20, maxZoom, minZoom: ZOOM_LIMITS.min, readableZoom });
+            await dispatch(SetViewportAction.create(root.id, viewport, { animate }));
+        } catch (e) {
+            console.warn('diagram fit:', e);
+        }
+    };
+
     // --- toolbar -------------------------------------------------------------------------------
     const zoomBy = async (factor: number): Promise<void> => {
         if (!schema) return;
         try {
             const res = await dispatcher.request<ViewportResult>(GetViewportAction.create());
             const { viewport, canvasBounds } = res;
-            const zoom = Math.min(5, Math.max(0.05, viewport.zoom * factor));
+            const zoom = Math.min(ZOOM_LIMITS.max, Math.max(ZOOM_LIMITS.min, viewport.zoom * factor));
             const cx = viewport.scroll.x + canvasBounds.width / 2 / viewport.zoom;
             const cy = viewport.scroll.y + canvasBounds.height / 2 / viewport.zoom;
             const scroll = { x: cx - canvasBounds.width / 2 / zoom, y: cy - canvasBounds.height / 2 / zoom };
@@ -405,7 +422,7 @@ export function mountDiagram(container: HTMLElement, host: DiagramHost): MaaDiag
         }
     });
     toolbar.append(
-        button('Fit', 'Fit the diagram into the view', 'diagram-fit', () => void dispatch(FitToScreenAction.create([], { padding: 20, maxZoom: 2, animate: true }))),
+        button('Fit', 'Fit the diagram into the view', 'diagram-fit', () => void fit(2, true)),
         button('−', 'Zoom out', 'diagram-zoom-out', () => void zoomBy(1 / 1.25)),
         button('+', 'Zoom in', 'diagram-zoom-in', () => void zoomBy(1.25)),
         button('Export SVG', 'Download the diagram as SVG', 'diagram-export', () => void downloadSvg()),
