@@ -5,6 +5,7 @@
 import { describe, expect, test } from 'vitest';
 import type { SModelElement, SModelRoot } from 'sprotty-protocol';
 import { shortenTransitionLabel, textSize, FONTS, MAX_TRANSITION_LABEL_WIDTH } from '../src/diagram/sizes.js';
+import { EXPAND_TOGGLE_ROOM } from '../src/diagram/layout.js';
 import { byId, diagramWorkspace, exampleFiles, TestClient, type DiagramWorkspace } from './diagram-helpers.js';
 
 type Element = SModelElement & Record<string, unknown>;
@@ -375,6 +376,23 @@ component Robot2 {
         const sensing = await model(ws, 'maa-cc', 'toast/Sensing.arc');
         expect(siblingOverlaps(sensing)).toEqual([]);
         expect(componentProblems(sensing)).toEqual([]);
+    });
+
+    test('keeps room right of a composed subcomponent\'s type for the expand/collapse button', async () => {
+        // A type name longer than instance name and badge together: the type row sets the width.
+        const files = {
+            ...exampleFiles(),
+            'toast/DistanceSensingAssemblyUnit.arc': 'package toast;\n\ncomponent DistanceSensingAssemblyUnit {\n  port out int distance;\n  DistanceSensor dist;\n  dist.value -> distance;\n}\n',
+            'toast/Robot3.arc': 'package toast;\n\ncomponent Robot3 {\n  DistanceSensingAssemblyUnit u;\n}\n'
+        };
+        const ws = await diagramWorkspace(files);
+        for (const expanded of [[], ['u']]) {
+            const all = byId(await model(ws, 'maa-cc', 'toast/Robot3.arc', { expanded }));
+            const node = all.get('root.u')!.size as { width: number };
+            const type = all.get('root.u#type')!;
+            const typeRight = (type.position as { x: number }).x + (type.size as { width: number }).width;
+            expect(node.width - typeRight, `expanded: ${expanded.join()}`).toBeGreaterThanOrEqual(EXPAND_TOGGLE_ROOM);
+        }
     });
 
     test('keeps ids and the positions of the other instances when a port is renamed', async () => {

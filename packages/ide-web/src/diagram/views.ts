@@ -188,7 +188,8 @@ export function createViews(state: ViewState): ViewClasses {
                         'g',
                         {
                             class: { 'maa-expand-toggle': true },
-                            transform: `translate(${w - 18},${h - 18})`,
+                            // In the header, right of the type: the server's layout keeps that room free.
+                            transform: `translate(${w - 20},20)`,
                             'data-instance-path': path,
                             on: {
                                 mousedown: (e: Event) => e.stopPropagation(),

@@ -2,7 +2,7 @@ import ElkModule from 'elkjs/lib/elk.bundled.js';
 import type { ELK, ELKConstructorArguments, ElkNode, LayoutOptions } from 'elkjs/lib/elk-api.js';
 import { DefaultElementFilter, DefaultLayoutConfigurator, ElkLayoutEngine } from 'sprotty-elk/lib/elk-layout.js';
 import type { Dimension, SGraph, SLabel, SModelElement, SModelIndex, SNode, SPort } from 'sprotty-protocol';
-import { TYPES, type PortNode, type StateNode } from './model.js';
+import { TYPES, type ComponentNode, type PortNode, type StateNode } from './model.js';
 import { PORT_SIZE } from './sizes.js';
 
 /**
@@ -85,9 +85,14 @@ const portsOf = (n: SModelElement, direction: 'in' | 'out'): PortNode[] => child
 const maxLabel = (ports: PortNode[]): number => Math.max(0, ...ports.map((p) => width(childOf(p, TYPES.portLabel))));
 const hasNodes = (n: SModelElement): boolean => (n.children ?? []).some((c) => c.type === TYPES.component || c.type === TYPES.state);
 
-/** Width of a component's header: name and badge side by side, the type below the name. */
+/** Room the client's expand/collapse button of a composed subcomponent takes right of the type. */
+export const EXPAND_TOGGLE_ROOM = 22;
+
+/** Width of a component's header: name and badge side by side, the type (and the expand button) below. */
 function headerWidth(node: SModelElement): number {
-    return Math.max(width(childOf(node, TYPES.nameLabel)) + 12 + width(childOf(node, TYPES.badgeLabel)), width(childOf(node, TYPES.typeLabel)));
+    const component = node as Partial<ComponentNode>;
+    const toggle = component.composed && component.instancePath ? EXPAND_TOGGLE_ROOM : 0;
+    return Math.max(width(childOf(node, TYPES.nameLabel)) + 12 + width(childOf(node, TYPES.badgeLabel)), width(childOf(node, TYPES.typeLabel)) + toggle);
 }
 
 /** The size of a component without shown children, and of a state, from their texts. */
