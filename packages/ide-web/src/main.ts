@@ -16,7 +16,7 @@ import { DidChangeWatchedFilesNotification, FileChangeType } from 'vscode-langua
 import type { ActionMessage } from 'sprotty-protocol';
 import { api, pathOf, uriOf, WORKSPACE_URI, type FileEntry } from './api.js';
 import { parseTrace } from './diagram/trace.js';
-import type { DiagramHost, DiagramView, Disposable, SimulateHost, TextPosition, TextRange } from './contracts.js';
+import type { DiagramHost, DiagramView, Disposable, TextPosition, TextRange } from './contracts.js';
 import { isModelFile, MODEL_LANGUAGE_IDS, registerLanguages } from './languages.js';
 import { basename, byId, h } from './workbench/dom.js';
 import { EditorArea } from './workbench/editors.js';
@@ -166,12 +166,7 @@ async function startLanguageClient(): Promise<MonacoLanguageClient> {
 }
 
 // ---------------------------------------------------------------------------------- diagram
-type DiagramModule = { mountDiagram(container: HTMLElement, host: DiagramHost): DiagramView };
-type SimulateModule = { mountSimulatePanel(container: HTMLElement, host: SimulateHost): Disposable };
-const diagramModules = import.meta.glob<DiagramModule>('./diagram/index.ts');
-const simulateModules = import.meta.glob<SimulateModule>('./simulate/index.ts');
-
-/** A diagram that shows nothing (when the diagram part is not built in). */
+/** The diagram until the real one is mounted (it is loaded as a chunk of its own), or when it failed. */
 class NoDiagram implements DiagramView {
     show(): void { /* nothing */ }
     revealPosition(): void { /* nothing */ }
@@ -192,12 +187,7 @@ function traceTarget(trace: string): { path: string; range: TextRange } | undefi
 
 async function mountDiagramPane(client: MonacoLanguageClient, area: EditorArea): Promise<DiagramView> {
     const container = byId('diagram-container');
-    const loader = diagramModules['./diagram/index.ts'];
-    if (!loader) {
-        container.append(h('div', { class: 'empty' }, 'The diagram is not part of this build.'));
-        return new NoDiagram();
-    }
-    const { mountDiagram } = await loader();
+    const { mountDiagram } = await import('./diagram/index.js');
     const host: DiagramHost = {
         sendDiagramMessage: (message: ActionMessage) => void client.sendNotification('diagram/accept', message),
         onDiagramMessage: (handler) => {
@@ -325,18 +315,13 @@ async function main(): Promise<void> {
     updateDiagram(area.activePath, true);
     hooks.timings.diagram = performance.now();
 
-    // Simulate panel (H4b's part).
+    // The simulate panel (a chunk of its own: roslib and the plots load with it).
     const simulateContainer = byId('simulate-panel');
-    const simulateLoader = simulateModules['./simulate/index.ts'];
-    if (simulateLoader) {
-        try {
-            const { mountSimulatePanel } = await simulateLoader();
-            mountSimulatePanel(simulateContainer, { diagram, apps: () => api.apps(), notify });
-        } catch (error) {
-            simulateContainer.append(h('div', { class: 'empty' }, `The simulate panel failed: ${String(error)}`));
-        }
-    } else {
-        simulateContainer.append(h('div', { class: 'empty' }, 'The simulate panel is not part of this build.'));
+    try {
+        const { mountSimulatePanel } = await import('./simulate/index.js');
+        mountSimulatePanel(simulateContainer, { diagram, apps: () => api.apps(), notify });
+    } catch (error) {
+        simulateContainer.append(h('div', { class: 'empty' }, `The simulate panel failed: ${String(error)}`));
     }
 
     // Commands and shortcuts.
