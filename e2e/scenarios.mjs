@@ -241,6 +241,36 @@ export const scenarios = [
     },
   },
   {
+    id: '6b-generate-error', name: 'a generation that fails: its errors in the Problems panel, no files',
+    async run({ page, url, shot, workspace }) {
+      await openIde(page, url);
+      // An unconnected input of the arm controller is an error: generation must refuse the model.
+      await select(page, '  ctrl.arm -> arm.cmd;\n');
+      await page.keyboard.press('Delete');
+      await page.keyboard.press(`${mod}+KeyS`);
+      await page.locator('[data-testid=editor-tabs] .tab.active:not(.dirty)').waitFor({ timeout: 10_000 });
+      await page.locator('[data-testid=generate-tab]').click();
+      const panel = page.locator('[data-testid=generate-panel]');
+      const value = await panel.locator('select option').evaluateAll((options) => options.map((o) => o.value).find((v) => v.endsWith('\u0000rospython')));
+      await panel.locator('select').selectOption(value);
+      await panel.locator('[data-testid=generate-button]').click();
+      await panel.locator('.generate-status.failed').waitFor({ timeout: 120_000 })
+        .catch(async () => fail(`generation did not fail: ${await panel.locator('.generate-status').textContent()}`));
+      if ((await panel.locator('[data-testid=generated-files] .tree-row.file').count()) > 0) await fail('a failed generation lists generated files');
+      await page.locator('[data-testid=problems-tab]').click();
+      // The generation's own diagnostics (source "generate"), beside the language server's.
+      await page.locator('[data-testid=problems] .problem.error[data-path$="ToastServiceRobot.arc"]', { hasText: /generate\s+arc\/unconnected-sub-in-port/ }).first().waitFor({ timeout: 10_000 })
+        .catch(() => fail('the Problems panel does not show the generation\'s error'));
+      await shot('failed');
+      // Restore the model for the scenarios after this one.
+      await page.evaluate(() => window.maaIde.editor.focus());
+      await page.keyboard.press(`${mod}+KeyZ`);
+      await page.keyboard.press(`${mod}+KeyS`);
+      await page.waitForFunction(() => !document.querySelector('[data-testid=editor-tabs] .tab.active.dirty'), undefined, { timeout: 10_000 });
+      if (!readFileSync(path.join(workspace, ROBOT), 'utf8').includes('ctrl.arm -> arm.cmd;')) await fail('the model was not restored on disk');
+    },
+  },
+  {
     id: '7-simulate', name: 'simulate in lock-step mode: a port value changes, the viser canvas renders',
     async run({ page, url, shot }) {
       await openIde(page, url);
