@@ -119,6 +119,34 @@ def test_errors_get_status_replies(bus_server: tuple[LocalBus, RosbridgeServer])
         client.close()
 
 
+def test_message_details_name_fields_and_constants(bus_server: tuple[LocalBus, RosbridgeServer]) -> None:
+    """rosapi/message_details as roslib's getMessageDetails reads it: the IDE takes the literals of
+    an enum message (a `value` field and one constant per literal) from the constants."""
+    _, server = bus_server
+    client = Client(server.url)
+    try:
+        reply = client.call("rosapi/message_details", {"type": "sensor_msgs/msg/BatteryState"})
+        assert reply["result"] is True, reply
+        typedefs = reply["values"]["typedefs"]
+        battery = typedefs[0]
+        assert battery["type"] == "sensor_msgs/BatteryState"
+        fields = dict(zip(battery["fieldnames"], battery["fieldtypes"], strict=True))
+        assert fields["header"] == "std_msgs/Header" and fields["voltage"] == "float32"
+        assert fields["present"] == "bool" and fields["cell_voltage"] == "float32"
+        lengths = dict(zip(battery["fieldnames"], battery["fieldarraylen"], strict=True))
+        assert lengths["voltage"] == -1 and lengths["cell_voltage"] == 0
+        constants = dict(zip(battery["constnames"], battery["constvalues"], strict=True))
+        assert constants["POWER_SUPPLY_STATUS_UNKNOWN"] == "0" and constants["POWER_SUPPLY_STATUS_FULL"] == "4"
+        # The nested types follow, each once.
+        nested = ["sensor_msgs/BatteryState", "std_msgs/Header", "builtin_interfaces/Time"]
+        assert [t["type"] for t in typedefs] == nested
+        for bad in [{"type": "no_such/msg/Type"}, {"type": 5}, {}]:
+            failed = client.call("rosapi/message_details", bad)
+            assert failed["result"] is False, (bad, failed)
+    finally:
+        client.close()
+
+
 def fuzz_frames(count: int, seed: int) -> list[str | bytes]:
     """Malformed and hostile frames, deterministic for a seed."""
     rng = random.Random(seed)

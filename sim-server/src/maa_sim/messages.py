@@ -190,3 +190,66 @@ def _convert(value: Any, field_type: str, path: str) -> Any:
 def validate(type_name: str, data: Any) -> JsonMessage:
     """Checks a JSON message against its type and returns it with every field filled in."""
     return to_json(from_json(type_name, data))
+
+
+# rosidl field types -> the names rosapi's message_details uses for them.
+_ROSAPI_PRIMITIVES = {"double": "float64", "float": "float32", "octet": "byte", "boolean": "bool"}
+
+
+def _rosapi_field(field_type: str) -> tuple[str, int]:
+    """A field's type as rosapi names it, and its array length (-1: none, 0: unbounded)."""
+    element = _element_type(field_type)
+    if element is None:
+        base, length = field_type, -1
+    elif field_type.startswith("sequence<"):
+        base, length = element, 0
+    else:
+        base, length = element, int(field_type[field_type.index("[") + 1 : -1] or 0)
+    if base.startswith(("string<", "wstring<")):
+        base = base[: base.index("<")]
+    return _ROSAPI_PRIMITIVES.get(base, base), length
+
+
+def _constants(cls: type[Any]) -> dict[str, Any]:
+    # rosidl keeps a message's constants in its metaclass, name-mangled as `__constants`.
+    meta = type(cls)
+    constants = getattr(meta, f"_{meta.__name__.lstrip('_')}__constants", None)
+    return dict(constants) if isinstance(constants, Mapping) else {}
+
+
+def message_details(type_name: str) -> list[JsonMessage]:
+    """rosapi's `message_details` of a type: its typedef first, then those of the message types it
+    contains (each once). Constants come as names and values (strings, as rosapi sends them): the
+    IDE reads enum literals from them."""
+    typedefs: list[JsonMessage] = []
+    seen: set[str] = set()
+    pending = [normalize_type(type_name)]
+    while pending:
+        current = pending.pop(0)
+        if current in seen:
+            continue
+        seen.add(current)
+        cls = message_class(current)
+        package, _, name = current.split("/")
+        names, types, lengths, examples = [], [], [], []
+        for field_name, field_type in _field_types(cls).items():
+            rosapi_type, length = _rosapi_field(field_type)
+            names.append(field_name)
+            types.append(rosapi_type)
+            lengths.append(length)
+            if "/" in rosapi_type:
+                pending.append(normalize_type(rosapi_type))
+                examples.append("{}")
+            else:
+                examples.append("[]" if length >= 0 else "")
+        constants = _constants(cls)
+        typedefs.append({
+            "type": f"{package}/{name}",
+            "fieldnames": names,
+            "fieldtypes": types,
+            "fieldarraylen": lengths,
+            "examples": examples,
+            "constnames": list(constants),
+            "constvalues": [str(v) for v in constants.values()],
+        })
+    return typedefs

@@ -1,9 +1,9 @@
 """A rosbridge v2 endpoint (WebSocket, JSON) over a `Transport`: the subset roslib 2.x uses.
 
 Operations: advertise, unadvertise, publish, subscribe (throttle_rate, queue_length),
-unsubscribe, call_service (rosapi/topics, rosapi/topic_type, rosapi/services, rosapi/nodes and
-the simulator's control services), set_level. Errors get a `status` reply with the request's id.
-Nothing a client sends stops the server: every frame is handled in a try block, frames over
+unsubscribe, call_service (rosapi/topics, rosapi/topic_type, rosapi/services, rosapi/nodes,
+rosapi/message_details and the simulator's control services), set_level. Errors get a `status`
+reply with the request's id. Nothing a client sends stops the server: every frame is handled in a try block, frames over
 `MAX_FRAME_BYTES` are refused with a status error, frames over `WS_MAX_SIZE` close that
 connection only (the WebSocket library's limit), and slow clients lose messages rather than
 growing the server's memory.
@@ -28,7 +28,7 @@ from typing import Any
 from websockets.asyncio.server import Server, ServerConnection, serve
 from websockets.exceptions import ConnectionClosed
 
-from .messages import JsonMessage, MessageError, normalize_type
+from .messages import JsonMessage, MessageError, message_details, normalize_type
 from .transport import Subscription, Transport
 
 #: Frames larger than this get a status error (bytes).
@@ -233,6 +233,7 @@ class RosbridgeServer:
             "rosapi/topic_type": self._topic_type,
             "rosapi/services": self._services,
             "rosapi/nodes": self._nodes,
+            "rosapi/message_details": self._message_details,
         }
         self.services.update(services or {})
         #: Called before a client's message is published; returning True means it was consumed.
@@ -555,3 +556,9 @@ class RosbridgeServer:
 
     def _nodes(self, _args: JsonMessage) -> JsonMessage:
         return {"nodes": self.transport.nodes()}
+
+    def _message_details(self, args: JsonMessage) -> JsonMessage:
+        type_name = args.get("type")
+        if not isinstance(type_name, str):
+            raise ServiceError("args.type must be a string")
+        return {"typedefs": message_details(type_name)}
