@@ -1,4 +1,4 @@
-export { createMaaServices, createMaaLspServices, behaviorLanguages } from './family.js';
+export { createMaaServices, createMaaLspServices, behaviorLanguages, MAA_SERVICE_REQUIREMENTS } from './family.js';
 export { checkModelRoots } from './check.js';
 export { CheckInputError, type CheckDiagnostic, type CheckOptions, type RootSpec, type Severity } from '@maa/language-adl';
 export { familyDiagnostics, renderDiagnosticsMarkdown } from './docs/render-diagnostics.js';

@@ -9,7 +9,7 @@ import { configureGeneratorRegistry } from '@maa/generator-core';
 import type { HostLspServices } from '@maa/language-adl';
 // Imported from the modules, not the package index: the index also exports the Node-only checker.
 import { addMaaDiagramServer, type MaaDiagramServices } from '../diagram/index.js';
-import { createMaaLspServices } from '../family.js';
+import { createMaaLspServices, MAA_SERVICE_REQUIREMENTS } from '../family.js';
 import { bundledGeneratorRegistry } from './generator-registry.js';
 import { HttpFileSystemProvider } from './http-file-system.js';
 
@@ -44,7 +44,8 @@ export function startBrowserLanguageServer(port: ServerPort, options: BrowserSer
     // Saved, created or deleted files change the listing.
     family.shared.workspace.DocumentBuilder.onUpdate(() => fileSystem.invalidate());
     const diagrams = addMaaDiagramServer(family);
-    startLanguageServer(family.shared);
+    // The outline waits for linked documents (see MAA_SERVICE_REQUIREMENTS).
+    startLanguageServer(family.shared, MAA_SERVICE_REQUIREMENTS);
     return { family, diagrams, fileSystem };
 }
 

@@ -9,7 +9,7 @@ import { startLanguageServer } from 'langium/lsp';
 import { NodeFileSystem } from 'langium/node';
 import { createConnection, ProposedFeatures } from 'vscode-languageserver/node.js';
 import { addMaaDiagramServer } from '../diagram/index.js';
-import { createMaaLspServices } from '../family.js';
+import { createMaaLspServices, MAA_SERVICE_REQUIREMENTS } from '../family.js';
 
 const USAGE = `Usage: maa-language-server (--stdio | --node-ipc | --socket=<port>)
 
@@ -26,7 +26,8 @@ export function startNodeLanguageServer(): void {
     const connection = createConnection(ProposedFeatures.all);
     const family = createMaaLspServices({ connection, ...NodeFileSystem });
     addMaaDiagramServer(family);
-    startLanguageServer(family.shared);
+    // The outline waits for linked documents (see MAA_SERVICE_REQUIREMENTS).
+    startLanguageServer(family.shared, MAA_SERVICE_REQUIREMENTS);
 }
 
 function main(args: readonly string[]): void {
