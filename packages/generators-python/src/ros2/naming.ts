@@ -1,7 +1,8 @@
 import { GenerationError } from '@maa/generator-core/node';
 import { AstUtils, type AstNode } from 'langium';
 import type { SymType } from '@maa/language-adl';
-import { dataTypeQualifiedName, pascalCase, snakeCase, type DataTypeResult, type PlatformInfo } from '@maa/generator-core';
+import { rosName } from './ros-names.js';
+import { dataTypeQualifiedName, pascalCase, type DataTypeResult, type PlatformInfo } from '@maa/generator-core';
 
 /**
  * Names and type mappings shared by the ros2-python generators (ros2.Components, ros2.DataTypes):
@@ -19,11 +20,7 @@ export function interfacePackageName(platform: PlatformInfo): string {
     return `${rosPackageName(platform)}_interfaces`;
 }
 
-/** A ROS name token (node, namespace or topic segment, package): lower snake_case starting with a letter. */
-export function rosName(name: string): string {
-    const s = snakeCase(name).replace(/[^a-z0-9_]/g, '_');
-    return /^[a-z]/.test(s) ? s : `x_${s}`;
-}
+export { rosName } from './ros-names.js';
 
 /** A message field name: rosidl wants lower snake_case without double or trailing underscores. */
 export function fieldName(name: string): string {

@@ -1,29 +1,12 @@
 /**
  * Port topics ↔ port paths (docs/ide.md "Live values", docs/generating-ros2.md "Topics"): the out
  * port `arm` of instance `ctrl` of root `ToastServiceRobot` is `/toast_service_robot/ctrl/arm`,
- * every segment in snake_case like the ROS 2 generator's `rosName`. An in port of the root is
+ * every segment spelled by the ROS 2 generator's own `rosName`. An in port of the root is
  * `/<root>/<port>`. Snake case loses the original spelling (`armCmd` → `arm_cmd`), so the
  * inverse mapping uses the port paths the diagram knows when they are given and falls back to
  * the snake-case segments otherwise. Pure functions, no DOM.
  */
-
-/** Splits a name into words like the generators do: `ToastServiceRobot` → Toast, Service, Robot. */
-export function words(name: string): string[] {
-    return name
-        .replace(/([a-z0-9])([A-Z])/g, '$1 $2')
-        .replace(/([A-Z]+)([A-Z][a-z])/g, '$1 $2')
-        .split(/[^A-Za-z0-9]+/)
-        .filter((w) => w.length > 0);
-}
-
-/** A ROS name segment, as the ros2-python generator spells it (`rosName`). */
-export function rosName(name: string): string {
-    const s = words(name)
-        .map((w) => w.toLowerCase())
-        .join('_')
-        .replace(/[^a-z0-9_]/g, '_');
-    return /^[a-z]/.test(s) ? s : `x_${s}`;
-}
+import { rosName } from '@maa/generators-python/ros-names';
 
 /** The topic namespace of an application's root: `toast.ToastServiceRobot` → `/toast_service_robot`. */
 export function rootNamespace(rootComponent: string): string {
