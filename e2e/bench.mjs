@@ -8,8 +8,7 @@
 import { readdirSync, statSync, readFileSync, writeFileSync, mkdirSync } from 'node:fs';
 import path from 'node:path';
 import { gzipSync } from 'node:zlib';
-import { generateModels, writeSystemComponent } from '../packages/cli/bench/generate-models.mjs';
-import { appDir, artifacts, freshWorkspace, launchBrowser, screenshot, startIde } from './lib.mjs';
+import { appDir, artifacts, freshWorkspace, launchBrowser, screenshot, startIde, writeLargeModel } from './lib.mjs';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
@@ -159,9 +158,7 @@ try {
 
   const big = freshWorkspace();
   const bigRoot = path.join(big.base, 'big');
-  const gen = generateModels(path.join(bigRoot, 'model'), COMPONENTS);
-  writeFileSync(path.join(bigRoot, 'model', 'maa.json'), '{}\n');
-  const types = writeSystemComponent(path.join(bigRoot, 'model'), gen);
+  const { gen, types } = writeLargeModel(path.join(bigRoot, 'model'), COMPONENTS);
   const someAtomic = path.relative(bigRoot, gen.editable[0]).split(path.sep).join('/');
   // A composed component of the generated workspace (three subcomponents) for load and edits;
   // the System component with every component type as a subcomponent once, for the big diagram.

@@ -1,11 +1,12 @@
 // Shared helpers of the e2e tests and the IDE benchmark: a fresh workspace, the maa-ide
 // backend on a free port, and Debian's chromium driven by playwright-core.
 import { spawn } from 'node:child_process';
-import { cpSync, existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
+import { generateModels, writeSystemComponent } from '../packages/cli/bench/generate-models.mjs';
 import { ensureChromium } from '../scripts/ensure-chromium.mjs';
 
 export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
@@ -22,6 +23,15 @@ export function freshWorkspace(from = path.join(repo, 'examples')) {
   const workspace = path.join(base, 'workspace');
   cpSync(from, workspace, { recursive: true });
   return { base, workspace, dispose: () => rmSync(base, { recursive: true, force: true }) };
+}
+
+/** A model root of `components` generated component types in `root` (the CLI benchmark's
+ *  generator), plus `robot/System.arc` with every type as a subcomponent once. */
+export function writeLargeModel(root, components) {
+  const gen = generateModels(root, components);
+  writeFileSync(path.join(root, 'maa.json'), '{}\n');
+  const types = writeSystemComponent(root, gen);
+  return { gen, types };
 }
 
 /** Starts maa-ide on a free port; resolves with its URL once it prints it. */

@@ -1,6 +1,6 @@
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { generateModels, writeSystemComponent } from '../packages/cli/bench/generate-models.mjs';
+import { writeLargeModel } from './lib.mjs';
 
 // The e2e scenarios of issue 7, in order. Each gets { page, url, workspace, shot(name) }.
 const ROBOT = 'toast-service/toast/ToastServiceRobot.arc';
@@ -316,11 +316,7 @@ export const scenarios = [
     // Last: it adds a model root of 200 component types to the workspace.
     id: '8-large', name: 'a component with 200 subcomponents: its diagram is drawn, readable, from the top',
     async run({ page, url, workspace, shot }) {
-      const root = path.join(workspace, 'large');
-      mkdirSync(root, { recursive: true });
-      const gen = generateModels(root, 200);
-      writeFileSync(path.join(root, 'maa.json'), '{}\n');
-      writeSystemComponent(root, gen);
+      writeLargeModel(path.join(workspace, 'large'), 200);
       await page.goto(`${url}?open=${encodeURIComponent('large/robot/System.arc')}`);
       await page.waitForFunction(() => window.maaIde?.ready === true, undefined, { timeout: 120_000 });
       await page.waitForFunction(() => document.querySelector('[data-testid=diagram] .maa-root > title')?.textContent?.startsWith('System:'), undefined, { timeout: 120_000 })
