@@ -11,6 +11,7 @@ import { AdlCompletionProvider } from './completion.js';
 import { AdlDefinitionProvider } from './definition.js';
 import { AdlFoldingRangeProvider } from './folding.js';
 import { AdlFormatter } from './formatter.js';
+import { AdlDocumentHighlightProvider } from './highlight.js';
 import { registerHostQuickFixes } from './host-fixes.js';
 import { AdlHoverProvider } from './hover.js';
 import { AdlNodeKindProvider } from './node-kinds.js';
@@ -47,6 +48,7 @@ export interface AdlAddedLspServices {
         RenameProvider: AdlRenameProvider;
         CodeActionProvider: AdlCodeActionProvider;
         DefinitionProvider: AdlDefinitionProvider;
+        DocumentHighlightProvider: AdlDocumentHighlightProvider;
     };
     references: {
         References: AdlReferences;
@@ -90,6 +92,7 @@ export const AdlLspModule: Module<AdlLspServices, PartialLangiumLSPServices & Ad
         SemanticTokenProvider: (s) => new AdlSemanticTokenProvider(s),
         RenameProvider: (s) => new AdlRenameProvider(s),
         DefinitionProvider: (s) => new AdlDefinitionProvider(s),
+        DocumentHighlightProvider: (s) => new AdlDocumentHighlightProvider(s),
         CodeActionProvider: (s) => {
             const actions = new AdlCodeActionProvider(s);
             registerHostQuickFixes(actions);

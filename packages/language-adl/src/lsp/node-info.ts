@@ -172,7 +172,17 @@ export function rootDocuments(shared: AdlSharedServices | LangiumSharedCoreServi
 
 /** Whether a node belongs to the built-in library (never renamed or edited). */
 export function isBuiltinNode(shared: AdlSharedServices, node: AstNode): boolean {
-    return shared.maa.ModelRoots.isBuiltin(AstUtils.getDocument(node).uri);
+    const document = documentOf(node);
+    return document !== undefined && shared.maa.ModelRoots.isBuiltin(document.uri);
+}
+
+/**
+ * The document a node belongs to, or undefined for a declaration that lives outside the model
+ * documents: scopes may resolve names to synthetic nodes (the generators of an `.arcapp` stand
+ * for registry entries), and `AstUtils.getDocument` throws "AST node has no document" on them.
+ */
+export function documentOf(node: AstNode): LangiumDocument | undefined {
+    return AstUtils.findRootNode(node).$document;
 }
 
 /**

@@ -1,10 +1,10 @@
 import {
-    AstUtils, CstUtils, DefaultReferences, GrammarUtils, stream, type AstNode, type CstNode, type FindReferencesOptions,
-    type LangiumDocument, type ReferenceDescription, type Stream
+    AstUtils, CstUtils, DefaultReferences, DocumentState, GrammarUtils, isReference, stream, UriUtils, type AstNode, type CstNode,
+    type FindReferencesOptions, type LangiumDocument, type ReferenceDescription, type Stream
 } from 'langium';
 import type { AdlServices } from '../adl-module.js';
 import { isFieldAccessExpression } from '../generated/ast.js';
-import { lastLeaf, resolveMember, rootDocuments } from './node-info.js';
+import { documentOf, lastLeaf, resolveMember, rootDocuments } from './node-info.js';
 
 /**
  * Resolves a name that is not a cross-reference (e.g. a member name after `.`) to the element
@@ -23,6 +23,10 @@ export type ReferenceFinderContribution = (target: AstNode, documents: () => rea
  * `Type.CONSTANT` and `value.attribute` resolve by the type of the receiver. Definition, hover,
  * highlight, references and rename all go through this service, so contributions made here
  * (`nameResolvers`, `referenceFinders`) reach every one of them.
+ *
+ * A declaration outside the model documents (a synthetic node of a scope, such as a generator
+ * of an `.arcapp`: it has no document) has no declaration to include; its uses are the
+ * cross-references that resolved to the same description (manifest URI and path).
  */
 export class AdlReferences extends DefaultReferences {
     readonly nameResolvers: NameResolverContribution[] = [];
@@ -48,6 +52,7 @@ export class AdlReferences extends DefaultReferences {
     }
 
     override findReferences(targetNode: AstNode, options: FindReferencesOptions): Stream<ReferenceDescription> {
+        if (!documentOf(targetNode)) return stream(this.externalUses(targetNode, options));
         const indexed = super.findReferences(targetNode, options);
         if (this.referenceFinders.length === 0) return indexed;
         let docs: LangiumDocument[] | undefined;
@@ -70,6 +75,37 @@ export class AdlReferences extends DefaultReferences {
             }
         }
         return indexed.concat(stream(extra));
+    }
+
+    /**
+     * The uses of a declaration without a document. Scopes may create a new node for the same
+     * declaration after a rebuild, so uses are matched by the description they resolved through
+     * (found from one use of this very node), not by node identity.
+     */
+    private externalUses(target: AstNode, options: FindReferencesOptions): ReferenceDescription[] {
+        // Only linked documents: resolving references of a document being rebuilt would link it
+        // against a stale index.
+        const uses = this.documents.all
+            .filter((d) => d.state >= DocumentState.Linked)
+            .flatMap((document) => document.references.filter(isReference).map((ref) => ({ document, ref })))
+            .toArray();
+        const described = uses.find((u) => u.ref.ref === target)?.ref.$nodeDescription;
+        if (!described) return [];
+        const out: ReferenceDescription[] = [];
+        for (const { document, ref } of uses) {
+            const desc = ref.$nodeDescription;
+            if (options.documentUri && !UriUtils.equals(document.uri, options.documentUri)) continue;
+            if (!ref.$refNode || !desc || desc.path !== described.path || !UriUtils.equals(desc.documentUri, described.documentUri)) continue;
+            out.push({
+                sourceUri: document.uri,
+                sourcePath: this.nodeLocator.getAstNodePath(ref.$refNode.astNode),
+                targetUri: desc.documentUri,
+                targetPath: desc.path,
+                segment: CstUtils.toDocumentSegment(ref.$refNode),
+                local: false
+            });
+        }
+        return out;
     }
 
     /** The member named at a leaf, e.g. `STOP` in `ToasterCmd.STOP`. */

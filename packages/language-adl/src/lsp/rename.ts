@@ -1,11 +1,12 @@
-import { AstUtils, CstUtils, GrammarUtils, UriUtils, type AstNode, type LangiumDocument, type LangiumDocuments } from 'langium';
+import { AstUtils, CstUtils, GrammarUtils, URI, UriUtils, type AstNode, type LangiumDocument, type LangiumDocuments } from 'langium';
 import { DefaultRenameProvider, type LangiumSharedServices } from 'langium/lsp';
-import type { Position, PrepareRenameParams, RenameParams, TextDocumentPositionParams } from 'vscode-languageserver-protocol';
+import { ErrorCodes, LSPErrorCodes, ResponseError, type Position, type PrepareRenameParams, type RenameParams, type TextDocumentPositionParams } from 'vscode-languageserver-protocol';
 import type { Range, TextEdit, WorkspaceEdit } from 'vscode-languageserver-types';
 import type { AdlSharedServices } from '../adl-module.js';
 import type { AdlLspServices } from './lsp-module.js';
 import { isArcModel, isCDModel, isComponentType } from '../generated/ast.js';
-import { exportedNames, isBuiltinNode, isIdentifier, rootDocuments } from './node-info.js';
+import { nameProblem } from './names.js';
+import { documentOf, exportedNames, isBuiltinNode, rootDocuments } from './node-info.js';
 
 /**
  * Rename across the language family and the files of a model root: the declaration, every
@@ -14,6 +15,11 @@ import { exportedNames, isBuiltinNode, isIdentifier, rootDocuments } from './nod
  * renamed components and types. A qualified reference (`toast.Controller`) keeps its qualifier.
  * Renaming a top-level component also renames its file when the file is named after it and the
  * client supports file renames in workspace edits.
+ *
+ * Refusals are LSP errors with a message for the user, never internal errors: a new name that
+ * is not a name in every language the edit touches (InvalidParams), and declarations outside the
+ * model files, such as the generators an `.arcapp` names (RequestFailed; prepareRename answers
+ * null there, so editors do not offer the rename at all).
  */
 export class AdlRenameProvider extends DefaultRenameProvider {
     private readonly shared: AdlSharedServices;
@@ -31,21 +37,46 @@ export class AdlRenameProvider extends DefaultRenameProvider {
         });
     }
 
-    /** The element a rename at a position would rename (never one of the built-in library). */
+    /**
+     * The element a rename at a position would rename: a declaration in a model file, never
+     * one of the built-in library nor one outside the model files.
+     */
     targetAt(document: LangiumDocument, position: Position): AstNode | undefined {
+        const target = this.declarationAt(document, position);
+        return target && documentOf(target) && !isBuiltinNode(this.shared, target) ? target : undefined;
+    }
+
+    private declarationAt(document: LangiumDocument, position: Position): AstNode | undefined {
         const root = document.parseResult.value.$cstNode;
         if (!root) return undefined;
         const leaf = CstUtils.findDeclarationNodeAtOffset(root, document.textDocument.offsetAt(position), this.grammarConfig.nameRegexp);
-        if (!leaf) return undefined;
-        const target = this.references.findDeclarations(leaf)[0];
-        return target && !isBuiltinNode(this.shared, target) ? target : undefined;
+        return leaf ? this.references.findDeclarations(leaf)[0] : undefined;
     }
 
     override async rename(document: LangiumDocument, params: RenameParams): Promise<WorkspaceEdit | undefined> {
         const target = this.targetAt(document, params.position);
-        if (!target) return undefined;
-        if (!isIdentifier(params.newName)) throw new Error(`'${params.newName}' is not a valid name.`);
-        return this.renameElement(target, params.newName);
+        if (!target) {
+            const outside = this.declarationAt(document, params.position);
+            if (outside && !documentOf(outside)) {
+                const name = this.nameProvider.getName(outside) ?? 'this name';
+                throw new ResponseError(LSPErrorCodes.RequestFailed, `'${name}' is not declared in a model file (it names an installed generator or another external declaration) and cannot be renamed.`);
+            }
+            return undefined;
+        }
+        this.checkName(document, params.newName);
+        const edit = this.renameElement(target, params.newName);
+        for (const uri of editedUris(edit)) {
+            const doc = this.documents.getDocument(URI.parse(uri));
+            if (doc) this.checkName(doc, params.newName);
+        }
+        return edit;
+    }
+
+    /** Refuses a new name that is not a name in the language of a document the rename edits. */
+    private checkName(document: LangiumDocument, newName: string): void {
+        const services = this.shared.ServiceRegistry.getServices(document.uri);
+        const problem = nameProblem(services, newName);
+        if (problem) throw new ResponseError(ErrorCodes.InvalidParams, `'${newName}' is not a valid name: ${problem}.`);
     }
 
     override prepareRename(document: LangiumDocument, params: PrepareRenameParams | TextDocumentPositionParams): Range | undefined {
@@ -102,6 +133,13 @@ export class AdlRenameProvider extends DefaultRenameProvider {
         }
         return { changes };
     }
+}
+
+/** The documents a workspace edit changes. */
+function editedUris(edit: WorkspaceEdit): string[] {
+    const uris = Object.keys(edit.changes ?? {});
+    for (const change of edit.documentChanges ?? []) if ('textDocument' in change) uris.push(change.textDocument.uri);
+    return uris;
 }
 
 /** The range of the last segment of a (possibly qualified) name that ends with `name`. */
