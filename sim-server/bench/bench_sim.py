@@ -127,7 +127,7 @@ def bench_rosbridge(messages: int) -> tuple[float, float, float, float]:
     server = RosbridgeServer(bus, port=0)
     server.start()
     try:
-        with connect(server.url) as ws:
+        with connect(server.url, additional_headers={"Authorization": f"Bearer {server.access.token}"}) as ws:
             # client -> server -> client: publish on a topic the same client subscribes to
             ws.send(json.dumps({"op": "subscribe", "topic": "/bench", "type": "std_msgs/msg/Int32"}))
             ws.send(json.dumps({"op": "advertise", "topic": "/bench", "type": "std_msgs/msg/Int32"}))

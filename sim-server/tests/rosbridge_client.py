@@ -4,14 +4,32 @@ from __future__ import annotations
 
 import json
 import time
-from typing import Any
+from typing import Any, Protocol
 
 from websockets.sync.client import ClientConnection, connect
 
 
+class _Endpoint(Protocol):
+    @property
+    def url(self) -> str: ...
+
+    @property
+    def access(self) -> Any: ...
+
+
 class Client:
-    def __init__(self, url: str) -> None:
-        self.ws: ClientConnection = connect(url, max_size=None, open_timeout=10)
+    """Presents the endpoint's token as the IDE backend's proxy does (Authorization: Bearer)."""
+
+    def __init__(self, url: str, token: str | None = None, headers: dict[str, str] | None = None) -> None:
+        extra = dict(headers or {})
+        if token is not None:
+            extra["Authorization"] = f"Bearer {token}"
+        self.ws: ClientConnection = connect(url, max_size=None, open_timeout=30, additional_headers=extra)
+
+    @classmethod
+    def of(cls, server: _Endpoint) -> Client:
+        """A client of a running RosbridgeServer, with its token."""
+        return cls(server.url, token=server.access.token)
 
     def send(self, message: dict[str, Any] | str | bytes) -> None:
         self.ws.send(message if isinstance(message, str | bytes) else json.dumps(message))

@@ -93,7 +93,7 @@ def toast_app(toast_build: Path) -> Iterator[SimApp]:
 
 def test_generated_build_serves_the_toast_with_live_values(toast_app: SimApp) -> None:
     assert toast_app.rosbridge is not None and toast_app.session is not None and toast_app.runner is not None
-    client = Client(toast_app.rosbridge.url)
+    client = Client.of(toast_app.rosbridge)
     try:
         topics = client.call("rosapi/topics")["values"]
         types = dict(zip(topics["topics"], topics["types"], strict=True))
@@ -124,7 +124,7 @@ def test_generated_build_serves_the_toast_with_live_values(toast_app: SimApp) ->
         ctrl = [s["/toast_service_robot/ctrl"] for s in states]
         assert [c for i, c in enumerate(ctrl) if i == 0 or c != ctrl[i - 1]] == ["Loading", "Toasting", "Serving"]
         # a client that subscribes late gets the current states at once (latched), and so does get_status
-        late = Client(toast_app.rosbridge.url)
+        late = Client.of(toast_app.rosbridge)
         late.send({"op": "subscribe", "topic": STATES})
         current = json.loads(late.recv_until(lambda m: m.get("topic") == STATES)["msg"]["data"])
         late.close()
@@ -139,7 +139,7 @@ def test_injection_on_root_in_ports_over_rosbridge(features_build: Path) -> None
     app.start()
     try:
         assert app.rosbridge is not None
-        client = Client(app.rosbridge.url)
+        client = Client.of(app.rosbridge)
         client.send({"op": "set_level", "level": "warning"})
         for topic in ("/features/lamp/log", "/features/press", STATES):
             client.send({"op": "subscribe", "topic": topic})

@@ -46,7 +46,7 @@ def test_toast_ends_on_the_plate_with_real_nodes(toast_app_dir: Path) -> None:
     try:
         assert app.supervisor is not None and app.rosbridge is not None
         assert [n["state"] for n in app.supervisor.statuses()] == ["running", "running"]
-        client = Client(app.rosbridge.url)
+        client = Client.of(app.rosbridge)
         # a port topic between two generated nodes, seen through rosbridge
         client.send({"op": "subscribe", "topic": "/toast/arm/status", "type": "std_msgs/msg/String"})
         time.sleep(1.0)  # let the new subscription match the arm node's publisher
@@ -92,7 +92,7 @@ def test_crashed_and_hung_nodes_are_reported(faulty_app_dir: Path) -> None:
     app.start()
     try:
         assert app.rosbridge is not None and app.supervisor is not None
-        client = Client(app.rosbridge.url)
+        client = Client.of(app.rosbridge)
         deadline = time.monotonic() + 30
         states: dict[str, str] = {}
         while time.monotonic() < deadline:
@@ -209,7 +209,7 @@ def test_reset_restarts_the_nodes_for_a_fresh_run(toast_app_dir: Path) -> None:
     try:
         assert app.supervisor is not None and app.rosbridge is not None and app.session is not None
         old_pids = {n["name"]: n["pid"] for n in app.supervisor.statuses()}
-        client = Client(app.rosbridge.url)
+        client = Client.of(app.rosbridge)
         # mid-run: the bread is in the toaster and browning, the controller waits for GOLDEN
         deadline = time.monotonic() + 120
         while app.session.world.toast_level < 0.3 and time.monotonic() < deadline:

@@ -42,7 +42,7 @@ def lockstep_app(toast_app_dir: Path) -> Iterator[SimApp]:
 
 def test_publish_subscribe_round_trip(bus_server: tuple[LocalBus, RosbridgeServer]) -> None:
     bus, server = bus_server
-    a, b = Client(server.url), Client(server.url)
+    a, b = Client.of(server), Client.of(server)
     try:
         b.send({"op": "subscribe", "id": "s1", "topic": "/chatter", "type": "std_msgs/String"})
         a.send({"op": "advertise", "id": "a1", "topic": "/chatter", "type": "std_msgs/msg/String"})
@@ -67,7 +67,7 @@ def test_publish_subscribe_round_trip(bus_server: tuple[LocalBus, RosbridgeServe
 
 def test_throttle_rate_and_queue_length(bus_server: tuple[LocalBus, RosbridgeServer]) -> None:
     bus, server = bus_server
-    client = Client(server.url)
+    client = Client.of(server)
     try:
         client.send({"op": "subscribe", "topic": "/sensors/distance", "throttle_rate": 200, "queue_length": 1})
         time.sleep(0.1)
@@ -87,7 +87,7 @@ def test_throttle_rate_and_queue_length(bus_server: tuple[LocalBus, RosbridgeSer
 
 def test_errors_get_status_replies(bus_server: tuple[LocalBus, RosbridgeServer]) -> None:
     _, server = bus_server
-    client = Client(server.url)
+    client = Client.of(server)
     try:
         cases = [
             "not json",
@@ -123,7 +123,7 @@ def test_message_details_name_fields_and_constants(bus_server: tuple[LocalBus, R
     """rosapi/message_details as roslib's getMessageDetails reads it: the IDE takes the literals of
     an enum message (a `value` field and one constant per literal) from the constants."""
     _, server = bus_server
-    client = Client(server.url)
+    client = Client.of(server)
     try:
         reply = client.call("rosapi/message_details", {"type": "sensor_msgs/msg/BatteryState"})
         assert reply["result"] is True, reply
@@ -188,7 +188,7 @@ def fuzz_frames(count: int, seed: int) -> list[str | bytes]:
 
 def test_fuzz_1000_malformed_frames(lockstep_app: SimApp) -> None:
     assert lockstep_app.rosbridge is not None
-    client = Client(lockstep_app.rosbridge.url)
+    client = Client.of(lockstep_app.rosbridge)
     try:
         frames = fuzz_frames(1000, seed=1234)
         errors = 0
@@ -204,7 +204,7 @@ def test_fuzz_1000_malformed_frames(lockstep_app: SimApp) -> None:
         assert errors == 1000
         # still answering, on this connection and on a new one
         assert client.call("rosapi/topics")["result"] is True
-        fresh = Client(lockstep_app.rosbridge.url)
+        fresh = Client.of(lockstep_app.rosbridge)
         assert "/clock" in fresh.call("rosapi/topics")["values"]["topics"]
         fresh.close()
     finally:
@@ -213,7 +213,7 @@ def test_fuzz_1000_malformed_frames(lockstep_app: SimApp) -> None:
 
 def test_control_services(lockstep_app: SimApp) -> None:
     assert lockstep_app.rosbridge is not None
-    client = Client(lockstep_app.rosbridge.url)
+    client = Client.of(lockstep_app.rosbridge)
     try:
         status = client.call("/sim/get_status")["values"]
         assert status["paused"] is True and status["mode"] == "lockstep"
@@ -245,7 +245,7 @@ def test_control_services(lockstep_app: SimApp) -> None:
 
 def test_input_injection_in_lockstep(lockstep_app: SimApp) -> None:
     assert lockstep_app.rosbridge is not None
-    client = Client(lockstep_app.rosbridge.url)
+    client = Client.of(lockstep_app.rosbridge)
     try:
         client.call("/sim/step", {"steps": 1})  # the controller's initial slice writes STOP
         client.send({"op": "advertise", "topic": "/toaster/command", "type": "std_msgs/msg/String"})
@@ -276,7 +276,7 @@ def test_roslib_client(roslib_installed: Path, lockstep_app: SimApp) -> None:
     assert lockstep_app.rosbridge is not None and lockstep_app.runner is not None
     assert lockstep_app.runner.paused  # the client resumes it once it has subscribed
     result = subprocess.run(
-        ["node", str(roslib_installed / "roslib_client.mjs"), lockstep_app.rosbridge.url],
+        ["node", str(roslib_installed / "roslib_client.mjs"), lockstep_app.rosbridge.url_with_token],
         capture_output=True,
         text=True,
         check=False,

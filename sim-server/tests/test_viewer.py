@@ -31,7 +31,7 @@ def _free_port() -> int:
 
 
 def test_serves_the_client_page(view: SceneView) -> None:
-    with urllib.request.urlopen(view.url + "/", timeout=10) as response:
+    with urllib.request.urlopen(view.url_with_token, timeout=30) as response:
         body = response.read().decode("utf-8", errors="replace")
         headers = {k.lower(): v for k, v in response.headers.items()}
     assert response.status == 200

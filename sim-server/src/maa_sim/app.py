@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal
 
+from .access import AccessPolicy, resolve_token
 from .deployment import Deployment
 from .lockstep import LockstepPackage
 from .messages import JsonMessage, MessageError
@@ -51,6 +52,8 @@ class RunOptions:
     hang_timeout: float = 5.0
     log_dir: Path | None = None
     golden_seconds: float = WorldConfig.golden_seconds
+    #: the secret of the rosbridge and viser endpoints (None: MAA_SIM_TOKEN, else a random one)
+    token: str | None = None
 
 
 class SimApp:
@@ -73,6 +76,8 @@ class SimApp:
         self.automaton_states: dict[str, str] = {}
         self._states_lock = threading.Lock()
         self.failed = threading.Event()
+        #: the token both endpoints require (maa_sim.access)
+        self.token = resolve_token(options.token)
 
     # ----------------------------------------------------------------------------- start
 
@@ -93,12 +98,15 @@ class SimApp:
                     services=self.control_services(),
                     on_publish=self._on_client_publish if self.options.mode == "lockstep" else None,
                     latched=self._latched,
+                    access=self._access(),
                 )
                 self.rosbridge.start()
             if self.options.viser_port is not None:
                 from .viewer import SceneView
 
-                self.viewer = SceneView(self.runner, host=self.options.host, port=self.options.viser_port)
+                self.viewer = SceneView(
+                    self.runner, host=self.options.host, port=self.options.viser_port, access=self._access()
+                )
                 self.viewer.start()
             if self.options.paused:
                 self.runner.pause()
@@ -106,6 +114,10 @@ class SimApp:
         except BaseException:
             self.stop()
             raise
+
+    def _access(self) -> AccessPolicy:
+        """One policy per endpoint (each knows its own port, for its cookie), one token for both."""
+        return AccessPolicy(self.token, bind_host=self.options.host)
 
     def _world(self) -> ToastKitchen:
         return ToastKitchen(

@@ -135,7 +135,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         log_dir=args.log_dir,
         golden_seconds=args.golden_seconds,
     )
-    app = SimApp(options)
+    try:
+        app = SimApp(options)
+    except ValueError as exc:  # e.g. an MAA_SIM_TOKEN a URL cannot carry
+        print(f"maa-sim: {exc}", file=sys.stderr)
+        return 2
     interrupted = threading.Event()
     received: list[str] = []
 
@@ -155,13 +159,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         status = app.status()
         if args.status_json:
-            print(json.dumps({"event": "ready", **status}), flush=True)
+            # the token for the program that started maa-sim (the IDE backend), which presents it
+            print(json.dumps({"event": "ready", **status, "token": app.token}), flush=True)
         else:
+            # the URLs a person opens carry the token (viser keeps it in a cookie for its page)
             print(f"maa-sim: {options.mode} mode, scene {options.scene}", flush=True)
-            if status["rosbridge"]:
-                print(f"  rosbridge  {status['rosbridge']}", flush=True)
-            if status["viser"]:
-                print(f"  viser      {status['viser']}", flush=True)
+            if app.rosbridge is not None:
+                print(f"  rosbridge  {app.rosbridge.url_with_token}", flush=True)
+            if app.viewer is not None:
+                print(f"  viser      {app.viewer.url_with_token}", flush=True)
             for node in status["nodes"]:
                 print(f"  node       {node['name']} (pid {node['pid']}, {node['state']})", flush=True)
         while not app.wait(0.2) and not interrupted.is_set():

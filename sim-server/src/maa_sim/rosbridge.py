@@ -23,11 +23,14 @@ import time
 from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from http import HTTPStatus
 from typing import Any
 
 from websockets.asyncio.server import Server, ServerConnection, serve
 from websockets.exceptions import ConnectionClosed
+from websockets.http11 import Request, Response
 
+from .access import AccessPolicy, resolve_token
 from .messages import JsonMessage, MessageError, message_details, normalize_type
 from .transport import Subscription, Transport
 
@@ -63,6 +66,11 @@ class ServiceError(Exception):
 
 class RequestError(Exception):
     """A request that cannot be carried out; answered with a status error."""
+
+
+def _url_host(host: str) -> str:
+    """An IPv6 address goes in brackets in a URL."""
+    return f"[{host}]" if ":" in host and not host.startswith("[") else host
 
 
 def _dumps(message: JsonMessage) -> str:
@@ -224,10 +232,14 @@ class RosbridgeServer:
         services: dict[str, ServiceHandler] | None = None,
         on_publish: Callable[[str, JsonMessage], bool] | None = None,
         latched: Callable[[str], JsonMessage | None] | None = None,
+        access: AccessPolicy | None = None,
     ) -> None:
         self.transport = transport
         self.host = host
         self.port = port
+        #: Host, Origin and token rules of the handshake (maa_sim.access); without one given, a
+        #: fresh random token: the endpoint is never open to anyone who finds the port.
+        self.access = access if access is not None else AccessPolicy(resolve_token(), bind_host=host)
         self.services: dict[str, ServiceHandler] = {
             "rosapi/topics": self._topics,
             "rosapi/topic_type": self._topic_type,
@@ -250,6 +262,7 @@ class RosbridgeServer:
         self._tasks: set[asyncio.Task[None]] = set()
         self.frames = 0
         self.errors = 0
+        self.refused = 0
 
     # ----------------------------------------------------------------------------- lifecycle
 
@@ -288,10 +301,20 @@ class RosbridgeServer:
             max_queue=64,
             ping_interval=20,
             ping_timeout=20,
+            process_request=self._authorize,
         )
         sockets = list(self._server.sockets)
         if sockets:
             self.port = int(sockets[0].getsockname()[1])
+        self.access.port = self.port
+
+    def _authorize(self, connection: ServerConnection, request: Request) -> Response | None:
+        """The websockets library's handshake hook: a refused request gets 403 and no connection."""
+        verdict = self.access.check(request.path, request.headers.get_all)
+        if verdict.allowed:
+            return None
+        self.refused += 1
+        return connection.respond(HTTPStatus.FORBIDDEN, f"maa-sim: {verdict.reason}\n")
 
     def stop(self) -> None:
         loop = self._loop
@@ -313,7 +336,13 @@ class RosbridgeServer:
 
     @property
     def url(self) -> str:
-        return f"ws://{self.host}:{self.port}"
+        """The endpoint's address (without the token: see `url_with_token`)."""
+        return f"ws://{_url_host(self.host)}:{self.port}"
+
+    @property
+    def url_with_token(self) -> str:
+        """The address for a person or a browser client, which cannot send an Authorization header."""
+        return f"{self.url}/?token={self.access.token}"
 
     def broadcast_status(self, level: str, msg: str) -> None:
         """An unsolicited status to every client (e.g. a crashed node), from any thread."""

@@ -6,11 +6,15 @@ moves the frames. The bread's colour follows its toast level. A HUD shows the si
 the real-time factor and the toast; buttons pause, resume, step and reset the simulation; camera
 presets look at the whole kitchen, the toaster, the plate or the bread. viser serves its own
 web client (shipped in the wheel), which can be embedded in an iframe.
+
+viser itself listens on an internal loopback port; the public port is a `Gate` (gate.py) that
+applies maa-sim's Host, Origin and token rules (access.py) before passing a connection on.
 """
 
 from __future__ import annotations
 
 import contextlib
+import hmac
 import sys
 import threading
 import time
@@ -21,6 +25,8 @@ import mujoco
 import numpy as np
 import viser
 
+from .access import AccessPolicy, resolve_token
+from .gate import GATE_HEADER, Gate
 from .session import Runner
 from .world import PLATE_CENTER
 
@@ -42,15 +48,33 @@ def _rgb(rgba: Any) -> tuple[int, int, int]:
 class SceneView:
     """A viser server showing one session's world."""
 
-    def __init__(self, runner: Runner, host: str = "127.0.0.1", port: int = 8080, fps: float = FPS) -> None:
+    def __init__(
+        self,
+        runner: Runner,
+        host: str = "127.0.0.1",
+        port: int = 8080,
+        fps: float = FPS,
+        access: AccessPolicy | None = None,
+    ) -> None:
         self.runner = runner
         self.session = runner.session
         self.world = runner.session.world
         self.fps = fps
-        # viser prints a banner on stdout; stdout belongs to maa-sim's own output (--status-json)
+        self.access = access if access is not None else AccessPolicy(resolve_token(), bind_host=host)
+        # viser prints a banner on stdout; stdout belongs to maa-sim's own output (--status-json).
+        # Port 0: viser moves on to the next port when one is taken, which must not happen to
+        # an internal port that some other server might be on.
         with contextlib.redirect_stdout(sys.stderr):
-            self.server = viser.ViserServer(host=host, port=port, label="maa-sim: toast kitchen", verbose=False)
-        self.port = self.server.get_port()
+            self.server = viser.ViserServer(host="127.0.0.1", port=0, label="maa-sim: toast kitchen", verbose=False)
+        self.gate = Gate(self.access, self.server.get_port(), host=host, port=port)
+        self._refuse_ungated_websockets()
+        try:
+            self.gate.start()
+        except RuntimeError:
+            with contextlib.suppress(Exception), contextlib.redirect_stdout(sys.stderr):
+                self.server.stop()
+            raise
+        self.port = self.gate.port
         self.host = host
         self.frames: dict[int, Any] = {}
         self.geoms: dict[int, Any] = {}
@@ -63,7 +87,36 @@ class SceneView:
 
     @property
     def url(self) -> str:
-        return f"http://{self.host}:{self.port}"
+        """The panel's address (without the token: see `url_with_token`)."""
+        host = f"[{self.host}]" if ":" in self.host else self.host
+        return f"http://{host}:{self.port}"
+
+    @property
+    def url_with_token(self) -> str:
+        """The address a person opens: the token in the query becomes a cookie for the page."""
+        return f"{self.url}/?token={self.access.token}"
+
+    def _refuse_ungated_websockets(self) -> None:
+        """Defence in depth for the internal port, which any local process or web page could find:
+        a WebSocket that did not come through the gate is closed before viser reads a message from
+        it. Uses viser's private connection table (no public API shows a client's request); if a
+        viser version lacks it, the check is skipped and the internal port is only loopback."""
+        websock = getattr(self.server, "_websock_server", None)
+        connections = getattr(websock, "_live_connections", None)
+        if websock is None or not isinstance(connections, dict):
+            return
+        secret = self.gate.secret.encode()
+
+        async def check(client: Any) -> None:
+            connection = connections.get(client.client_id)
+            request = getattr(connection, "request", None)
+            if connection is None or request is None:
+                return
+            given = request.headers.get_all(GATE_HEADER)
+            if not any(hmac.compare_digest(value.encode("utf-8", "surrogateescape"), secret) for value in given):
+                await connection.close(1008, "maa-sim: connect through the panel's public port")
+
+        websock.on_client_connect(check)
 
     # ----------------------------------------------------------------------------- scene
 
@@ -228,5 +281,6 @@ class SceneView:
         self._stop.set()
         if self._thread is not None:
             self._thread.join(timeout=2)
+        self.gate.stop()
         with contextlib.suppress(Exception), contextlib.redirect_stdout(sys.stderr):
             self.server.stop()

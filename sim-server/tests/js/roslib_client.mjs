@@ -1,5 +1,6 @@
 // A real roslib 2.x client (ESM, named exports) against maa-sim's rosbridge endpoint.
-// Usage: node roslib_client.mjs ws://127.0.0.1:PORT ; prints one JSON line with what it saw.
+// Usage: node roslib_client.mjs "ws://127.0.0.1:PORT/?token=TOKEN" ; prints one JSON line with what it saw.
+// A browser cannot set an Authorization header on a WebSocket, so the token is in the URL.
 import { Ros, Topic, Service } from 'roslib';
 
 const url = process.argv[2];

@@ -72,7 +72,7 @@ def test_generated_robot_serves_a_toast_in_the_simulator(installed: Installed, t
         states = {n["name"]: n["state"] for n in app.supervisor.statuses()}
         expected = {f"{n['namespace']}/{n['name']}" for n in deployment["nodes"]}
         assert set(states) == expected and set(states.values()) == {"running"}, (states, _tails(app))
-        client = Client(app.rosbridge.url)
+        client = Client.of(app.rosbridge)
         # a port topic of a generated message type, carried by the simulator's rosbridge endpoint
         client.send({"op": "subscribe", "topic": "/toast_service_robot/ctrl/arm"})
         client.send({"op": "subscribe", "topic": "/maa/automaton_states", "type": "std_msgs/msg/String"})
