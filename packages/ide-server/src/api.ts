@@ -1,7 +1,7 @@
 import { readFile, stat } from 'node:fs/promises';
 import { listApps, readApp } from './apps.js';
 import type { GenerationService } from './generation.js';
-import { HttpError, readBody, readJsonObject, requireQuery, requireString, sendJson, sendText } from './http-util.js';
+import { HttpError, type Redact, readBody, readJsonObject, requireQuery, requireString, sendJson, sendText } from './http-util.js';
 import { ROSBRIDGE_PATH, VISER_PATH } from './proxy.js';
 import { Router } from './router.js';
 import type { SimMode, SimSessions } from './sim-session.js';
@@ -13,14 +13,16 @@ export interface ApiOptions {
   sims: SimSessions;
   /** Largest accepted file body (PUT /api/file). */
   maxFileBytes: number;
+  /** What error bodies and simulator logs pass through (no absolute paths). */
+  redact?: Redact;
 }
 
 /** The generator family a simulation mode runs (docs/ide.md: lockstep = timesync, ros2 = ros2). */
 const MODE_KIND: Record<SimMode, string> = { lockstep: 'timesync', ros2: 'ros2' };
 
 /** The routes of docs/ide.md "Backend HTTP API". */
-export function createApiRouter({ workspace, generation, sims, maxFileBytes }: ApiOptions): Router {
-  const router = new Router();
+export function createApiRouter({ workspace, generation, sims, maxFileBytes, redact }: ApiOptions): Router {
+  const router = new Router(redact);
 
   router.on('GET', '/api/files', async ({ res }) => {
     sendJson(res, 200, { root: workspace.name, entries: await workspace.list() });
@@ -95,7 +97,8 @@ export function createApiRouter({ workspace, generation, sims, maxFileBytes }: A
     sendJson(res, 200, { ok: true });
   });
   router.on('GET', '/api/sim/status', ({ res }) => {
-    sendJson(res, 200, sims.status());
+    const status = sims.status();
+    sendJson(res, 200, redact ? { ...status, log: redact.value(status.log) } : status);
   });
 
   return router;

@@ -48,6 +48,21 @@ export class ConfinedRoot {
 
   /** The absolute path of `rel` after the syntax and symlink checks (the file need not exist). */
   async resolve(rel: string, what = 'path'): Promise<string> {
+    return (await this.locate(rel, what)).target;
+  }
+
+  /**
+   * Like resolve, for writing and deleting: a hidden segment (`.git`, `.vscode`, ...) in the
+   * path, or in where its symlinks lead, is refused with 403, so the API cannot plant a git hook.
+   */
+  async resolveWritable(rel: string, what = 'path'): Promise<string> {
+    const { target, segments, realRelative } = await this.locate(rel, what);
+    const hidden = [...segments, ...realRelative].find((s) => s.startsWith('.'));
+    if (hidden !== undefined) throw new HttpError(403, `${rel}: hidden files and folders (here ${hidden}) cannot be written through the IDE`);
+    return target;
+  }
+
+  private async locate(rel: string, what: string): Promise<{ target: string; segments: string[]; realRelative: string[] }> {
     const segments = checkRelativePath(rel, what);
     const target = path.join(this.root, ...segments);
     let realRoot: string;
@@ -71,6 +86,8 @@ export class ConfinedRoot {
       throw new HttpError(403, `${rel} is a symlink whose target does not exist`);
     }
     if (!inside(realRoot, real)) throw new HttpError(403, `${rel} resolves outside ${this.label}`);
-    return target;
+    const realTarget = path.join(real, path.relative(probe, target));
+    const realRelative = path.relative(realRoot, realTarget).split(path.sep).filter((s) => s !== '');
+    return { target, segments, realRelative };
   }
 }

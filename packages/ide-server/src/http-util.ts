@@ -23,18 +23,27 @@ export function sendText(res: ServerResponse, status: number, text: string, cont
   res.end(text);
 }
 
-/** Answers an error; anything that is not an HttpError is a bug of ours (500). */
-export function sendError(res: ServerResponse, error: unknown): void {
+/** Turns texts sent to clients into ones without absolute paths (see PathRedactor). */
+export interface Redact {
+  value<T>(value: T): T;
+}
+
+/**
+ * Answers an error; anything that is not an HttpError is a bug of ours (500): the client learns
+ * only which request failed, the details (with paths and stack) go to maa-ide's stderr.
+ */
+export function sendError(res: ServerResponse, error: unknown, redact?: Redact, what = 'the request'): void {
+  if (!(error instanceof HttpError)) console.error(`maa-ide: internal error in ${what}:`, error);
   if (res.headersSent) {
     res.destroy();
     return;
   }
   if (error instanceof HttpError) {
-    sendJson(res, error.status, { error: error.message, ...error.extra });
+    const body = { error: error.message, ...error.extra };
+    sendJson(res, error.status, redact ? redact.value(body) : body);
     return;
   }
-  const message = error instanceof Error ? error.message : String(error);
-  sendJson(res, 500, { error: `internal error: ${message}` });
+  sendJson(res, 500, { error: `internal error in ${what} (details are in maa-ide's log)` });
 }
 
 /** Reads the request body, refusing (413) more than `limit` bytes. */

@@ -1,5 +1,5 @@
 import type { IncomingMessage, ServerResponse } from 'node:http';
-import { HttpError, sendError } from './http-util.js';
+import { HttpError, sendError, type Redact } from './http-util.js';
 
 export interface RequestContext {
   req: IncomingMessage;
@@ -12,6 +12,9 @@ export type Handler = (ctx: RequestContext) => Promise<void> | void;
 /** Exact-path routes with per-method handlers: unknown paths 404, other methods 405 (JSON). */
 export class Router {
   private readonly routes = new Map<string, Map<string, Handler>>();
+
+  /** @param redact what error bodies pass through (no absolute paths) */
+  constructor(private readonly redact?: Redact) {}
 
   on(method: string, pathname: string, handler: Handler): this {
     let methods = this.routes.get(pathname);
@@ -33,7 +36,7 @@ export class Router {
       }
       await handler({ req, res, query });
     } catch (e) {
-      sendError(res, e);
+      sendError(res, e, this.redact, `${req.method} ${pathname}`);
     }
   }
 }

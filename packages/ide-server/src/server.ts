@@ -1,13 +1,15 @@
-import { statSync } from 'node:fs';
+import { realpathSync, statSync } from 'node:fs';
 import { createServer, type IncomingMessage, type ServerResponse } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import path from 'node:path';
 import type { Duplex } from 'node:stream';
 import { fileURLToPath } from 'node:url';
+import { AccessGuard, generateToken, loginPage, tokenProblem } from './access.js';
 import { createApiRouter } from './api.js';
 import { GenerationService } from './generation.js';
-import { sendError, sendJson } from './http-util.js';
+import { sendError, sendJson, sendText } from './http-util.js';
 import { rejectUpgrade, SimProxy } from './proxy.js';
+import { PathRedactor } from './redact.js';
 import { Ros2Environment } from './ros2-environment.js';
 import { SimSessions } from './sim-session.js';
 import { StaticApp } from './static.js';
@@ -24,6 +26,7 @@ export const defaults = {
   maaSim: path.join(repoDir, 'sim-server', '.venv', 'bin', 'maa-sim'),
   ros2Venv: path.join(repoDir, 'packages', 'generators-python', '.venv-ros2'),
   maxFileBytes: 5 * 1024 * 1024,
+  sessionIdleSeconds: 60,
 };
 
 export interface IdeServerOptions {
@@ -46,11 +49,21 @@ export interface IdeServerOptions {
   maxFileBytes?: number;
   /** How long a simulation may take to become ready (default 90 s). */
   simReadyTimeoutMs?: number;
+  /** The secret every request must carry (default: 32 random bytes, base64url; docs/ide.md "Access"). */
+  token?: string;
+  /** A simulation session ends when it had no client for this long (default 60 s). */
+  sessionIdleSeconds?: number;
+  /** How long stopping a simulation waits after SIGTERM before SIGKILL (default 8 s; tests shorten it). */
+  simStopGraceMs?: number;
 }
 
 export interface IdeServer {
-  /** `http://host:port/` with the real port. */
+  /** `http://host:port/` with the real port (requests need the token, see loginUrl). */
   url: string;
+  /** `http://host:port/?token=...`: the URL to open (it stores the token in a cookie). */
+  loginUrl: string;
+  /** The per-start secret (cookie `maa-ide-token-<port>` or `Authorization: Bearer <token>`). */
+  token: string;
   port: number;
   workspace: string;
   /** Stops the simulation session, closes every connection and the listener. */
@@ -68,30 +81,83 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
   }
   if (!isDir) throw new Error(`the workspace folder ${workspaceDir} does not exist`);
   const host = options.host ?? defaults.host;
+  const token = options.token ?? generateToken();
+  const problem = tokenProblem(token);
+  if (problem) throw new Error(problem);
+  const idleSeconds = options.sessionIdleSeconds ?? defaults.sessionIdleSeconds;
+  if (!(idleSeconds > 0)) throw new Error(`the session idle time must be a positive number of seconds, not ${idleSeconds}`);
   const workspace = new Workspace(workspaceDir);
-  const generation = new GenerationService(workspace, path.resolve(options.outDir ?? path.join(workspaceDir, '..', '.maa-ide-out')), [packageDir]);
-  const sims = new SimSessions(path.resolve(options.maaSim ?? defaults.maaSim), options.simReadyTimeoutMs, ros2Environment(options.ros2Venv));
-  const api = createApiRouter({ workspace, generation, sims, maxFileBytes: options.maxFileBytes ?? defaults.maxFileBytes });
-  const proxy = new SimProxy(() => sims.endpoints());
-  const app = new StaticApp(path.resolve(options.appDir ?? defaults.appDir));
+  const outDir = path.resolve(options.outDir ?? path.join(workspaceDir, '..', '.maa-ide-out'));
+  const maaSim = path.resolve(options.maaSim ?? defaults.maaSim);
+  const redact = new PathRedactor([
+    [workspaceDir, ''],
+    [realpathSync(workspaceDir), ''],
+    [outDir, '<generated>'],
+    [path.resolve(options.ros2Venv ?? defaults.ros2Venv), '<ros2-venv>'],
+    [maaSim, 'maa-sim'],
+    [repoDir, ''],
+  ]);
+  const generation = new GenerationService(workspace, outDir, [packageDir]);
+  const sims = new SimSessions(
+    maaSim,
+    { readyTimeoutMs: options.simReadyTimeoutMs, idleMs: idleSeconds * 1000, stopGraceMs: options.simStopGraceMs },
+    ros2Environment(options.ros2Venv),
+  );
+  const api = createApiRouter({ workspace, generation, sims, maxFileBytes: options.maxFileBytes ?? defaults.maxFileBytes, redact });
+  const proxy = new SimProxy(sims);
+  const appDir = path.resolve(options.appDir ?? defaults.appDir);
+  const app = new StaticApp(appDir, redact.text(appDir));
+
+  // Saves killed before their rename left temp files; nothing else writes them, so once is enough.
+  const orphans = await workspace.removeOrphanTemps();
+  if (orphans.length > 0) console.error(`maa-ide: removed ${orphans.length} temp file(s) of interrupted saves: ${orphans.join(', ')}`);
+
+  // Known once the server listens (the port may be 0 until then); no request arrives before.
+  let guard!: AccessGuard;
 
   const handle = async (req: IncomingMessage, res: ServerResponse): Promise<void> => {
+    // Host and Origin first: a refused request reads, writes and starts nothing.
+    const refusal = guard.checkOrigin(req);
+    if (refusal) {
+      sendJson(res, refusal.status, { error: refusal.message });
+      return;
+    }
     let url: URL;
     try {
       url = new URL(req.url ?? '/', 'http://localhost');
     } catch {
-      sendJson(res, 400, { error: `malformed URL: ${req.url}` });
+      sendJson(res, 400, { error: 'malformed URL' });
       return;
     }
     const pathname = url.pathname;
-    if (pathname === '/api' || pathname.startsWith('/api/')) await api.dispatch(req, res, pathname, url.searchParams);
-    else if (pathname === '/sim' || pathname.startsWith('/sim/')) {
+    const isApi = pathname === '/api' || pathname.startsWith('/api/');
+    const isSim = pathname === '/sim' || pathname.startsWith('/sim/');
+    const isGet = req.method === 'GET' || req.method === 'HEAD';
+    const auth = guard.authenticate(req, url.searchParams);
+    if (!auth.ok) {
+      res.setHeader('WWW-Authenticate', 'Bearer realm="maa-ide"');
+      if (isGet && !isApi && !isSim && (req.headers.accept ?? '').includes('text/html')) sendText(res, 401, loginPage(), 'text/html; charset=utf-8');
+      else sendJson(res, auth.refusal.status, { error: auth.refusal.message });
+      return;
+    }
+    if (auth.via === 'query') {
+      res.setHeader('Set-Cookie', guard.setCookie());
+      if (isGet && !isApi) {
+        // The token leaves the address bar (and history); the cookie carries it from now on.
+        res.writeHead(302, { Location: withoutToken(url), 'Content-Length': 0, 'Cache-Control': 'no-store' });
+        res.end();
+        return;
+      }
+    }
+    if (pathname.startsWith('/api/sim/')) sims.signOfLife();
+    if (isApi) await api.dispatch(req, res, pathname, url.searchParams);
+    else if (isSim) {
       if (!proxy.handleRequest(req, res, pathname)) sendJson(res, 404, { error: `unknown route: ${req.method} ${pathname}` });
     } else await app.handle(req, res, pathname);
   };
 
   const server = createServer((req, res) => {
-    handle(req, res).catch((e: unknown) => sendError(res, e));
+    handle(req, res).catch((e: unknown) => sendError(res, e, redact, `${req.method} ${req.url?.split('?')[0]}`));
   });
   // Upgraded sockets leave the server's bookkeeping, so close() ends them itself.
   const upgraded = new Set<Duplex>();
@@ -99,14 +165,26 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
     upgraded.add(socket);
     socket.on('close', () => upgraded.delete(socket));
     socket.on('error', () => socket.destroy());
-    let pathname: string;
+    const refusal = guard.checkOrigin(req);
+    if (refusal) {
+      rejectUpgrade(socket, refusal.status, refusal.message);
+      return;
+    }
+    let url: URL;
     try {
-      pathname = new URL(req.url ?? '/', 'http://localhost').pathname;
+      url = new URL(req.url ?? '/', 'http://localhost');
     } catch {
       rejectUpgrade(socket, 400, 'malformed URL');
       return;
     }
-    if (!proxy.handleUpgrade(req, socket, head, pathname)) rejectUpgrade(socket, 404, `no WebSocket endpoint at ${pathname}`);
+    const auth = guard.authenticate(req, url.searchParams);
+    if (!auth.ok) {
+      rejectUpgrade(socket, auth.refusal.status, auth.refusal.message);
+      return;
+    }
+    // maa-ide's token is not the simulator's business.
+    req.url = withoutToken(url);
+    if (!proxy.handleUpgrade(req, socket, head, url.pathname)) rejectUpgrade(socket, 404, `no WebSocket endpoint at ${url.pathname}`);
   });
   server.on('clientError', (_err, socket) => {
     if (socket.writable) socket.end('HTTP/1.1 400 Bad Request\r\nConnection: close\r\n\r\n');
@@ -117,6 +195,7 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
     server.once('error', reject);
     server.listen(options.port ?? defaults.port, host, () => {
       server.off('error', reject);
+      guard = new AccessGuard(host, (server.address() as AddressInfo).port, token);
       resolve();
     });
   });
@@ -125,11 +204,14 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
   let closing: Promise<void> | undefined;
   return {
     url: `http://${shownHost}:${port}/`,
+    loginUrl: `http://${shownHost}:${port}/?token=${token}`,
+    token,
     port,
     workspace: workspaceDir,
     close() {
       closing ??= (async () => {
         await sims.stop().catch(() => undefined);
+        sims.dispose();
         const closed = new Promise<void>((resolve) => server.close(() => resolve()));
         server.closeAllConnections();
         for (const s of upgraded) s.destroy();
@@ -139,6 +221,14 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
       return closing;
     },
   };
+}
+
+/** The path and query of a URL without its `token` parameter. */
+function withoutToken(url: URL): string {
+  const query = new URLSearchParams(url.searchParams);
+  query.delete('token');
+  const rest = query.toString();
+  return `${url.pathname}${rest ? `?${rest}` : ''}`;
 }
 
 /** The default venv is created by its setup script when missing; another one must exist. */

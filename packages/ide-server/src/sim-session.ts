@@ -1,10 +1,11 @@
 import { spawn, type ChildProcess } from 'node:child_process';
-import { randomUUID } from 'node:crypto';
+import { randomBytes, randomUUID } from 'node:crypto';
 import { existsSync, readdirSync } from 'node:fs';
 import { connect } from 'node:net';
 import path from 'node:path';
 import { createInterface } from 'node:readline';
 import { HttpError } from './http-util.js';
+import { descendantGroups, groupAlive, signalGroup } from './process-group.js';
 import type { Ros2Environment } from './ros2-environment.js';
 
 export type SimMode = 'lockstep' | 'ros2';
@@ -35,13 +36,32 @@ export interface SimEndpoints {
   viser: URL | undefined;
 }
 
+/** Where the proxy sends a session's traffic, with the secret maa-sim requires (`MAA_SIM_TOKEN`). */
+export interface SimTarget extends SimEndpoints {
+  token: string;
+}
+
+export interface SimSessionOptions {
+  /** How long a simulation may take to become ready (default 90 s). */
+  readyTimeoutMs?: number;
+  /** A session ends when it had no client for this long (default 60 s; docs/ide.md "Simulation sessions"). */
+  idleMs?: number;
+  /** How long a stop waits after SIGTERM before SIGKILL (default 8 s). */
+  stopGraceMs?: number;
+}
+
 interface Session {
   id: string;
   request: SimStartRequest;
   /** Set while the environment is prepared (ros2: venv setup, interface build), before maa-sim runs. */
   preparing?: AbortController;
-  /** maa-sim, once spawned. */
+  /** maa-sim, once spawned (the leader of its own process group). */
   child?: ChildProcess;
+  /** The bearer token maa-sim's endpoints require (passed as MAA_SIM_TOKEN). */
+  token: string;
+  /** Open proxied WebSockets of this session. */
+  clients: number;
+  idleTimer?: NodeJS.Timeout;
   log: string[];
   endpoints?: SimEndpoints;
   exitCode?: number | null;
@@ -61,13 +81,20 @@ export interface SimStatus {
 }
 
 /**
- * One `maa-sim run` child at a time. Ports are chosen by maa-sim (`0`) and read from its
+ * One `maa-sim run` child at a time, in a process group of its own: a stop signals the group
+ * (SIGTERM, SIGKILL after a grace time), so whatever maa-sim started ends with it, and the
+ * backend's exit kills it synchronously. Ports are chosen by maa-sim (`0`) and read from its
  * `--status-json` ready line, so there is no window in which another process could take a port
  * we picked. Start and stop are serialized; a crashed child stays visible in the status.
  */
 export class SimSessions {
   private current: Session | undefined;
   private lock: Promise<unknown> = Promise.resolve();
+  private readonly readyTimeoutMs: number;
+  private readonly idleMs: number;
+  private readonly stopGraceMs: number;
+  /** Kills the running session's processes when the backend exits, however it exits. */
+  private readonly onExit = (): void => this.killNow();
 
   /**
    * @param maaSim the maa-sim of lockstep sessions (and of ros2 ones when there is no `ros2` environment)
@@ -75,14 +102,72 @@ export class SimSessions {
    */
   constructor(
     private readonly maaSim: string,
-    private readonly readyTimeoutMs = 90_000,
+    options: SimSessionOptions = {},
     private readonly ros2?: Ros2Environment,
-  ) {}
+  ) {
+    this.readyTimeoutMs = options.readyTimeoutMs ?? 90_000;
+    this.idleMs = options.idleMs ?? 60_000;
+    this.stopGraceMs = options.stopGraceMs ?? 8_000;
+    process.on('exit', this.onExit);
+  }
 
-  /** The endpoints of the running session (undefined when none runs). */
-  endpoints(): SimEndpoints | undefined {
+  /** The endpoints and token of the running session (undefined when none runs). */
+  target(): SimTarget | undefined {
     const s = this.current;
-    return s && s.child && s.exitCode === undefined ? s.endpoints : undefined;
+    return s?.child && s.exitCode === undefined && s.endpoints ? { ...s.endpoints, token: s.token } : undefined;
+  }
+
+  /** The running session's process group (maa-sim's pid), for tests and diagnostics. */
+  processGroup(): number | undefined {
+    const s = this.current;
+    return s?.child && s.exitCode === undefined ? s.child.pid : undefined;
+  }
+
+  /**
+   * A client (a proxied WebSocket) of the running session opened; call the returned function
+   * when it closes. The session does not idle out while it has clients.
+   */
+  clientOpened(): () => void {
+    const s = this.current;
+    if (!s) return () => undefined;
+    s.clients++;
+    clearTimeout(s.idleTimer);
+    let released = false;
+    return () => {
+      if (released) return;
+      released = true;
+      s.clients--;
+      if (s.clients === 0) this.armIdle(s);
+    };
+  }
+
+  /** A request about the simulation (`/api/sim/*`, proxied HTTP): the idle time starts again. */
+  signOfLife(): void {
+    const s = this.current;
+    if (s?.endpoints && s.exitCode === undefined && s.clients === 0) this.armIdle(s);
+  }
+
+  /** Stops listening for the backend's exit (the server closed; stop() ran before). */
+  dispose(): void {
+    process.off('exit', this.onExit);
+    this.killNow();
+  }
+
+  private armIdle(s: Session): void {
+    clearTimeout(s.idleTimer);
+    s.idleTimer = setTimeout(() => {
+      if (this.current !== s || s.clients > 0 || s.exitCode !== undefined) return;
+      s.log.push(`maa-ide: no client for ${this.idleMs / 1000} s, stopping the simulation`);
+      this.serialized(() => (this.current === s ? this.stopCurrent() : Promise.resolve())).catch(() => undefined);
+    }, this.idleMs);
+    s.idleTimer.unref();
+  }
+
+  /** SIGKILL for the running session's groups, synchronously (process exit). */
+  private killNow(): void {
+    const pid = this.processGroup();
+    if (pid === undefined) return;
+    for (const group of [pid, ...descendantGroups(pid)]) signalGroup(group, 'SIGKILL');
   }
 
   start(request: SimStartRequest): Promise<{ session: string }> {
@@ -140,7 +225,7 @@ export class SimSessions {
       // The session is visible (status: preparing, with the progress in its log) while the venv is
       // set up and the interface package built; a stop cancels it.
       const preparing = new AbortController();
-      const session: Session = { id: randomUUID(), request, log, preparing };
+      const session: Session = { id: randomUUID(), request, log, preparing, token: '', clients: 0 };
       this.current = session;
       try {
         maaSim = await ros2.prepare(request.platformDir, push, preparing.signal);
@@ -157,13 +242,19 @@ export class SimSessions {
     const args = ['run', '--package', packageDir, '--mode', request.mode, '--rosbridge-port', '0', '--viser-port', '0', '--host', '127.0.0.1', '--status-json', ...extraArgs];
     if (request.speed !== undefined) args.push('--speed', String(request.speed));
     if (request.mode === 'ros2') push(`maa-ide: starting ${maaSim} (ros2 mode)`);
-    const child = spawn(maaSim, args, { cwd: packageDir, stdio: ['ignore', 'pipe', 'pipe'], env: { ...process.env, PYTHONUNBUFFERED: '1' } });
+    const token = randomBytes(32).toString('base64url');
+    const env: NodeJS.ProcessEnv = { ...process.env, PYTHONUNBUFFERED: '1', MAA_SIM_TOKEN: token };
+    delete env['MAA_IDE_TOKEN']; // the simulation (it runs the user's components) needs only its own
+    // detached: a process group of its own, so a stop reaches everything maa-sim started.
+    const child = spawn(maaSim, args, { cwd: packageDir, stdio: ['ignore', 'pipe', 'pipe'], env, detached: true });
     let markExited!: () => void;
     const session: Session = {
       id: this.current?.request === request ? this.current.id : randomUUID(),
       request,
       child,
       log,
+      token,
+      clients: 0,
       exited: new Promise<void>((resolve) => (markExited = resolve)),
     };
     this.current = session;
@@ -181,6 +272,9 @@ export class SimSessions {
         if (finished) return;
         finished = true;
         session.exitCode = code ?? (signal ? null : -1);
+        clearTimeout(session.idleTimer);
+        // What maa-sim left in its group (it crashed, or was killed) goes with it.
+        if (child.pid !== undefined && groupAlive(child.pid)) signalGroup(child.pid, 'SIGKILL');
         const how = signal ? `signal ${signal}` : `exit code ${code}`;
         push(`maa-ide: maa-sim ended (${how})`);
         markExited();
@@ -208,6 +302,8 @@ export class SimSessions {
       const endpoints = await Promise.race([ready, timeout]);
       await waitForPort(endpoints.rosbridge, 10_000);
       session.endpoints = endpoints;
+      // A session nobody connects to ends like one whose clients left.
+      this.armIdle(session);
       return { session: session.id };
     } catch (e) {
       await this.stopCurrent();
@@ -217,15 +313,24 @@ export class SimSessions {
     }
   }
 
-  /** SIGTERM (maa-sim then stops its nodes and exits 0), SIGKILL after a grace period. */
+  /**
+   * SIGTERM to maa-sim's group (maa-sim then stops its nodes and exits 0); after the grace time
+   * SIGKILL to its group and the groups of its descendants, and once it exited SIGKILL to
+   * whatever of those groups is left.
+   */
   private async stopCurrent(): Promise<void> {
     const s = this.current;
-    if (!s?.child || !s.exited || s.exitCode !== undefined) return;
-    s.child.kill('SIGTERM');
-    const child = s.child;
-    const killed = setTimeout(() => child.kill('SIGKILL'), 8_000);
+    const pid = s?.child?.pid;
+    if (!s?.exited || pid === undefined || s.exitCode !== undefined) return;
+    clearTimeout(s.idleTimer);
+    const groups = new Set([pid, ...descendantGroups(pid)]);
+    signalGroup(pid, 'SIGTERM');
+    const killed = setTimeout(() => {
+      for (const g of [...groups, ...descendantGroups(pid)]) signalGroup(g, 'SIGKILL');
+    }, this.stopGraceMs);
     await s.exited;
     clearTimeout(killed);
+    for (const g of groups) if (groupAlive(g)) signalGroup(g, 'SIGKILL');
   }
 }
 

@@ -37,7 +37,8 @@ export function contentType(file: string): string {
  * for good; everything else (index.html above all) is revalidated by ETag on every load.
  */
 export class StaticApp {
-  constructor(readonly dir: string) {}
+  /** @param shownDir how the folder is named in answers (no absolute paths in error bodies) */
+  constructor(readonly dir: string, private readonly shownDir = 'the --app-dir folder') {}
 
   async handle(req: IncomingMessage, res: ServerResponse, pathname: string): Promise<void> {
     if (req.method !== 'GET' && req.method !== 'HEAD') {
@@ -46,7 +47,7 @@ export class StaticApp {
       return;
     }
     if (!existsSync(this.dir)) {
-      sendText(res, 503, `The IDE's web app is not built (${this.dir} does not exist). Run "npm run build -w @maa/ide-web" and reload.\n`);
+      sendText(res, 503, `The IDE's web app is not built (${this.shownDir} does not exist). Run "npm run build -w @maa/ide-web" and reload.\n`);
       return;
     }
     let decoded: string;

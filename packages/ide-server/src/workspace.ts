@@ -1,6 +1,6 @@
 import { existsSync } from 'node:fs';
 import { randomUUID } from 'node:crypto';
-import { lstat, mkdir, readdir, readFile, realpath, rename, rm, stat, writeFile } from 'node:fs/promises';
+import { chmod, lstat, mkdir, readdir, readFile, realpath, rename, rm, stat, writeFile } from 'node:fs/promises';
 import path from 'node:path';
 import { ConfinedRoot } from './confinement.js';
 import { HttpError } from './http-util.js';
@@ -10,6 +10,17 @@ export interface WorkspaceEntry {
   type: 'file' | 'directory';
   size?: number;
 }
+
+/**
+ * Modes of what the API creates, before the user's umask: never writable by others, whatever
+ * the umask (a umask of 0 must not open the workspace to every local user).
+ */
+const NEW_FILE_MODE = 0o664;
+const NEW_FOLDER_MODE = 0o775;
+const WORLD_WRITABLE = 0o002;
+
+/** The temporary file of a save: `.<name>.maa-ide-<pid>-<uuid>.tmp` in the file's folder. */
+const TEMP_FILE = /^\..+\.maa-ide-(\d+)-[0-9a-f]{8}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{12}\.tmp$/;
 
 /** Names the listing and the app search leave out. */
 export function isSkippedName(name: string): boolean {
@@ -80,16 +91,17 @@ export class Workspace {
     return readFile(abs);
   }
 
-  /** Writes through a temporary file and a rename, so readers never see half a file. */
+  /**
+   * Writes through a temporary file and a rename, so readers never see half a file. A new file
+   * gets the user's umask (and never write access for others); an overwritten one keeps its mode
+   * minus write access for others. Hidden paths are refused (403).
+   */
   async write(rel: string, content: Buffer): Promise<void> {
-    const abs = await this.confined.resolve(rel);
+    const abs = await this.confined.resolveWritable(rel);
+    const existing = await stat(abs).catch(() => undefined);
+    if (existing?.isDirectory()) throw new HttpError(409, `a folder exists at ${rel}`);
     try {
-      if ((await stat(abs)).isDirectory()) throw new HttpError(409, `a folder exists at ${rel}`);
-    } catch (e) {
-      if (e instanceof HttpError) throw e;
-    }
-    try {
-      await mkdir(path.dirname(abs), { recursive: true });
+      await mkdir(path.dirname(abs), { recursive: true, mode: NEW_FOLDER_MODE });
     } catch (e) {
       throw new HttpError(409, `cannot create the folder of ${rel}: ${(e as NodeJS.ErrnoException).code ?? (e as Error).message}`);
     }
@@ -97,8 +109,10 @@ export class Workspace {
     const target = (await lstat(abs).catch(() => undefined))?.isSymbolicLink() ? await realpath(abs) : abs;
     // A name of its own per write: two saves of one file in the same millisecond must not share it.
     const temp = path.join(path.dirname(target), `.${path.basename(target)}.maa-ide-${process.pid}-${randomUUID()}.tmp`);
-    await writeFile(temp, content);
     try {
+      // 'wx': a fresh file, never one (or a symlink) someone put there.
+      await writeFile(temp, content, { flag: 'wx', mode: NEW_FILE_MODE });
+      if (existing) await chmod(temp, existing.mode & 0o777 & ~WORLD_WRITABLE);
       await rename(temp, target);
     } catch (e) {
       await rm(temp, { force: true });
@@ -107,7 +121,7 @@ export class Workspace {
   }
 
   async delete(rel: string): Promise<void> {
-    const abs = await this.confined.resolve(rel);
+    const abs = await this.confined.resolveWritable(rel);
     let s;
     try {
       s = await lstat(abs);
@@ -116,5 +130,44 @@ export class Workspace {
     }
     // Folders too (the explorer deletes them); a symlink is removed itself, never its target.
     await rm(abs, { recursive: s.isDirectory(), force: false });
+  }
+
+  /**
+   * Removes the temporary files of saves that were killed before their rename (run once at
+   * start). node_modules is skipped and symlinks are not followed; a temp file of a process that
+   * is still running (another maa-ide on the same folder) is left alone. Returns the relative
+   * paths removed.
+   */
+  async removeOrphanTemps(): Promise<string[]> {
+    const removed: string[] = [];
+    const walk = async (dir: string, rel: string): Promise<void> => {
+      let entries;
+      try {
+        entries = await readdir(dir, { withFileTypes: true });
+      } catch {
+        return;
+      }
+      for (const e of entries) {
+        const childRel = rel ? `${rel}/${e.name}` : e.name;
+        if (e.isDirectory() && e.name !== 'node_modules') await walk(path.join(dir, e.name), childRel);
+        const pid = e.isFile() ? TEMP_FILE.exec(e.name)?.[1] : undefined;
+        if (pid !== undefined && !processAlive(Number(pid))) {
+          await rm(path.join(dir, e.name), { force: true });
+          removed.push(childRel);
+        }
+      }
+    };
+    await walk(this.root, '');
+    return removed;
+  }
+}
+
+/** Whether a process with this id exists (EPERM: it does, as another user's). */
+function processAlive(pid: number): boolean {
+  try {
+    process.kill(pid, 0);
+    return true;
+  } catch (e) {
+    return (e as NodeJS.ErrnoException).code === 'EPERM';
   }
 }

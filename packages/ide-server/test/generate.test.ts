@@ -2,7 +2,7 @@ import { appendFileSync, existsSync, readFileSync, symlinkSync, writeFileSync } 
 import path from 'node:path';
 import { afterEach, describe, expect, it } from 'vitest';
 import type { GenerateAnswer } from '../src/index.js';
-import { json, q, startSite, type TestSite } from './helpers.js';
+import { authFetch, json, q, startSite, type TestSite } from './helpers.js';
 
 const APP = 'toast-service/TR.arcapp';
 
@@ -14,12 +14,12 @@ describe('apps and generation (on a copy of examples/)', () => {
   });
 
   const post = (s: TestSite, body: unknown) =>
-    fetch(s.url('/api/generate'), { method: 'POST', body: JSON.stringify(body), headers: { 'Content-Type': 'application/json' } });
+    authFetch(s.url('/api/generate'), { method: 'POST', body: JSON.stringify(body), headers: { 'Content-Type': 'application/json' } });
 
   it('lists the application configurations with their platforms and kinds', async () => {
     site = await startSite();
     writeFileSync(path.join(site.workspace, 'empty.arcapp'), '// no application yet\n');
-    const res = await fetch(site.url('/api/apps'));
+    const res = await authFetch(site.url('/api/apps'));
     expect(res.status).toBe(200);
     const { apps } = await json<{ apps: Array<{ path: string; name: string; component: string; platforms: Array<{ name: string; kind: string }> }> }>(res);
     expect(apps).toHaveLength(1);
@@ -54,11 +54,11 @@ describe('apps and generation (on a copy of examples/)', () => {
       const onDisk = path.join(s.dir, '.maa-ide-out', APP, platform, marker);
       expect(answer.files.find((f) => f.path === marker)!.size).toBe(readFileSync(onDisk).length);
 
-      const file = await fetch(s.url(`/api/generated/file?${q({ app: APP, platform, path: marker })}`));
+      const file = await authFetch(s.url(`/api/generated/file?${q({ app: APP, platform, path: marker })}`));
       expect(file.status).toBe(200);
       expect(await file.text()).toBe(readFileSync(onDisk, 'utf8'));
 
-      const trace = await fetch(s.url(`/api/generated/trace?${q({ app: APP, platform })}`));
+      const trace = await authFetch(s.url(`/api/generated/trace?${q({ app: APP, platform })}`));
       expect(trace.status).toBe(200);
       expect(trace.headers.get('content-type')).toContain('application/json');
       const body = await json<{ platform: string; rootComponent: string; files: Array<{ path: string }> }>(trace);
@@ -66,7 +66,7 @@ describe('apps and generation (on a copy of examples/)', () => {
       expect(body.rootComponent).toBe('toast.ToastServiceRobot');
       expect(body.files.map((f) => f.path)).toContain(marker);
     }
-    const listing = await json<{ entries: Array<{ path: string }> }>(await fetch(s.url('/api/files')));
+    const listing = await json<{ entries: Array<{ path: string }> }>(await authFetch(s.url('/api/files')));
     expect(listing.entries.some((e) => e.path.includes('lockstep'))).toBe(false);
 
     // The generated-file routes confine like the workspace routes.
@@ -83,11 +83,11 @@ describe('apps and generation (on a copy of examples/)', () => {
       [{ app: APP, platform: 'other', path: 'lockstep.json' }, 404],
     ];
     for (const [params, status] of cases) {
-      const res = await fetch(s.url(`/api/generated/file?${q(params)}`));
+      const res = await authFetch(s.url(`/api/generated/file?${q(params)}`));
       expect(res.status, JSON.stringify(params)).toBe(status);
       expect(typeof (await json(res))['error']).toBe('string');
     }
-    expect((await fetch(s.url(`/api/generated/trace?${q({ app: APP, platform: 'other' })}`))).status).toBe(404);
+    expect((await authFetch(s.url(`/api/generated/trace?${q({ app: APP, platform: 'other' })}`))).status).toBe(404);
   });
 
   it('reports a broken model as ok:false with LSP diagnostics and writes nothing', async () => {

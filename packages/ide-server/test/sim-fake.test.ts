@@ -2,7 +2,7 @@ import { chmodSync, writeFileSync } from 'node:fs';
 import { createServer, type Server } from 'node:net';
 import path from 'node:path';
 import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
-import { json, startSite, type TestSite } from './helpers.js';
+import { authFetch, json, startSite, TEST_TOKEN, type TestSite } from './helpers.js';
 
 // Session supervision with stand-ins for maa-sim (shell scripts), so crashes and timeouts are
 // tested without the simulator's start-up time.
@@ -30,12 +30,12 @@ describe('simulation sessions with a stand-in maa-sim', () => {
     chmodSync(fake, 0o755);
     await s.server.close();
     const { startIdeServer } = await import('../src/index.js');
-    s.server = await startIdeServer({ workspace: s.workspace, port: 0, maaSim: fake, simReadyTimeoutMs });
+    s.server = await startIdeServer({ workspace: s.workspace, port: 0, token: TEST_TOKEN, maaSim: fake, simReadyTimeoutMs });
     return s;
   }
 
   const start = (s: TestSite) =>
-    fetch(s.url('/api/sim/start'), { method: 'POST', body: JSON.stringify({ app: 'toast-service/TR.arcapp', platform: 'timesync', mode: 'lockstep' }) });
+    authFetch(s.url('/api/sim/start'), { method: 'POST', body: JSON.stringify({ app: 'toast-service/TR.arcapp', platform: 'timesync', mode: 'lockstep' }) });
 
   it('reports a simulator that exits before it is ready, with the log tail', async () => {
     site = await siteWith('echo "loading $2" >&2; echo "boom: no scene" >&2; exit 3');
@@ -45,7 +45,7 @@ describe('simulation sessions with a stand-in maa-sim', () => {
     expect(body.error).toContain('exit code 3');
     expect(body.error).toContain('boom: no scene');
     expect(body.log).toContain('boom: no scene');
-    const status = await json<{ running: boolean; exitCode: number; log: string[] }>(await fetch(site.url('/api/sim/status')));
+    const status = await json<{ running: boolean; exitCode: number; log: string[] }>(await authFetch(site.url('/api/sim/status')));
     expect(status.running).toBe(false);
     expect(status.exitCode).toBe(3);
     expect(status.log.join('\n')).toContain('boom: no scene');
@@ -56,7 +56,7 @@ describe('simulation sessions with a stand-in maa-sim', () => {
     const res = await start(site);
     expect(res.status).toBe(504);
     expect((await json(res))['error']).toContain('still loading');
-    expect((await json(await fetch(site.url('/api/sim/status'))))['running']).toBe(false);
+    expect((await json(await authFetch(site.url('/api/sim/status'))))['running']).toBe(false);
   });
 
   it('reports a crash after the start and keeps serving', async () => {
@@ -65,15 +65,15 @@ describe('simulation sessions with a stand-in maa-sim', () => {
     );
     const res = await start(site);
     expect(res.status, JSON.stringify(await res.clone().json())).toBe(200);
-    let status = await json<{ running: boolean; exitCode?: number; log: string[] }>(await fetch(site.url('/api/sim/status')));
+    let status = await json<{ running: boolean; exitCode?: number; log: string[] }>(await authFetch(site.url('/api/sim/status')));
     for (let i = 0; i < 50 && status.running; i++) {
       await new Promise((r) => setTimeout(r, 100));
-      status = await json(await fetch(site.url('/api/sim/status')));
+      status = await json(await authFetch(site.url('/api/sim/status')));
     }
     expect(status.running).toBe(false);
     expect(status.exitCode).toBe(1);
     expect(status.log.join('\n')).toContain('Traceback: oops');
-    expect((await fetch(site.url('/sim/viser/'))).status).toBe(502);
-    expect((await fetch(site.url('/api/files'))).status).toBe(200);
+    expect((await authFetch(site.url('/sim/viser/'))).status).toBe(502);
+    expect((await authFetch(site.url('/api/files'))).status).toBe(200);
   });
 });

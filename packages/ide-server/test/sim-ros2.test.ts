@@ -7,7 +7,7 @@ import WebSocket from 'ws';
 import { HttpError } from '../src/http-util.js';
 import { findInterfacePackages, Ros2Environment } from '../src/ros2-environment.js';
 import { SimSessions } from '../src/sim-session.js';
-import { json, repo, startSite, type TestSite } from './helpers.js';
+import { authFetch, BEARER, json, repo, startSite, type TestSite } from './helpers.js';
 
 const ROS2_VENV = path.join(repo, 'packages', 'generators-python', '.venv-ros2');
 const SCRIPTS = path.join(repo, 'packages', 'generators-python', 'scripts');
@@ -24,7 +24,7 @@ const LONG = 180_000;
 /** A POST without fetch's 300 s header timeout: a cold start sets up the venv first (minutes). */
 function post(url: string, body: unknown): Promise<{ status: number; body: Record<string, unknown> }> {
   return new Promise((resolve, reject) => {
-    const req = request(url, { method: 'POST', headers: { 'Content-Type': 'application/json' } }, (res) => {
+    const req = request(url, { method: 'POST', headers: { 'Content-Type': 'application/json', ...BEARER } }, (res) => {
       let text = '';
       res.setEncoding('utf8');
       res.on('data', (c: string) => (text += c));
@@ -44,7 +44,7 @@ interface RosbridgeMessage {
 
 /** A rosbridge v2 client with request/answer calls. */
 async function rosbridge(url: string): Promise<{ ws: WebSocket; call(service: string): Promise<RosbridgeMessage> }> {
-  const ws = new WebSocket(url);
+  const ws = new WebSocket(url, { headers: BEARER });
   const waiting = new Map<string, (m: RosbridgeMessage) => void>();
   ws.on('message', (data) => {
     const m = JSON.parse(String(data)) as RosbridgeMessage;
@@ -84,14 +84,14 @@ describe.skipIf(!haveVenv || switchedOff)(`ROS 2 simulation session (rospython i
       const t0 = Date.now();
       const started = await post(site.url('/api/sim/start'), { app: APP, platform: 'rospython', speed: 1 });
       const startSeconds = (Date.now() - t0) / 1000;
-      const status = await json<{ running: boolean; mode: string; log: string[] }>(await fetch(site.url('/api/sim/status')));
+      const status = await json<{ running: boolean; mode: string; log: string[] }>(await authFetch(site.url('/api/sim/status')));
       expect(started.status, `${JSON.stringify(started.body)}\n${status.log.join('\n')}`).toBe(200);
       expect(started.body).toMatchObject({ ok: true, mode: 'ros2', rosbridge: '/sim/rosbridge' });
       expect(status).toMatchObject({ running: true, mode: 'ros2', platform: 'rospython' });
       expect(status.log.join('\n')).toContain('maa-ide: toast_service_robot_interfaces is installed');
 
       const deployment = JSON.parse(
-        await (await fetch(site.url(`/api/generated/file?app=${encodeURIComponent(APP)}&platform=rospython&path=toast_service_robot/deployment.json`))).text(),
+        await (await authFetch(site.url(`/api/generated/file?app=${encodeURIComponent(APP)}&platform=rospython&path=toast_service_robot/deployment.json`))).text(),
       ) as { nodes: Array<{ name: string; namespace: string }> };
       const expected = deployment.nodes.map((n) => `${n.namespace}/${n.name}`).sort();
       expect(expected.length).toBeGreaterThan(1);
@@ -121,10 +121,10 @@ describe.skipIf(!haveVenv || switchedOff)(`ROS 2 simulation session (rospython i
 
       const stopped = await post(site.url('/api/sim/stop'), {});
       expect(stopped.body).toEqual({ ok: true });
-      const after = await json<{ running: boolean; exitCode: number; log: string[] }>(await fetch(site.url('/api/sim/status')));
+      const after = await json<{ running: boolean; exitCode: number; log: string[] }>(await authFetch(site.url('/api/sim/status')));
       expect(after.running).toBe(false);
       expect(after.exitCode, after.log.join('\n')).toBe(0);
-      expect((await fetch(site.url('/sim/viser/'))).status).toBe(502);
+      expect((await authFetch(site.url('/sim/viser/'))).status).toBe(502);
     },
     LONG,
   );
@@ -216,7 +216,7 @@ describe('ROS 2 environment preparation with stand-in scripts', () => {
       setupScript: script('slow-setup-2.sh', 'echo "setup: downloading"; sleep 60'),
       installScript: script('noop-2.sh', 'true'),
     });
-    const sims = new SimSessions(path.join(dir, 'no-lockstep-maa-sim'), 90_000, env);
+    const sims = new SimSessions(path.join(dir, 'no-lockstep-maa-sim'), { readyTimeoutMs: 90_000 }, env);
     const t0 = Date.now();
     const starting = sims.start({ app: 'a/A.arcapp', platform: 'rospython', mode: 'ros2', platformDir: root }).catch((e: unknown) => e);
     for (let i = 0; i < 50 && !sims.status().log.includes('setup: downloading'); i++) await new Promise((r) => setTimeout(r, 100));
@@ -247,11 +247,11 @@ describe('ROS 2 environment preparation with stand-in scripts', () => {
       expect(String(res.body['error'])).toContain('building the interface package toast_service_robot_interfaces failed');
       expect(String(res.body['error'])).toContain('has no rclpy');
       expect((res.body['log'] as string[]).join('\n')).toContain('has no rclpy');
-      const status = await json<{ running: boolean; preparing?: boolean; log: string[] }>(await fetch(site.url('/api/sim/status')));
+      const status = await json<{ running: boolean; preparing?: boolean; log: string[] }>(await authFetch(site.url('/api/sim/status')));
       expect(status.running).toBe(false);
       expect(status.preparing).toBeUndefined();
       expect(status.log.join('\n')).toContain('has no rclpy');
-      expect((await fetch(site.url('/api/files'))).status).toBe(200);
+      expect((await authFetch(site.url('/api/files'))).status).toBe(200);
     } finally {
       await site.dispose();
     }

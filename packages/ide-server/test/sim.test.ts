@@ -2,7 +2,7 @@ import { existsSync } from 'node:fs';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import WebSocket from 'ws';
-import { json, repo, startSite, type TestSite } from './helpers.js';
+import { authFetch, BEARER, json, repo, startSite, type TestSite } from './helpers.js';
 
 const MAA_SIM = path.join(repo, 'sim-server', '.venv', 'bin', 'maa-sim');
 const haveSim = existsSync(MAA_SIM);
@@ -21,7 +21,7 @@ interface RosbridgeMessage {
 /** A rosbridge v2 client over the backend's proxy that waits for the first message matching a predicate. */
 function rosbridge(url: string): Promise<{ ws: WebSocket; next(match: (m: RosbridgeMessage) => boolean): Promise<RosbridgeMessage> }> {
   return new Promise((resolve, reject) => {
-    const ws = new WebSocket(url);
+    const ws = new WebSocket(url, { headers: BEARER });
     const waiting: Array<{ match: (m: RosbridgeMessage) => boolean; done: (m: RosbridgeMessage) => void }> = [];
     ws.on('message', (data) => {
       const m = JSON.parse(String(data)) as RosbridgeMessage;
@@ -53,7 +53,7 @@ describe.skipIf(!haveSim)(`simulation session${haveSim ? '' : ` (skipped: ${MAA_
   });
   afterAll(() => site?.dispose());
 
-  const start = (body: unknown) => fetch(site.url('/api/sim/start'), { method: 'POST', body: JSON.stringify(body) });
+  const start = (body: unknown) => authFetch(site.url('/api/sim/start'), { method: 'POST', body: JSON.stringify(body) });
 
   it('refuses a platform of the wrong kind for the mode', async () => {
     const res = await start({ app: APP, platform: 'rospython', mode: 'lockstep', speed: 1 });
@@ -69,7 +69,7 @@ describe.skipIf(!haveSim)(`simulation session${haveSim ? '' : ` (skipped: ${MAA_
     expect(res.status, JSON.stringify(answer)).toBe(200);
     expect(answer).toMatchObject({ ok: true, mode: 'lockstep', rosbridge: '/sim/rosbridge', viser: '/sim/viser/' });
 
-    const status = await json(await fetch(site.url('/api/sim/status')));
+    const status = await json(await authFetch(site.url('/api/sim/status')));
     expect(status).toMatchObject({ running: true, session: answer['session'], mode: 'lockstep', app: APP, platform: 'timesync' });
 
     const client = await rosbridge(site.url('/sim/rosbridge').replace(/^http/, 'ws'));
@@ -85,27 +85,27 @@ describe.skipIf(!haveSim)(`simulation session${haveSim ? '' : ` (skipped: ${MAA_
       client.ws.close();
     }
 
-    const viser = await fetch(site.url('/sim/viser/'));
+    const viser = await authFetch(site.url('/sim/viser/'));
     expect(viser.status).toBe(200);
     expect(viser.headers.get('content-type')).toContain('text/html');
     expect(await viser.text()).toContain('<title>Viser</title>');
-    const redirect = await fetch(site.url('/sim/viser'), { redirect: 'manual' });
+    const redirect = await authFetch(site.url('/sim/viser'), { redirect: 'manual' });
     expect(redirect.status).toBe(301);
     expect(redirect.headers.get('location')).toBe('/sim/viser/');
     // viser's client opens its WebSocket at the page URL without the trailing slash.
-    const viserWs = new WebSocket(site.url('/sim/viser').replace(/^http/, 'ws'), ['viser-v1']);
+    const viserWs = new WebSocket(site.url('/sim/viser').replace(/^http/, 'ws'), ['viser-v1'], { headers: BEARER });
     await new Promise<void>((resolve, reject) => {
       viserWs.once('open', () => resolve());
       viserWs.once('error', reject);
     });
     viserWs.close();
 
-    const stopped = await fetch(site.url('/api/sim/stop'), { method: 'POST' });
+    const stopped = await authFetch(site.url('/api/sim/stop'), { method: 'POST' });
     expect(await json(stopped)).toEqual({ ok: true });
-    const after = await json<{ running: boolean; exitCode: number; log: string[] }>(await fetch(site.url('/api/sim/status')));
+    const after = await json<{ running: boolean; exitCode: number; log: string[] }>(await authFetch(site.url('/api/sim/status')));
     expect(after.running).toBe(false);
     expect(after.exitCode).toBe(0);
     expect(after.log.some((l) => l.includes('"event": "finished"'))).toBe(true);
-    expect((await fetch(site.url('/sim/viser/'))).status).toBe(502);
+    expect((await authFetch(site.url('/sim/viser/'))).status).toBe(502);
   });
 });

@@ -1,7 +1,7 @@
 import { mkdirSync, symlinkSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { json, rawGet, startSite, type TestSite } from './helpers.js';
+import { authFetch, json, rawGet, startSite, TEST_TOKEN, type TestSite } from './helpers.js';
 
 describe('static serving of the built app', () => {
   let site: TestSite;
@@ -20,17 +20,17 @@ describe('static serving of the built app', () => {
     symlinkSync(path.join(site.dir, 'secret.txt'), path.join(app, 'leak.txt'));
     await site.server.close();
     const { startIdeServer } = await import('../src/index.js');
-    site.server = await startIdeServer({ workspace: site.workspace, port: 0, appDir: app });
+    site.server = await startIdeServer({ workspace: site.workspace, port: 0, token: TEST_TOKEN, appDir: app });
   });
   afterAll(() => site.dispose());
 
   it('serves index.html for / with revalidation', async () => {
-    const res = await fetch(site.url('/'));
+    const res = await authFetch(site.url('/'));
     expect(res.status).toBe(200);
     expect(res.headers.get('content-type')).toBe('text/html; charset=utf-8');
     expect(res.headers.get('cache-control')).toBe('no-cache');
     expect(await res.text()).toContain('<title>MAA</title>');
-    const again = await fetch(site.url('/'), { headers: { 'If-None-Match': res.headers.get('etag')! } });
+    const again = await authFetch(site.url('/'), { headers: { 'If-None-Match': res.headers.get('etag')! } });
     expect(again.status).toBe(304);
   });
 
@@ -45,43 +45,43 @@ describe('static serving of the built app', () => {
     ['font.woff2', 'font/woff2'],
     ['blob.bin', 'application/octet-stream'],
   ])('serves assets/%s as %s, cached for good', async (name, type) => {
-    const res = await fetch(site.url(`/assets/${name}`));
+    const res = await authFetch(site.url(`/assets/${name}`));
     expect(res.status).toBe(200);
     expect(res.headers.get('content-type')).toBe(type);
     expect(res.headers.get('cache-control')).toContain('immutable');
   });
 
   it('answers 404 for missing files, traversal and symlinks leading out; 405 for other methods', async () => {
-    expect((await fetch(site.url('/assets/nope.js'))).status).toBe(404);
-    expect((await fetch(site.url('/leak.txt'))).status).toBe(404);
+    expect((await authFetch(site.url('/assets/nope.js'))).status).toBe(404);
+    expect((await authFetch(site.url('/leak.txt'))).status).toBe(404);
     // Dot segments are resolved against the root of the URL (never above it), so these miss.
     for (const raw of ['/assets/%2e%2e/%2e%2e/secret.txt', '/../secret.txt', '/assets/..%2f..%2fsecret.txt']) {
       const res = await rawGet(site.server.url, raw);
       expect(res.status, raw).toBeGreaterThanOrEqual(400);
       expect(res.body, raw).not.toContain('TOP-SECRET-CONTENT');
     }
-    const post = await fetch(site.url('/'), { method: 'POST' });
+    const post = await authFetch(site.url('/'), { method: 'POST' });
     expect(post.status).toBe(405);
     expect((await json(post))['error']).toContain('POST');
   });
 
   it('answers 503 with the build command when the app is not built', async () => {
     const { startIdeServer } = await import('../src/index.js');
-    const bare = await startIdeServer({ workspace: site.workspace, port: 0, appDir: path.join(site.dir, 'missing') });
+    const bare = await startIdeServer({ workspace: site.workspace, port: 0, token: TEST_TOKEN, appDir: path.join(site.dir, 'missing') });
     try {
-      const res = await fetch(new URL('/', bare.url));
+      const res = await authFetch(new URL('/', bare.url));
       expect(res.status).toBe(503);
       expect(await res.text()).toContain('npm run build -w @maa/ide-web');
-      expect((await fetch(new URL('/api/files', bare.url))).status).toBe(200);
+      expect((await authFetch(new URL('/api/files', bare.url))).status).toBe(200);
     } finally {
       await bare.close();
     }
   });
 
   it('answers 502 on /sim/... while no simulation runs', async () => {
-    const res = await fetch(site.url('/sim/viser/'));
+    const res = await authFetch(site.url('/sim/viser/'));
     expect(res.status).toBe(502);
     expect((await json(res))['error']).toContain('no simulation session');
-    expect((await json(await fetch(site.url('/api/sim/status'))))).toEqual({ running: false, log: [] });
+    expect((await json(await authFetch(site.url('/api/sim/status'))))).toEqual({ running: false, log: [] });
   });
 });

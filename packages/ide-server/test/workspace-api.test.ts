@@ -1,7 +1,7 @@
 import { existsSync, mkdirSync, readFileSync, symlinkSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { json, q, rawGet, startSite, type TestSite } from './helpers.js';
+import { authFetch, json, q, rawGet, startSite, type TestSite } from './helpers.js';
 
 describe('workspace file API', () => {
   let site: TestSite;
@@ -26,7 +26,7 @@ describe('workspace file API', () => {
   });
   afterAll(() => site.dispose());
 
-  const file = (p: string, init?: RequestInit) => fetch(site.url(`/api/file?${q({ path: p })}`), init);
+  const file = (p: string, init?: RequestInit) => authFetch(site.url(`/api/file?${q({ path: p })}`), init);
 
   it.each([
     ['../x.txt', 400, "'..' segments"],
@@ -53,7 +53,7 @@ describe('workspace file API', () => {
   });
 
   it('decodes %2e%2e/ before checking it', async () => {
-    const res = await fetch(site.url('/api/file?path=%2e%2e/outside/secret.txt'));
+    const res = await authFetch(site.url('/api/file?path=%2e%2e/outside/secret.txt'));
     expect(res.status).toBe(400);
     expect((await json(res))['error']).toContain("'..'");
   });
@@ -114,7 +114,7 @@ describe('workspace file API', () => {
   });
 
   it('lists recursively and sorted, without hidden entries, node_modules or links leading out', async () => {
-    const res = await fetch(site.url('/api/files'));
+    const res = await authFetch(site.url('/api/files'));
     expect(res.status).toBe(200);
     const body = await json<{ root: string; entries: Array<{ path: string; type: string; size?: number }> }>(res);
     expect(body.root).toBe('ws');
@@ -126,20 +126,20 @@ describe('workspace file API', () => {
   });
 
   it('answers malformed requests with JSON 4xx and keeps serving', async () => {
-    let res = await fetch(site.url('/api/nothing'));
+    let res = await authFetch(site.url('/api/nothing'));
     expect(res.status).toBe(404);
     expect((await json(res))['error']).toContain('/api/nothing');
-    res = await fetch(site.url('/api/files'), { method: 'POST' });
+    res = await authFetch(site.url('/api/files'), { method: 'POST' });
     expect(res.status).toBe(405);
     expect(res.headers.get('allow')).toContain('GET');
     for (const body of ['{', '[]', '"x"', '{"app": 3}', '{}']) {
-      res = await fetch(site.url('/api/generate'), { method: 'POST', body });
+      res = await authFetch(site.url('/api/generate'), { method: 'POST', body });
       expect(res.status, body).toBe(400);
       expect(typeof (await json(res))['error']).toBe('string');
     }
     // A raw request with a broken URL.
     expect((await rawGet(site.server.url, '/api/file?path=%E0%A4%A')).status).toBe(404);
     expect((await rawGet(site.server.url, '/api/file?path=%2e%2e%2Fsecret')).status).toBe(400);
-    expect((await fetch(site.url('/api/files'))).status).toBe(200);
+    expect((await authFetch(site.url('/api/files'))).status).toBe(200);
   });
 });
