@@ -9,6 +9,7 @@ import {
 } from '../src/index.js';
 import { generate, type GenerateOptions, type GenerateResult } from '../src/node.js';
 import { createTestFamily } from './helpers.js';
+import { STATE_DIR } from '../src/output/layout.js';
 
 /**
  * Small in-test generators (the real ones come with the Python generator families) and a
@@ -229,7 +230,11 @@ export class Workspace {
     }
 }
 
-/** Every file below a folder with its content (and folders as entries), for before/after comparisons. */
+/**
+ * Every file below a folder with its content (and folders as entries), for before/after
+ * comparisons. Platform links are followed; the writer's hidden version folders (`.maa-gen`,
+ * whose names differ per generation) are left out: what a reader sees is compared.
+ */
 export function snapshot(dir: string): Record<string, string> {
     const out: Record<string, string> = {};
     const walk = (d: string): void => {
@@ -240,6 +245,7 @@ export function snapshot(dir: string): Record<string, string> {
             return;
         }
         for (const e of entries) {
+            if (e === STATE_DIR) continue;
             const p = path.join(d, e);
             const rel = path.relative(dir, p);
             if (statSync(p).isDirectory()) {

@@ -14,7 +14,9 @@ import type {
 import type { GeneratorManifest } from '../manifest/manifest.js';
 import type { ArchitectureModel, BehaviorView, ComponentView } from '../model/architecture.js';
 import { OutputCollector, OutputError, type FinishedFile } from '../output/file-builder.js';
-import { OutputTransaction, planOutput, sha256, TRACE_FILE, type WritePlan } from '../output/writer.js';
+import { OutputWriteError } from '../output/layout.js';
+import { OutputTransaction } from '../output/transaction.js';
+import { planOutput, sha256, TRACE_FILE, type WritePlan } from '../output/writer.js';
 import { discoverGenerators, installationRoot } from '../registry/discovery.js';
 import type { GeneratorRegistry, RegisteredGenerator } from '../registry/registry.js';
 import { standardRule } from '../rules/standard-rules.js';
@@ -59,6 +61,8 @@ export interface GenerateOptions {
     /** Loads a generator's entry module (default: dynamic import). */
     readonly loadModule?: (url: string) => Promise<unknown>;
     readonly onProgress?: (progress: GenerationProgress) => void;
+    /** How paths appear in messages about the output (default: absolute), e.g. relative to the current folder. */
+    readonly displayPath?: (absolutePath: string) => string;
 }
 
 export interface PlatformResult {
@@ -269,37 +273,56 @@ export async function generate(options: GenerateOptions): Promise<GenerateResult
         plans.push({ platform: p, outDir: path.join(path.resolve(options.outDir), p.name), files, generators: counts });
     }
 
-    // Trace files, then one transaction over all output folders.
+    // Trace files, then one transaction over all output folders. The output root is locked and
+    // cleaned up after killed runs before anything of it is read.
+    const outRoot = path.resolve(options.outDir);
     const written: Array<{ plan: WritePlan; entry: (typeof plans)[number] }> = [];
-    for (const entry of plans) {
-        t = performance.now();
-        const trace = traceFile(options.services, modelRoot, entry.outDir, infoOf(entry.platform), entry.files, selections.get(entry.platform)!, instances);
-        timings.trace += performance.now() - t;
-        t = performance.now();
-        written.push({ plan: planOutput(entry.outDir, entry.files, trace), entry });
-        timings.write += performance.now() - t;
-    }
-    for (const { plan, entry } of written) {
-        for (const d of plan.droppedRegions) {
-            diagnostics.push(at(modelRoot, appFile, entry.platform.$cstNode?.range, 'error', GenCodes.ProtectedRegionDropped,
-                `Platform '${entry.platform.name}': ${path.join(entry.outDir, d.path)} has user content in protected region${d.regions.length > 1 ? 's' : ''} ${d.regions.map((r) => `'${r}'`).join(', ')}, which the regenerated file no longer has; move that content and run again (nothing was written).`));
-        }
-        for (const stale of plan.keptStale) {
-            diagnostics.push(at(modelRoot, appFile, entry.platform.$cstNode?.range, 'warning', GenCodes.StaleFileKept,
-                `Platform '${entry.platform.name}': ${path.join(entry.outDir, stale)} is no longer generated but holds user content in protected regions; it was kept (delete it when done).`));
-        }
-    }
-    if (diagnostics.some((d) => d.severity === 'error')) return fail();
-    t = performance.now();
-    progress({ phase: 'write', message: `writing ${written.reduce((n, w) => n + w.plan.write.length, 0)} files` });
-    const tx = new OutputTransaction();
-    try {
-        for (const w of written) tx.stage(w.plan);
-        tx.commit();
-    } catch (e) {
-        diagnostics.push(at(modelRoot, appFile, undefined, 'error', GenCodes.WriteFailed, `Cannot write the output: ${(e as Error).message}. Nothing was changed.`));
-        timings.write += performance.now() - t;
+    const shown = options.displayPath ?? ((p: string) => p);
+    const writeFailed = (e: unknown): GenerateResult => {
+        const problem = e instanceof OutputWriteError ? `${shown(e.path)}: ${e.reason}` : (e as Error).message;
+        diagnostics.push(at(modelRoot, appFile, undefined, 'error', GenCodes.WriteFailed, `Cannot write the output: ${problem}. Nothing was changed.`));
         return fail();
+    };
+    t = performance.now();
+    let tx: OutputTransaction;
+    try {
+        tx = OutputTransaction.open(outRoot);
+    } catch (e) {
+        timings.write += performance.now() - t;
+        return writeFailed(e);
+    }
+    timings.write += performance.now() - t;
+    try {
+        for (const entry of plans) {
+            t = performance.now();
+            const trace = traceFile(options.services, modelRoot, entry.outDir, infoOf(entry.platform), entry.files, selections.get(entry.platform)!, instances);
+            timings.trace += performance.now() - t;
+            t = performance.now();
+            written.push({ plan: planOutput(entry.outDir, entry.files, trace), entry });
+            timings.write += performance.now() - t;
+        }
+        for (const { plan, entry } of written) {
+            for (const d of plan.droppedRegions) {
+                diagnostics.push(at(modelRoot, appFile, entry.platform.$cstNode?.range, 'error', GenCodes.ProtectedRegionDropped,
+                    `Platform '${entry.platform.name}': ${shown(path.join(entry.outDir, d.path))} has user content in protected region${d.regions.length > 1 ? 's' : ''} ${d.regions.map((r) => `'${r}'`).join(', ')}, which the regenerated file no longer has; move that content and run again (nothing was written).`));
+            }
+            for (const stale of plan.keptStale) {
+                diagnostics.push(at(modelRoot, appFile, entry.platform.$cstNode?.range, 'warning', GenCodes.StaleFileKept,
+                    `Platform '${entry.platform.name}': ${shown(path.join(entry.outDir, stale))} is no longer generated but holds user content in protected regions; it was kept (delete it when done).`));
+            }
+        }
+        if (diagnostics.some((d) => d.severity === 'error')) return fail();
+        t = performance.now();
+        progress({ phase: 'write', message: `writing ${written.reduce((n, w) => n + w.plan.write.length, 0)} files` });
+        try {
+            for (const w of written) tx.stage(w.plan);
+            tx.commit();
+        } catch (e) {
+            timings.write += performance.now() - t;
+            return writeFailed(e);
+        }
+    } finally {
+        tx.close();
     }
     timings.write += performance.now() - t;
     return {

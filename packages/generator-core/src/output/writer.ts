@@ -1,7 +1,11 @@
-import { createHash, randomBytes } from 'node:crypto';
-import { existsSync, mkdirSync, readFileSync, readdirSync, renameSync, rmSync, rmdirSync, statSync, writeFileSync } from 'node:fs';
+import { createHash } from 'node:crypto';
+import { readFileSync, statSync } from 'node:fs';
 import path from 'node:path';
 import { mergeProtectedRegions, protectedRegions } from './protected-regions.js';
+
+// The transaction that writes a plan lives in transaction.ts (re-exported here for callers of the writer).
+export { OutputTransaction } from './transaction.js';
+export { OutputWriteError } from './layout.js';
 
 /** The trace file every generation writes into its output folder. */
 export const TRACE_FILE = '.maa-trace.json';
@@ -110,126 +114,5 @@ function readIfFile(file: string): string | undefined {
         return readFileSync(file, 'utf8');
     } catch {
         return undefined;
-    }
-}
-
-/**
- * Writes planned outputs as one transaction: every file is first staged next to the output
- * folder (same file system), then moved into place by renames; replaced and removed files are
- * moved aside first. If anything fails, every output folder of the transaction is restored
- * to its previous state. A new output folder appears in one rename.
- */
-export class OutputTransaction {
-    private readonly staged: Array<{ plan: WritePlan; stage: string; backup: string; fresh: boolean }> = [];
-    private readonly undo: Array<() => void> = [];
-
-    /** Stages a plan (writes its files to a staging folder; the output folder is not touched). */
-    stage(plan: WritePlan): void {
-        const parent = path.dirname(path.resolve(plan.outDir));
-        mkdirSync(parent, { recursive: true });
-        const tag = `${path.basename(plan.outDir)}.${process.pid}.${randomBytes(4).toString('hex')}`;
-        const stage = path.join(parent, `.maa-staging-${tag}`);
-        const backup = path.join(parent, `.maa-backup-${tag}`);
-        const fresh = !existsSync(plan.outDir);
-        try {
-            mkdirSync(stage);
-            for (const f of plan.write) {
-                const file = path.join(stage, ...f.path.split('/'));
-                mkdirSync(path.dirname(file), { recursive: true });
-                writeFileSync(file, f.content);
-            }
-        } catch (e) {
-            rmSync(stage, { recursive: true, force: true });
-            this.abort();
-            throw e;
-        }
-        this.staged.push({ plan, stage, backup, fresh });
-    }
-
-    /** Moves every staged file into place; on failure restores everything and rethrows. */
-    commit(): void {
-        try {
-            for (const s of this.staged) this.commitOne(s);
-        } catch (e) {
-            this.rollback();
-            throw e;
-        } finally {
-            for (const s of this.staged) {
-                rmSync(s.stage, { recursive: true, force: true });
-                rmSync(s.backup, { recursive: true, force: true });
-            }
-        }
-    }
-
-    /** Discards staged files (nothing was moved into place). */
-    abort(): void {
-        for (const s of this.staged) rmSync(s.stage, { recursive: true, force: true });
-        this.staged.length = 0;
-    }
-
-    private commitOne(s: { plan: WritePlan; stage: string; backup: string; fresh: boolean }): void {
-        const out = s.plan.outDir;
-        if (s.fresh) {
-            if (existsSync(out)) throw new Error(`output folder ${out} appeared while generating`);
-            renameSync(s.stage, out);
-            this.undo.push(() => renameSync(out, s.stage));
-            return;
-        }
-        const moveAside = (rel: string): void => {
-            const target = path.join(out, ...rel.split('/'));
-            if (!existsSync(target)) return;
-            const aside = path.join(s.backup, ...rel.split('/'));
-            mkdirSync(path.dirname(aside), { recursive: true });
-            renameSync(target, aside);
-            this.undo.push(() => {
-                mkdirSync(path.dirname(target), { recursive: true });
-                renameSync(aside, target);
-            });
-        };
-        for (const rel of s.plan.remove) moveAside(rel);
-        for (const f of s.plan.write) {
-            moveAside(f.path);
-            const target = path.join(out, ...f.path.split('/'));
-            const created = mkdirs(path.dirname(target));
-            this.undo.push(() => {
-                for (const d of created.reverse()) tryRmdir(d);
-            });
-            renameSync(path.join(s.stage, ...f.path.split('/')), target);
-            this.undo.push(() => rmSync(target, { force: true }));
-        }
-        // Folders that removing stale files emptied.
-        for (const rel of s.plan.remove) {
-            let dir = path.dirname(path.join(out, ...rel.split('/')));
-            while (dir.startsWith(out + path.sep) && tryRmdir(dir)) dir = path.dirname(dir);
-        }
-    }
-
-    private rollback(): void {
-        for (const u of this.undo.reverse()) {
-            try {
-                u();
-            } catch {
-                // best effort: keep restoring the rest
-            }
-        }
-        this.undo.length = 0;
-    }
-}
-
-/** Creates missing folders, returning those it created (outermost first). */
-function mkdirs(dir: string): string[] {
-    const missing: string[] = [];
-    for (let d = dir; !existsSync(d); d = path.dirname(d)) missing.unshift(d);
-    for (const d of missing) mkdirSync(d);
-    return missing;
-}
-
-function tryRmdir(dir: string): boolean {
-    try {
-        if (readdirSync(dir).length > 0) return false;
-        rmdirSync(dir);
-        return true;
-    } catch {
-        return false;
     }
 }
