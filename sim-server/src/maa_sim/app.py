@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal
 
+from . import interface
 from .access import AccessPolicy, resolve_token
 from .deployment import Deployment
 from .lockstep import LockstepPackage
@@ -99,6 +100,7 @@ class SimApp:
                     on_publish=self._on_client_publish if self.options.mode == "lockstep" else None,
                     latched=self._latched,
                     access=self._access(),
+                    check_publish=interface.check_client_message,
                 )
                 self.rosbridge.start()
             if self.options.viser_port is not None:
@@ -282,7 +284,9 @@ class SimApp:
             steps = args.get("steps", 1)
             if isinstance(steps, bool) or not isinstance(steps, int):
                 raise ServiceError("steps must be an integer")
-            runner().step(steps)
+            done, interrupted = runner().step(steps)
+            if interrupted:
+                return ok(f"stepped {done} of {steps} period(s); stopped by {interrupted}")
             return ok(f"stepped {steps} period(s)")
 
         def reset(args: JsonMessage) -> JsonMessage:
@@ -310,7 +314,9 @@ class SimApp:
         return {
             "sim/pause": pause,
             "sim/resume": resume,
-            "sim/step": step,
+            # up to 100000 periods (minutes on a slow machine): on a worker thread, so the endpoint
+            # serves every client meanwhile; the reply comes when the step is done or interrupted
+            "sim/step": BlockingService(step),
             "sim/reset": BlockingService(reset),  # restarting nodes takes seconds
             "sim/set_speed": set_speed,
             "sim/get_status": get_status,

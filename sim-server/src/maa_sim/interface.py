@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from typing import Any, Literal
 
 from .messages import JsonMessage, MessageError
-from .world import ARM_JOINTS, ToastKitchen
+from .world import ARM_JOINTS, JOINT_NAMES, TOAST_COLORS, ToastKitchen
 
 Direction = Literal["sim", "controller"]
 
@@ -134,3 +134,25 @@ def apply_command(world: ToastKitchen, topic: str, msg: JsonMessage) -> None:
         raise
     except ValueError as exc:
         raise MessageError(str(exc)) from None
+
+
+def check_client_message(topic: str, msg: JsonMessage) -> None:
+    """A client's message (rosbridge) on one of the simulator's own topics must look like the
+    simulator's: the nodes and the lock-step controller read these topics trusting their shape
+    (all four joints, one value per joint), as they may. MessageError says what is wrong.
+    The message has been checked against its type already; other topics pass unchanged."""
+    if topic == CLOCK.name:
+        raise MessageError("/clock is the simulator's: a client cannot set the simulation time")
+    if topic == JOINT_STATES.name:
+        names = msg.get("name")
+        if not isinstance(names, list) or sorted(names) != sorted(JOINT_NAMES):
+            raise MessageError(f"/joint_states: name must list each of {', '.join(JOINT_NAMES)} once")
+        for field in ("position", "velocity"):
+            values = msg.get(field)
+            if not isinstance(values, list) or len(values) != len(names):
+                raise MessageError(f"/joint_states: {field} needs one value per name ({len(names)})")
+        effort = msg.get("effort")
+        if not isinstance(effort, list) or len(effort) not in (0, len(names)):
+            raise MessageError("/joint_states: effort needs one value per name, or none")
+    elif topic == COLOR.name and msg.get("data") not in TOAST_COLORS:
+        raise MessageError(f"/sensors/color: data must be one of {', '.join(TOAST_COLORS)}")

@@ -31,7 +31,7 @@ from websockets.exceptions import ConnectionClosed
 from websockets.http11 import Request, Response
 
 from .access import AccessPolicy, resolve_token
-from .messages import JsonMessage, MessageError, message_details, normalize_type
+from .messages import JsonMessage, MessageError, message_details, normalize_type, validate
 from .transport import Subscription, Transport
 
 #: Frames larger than this get a status error (bytes).
@@ -233,6 +233,7 @@ class RosbridgeServer:
         on_publish: Callable[[str, JsonMessage], bool] | None = None,
         latched: Callable[[str], JsonMessage | None] | None = None,
         access: AccessPolicy | None = None,
+        check_publish: Callable[[str, JsonMessage], None] | None = None,
     ) -> None:
         self.transport = transport
         self.host = host
@@ -250,6 +251,8 @@ class RosbridgeServer:
         self.services.update(services or {})
         #: Called before a client's message is published; returning True means it was consumed.
         self.on_publish = on_publish
+        #: Checks a client's message (already fitted to its type) beyond its type; raises MessageError.
+        self.check_publish = check_publish
         #: The current message of a latched topic (None: none), sent to a client when it subscribes.
         self.latched = latched
         self.clients: set[_Client] = set()
@@ -451,8 +454,14 @@ class RosbridgeServer:
         msg = request.get("msg", {})
         if not isinstance(msg, dict):
             raise RequestError("field 'msg' must be an object")
-        if topic not in client.advertised and self.transport.topic_type(topic) is None:
+        type_name = client.advertised.get(topic) or self.transport.topic_type(topic)
+        if type_name is None:
             raise RequestError(f"{topic} is not advertised and its type is unknown")
+        # Checked here, whatever the transport, before anything reaches the application: wrong
+        # or unknown fields are refused, missing ones take their defaults (as in ROS 2).
+        checked = validate(type_name, msg)
+        if self.check_publish is not None:
+            self.check_publish(topic, checked)
         if self.on_publish is not None and self.on_publish(topic, msg):
             return
         self.transport.publish(topic, msg)
@@ -528,6 +537,10 @@ class RosbridgeServer:
             values = handler(args)
         except (ServiceError, MessageError, ValueError, TypeError) as exc:
             self._service_failed(client, request, reply, exc)
+            return
+        except Exception as exc:  # noqa: BLE001 - a caller still gets its service_response
+            self.errors += 1
+            self._service_failed(client, request, reply, RuntimeError(f"internal error: {exc!r}"))
             return
         reply.update(result=True, values=values)
         client.send(reply)

@@ -10,6 +10,7 @@ lock-step controller the runner calls it once per period, in the loop, synchrono
 from __future__ import annotations
 
 import contextlib
+import copy
 import math
 import threading
 import time
@@ -146,6 +147,26 @@ class SimSession:
             self.world.reset(seed)
 
 
+def _snapshot(controller: object) -> dict[str, Any] | None:
+    """A deep copy of a controller's attributes (None when they cannot be copied)."""
+    state = getattr(controller, "__dict__", None)
+    if not isinstance(state, dict):
+        return None
+    try:
+        copied: dict[str, Any] = copy.deepcopy(state)
+    except Exception:  # noqa: BLE001 - locks, sockets, ...: no snapshot, the slice is retried anyway
+        return None
+    return copied
+
+
+def _restore(controller: object, state: dict[str, Any]) -> bool:
+    """Puts a snapshot back in place (the controller object stays the same for its holders)."""
+    current = controller.__dict__
+    current.clear()
+    current.update(state)
+    return True
+
+
 class Runner:
     """Runs a session in a thread: paced (speed > 0) or as fast as possible (speed == 0)."""
 
@@ -176,6 +197,9 @@ class Runner:
         self._rtf_window: deque[tuple[float, float]] = deque(maxlen=100)
         self.injected: dict[str, JsonMessage] = {}
         self._injected_lock = threading.Lock()
+        #: (periods done, periods asked) of the step in progress, None when none is
+        self.stepping: tuple[int, int] | None = None
+        self._step_interrupted = ""
 
     # ----------------------------------------------------------------------------- one period
 
@@ -186,10 +210,8 @@ class Runner:
             with session.lock:
                 inputs = self._inputs if self._inputs is not None else session.observe()
                 with self._injected_lock:
-                    if self.injected:
-                        inputs = {**inputs, **self.injected}
-                        self.injected = {}
-                outputs = normalize_outputs(self.controller.step(inputs))
+                    injected, self.injected = self.injected, {}
+                outputs = self._controller_step(self.controller, inputs, injected)
                 for topic, messages in outputs.items():
                     for msg in messages:
                         self._emit(topic, msg)
@@ -201,6 +223,31 @@ class Runner:
             self.finish("goal reached")
         elif self.max_sim_time is not None and session.world.time >= self.max_sim_time - 1e-9:
             self.finish("time limit reached")
+
+    def _controller_step(
+        self, controller: LockstepController, inputs: dict[str, JsonMessage], injected: dict[str, JsonMessage]
+    ) -> dict[str, list[JsonMessage]]:
+        """One slice of the controller. A slice with a client's injected messages that fails (the
+        message fits its type but not what the application expects, e.g. a KeyError) must not end
+        the simulation: the controller is put back as it was before the slice, the failure is
+        reported, and the slice runs again without the injected messages. A failure without
+        injected messages is the application's own and propagates (the run ends with an error)."""
+        if not injected:
+            return normalize_outputs(controller.step(inputs))
+        saved = _snapshot(controller)
+        try:
+            return normalize_outputs(controller.step({**inputs, **injected}))
+        except Exception as exc:  # noqa: BLE001 - any failure of the application on a client's input
+            restored = saved is not None and _restore(controller, saved)
+            topics = ", ".join(sorted(injected))
+            self.session.report(
+                "error",
+                "injection",
+                f"the application failed on the message injected on {topics} ({type(exc).__name__}: {exc}); "
+                f"the message was dropped"
+                + ("" if restored else " (the application's state could not be saved before the slice)"),
+            )
+        return normalize_outputs(controller.step(inputs))
 
     def _emit(self, topic: str, msg: JsonMessage) -> None:
         """A controller's message: actuator topics reach the session, every topic its observers."""
@@ -229,6 +276,7 @@ class Runner:
     def stop(self) -> None:
         with self._wake:
             self._stop = True
+            self._interrupt_step("the end of the run")
             self._wake.notify_all()
         if self._thread is not None and self._thread is not threading.current_thread():
             self._thread.join(timeout=5)
@@ -275,27 +323,60 @@ class Runner:
     # ----------------------------------------------------------------------------- control services
 
     def pause(self) -> None:
-        """Pauses; when it returns, no period is in progress and none starts until resumed."""
+        """Pauses; when it returns, no period is in progress and none starts until resumed (a step
+        in progress stops too)."""
         with self._wake:
             self.paused = True
+            self._interrupt_step("a pause")
         with self.session.lock:
             pass
 
     def resume(self) -> None:
+        """Continues the loop; a step in progress stops (the loop takes over)."""
         with self._wake:
+            self._interrupt_step("a resume")
             self.paused = False
             self._wake.notify_all()
 
-    def step(self, periods: int = 1) -> None:
-        """Advances by a number of periods while paused (pauses first)."""
-        if periods < 1 or periods > 100_000:
+    def _interrupt_step(self, why: str) -> None:
+        if self.stepping is not None:
+            self._step_interrupted = why
+
+    def step(self, periods: int = 1) -> tuple[int, str]:
+        """Advances by a number of periods while paused (pauses first); returns how many periods
+        it ran and, when it stopped early, why (a pause, resume, reset or stop meanwhile).
+
+        The session lock is taken per period, not for the whole step, so a long step (up to
+        100000 periods, minutes on a slow machine) leaves the other control services and the
+        status answering in between; it runs in its caller's thread. One step at a time: a
+        second one while a step is in progress is refused (ValueError)."""
+        if isinstance(periods, bool) or not isinstance(periods, int) or periods < 1 or periods > 100_000:
             raise ValueError("steps must be between 1 and 100000")
-        self.pause()
-        with self.session.lock:
-            for _ in range(periods):
-                self.cycle()
+        with self._wake:
+            if self.stepping is not None:
+                done, total = self.stepping
+                raise ValueError(f"a step is in progress ({done} of {total} periods); pause to stop it")
+            self.stepping = (0, periods)
+            self._step_interrupted = ""
+            self.paused = True
+        try:
+            for done in range(periods):
+                with self.session.lock:
+                    # checked under the session lock: pause() takes it after setting the flag, so
+                    # no period starts once pause() has returned
+                    if self._step_interrupted:
+                        return done, self._step_interrupted
+                    self.cycle()
+                self.stepping = (done + 1, periods)
+            return periods, ""
+        finally:
+            with self._wake:
+                self.stepping = None
 
     def reset(self, seed: int | None = None) -> None:
+        """Back to the initial scene (see SimSession.reset); a step in progress stops."""
+        with self._wake:
+            self._interrupt_step("a reset")
         with self.session.lock:
             self.session.reset(seed)
             self._inputs = None
@@ -336,4 +417,5 @@ class Runner:
             "toast_level": session.world.toast_level,
             "toast_on_plate": session.world.toast_on_plate(),
             "finished": self.finish_reason,
+            "stepping": list(self.stepping) if self.stepping is not None else None,
         }

@@ -235,7 +235,7 @@ class SceneView:
         return handler
 
     @staticmethod
-    def _guard(action: Callable[[], None]) -> None:
+    def _guard(action: Callable[[], object]) -> None:
         with contextlib.suppress(ValueError):
             action()
 
