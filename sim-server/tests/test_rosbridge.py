@@ -154,7 +154,9 @@ def fuzz_frames(count: int, seed: int) -> list[str | bytes]:
     junk: list[object] = [None, True, -1, 2**70, 1.5, "", "x" * 300, [], {}, [1, [2]], {"a": {"b": None}}]
 
     def frame() -> str | bytes:
-        kind = rng.randrange(10)
+        kind = rng.randrange(14)
+        if kind >= 10:
+            return bad_message_frame(rng, kind)
         if kind == 0:
             text = json.dumps({"op": rng.choice(ops), "topic": "/t"})
             return text[: rng.randrange(1, len(text))]  # truncated JSON
@@ -186,10 +188,90 @@ def fuzz_frames(count: int, seed: int) -> list[str | bytes]:
     return [frame() for _ in range(count)]
 
 
-def test_fuzz_1000_malformed_frames(lockstep_app: SimApp) -> None:
+#: Messages that fit no type, or fit the type but not what the simulator's own topics carry
+#: (the fixture application reads /joint_states trusting every joint is there: `{}` ended the
+#: simulation with a KeyError), on the simulator's topics and on the application's.
+ALL_JOINTS = ["base_yaw", "lift", "finger_inner", "finger_outer"]
+BAD_MESSAGES: list[tuple[str, object]] = [
+    ("/joint_states", {}),
+    ("/joint_states", {"name": ["base_yaw"], "position": [1.0], "velocity": [0.0]}),
+    ("/joint_states", {"name": ALL_JOINTS, "position": [0.0] * 4, "velocity": [0.0]}),
+    ("/joint_states", {"name": [*ALL_JOINTS, "base_yaw"], "position": [0.0] * 5, "velocity": [0.0] * 5}),
+    ("/joint_states", {"name": ALL_JOINTS, "position": [0.0] * 4, "velocity": [0.0] * 4, "effort": [1.0]}),
+    ("/joint_states", {"position": "x"}),
+    ("/joint_states", {"name": [1, 2, 3, 4]}),
+    ("/sensors/color", {"data": "PURPLE"}),
+    ("/sensors/color", {}),
+    ("/sensors/distance", {"data": None}),
+    ("/clock", {"clock": {"sec": 1, "nanosec": 0}}),
+    ("/clock", {}),
+    ("/toast/ctrl/arm", {"data": 5}),
+    ("/toast/arm/status", {"data": None}),
+    ("/toast/arm/status", {"value": "DONE"}),
+    ("/arm/joint_command", {"name": "base_yaw"}),
+    ("/arm/joint_command", {"position": [[1.0]]}),
+    ("/arm/gripper_command", {"data": "open"}),
+    ("/toaster/command", {"data": ["START"]}),
+]
+#: Control services with arguments they refuse.
+BAD_CALLS: list[tuple[str, object]] = [
+    ("/sim/step", {"steps": 0}),
+    ("/sim/step", {"steps": -3}),
+    ("/sim/step", {"steps": 100_001}),
+    ("/sim/step", {"steps": 2.5}),
+    ("/sim/step", {"steps": "10"}),
+    ("/sim/step", {"steps": None}),
+    ("/sim/step", {"steps": True}),
+    ("/sim/set_speed", {"speed": "fast"}),
+    ("/sim/set_speed", {"speed": None}),
+    ("/sim/set_speed", {"speed": -1}),
+    ("/sim/set_speed", {"speed": 1e9}),
+    ("/sim/reset", {"seed": "x"}),
+    ("/sim/reset", {"seed": 1.5}),
+    ("/sim/reset", {"seed": True}),
+    ("rosapi/topic_type", {"topic": 5}),
+    ("rosapi/message_details", {"type": "no/Such"}),
+    ("/sim/pause", "now"),
+    ("/sim/step", [1]),
+]
+
+
+def bad_message_frame(rng: random.Random, kind: int) -> str:
+    if kind == 10 or kind == 11:
+        topic, msg = rng.choice(BAD_MESSAGES)
+        return json.dumps({"op": "publish", "id": f"p{kind}", "topic": topic, "msg": msg})
+    service, args = rng.choice(BAD_CALLS)
+    return json.dumps({"op": "call_service", "id": f"c{kind}", "service": service, "args": args})
+
+
+def test_every_bad_message_is_refused_with_its_reason(lockstep_app: SimApp) -> None:
     assert lockstep_app.rosbridge is not None
     client = Client.of(lockstep_app.rosbridge)
     try:
+        for topic, msg in BAD_MESSAGES:
+            client.send({"op": "publish", "id": "bad", "topic": topic, "msg": msg})
+            reply = client.recv(timeout=30)
+            assert reply["op"] == "status" and reply["level"] == "error" and reply["id"] == "bad", (topic, msg, reply)
+            assert reply["msg"] and "internal error" not in reply["msg"], (topic, msg, reply)
+        # the frame of the report, and a complete joint state, which is taken
+        client.send({"op": "publish", "id": "js", "topic": "/joint_states", "msg": {}})
+        assert "name must list each of base_yaw" in client.recv(timeout=30)["msg"]
+        full = {"name": ALL_JOINTS, "position": [0.0] * 4, "velocity": [0.0] * 4}
+        client.send({"op": "publish", "id": "ok", "topic": "/joint_states", "msg": full})
+        with pytest.raises(TimeoutError):
+            client.recv(timeout=0.5)  # no error for a message that fits
+        assert client.call("/sim/step", {"steps": 20}, timeout=60)["result"] is True
+        assert lockstep_app.runner is not None and not lockstep_app.runner.finished.is_set()
+    finally:
+        client.close()
+
+
+def test_fuzz_1000_malformed_frames(lockstep_app: SimApp) -> None:
+    """Against a running lock-step session: every frame gets its error, the simulation goes on."""
+    assert lockstep_app.rosbridge is not None and lockstep_app.runner is not None
+    client = Client.of(lockstep_app.rosbridge)
+    try:
+        assert client.call("/sim/resume", timeout=30)["result"] is True
         frames = fuzz_frames(1000, seed=1234)
         errors = 0
         for frame in frames:
@@ -207,6 +289,12 @@ def test_fuzz_1000_malformed_frames(lockstep_app: SimApp) -> None:
         fresh = Client.of(lockstep_app.rosbridge)
         assert "/clock" in fresh.call("rosapi/topics")["values"]["topics"]
         fresh.close()
+        # and still simulating: it ran meanwhile, and it steps
+        assert not lockstep_app.runner.finished.is_set(), lockstep_app.runner.finish_reason
+        paused = client.call("/sim/pause", timeout=30)["values"]["status"]
+        assert paused["periods"] > 0 and paused["finished"] == ""
+        stepped = client.call("/sim/step", {"steps": 10}, timeout=60)["values"]["status"]
+        assert stepped["periods"] == paused["periods"] + 10
     finally:
         client.close()
 
