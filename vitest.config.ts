@@ -4,7 +4,7 @@ import { defineConfig } from 'vitest/config';
 // scripts/test-all.mjs). Tests of the CLI start the built `maa-gen` as a child process.
 export default defineConfig({
   test: {
-    include: ['packages/*/test/**/*.test.ts'],
+    include: ['packages/*/test/**/*.test.ts', 'scripts/test/**/*.test.ts'],
     exclude: ['**/node_modules/**', '**/dist/**'],
     testTimeout: 120_000,
     hookTimeout: 120_000,

@@ -3,24 +3,33 @@
 // every Vitest suite of the workspace (vitest.config.ts at the root), the browser end-to-end
 // suite (e2e/), then the Python suites
 // (PYTHON_SUITES below: sim-server, the ROS 2 family with real rclpy, the Python RTEs; each with
-// its own idempotent venv setup, pytest and linters), and closes with one line
-// "tests: N passed, N failed, N skipped" counting everything.
+// its own idempotent venv setup, pytest and linters), and closes with
+//   failures: <every kind of failure, counted and named>     (only when something failed)
+//   tests: N passed, N failed, N skipped
+// where "failed" counts every failure of every kind (failed tests, unhandled errors, test files
+// that did not run, failed hooks, setups, linters, runners that wrote no report), and the exit
+// code is 0 exactly when that number is 0 and some test passed.
 // Installs no npm packages: run `npm ci` first (the README's test command does).
 // Extra arguments go to Vitest, e.g. `npm test -- packages/cli`; MAA_TEST_PYTHON=0 skips the
-// Python suites except ROS 2, MAA_TEST_ROS2=0 skips ROS 2, MAA_TEST_E2E=0 the browser tests.
+// Python suites except ROS 2, MAA_TEST_ROS2=0 skips ROS 2, MAA_TEST_E2E=0 the browser tests,
+// MAA_TEST_BUILD=0 the build (for a tree that is built already).
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { junitCounts, Tally } from './test-summary.mjs';
 
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const npm = process.platform === 'win32' ? 'npm.cmd' : 'npm';
 const npx = process.platform === 'win32' ? 'npx.cmd' : 'npx';
+const started = Date.now();
 
-function step(title, command, args, cwd = repo) {
+const tally = new Tally();
+
+function step(title, command, args, cwd = repo, env = process.env) {
   console.log(`\n=== ${title}: ${[command, ...args].join(' ')}`);
-  const result = spawnSync(command, args, { cwd, stdio: 'inherit' });
+  const result = spawnSync(command, args, { cwd, stdio: 'inherit', env });
   if (result.error) {
     console.error(`test-all: could not start ${command}: ${result.error.message}`);
     return 1;
@@ -28,18 +37,21 @@ function step(title, command, args, cwd = repo) {
   return result.status ?? 1;
 }
 
-function finish(code, line) {
-  console.log(`\n${line}`);
-  process.exit(code);
+/** Prints what failed, by kind, and the closing line, and exits with the code that agrees with it. */
+function finish() {
+  for (const line of tally.summary((Date.now() - started) / 60_000)) console.log(line);
+  process.exit(tally.exitCode);
 }
 
 if (!existsSync(path.join(repo, 'node_modules'))) {
-  finish(2, 'test-all: FAILED: node_modules is missing; run "npm ci" first');
+  tally.fail('setups that failed', 'node_modules is missing; run "npm ci" first');
+  finish();
 }
 
-const buildStatus = step('build', npm, ['run', 'build']);
+const buildStatus = process.env.MAA_TEST_BUILD === '0' ? 0 : step('build', npm, ['run', 'build']);
 if (buildStatus !== 0) {
-  finish(buildStatus, `test-all: FAILED: the build failed (exit ${buildStatus}); no test was run`);
+  tally.fail('setups that failed', `the build exited with ${buildStatus}; no test was run`);
+  finish();
 }
 
 // Some Vitest suites use the simulator (the generated example runs in it), so its Python
@@ -47,7 +59,8 @@ if (buildStatus !== 0) {
 if (process.env.MAA_TEST_PYTHON !== '0') {
   const simSetup = step('sim-server setup (used by Vitest too)', 'bash', [path.join(repo, 'sim-server', 'scripts', 'setup_env.sh')]);
   if (simSetup !== 0) {
-    finish(simSetup, `test-all: FAILED: sim-server setup exited with ${simSetup}; no test was run`);
+    tally.fail('setups that failed', `sim-server setup exited with ${simSetup}; no test was run`);
+    finish();
   }
 }
 
@@ -55,52 +68,20 @@ if (process.env.MAA_TEST_PYTHON !== '0') {
 if (process.env.MAA_TEST_ROS2 !== '0') {
   const ros2Setup = step('ROS 2 venv setup (used by Vitest too)', 'bash', [path.join(repo, 'packages', 'generators-python', 'scripts', 'setup_ros2_venv.sh')]);
   if (ros2Setup !== 0) {
-    finish(ros2Setup, `test-all: FAILED: the ROS 2 venv setup exited with ${ros2Setup}; no test was run`);
+    tally.fail('setups that failed', `the ROS 2 venv setup exited with ${ros2Setup}; no test was run`);
+    finish();
   }
 }
 
-const reportDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-'));
-const reportFile = path.join(reportDir, 'vitest.json');
-const testStatus = step('test', npx, [
-  '--no-install',
-  'vitest',
-  'run',
-  '--reporter=default',
-  '--reporter=json',
-  `--outputFile.json=${reportFile}`,
-  ...process.argv.slice(2),
-]);
-let report;
-try {
-  report = JSON.parse(readFileSync(reportFile, 'utf8'));
-} catch {
-  report = undefined;
-} finally {
-  rmSync(reportDir, { recursive: true, force: true });
-}
-if (!report) {
-  finish(testStatus || 1, `test-all: FAILED: vitest exited with ${testStatus} and wrote no report`);
-}
-let passed = report.numPassedTests ?? 0;
-// A test file that fails to load has no failed test, only a failed suite: count it too.
-const failedTests = report.numFailedTests ?? 0;
-let failed = failedTests > 0 ? failedTests : (report.numFailedTestSuites ?? 0);
-let skipped = (report.numPendingTests ?? 0) + (report.numTodoTests ?? 0);
-let code = testStatus !== 0 ? testStatus : failed > 0 || passed === 0 ? 1 : 0;
-if (passed === 0 && failed === 0) console.log('test-all: no vitest test was run');
+vitestSuite(process.argv.slice(2));
 
 // The browser end-to-end suite (e2e/run.mjs): maa-ide with the built app on a fresh copy of
 // examples/, driven through playwright-core in Debian's chromium (installed here when missing).
 // Its results (one per scenario) are in e2e/artifacts/results.json, screenshots beside them.
-if (process.env.MAA_TEST_E2E !== '0') {
-  const counts = e2eSuite();
-  passed += counts.passed;
-  failed += counts.failed;
-  if (counts.failed > 0 || counts.passed === 0) code = code || 1;
-}
+if (process.env.MAA_TEST_E2E !== '0') e2eSuite();
 
 // The Python suites: each sets up its venv (idempotent scripts), runs pytest (JUnit XML for the
-// counts), then its linters; a failing linter counts as one failed check.
+// counts), then its linters; a failing linter counts as one failure.
 const PYTHON_SUITES = [
   {
     // The simulation sidecar (MuJoCo, rclpy, rosbridge, viser).
@@ -124,20 +105,59 @@ const PYTHON_SUITES = [
     lint: [['ruff', ['-m', 'ruff', 'check', '--config', 'ruff.toml', '--no-cache', 'rte/maa_behavior', 'rte/maa_timesync', 'test/python']]],
   },
 ];
-for (const suite of PYTHON_SUITES.filter((x) => x.enabled)) {
-  const counts = pythonSuite(suite);
-  passed += counts.passed;
-  failed += counts.failed;
-  skipped += counts.skipped;
-  if (counts.failed > 0 || counts.passed === 0) code = code || 1;
+for (const suite of PYTHON_SUITES.filter((x) => x.enabled)) pythonSuite(suite);
+finish();
+
+/**
+ * Vitest with the default reporter for people and scripts/vitest-outcome-reporter.mjs for the
+ * counts: its outcome names failed tests, unhandled errors, test files that did not run and
+ * failed hooks separately, which Vitest's own JSON report folds into a bare exit code.
+ */
+function vitestSuite(extraArgs) {
+  const outcomeDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-'));
+  const outcomeFile = path.join(outcomeDir, 'vitest-outcome.json');
+  const status = step(
+    'vitest',
+    npx,
+    ['--no-install', 'vitest', 'run', '--reporter=default', `--reporter=${path.join(repo, 'scripts', 'vitest-outcome-reporter.mjs')}`, ...extraArgs],
+    repo,
+    { ...process.env, MAA_VITEST_OUTCOME: outcomeFile },
+  );
+  let outcome;
+  try {
+    outcome = JSON.parse(readFileSync(outcomeFile, 'utf8'));
+  } catch {
+    outcome = undefined;
+  } finally {
+    rmSync(outcomeDir, { recursive: true, force: true });
+  }
+  if (!outcome) {
+    tally.fail('runners that reported nothing', `vitest exited with ${status} and wrote no outcome`);
+    return;
+  }
+  tally.passed += outcome.passed;
+  tally.skipped += outcome.skipped;
+  for (const what of outcome.failedTests) tally.fail('failed tests', what);
+  for (const what of outcome.unhandledErrors) tally.fail('unhandled errors', `vitest: ${what}`);
+  for (const what of outcome.brokenFiles) tally.fail('test files that did not run', what);
+  for (const what of outcome.suiteErrors) tally.fail('failed hooks and suites', what);
+  // Vitest failing for a reason none of the above names (e.g. no test file matched a filter).
+  const named = outcome.failedTests.length + outcome.unhandledErrors.length + outcome.brokenFiles.length + outcome.suiteErrors.length;
+  if (status !== 0 && named === 0) tally.fail('runners that failed without a reason', `vitest exited with ${status} (${outcome.reason})`);
+  const seconds = (ms) => `${(ms / 1000).toFixed(1).padStart(6)} s`;
+  if (outcome.slowestFiles.length > 0) {
+    console.log('\ntest-all: the slowest Vitest files (hooks included):');
+    for (const { file, ms } of outcome.slowestFiles) console.log(`  ${seconds(ms)}  ${file}`);
+    console.log('test-all: the slowest Vitest tests:');
+    for (const { test, ms } of outcome.slowest) console.log(`  ${seconds(ms)}  ${test}`);
+  }
 }
-finish(code, `tests: ${passed} passed, ${failed} failed, ${skipped} skipped`);
 
 function pythonSuite(suite) {
   const setupStatus = step(`${suite.title} setup`, 'bash', [path.join(repo, suite.setup)]);
   if (setupStatus !== 0) {
-    console.error(`test-all: FAILED: ${suite.title} setup exited with ${setupStatus}; none of its tests was run`);
-    return { passed: 0, failed: 1, skipped: 0 };
+    tally.fail('setups that failed', `${suite.title} setup exited with ${setupStatus}; none of its tests was run`);
+    return;
   }
   const python = path.join(repo, suite.python);
   const junitDir = mkdtempSync(path.join(tmpdir(), `maa-test-all-${suite.title}-`));
@@ -145,34 +165,37 @@ function pythonSuite(suite) {
   const pytestStatus = step(`${suite.title} tests`, python, [
     '-m', 'pytest', suite.tests, '-q', '-p', 'no:cacheprovider', `--junitxml=${junitFile}`,
   ]);
-  let counts;
+  let junit;
   try {
-    counts = junitCounts(readFileSync(junitFile, 'utf8'));
+    junit = readFileSync(junitFile, 'utf8');
   } catch {
-    counts = undefined;
+    junit = undefined;
   } finally {
     rmSync(junitDir, { recursive: true, force: true });
   }
+  const counts = junit === undefined ? undefined : junitCounts(junit);
   if (!counts) {
-    console.error(`test-all: FAILED: pytest (${suite.title}) exited with ${pytestStatus} and wrote no report`);
-    return { passed: 0, failed: 1, skipped: 0 };
-  }
-  if (pytestStatus !== 0 && counts.failed === 0) counts.failed = 1; // e.g. an error outside any test
-  for (const [name, args] of suite.lint) {
-    const lintStatus = step(`${suite.title} ${name}`, python, args, path.join(repo, suite.dir));
-    if (lintStatus !== 0) {
-      console.error(`test-all: FAILED: ${suite.title} ${name} exited with ${lintStatus}`);
-      counts.failed += 1;
+    tally.fail('runners that reported nothing', `pytest (${suite.title}) exited with ${pytestStatus} and wrote no report`);
+  } else {
+    tally.passed += counts.passed;
+    tally.skipped += counts.skipped;
+    for (const what of counts.failed) tally.fail('failed tests', `${suite.title}: ${what}`);
+    for (const what of counts.errors) tally.fail('test errors outside a test body', `${suite.title}: ${what}`);
+    if (pytestStatus !== 0 && counts.failed.length + counts.errors.length === 0) {
+      tally.fail('runners that failed without a reason', `pytest (${suite.title}) exited with ${pytestStatus}`);
     }
   }
-  return counts;
+  for (const [name, args] of suite.lint) {
+    const lintStatus = step(`${suite.title} ${name}`, python, args, path.join(repo, suite.dir));
+    if (lintStatus !== 0) tally.fail('linters that failed', `${suite.title} ${name} exited with ${lintStatus}`);
+  }
 }
 
 function e2eSuite() {
   const chromium = step('e2e: chromium', process.execPath, [path.join(repo, 'scripts', 'ensure-chromium.mjs')]);
   if (chromium !== 0) {
-    console.error('test-all: FAILED: chromium for the e2e tests is missing and could not be installed');
-    return { passed: 0, failed: 1 };
+    tally.fail('setups that failed', 'chromium for the e2e tests is missing and could not be installed');
+    return;
   }
   const resultsFile = path.join(repo, 'e2e', 'artifacts', 'results.json');
   rmSync(resultsFile, { force: true });
@@ -181,20 +204,12 @@ function e2eSuite() {
   try {
     results = JSON.parse(readFileSync(resultsFile, 'utf8'));
   } catch {
-    console.error(`test-all: FAILED: the e2e run exited with ${status} and wrote no results`);
-    return { passed: 0, failed: 1 };
+    tally.fail('runners that reported nothing', `the e2e run exited with ${status} and wrote no results`);
+    return;
   }
-  const failedScenarios = results.filter((r) => !r.ok).length;
-  return { passed: results.length - failedScenarios, failed: failedScenarios || (status !== 0 ? 1 : 0) };
-}
-
-function junitCounts(xml) {
-  // pytest writes <testsuites><testsuite name="pytest" errors= failures= skipped= tests=>
-  const suite = /<testsuite\b([^>]*)>/.exec(xml);
-  if (!suite) return undefined;
-  const attribute = (name) => Number((new RegExp(`\\b${name}="(\\d+)"`).exec(suite[1]) ?? [])[1] ?? 0);
-  const tests = attribute('tests');
-  const failures = attribute('failures') + attribute('errors');
-  const skippedTests = attribute('skipped');
-  return { passed: tests - failures - skippedTests, failed: failures, skipped: skippedTests };
+  for (const r of results) {
+    if (r.ok) tally.passed += 1;
+    else tally.fail('failed tests', `e2e: ${r.name}: ${String(r.error ?? '').split('\n')[0]}`);
+  }
+  if (status !== 0 && results.every((r) => r.ok)) tally.fail('runners that failed without a reason', `the e2e run exited with ${status}`);
 }

@@ -9,9 +9,9 @@ interface StreamResult { file: string; test: string | null; passed: boolean; pro
 // The stream tests next to the example's models (examples/toast-service/toast/*.stream), run on
 // the timesync build of its application configuration by `maa-gen test`.
 describe('stream tests of the example (maa-gen test)', () => {
-    it('every stream test of examples/toast-service passes', () => {
-        ensureVenv();
-        const r = run(process.execPath, [
+    it('every stream test of examples/toast-service passes', async () => {
+        await ensureVenv();
+        const r = await run(process.execPath, [
             path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'test', 'examples/toast-service/TR.arcapp', '--format', 'json', '--python', venvPython
         ], repoDir);
         const out = JSON.parse(r.stdout) as { results: StreamResult[]; summary: { passed: number; failed: number } };
@@ -23,9 +23,9 @@ describe('stream tests of the example (maa-gen test)', () => {
         expect(r.status).toBe(0);
     }, 180_000);
 
-    it('a failing stream test fails the command with a readable difference', () => {
-        ensureVenv();
-        const r = run(process.execPath, [
+    it('a failing stream test fails the command with a readable difference', async () => {
+        await ensureVenv();
+        const r = await run(process.execPath, [
             path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'test', 'examples/toast-service/TR.arcapp',
             'packages/generators-python/test/fixtures/failing/Controller.stream', '--python', venvPython
         ], repoDir);
@@ -39,14 +39,14 @@ describe('stream tests of the example (maa-gen test)', () => {
 // whole service runs until the toast lies on the plate. Needs sim-server/.venv (its setup script).
 const maaSim = path.join(repoDir, 'sim-server', '.venv', 'bin', 'maa-sim');
 describe.skipIf(!existsSync(maaSim))('the example on the simulator (lock-step, timesync build)', () => {
-    it('serves a toast: the toast ends up on the plate', () => {
+    it('serves a toast: the toast ends up on the plate', async () => {
         const out = mkdtempSync(path.join(tmpdir(), 'maa-timesync-sim-'));
         try {
-            const gen = run(process.execPath, [
+            const gen = await run(process.execPath, [
                 path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', 'examples/toast-service/TR.arcapp', '--platform', 'timesync', '--out', out
             ], repoDir);
             expect(gen.status, gen.stderr).toBe(0);
-            const sim = run(maaSim, ['run', '--package', path.join(out, 'timesync'), '--mode', 'lockstep', '--until-goal', '--viser-port', 'off', '--rosbridge-port', 'off', '--max-time', '60'], repoDir);
+            const sim = await run(maaSim, ['run', '--package', path.join(out, 'timesync'), '--mode', 'lockstep', '--until-goal', '--viser-port', 'off', '--rosbridge-port', 'off', '--max-time', '60'], repoDir);
             expect(`${sim.stdout}${sim.stderr}`).toContain('toast on the plate: True');
         } finally {
             rmSync(out, { recursive: true, force: true });

@@ -50,8 +50,8 @@ describe.each(goldenCases() as GoldenCase[])('golden files: $name', (c) => {
         for (const [file, bytes] of before) expect(readFileSync(path.join(second.dir, file)).equals(bytes), file).toBe(true);
     });
 
-    it('passes ruff check and py_compile', () => {
-        ensureVenv();
-        expect(lintPython(first.dir)).toEqual([]);
+    it('passes ruff check and py_compile', async () => {
+        await ensureVenv();
+        expect(await lintPython(first.dir)).toEqual([]);
     });
 });

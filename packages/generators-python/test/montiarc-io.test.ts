@@ -28,12 +28,12 @@ describe.skipIf(!present)('montiarc-io conformance (python-timesync)', () => {
     // A fresh folder per run: concurrent test runs must not share it.
     const cache = mkdtempSync(path.join(tmpdir(), 'maa-montiarc-io-'));
     afterAll(() => rmSync(cache, { recursive: true, force: true }));
-    beforeAll(() => {
-        ensureVenv();
-        const gen = run(process.execPath, [path.join(packageDir, 'scripts', 'generate-io-cases.mjs'), suite, cache], packageDir);
+    beforeAll(async () => {
+        await ensureVenv();
+        const gen = await run(process.execPath, [path.join(packageDir, 'scripts', 'generate-io-cases.mjs'), suite, cache], packageDir);
         if (gen.status !== 0) throw new Error(`generate-io-cases failed:\n${gen.stdout}\n${gen.stderr}`);
         const report = path.join(cache, 'report.json');
-        const py = run(venvPython, [path.join(packageDir, 'test', 'python', 'io_cases.py'), suite, cache, report], packageDir);
+        const py = await run(venvPython, [path.join(packageDir, 'test', 'python', 'io_cases.py'), suite, cache, report], packageDir);
         if (py.status !== 0) throw new Error(`io_cases.py failed:\n${py.stdout}\n${py.stderr}`);
         results = JSON.parse(readFileSync(report, 'utf8')) as Result[];
         const rows = classes.map((k) => {
@@ -53,9 +53,10 @@ describe.skipIf(!present)('montiarc-io conformance (python-timesync)', () => {
         expect(failed).toEqual([]);
     });
 
-    it('the generated code passes ruff check and py_compile', () => {
+    it('the generated code passes ruff check and py_compile', async () => {
         const builds = path.join(cache, 'builds');
-        const problems = readdirSync(builds).sort().flatMap((b) => lintPython(path.join(builds, b, 'timesync')));
+        const problems: string[] = [];
+        for (const b of readdirSync(builds).sort()) problems.push(...(await lintPython(path.join(builds, b, 'timesync'))));
         expect(problems).toEqual([]);
     }, 300_000);
 });

@@ -1,4 +1,4 @@
-import { spawnSync } from 'node:child_process';
+import { spawn } from 'node:child_process';
 import { existsSync, readdirSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -9,14 +9,40 @@ export const venvPython = path.join(packageDir, '.venv', 'bin', 'python');
 export const ruffConfig = path.join(packageDir, 'ruff.toml');
 
 /** Creates the package's venv (pytest, ruff) when needed; idempotent and fast when up to date. */
-export function ensureVenv(): void {
-    const r = spawnSync('bash', [path.join(packageDir, 'scripts', 'setup_venv.sh')], { encoding: 'utf8' });
+export async function ensureVenv(): Promise<void> {
+    const r = await run('bash', [path.join(packageDir, 'scripts', 'setup_venv.sh')], packageDir);
     if (r.status !== 0 || !existsSync(venvPython)) throw new Error(`setup_venv.sh failed:\n${r.stdout}\n${r.stderr}`);
 }
 
-export function run(command: string, args: string[], cwd: string, input?: string): { status: number; stdout: string; stderr: string } {
-    const r = spawnSync(command, args, { cwd, encoding: 'utf8', input, env: { ...process.env, PYTHONDONTWRITEBYTECODE: '1' }, maxBuffer: 64 * 1024 * 1024 });
-    return { status: r.status ?? 1, stdout: r.stdout ?? '', stderr: `${r.stderr ?? ''}${r.error ? String(r.error) : ''}` };
+export interface RunResult {
+    status: number;
+    stdout: string;
+    stderr: string;
+}
+
+/**
+ * Runs a command to its end. Asynchronous on purpose: a Vitest worker blocked in spawnSync for
+ * over a minute (the montiarc-io cases, a simulation on a loaded machine) cannot answer Vitest's
+ * own RPC, which then fails the run with `[vitest-worker]: Timeout calling "onTaskUpdate"`.
+ */
+export function run(command: string, args: string[], cwd: string, input?: string): Promise<RunResult> {
+    return new Promise((resolve) => {
+        const child = spawn(command, args, { cwd, env: { ...process.env, PYTHONDONTWRITEBYTECODE: '1' }, stdio: ['pipe', 'pipe', 'pipe'] });
+        const stdout: Buffer[] = [];
+        const stderr: Buffer[] = [];
+        let spawnError = '';
+        child.stdout.on('data', (chunk: Buffer) => stdout.push(chunk));
+        child.stderr.on('data', (chunk: Buffer) => stderr.push(chunk));
+        child.on('error', (e) => {
+            spawnError = String(e);
+        });
+        child.on('close', (code, signal) => {
+            const tail = signal ? `\n(killed by ${signal})` : '';
+            resolve({ status: code ?? 1, stdout: Buffer.concat(stdout).toString('utf8'), stderr: `${Buffer.concat(stderr).toString('utf8')}${spawnError}${tail}` });
+        });
+        child.stdin.on('error', () => undefined); // a command that exits without reading its input
+        child.stdin.end(input);
+    });
 }
 
 /** Every .py file below a folder. */
@@ -35,13 +61,13 @@ export function pythonFiles(dir: string): string[] {
 }
 
 /** `ruff check` (inside the folder, with the package's settings) and `py_compile` of every file. */
-export function lintPython(dir: string): string[] {
+export async function lintPython(dir: string): Promise<string[]> {
     const problems: string[] = [];
-    const ruff = run(venvPython, ['-m', 'ruff', 'check', '--config', ruffConfig, '--no-cache', '--output-format', 'concise', '.'], dir);
+    const ruff = await run(venvPython, ['-m', 'ruff', 'check', '--config', ruffConfig, '--no-cache', '--output-format', 'concise', '.'], dir);
     if (ruff.status !== 0) problems.push(`ruff check in ${dir}:\n${ruff.stdout}${ruff.stderr}`);
     const files = pythonFiles(dir);
     // Compiled into a temporary folder, so the generated folder stays free of __pycache__.
-    const compile = run(venvPython, ['-c', [
+    const compile = await run(venvPython, ['-c', [
         'import os, sys, py_compile, tempfile',
         'with tempfile.TemporaryDirectory() as d:',
         '    for i, f in enumerate(sys.argv[1:]):',

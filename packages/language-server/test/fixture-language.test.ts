@@ -3,7 +3,8 @@
 // and registered only from this test, through the public API of @maa/language-adl. If adding
 // it needed a change to language-adl (its grammar, its code, or anything not exported from
 // '@maa/language-adl'), this test fails.
-import { spawnSync } from 'node:child_process';
+import { execFile } from 'node:child_process';
+import { promisify } from 'node:util';
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { delimiter, dirname, join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -38,7 +39,8 @@ beforeAll(async () => {
     mkdirSync(join(fixtureDir, 'build'), { recursive: true });
     tmp = mkdtempSync(join(fixtureDir, 'build', 'compose-'));
     // Step 4 of the walk-through: the host packages by name, the fixture package as `.`.
-    const result = spawnSync(process.execPath, [
+    // Asynchronous: a worker blocked in spawnSync cannot answer Vitest's RPC (a minute on a loaded machine fails the run).
+    await promisify(execFile)(process.execPath, [
         join(root, 'packages', 'grammar-composer', 'bin', 'maa-compose-grammar.mjs'),
         '--project', 'TableFixture',
         '--build', join(tmp, 'grammar'),
@@ -50,8 +52,9 @@ beforeAll(async () => {
         encoding: 'utf8',
         // langium-cli's `langium` command, as npm scripts put it on PATH.
         env: { ...process.env, PATH: `${join(root, 'node_modules', '.bin')}${delimiter}${process.env.PATH ?? ''}` }
+    }).catch((e: { stdout?: string; stderr?: string; message: string }) => {
+        throw new Error(`maa-compose-grammar failed: ${e.message}\n${e.stdout ?? ''}\n${e.stderr ?? ''}`);
     });
-    expect(result.status, `maa-compose-grammar failed:\n${result.stdout}\n${result.stderr}`).toBe(0);
 
     const generated = await import(pathToFileURL(join(tmp, 'generated', 'module.ts')).href) as Record<string, GeneratedModules[keyof GeneratedModules]>;
     // The registry module imports `TableLanguage` by package name (the fixture's package.json `exports`).
