@@ -48,7 +48,8 @@ export function createApiRouter({ workspace, generation, sims, maxFileBytes, red
   router.on('POST', '/api/generate', async ({ req, res }) => {
     const body = await readJsonObject(req);
     const { platformDir: _dir, ...answer } = await generation.generate(requireString(body, 'app'), requireString(body, 'platform'));
-    sendJson(res, 200, answer);
+    // Diagnostics of a failed write name the output folder: no absolute paths in answers.
+    sendJson(res, 200, redact ? { ...answer, diagnostics: redact.value(answer.diagnostics) } : answer);
   });
   router.on('GET', '/api/generated/file', async ({ res, query }) => {
     const root = generation.platformRoot(requireQuery(query, 'app'), requireQuery(query, 'platform'));
