@@ -4,7 +4,7 @@ export const ExitCode = {
   ok: 0,
   /** `check` found at least one error-severity diagnostic. */
   errors: 1,
-  /** Wrong usage or an I/O problem (missing path, unreadable file). */
+  /** Wrong usage or an I/O problem (missing path, unreadable file, an output that cannot be written). */
   usage: 2,
   /** An unexpected failure inside maa-gen (a bug). */
   internal: 3,

@@ -1,4 +1,5 @@
-import { existsSync, readFileSync } from 'node:fs';
+import { execFile, spawn } from 'node:child_process';
+import { chmodSync, existsSync, readdirSync, readFileSync, readlinkSync, statSync } from 'node:fs';
 import path from 'node:path';
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
 import { BIN, ModelDir, parseTextLines, requireBuiltCli, runCli } from './helpers.js';
@@ -82,6 +83,48 @@ const GENERATORS: Record<string, string> = {
 };
 
 beforeAll(() => requireBuiltCli());
+
+/** Every file below a folder (links followed) with its content. */
+function tree(dir: string, rel = ''): Record<string, string> {
+  const out: Record<string, string> = {};
+  for (const name of readdirSync(path.join(dir, rel)).sort()) {
+    const r = rel ? `${rel}/${name}` : name;
+    if (statSync(path.join(dir, r)).isDirectory()) Object.assign(out, tree(dir, r));
+    else out[r] = readFileSync(path.join(dir, r), 'utf8');
+  }
+  return out;
+}
+
+/** Runs maa-gen as a user whom file permissions bind (root is not bound: then as nobody). */
+function runCliAs(args: string[], cwd: string): Promise<{ code: number | null; stdout: string; stderr: string }> {
+  const asUser = process.getuid?.() === 0 ? { uid: 65534, gid: 65534 } : {};
+  return new Promise((resolve, reject) => {
+    execFile(process.execPath, [BIN, ...args], { cwd, env: { ...process.env, NO_COLOR: '1' }, ...asUser }, (error, stdout, stderr) => {
+      if (error && typeof error.code !== 'number') reject(error);
+      else resolve({ code: error ? (error.code as number) : 0, stdout, stderr });
+    });
+  });
+}
+
+/** Runs maa-gen until the writer pauses (MAA_GEN_PAUSE_AT), then kills it with SIGKILL; returns where it paused. */
+function killWhenPaused(args: string[], cwd: string, pauseAt: string): Promise<string> {
+  return new Promise((resolve, reject) => {
+    const child = spawn(process.execPath, [BIN, ...args], { cwd, env: { ...process.env, NO_COLOR: '1', MAA_GEN_PAUSE_AT: pauseAt }, stdio: ['ignore', 'ignore', 'pipe'] });
+    let stderr = '';
+    let paused = '';
+    child.stderr.setEncoding('utf8');
+    child.stderr.on('data', (chunk: string) => {
+      stderr += chunk;
+      const m = /maa-gen: paused at (\S+ \d+)/.exec(stderr);
+      if (m && !paused) {
+        paused = m[1]!;
+        child.kill('SIGKILL');
+      }
+    });
+    child.on('error', reject);
+    child.on('exit', (code, signal) => (paused && signal === 'SIGKILL' ? resolve(paused) : reject(new Error(`maa-gen did not pause at ${pauseAt} (exit ${code}): ${stderr}`))));
+  });
+}
 
 let dirs: ModelDir[] = [];
 function workspace(extra: Record<string, string> = {}): ModelDir {
@@ -194,6 +237,68 @@ describe('maa-gen generate', () => {
     const platform = await runCli(['generate', 'models/App.arcapp', '--platform', 'gamma'], w.dir);
     expect(platform.code).toBe(2);
     expect(platform.stderr).toBe("maa-gen: error: application 'Demo' has no platform 'gamma' (platforms: alpha, beta)\n");
+  });
+
+  it('an output that cannot be written exits 2, names the folder and changes nothing', async () => {
+    const w = workspace();
+    expect((await runCli(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out'], w.dir)).code).toBe(0);
+    const before = tree(w.path('out/alpha'));
+    w.write('models/robot/Sensor.arc', 'package robot;\n\n<<handwritten>> component Sensor {\n  port out int value;\n  port out int extra;\n}\n');
+    // Read-only, as a full disk or a read-only mount would be. Root ignores permissions: it runs maa-gen as nobody.
+    chmodSync(w.dir, 0o755);
+    chmodSync(w.path('out'), 0o555);
+    chmodSync(w.path('out/.maa-gen'), 0o555);
+    try {
+      const r = await runCliAs(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out'], w.dir);
+      const errors = parseTextLines(r.stdout).filter((l) => l['severity'] === 'error');
+      expect(errors.map((l) => `${l['code']} ${l['message']}`)).toEqual(['gen/write-failed Cannot write the output: out: permission denied. Nothing was changed.']);
+      expect(r.stderr.trim().split('\n').pop()).toBe('1 error, 1 warning; nothing was generated');
+      expect(r.code).toBe(2);
+    } finally {
+      chmodSync(w.path('out'), 0o755);
+      chmodSync(w.path('out/.maa-gen'), 0o755);
+    }
+    expect(tree(w.path('out/alpha'))).toEqual(before);
+  });
+
+  it('a file where the platform folder belongs exits 2 naming it (JSON too)', async () => {
+    const w = workspace();
+    w.write('out/alpha', 'my notes\n');
+    const r = await runCli(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out', '--format', 'json'], w.dir);
+    expect(r.code).toBe(2);
+    const report = JSON.parse(r.stdout) as { diagnostics: Array<{ code: string; message: string }>; summary: { ok: boolean } };
+    expect(report.summary.ok).toBe(false);
+    expect(report.diagnostics.map((d) => `${d.code} ${d.message}`)).toEqual([
+      'gen/write-failed Cannot write the output: out/alpha: is a file where the platform folder is needed. Nothing was changed.',
+    ]);
+    expect(readFileSync(w.path('out/alpha'), 'utf8')).toBe('my notes\n');
+  });
+
+  it('killed at each phase of writing (MAA_GEN_PAUSE_AT), the platform folder is wholly old or new, and the next run succeeds', async () => {
+    const w = workspace();
+    const args = ['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out'];
+    expect((await runCli(args, w.dir)).code).toBe(0);
+    const older = tree(w.path('out/alpha'));
+    w.write('models/robot/Sensor.arc', 'package robot;\n\n<<handwritten>> component Sensor {\n  port out int value;\n  port out int extra;\n}\n');
+    expect((await runCli(args, w.dir)).code).toBe(0);
+    const newer = tree(w.path('out/alpha'));
+    expect(newer).not.toEqual(older);
+    const sensor = (extra: boolean): string =>
+      `package robot;\n\n<<handwritten>> component Sensor {\n  port out int value;\n${extra ? '  port out int extra;\n' : ''}}\n`;
+    for (const phase of ['staging', 'commit', 'cleanup']) {
+      // Each run switches between the two trees: the model goes back and forth.
+      const fromNewer = JSON.stringify(tree(w.path('out/alpha'))) === JSON.stringify(newer);
+      const [from, to] = fromNewer ? [newer, older] : [older, newer];
+      w.write('models/robot/Sensor.arc', sensor(!fromNewer));
+      const paused = await killWhenPaused(args, w.dir, `${phase}:2`);
+      expect(paused).toMatch(new RegExp(`^${phase} \\d+$`));
+      expect(tree(w.path('out/alpha')), `killed at ${paused}`).toEqual(phase === 'staging' ? from : to);
+      const again = await runCli(args, w.dir);
+      expect(again.code).toBe(0);
+      expect(tree(w.path('out/alpha'))).toEqual(to);
+      // Nothing of the killed run is left: the state folder holds the current version only.
+      expect(readdirSync(w.path('out/.maa-gen'))).toEqual([path.basename(readlinkSync(w.path('out/alpha')))]);
+    }
   });
 
   it('is listed in the help', async () => {

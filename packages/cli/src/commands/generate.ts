@@ -10,6 +10,9 @@ import { createProgress } from '../progress.js';
 
 export type GenerateFormat = 'text' | 'json';
 
+/** GenCodes.WriteFailed of @maa/generator-core (not imported: the generator core is loaded on demand). */
+const WRITE_FAILED = 'gen/write-failed';
+
 export interface GenerateCommandOptions {
   platform?: string[];
   out?: string;
@@ -25,7 +28,8 @@ function installationDir(): string {
 /**
  * `maa-gen generate APP.arcapp [--platform P]... [--out DIR] [--root DIR]`: generates code for
  * the platforms of an application configuration. Exit 0 when generated (warnings allowed),
- * 1 when checks or a generator failed (nothing is written then); usage and I/O problems throw.
+ * 1 when checks or a generator failed, 2 when the output cannot be written (nothing is written
+ * then: the diagnostic `gen/write-failed` names the path); usage problems throw.
  */
 export async function runGenerate(appArg: string, options: GenerateCommandOptions, io: CliIo): Promise<ExitCode> {
   const appFile = path.resolve(io.cwd, appArg);
@@ -74,6 +78,7 @@ export async function runGenerate(appArg: string, options: GenerateCommandOption
         platforms: options.platform,
         outDir,
         discoveryRoots: [installationDir()],
+        displayPath: (p) => displayPath(p, io.cwd),
         onProgress: (p) => {
           if (p.phase === 'generate' && p.files !== undefined) report(`${p.message}`);
           else progress?.update(p.message);
@@ -130,7 +135,13 @@ export async function runGenerate(appArg: string, options: GenerateCommandOption
       ? `${counts}; generated ${plural(files, 'file')} for ${plural(result.platforms.length, 'platform')}\n`
       : `${counts}; nothing was generated\n`);
   }
-  return result.ok ? ExitCode.ok : ExitCode.errors;
+  return exitCodeOf(result.ok, diagnostics);
+}
+
+/** 0 generated; 2 when the output could not be written (an I/O problem, docs/cli.md); 1 for other errors. */
+function exitCodeOf(ok: boolean, diagnostics: readonly CheckDiagnostic[]): ExitCode {
+  if (ok) return ExitCode.ok;
+  return diagnostics.some((d) => d.severity === 'error' && d.code === WRITE_FAILED) ? ExitCode.usage : ExitCode.errors;
 }
 
 function plural(n: number, word: string): string {
@@ -158,6 +169,8 @@ What it does:
   component generator (which hands each behavior block to the behavior generator of its
   language) and writes every platform's files with a trace file (.maa-trace.json). Nothing is
   written when any step fails; user files and protected regions are never overwritten.
+  DIR/P is a link to a version folder in DIR/.maa-gen, switched in one step, so a platform
+  folder is always wholly the old or wholly the new output, even if maa-gen is killed.
 
 Output:
   text  diagnostics on stdout ("file:line:col: severity code message"), one line per generator
@@ -167,7 +180,8 @@ Output:
 Exit codes:
   0  generated (warnings allowed)
   1  errors in the models, the configuration or a generator: nothing was written
-  2  usage or I/O problem (missing file, unknown platform)
+  2  usage or I/O problem (missing file, unknown platform, an output that cannot be
+     written: gen/write-failed names the path; nothing was changed)
   3  internal error (a bug; MAA_GEN_DEBUG=1 prints the stack trace)
 
 Examples:

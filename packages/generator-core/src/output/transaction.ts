@@ -56,7 +56,8 @@ export class OutputTransaction {
             cleanOutputRoot(tx.outRoot, 'recover', tx.checkpoints);
         } catch (e) {
             tx.close();
-            throw toWriteError(e, tx.outRoot);
+            // The user knows the output folder, not its hidden state folder.
+            throw toWriteError(e, tx.outRoot, (p) => (p.startsWith(tx.stateDir) ? tx.outRoot : p));
         }
         return tx;
     }
