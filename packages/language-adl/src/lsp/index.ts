@@ -5,6 +5,7 @@ export * from './descriptions.js';
 export * from './edits.js';
 export * from './folding.js';
 export * from './formatter.js';
+export * from './guard.js';
 export * from './highlight.js';
 export * from './hover.js';
 export * from './names.js';

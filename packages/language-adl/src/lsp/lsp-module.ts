@@ -12,6 +12,7 @@ import { AdlDefinitionProvider } from './definition.js';
 import { AdlFoldingRangeProvider } from './folding.js';
 import { AdlFormatter } from './formatter.js';
 import { AdlDocumentHighlightProvider } from './highlight.js';
+import { guardLspModule } from './guard.js';
 import { registerHostQuickFixes } from './host-fixes.js';
 import { AdlHoverProvider } from './hover.js';
 import { AdlNodeKindProvider } from './node-kinds.js';
@@ -115,7 +116,8 @@ export interface HostLspServices {
 /**
  * Creates the services of a language family for a language server: Langium's LSP defaults, the
  * host's modules, AdlLspModule, then every behavior language's and further language's
- * `register` and `registerLsp` hooks.
+ * `register` and `registerLsp` hooks. Every LSP feature is guarded (guard.ts): an exception in
+ * it is logged once and answered with a RequestFailed error, never an internal error.
  */
 export function createHostLspServices(
     context: DefaultSharedModuleContext,
@@ -124,10 +126,10 @@ export function createHostLspServices(
     languages: readonly FamilyLanguage[] = []
 ): HostLspServices {
     const host = createHostServices(context, generated, behaviors, languages, {
-        shared: (ctx) => createDefaultSharedModule(ctx) as unknown as Module<AdlSharedServices, object>,
-        language: (ctx) => createDefaultModule(ctx as Parameters<typeof createDefaultModule>[0]) as unknown as Module<AdlServices, object>,
+        shared: (ctx) => guardLspModule(createDefaultSharedModule(ctx)) as unknown as Module<AdlSharedServices, object>,
+        language: (ctx) => guardLspModule(createDefaultModule(ctx as Parameters<typeof createDefaultModule>[0])) as unknown as Module<AdlServices, object>,
         sharedModules: [AdlLspSharedModule as unknown as Module<AdlSharedServices, object>],
-        languageModules: [AdlLspModule as unknown as Module<AdlServices, object>]
+        languageModules: [guardLspModule(AdlLspModule) as unknown as Module<AdlServices, object>]
     });
     const services = host as unknown as HostLspServices;
     for (const b of behaviors) b.registerLsp?.(services.Arc);

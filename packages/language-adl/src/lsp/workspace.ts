@@ -1,13 +1,14 @@
 import {
-    DefaultDocumentBuilder, URI, UriUtils, type BuildOptions, type FileSystemNode, type LangiumDocument, type LangiumDocuments,
-    type DocumentBuilder, type WorkspaceLock
+    DefaultDocumentBuilder, isOperationCancelled, URI, UriUtils, type BuildOptions, type FileSystemNode, type FileSystemProvider, type LangiumDocument,
+    type LangiumDocuments, type DocumentBuilder, type WorkspaceLock
 } from 'langium';
-import { DefaultDocumentUpdateHandler, type LangiumSharedServices } from 'langium/lsp';
+import { DefaultDocumentUpdateHandler, type DocumentUpdateHandler, type LangiumSharedServices } from 'langium/lsp';
 import type { DidChangeWatchedFilesParams, InitializeParams } from 'vscode-languageserver-protocol';
 import type { WorkspaceFolder } from 'vscode-languageserver-types';
 import { AdlWorkspaceManager, type AdlSharedServices } from '../adl-module.js';
 import type { ModelRoots } from '../model-roots.js';
 import { ReservedNames, type RootConfiguration } from '../validation/reserved-names.js';
+import { serverLog } from './guard.js';
 
 /**
  * The workspace in the editor. Its model roots are
@@ -118,6 +119,15 @@ export class AdlLspDocumentBuilder extends DefaultDocumentBuilder {
  * Watched-file changes as Langium handles them, plus: when a `maa.json` appears, changes or
  * disappears, the model roots are found again and every model file is rebuilt (packages,
  * scopes and reserved names may all have changed).
+ *
+ * A document closed in the editor that has no file (opened under a new name and never saved)
+ * leaves the workspace: it is deleted from the documents and the index, the documents that
+ * linked against it are rebuilt, and its diagnostics are cleared (Langium's builder publishes
+ * empty diagnostics for deleted documents). Otherwise its errors would come back on every
+ * later build and every such document would stay in memory.
+ *
+ * A build that fails (a bug in a check that escaped its guard, a stack overflow) is logged and
+ * the server goes on; Langium leaves that rejection unhandled, which ends a Node process.
  */
 export class AdlDocumentUpdateHandler extends DefaultDocumentUpdateHandler {
     private readonly adlWorkspace: AdlLspWorkspaceManager;
@@ -125,9 +135,15 @@ export class AdlDocumentUpdateHandler extends DefaultDocumentUpdateHandler {
     private readonly lock: WorkspaceLock;
     private readonly documents: LangiumDocuments;
     private readonly roots: ModelRoots;
+    private readonly files: FileSystemProvider;
+    private readonly openDocuments: LangiumSharedServices['workspace']['TextDocuments'];
+    private readonly log: (message: string) => void;
 
     constructor(services: LangiumSharedServices & AdlSharedServices) {
         super(services);
+        this.files = services.workspace.FileSystemProvider;
+        this.openDocuments = services.workspace.TextDocuments;
+        this.log = serverLog(services);
         this.adlWorkspace = services.workspace.WorkspaceManager as AdlLspWorkspaceManager;
         this.builder = services.workspace.DocumentBuilder;
         this.lock = services.workspace.WorkspaceLock;
@@ -138,11 +154,42 @@ export class AdlDocumentUpdateHandler extends DefaultDocumentUpdateHandler {
     override didChangeWatchedFiles(params: DidChangeWatchedFilesParams): void {
         super.didChangeWatchedFiles(params);
         if (params.changes.some((c) => UriUtils.basename(URI.parse(c.uri)) === ReservedNames.CONFIG_FILE)) {
-            void this.adlWorkspace.ready.then(() => this.lock.write(async (token) => {
+            this.afterStartup('reloading the model roots', () => this.lock.write(async (token) => {
                 await this.adlWorkspace.reloadModelRoots();
                 const all = this.documents.all.filter((d) => !this.roots.isBuiltin(d.uri)).map((d) => d.uri).toArray();
                 await this.builder.update(all, [], token);
             }));
         }
+    }
+
+    protected override fireDocumentUpdate(changed: URI[], deleted: URI[]): void {
+        this.afterStartup('building the workspace', () => this.lock.write((token) => this.builder.update(changed, deleted, token)));
+    }
+
+    didCloseDocument(event: Parameters<NonNullable<DocumentUpdateHandler['didCloseDocument']>>[0]): void {
+        const uri = URI.parse(event.document.uri);
+        if (this.roots.isBuiltin(uri)) return;
+        this.afterStartup(`dropping the closed document ${uri.toString()}`, async () => {
+            if (await this.hasFile(uri)) return;
+            // Opened again meanwhile: the editor's text is the document again.
+            if (this.openDocuments.get(uri.toString()) || !this.documents.hasDocument(uri)) return;
+            await this.lock.write((token) => this.builder.update([], [uri], token));
+        });
+    }
+
+    /** Whether a document has a file (unreadable storage counts as a file: nothing is dropped on doubt). */
+    private async hasFile(uri: URI): Promise<boolean> {
+        try {
+            return await this.files.exists(uri);
+        } catch {
+            return true;
+        }
+    }
+
+    /** Runs a workspace action once the workspace is loaded; a failure is logged, never left unhandled. */
+    private afterStartup(what: string, action: () => Promise<unknown>): void {
+        this.adlWorkspace.ready.then(action).catch((e: unknown) => {
+            if (!isOperationCancelled(e)) this.log(`Error ${what}: ${e instanceof Error ? e.stack ?? e.message : String(e)}`);
+        });
     }
 }

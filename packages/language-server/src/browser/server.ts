@@ -41,8 +41,11 @@ export function startBrowserLanguageServer(port: ServerPort, options: BrowserSer
         const init = params.initializationOptions as { apiBase?: unknown } | undefined;
         if (options.apiBase === undefined && typeof init?.apiBase === 'string') fileSystem.setApiBase(init.apiBase);
     });
-    // Saved, created or deleted files change the listing.
+    // Saved, created or deleted files change the listing. A closed document is dropped when the
+    // listing does not have its file (AdlDocumentUpdateHandler): ask the backend afresh, the
+    // file may have been saved under its name a moment ago.
     family.shared.workspace.DocumentBuilder.onUpdate(() => fileSystem.invalidate());
+    family.shared.workspace.TextDocuments.onDidClose(() => fileSystem.invalidate());
     const diagrams = addMaaDiagramServer(family);
     // The outline waits for linked documents (see MAA_SERVICE_REQUIREMENTS).
     startLanguageServer(family.shared, MAA_SERVICE_REQUIREMENTS);

@@ -21,8 +21,33 @@ Options:
   --version        print the version
   --help           print this help`;
 
+/**
+ * Keeps the server alive when a feature throws outside a request (a timer, an event handler, a
+ * promise nobody awaits): the failure is logged (console goes to the client's log once the
+ * connection exists) and the server goes on, instead of Node ending the process and the editor
+ * losing the language support. Requests answer or refuse on their own (createMaaLspServices).
+ */
+function survive(): void {
+    let reporting = false;
+    const report = (what: string) => (e: unknown): void => {
+        // Never recurse: logging itself may fail (a closed pipe to the client).
+        if (reporting) return;
+        reporting = true;
+        try {
+            console.error(`maa-language-server: ${what} (the server goes on): ${e instanceof Error ? e.stack ?? e.message : String(e)}`);
+        } catch {
+            // nowhere left to report to
+        } finally {
+            reporting = false;
+        }
+    };
+    process.on('uncaughtException', report('uncaught exception'));
+    process.on('unhandledRejection', report('unhandled rejection'));
+}
+
 /** Starts the server on the transport the command line names. */
 export function startNodeLanguageServer(): void {
+    survive();
     const connection = createConnection(ProposedFeatures.all);
     const family = createMaaLspServices({ connection, ...NodeFileSystem });
     addMaaDiagramServer(family);
