@@ -1,4 +1,4 @@
-import { existsSync } from 'node:fs';
+import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import WebSocket from 'ws';
@@ -107,5 +107,62 @@ describe.skipIf(!haveSim)(`simulation session${haveSim ? '' : ` (skipped: ${MAA_
     expect(after.exitCode).toBe(0);
     expect(after.log.some((l) => l.includes('"event": "finished"'))).toBe(true);
     expect((await authFetch(site.url('/sim/viser/'))).status).toBe(502);
+  });
+});
+
+/** The pid and process group of the maa-sim whose command line names a folder below `dir` (from /proc). */
+function simBelow(dir: string): { pid: number; pgid: number } | undefined {
+  for (const name of readdirSync('/proc').filter((n) => /^\d+$/.test(n))) {
+    try {
+      const cmdline = readFileSync(`/proc/${name}/cmdline`, 'utf8').split('\0');
+      if (!cmdline.some((a) => a.endsWith('maa-sim')) || !cmdline.some((a) => a.startsWith(dir))) continue;
+      const stat = readFileSync(`/proc/${name}/stat`, 'utf8');
+      return { pid: Number(name), pgid: Number(stat.slice(stat.lastIndexOf(')') + 2).split(' ')[2]) };
+    } catch {
+      // gone meanwhile
+    }
+  }
+  return undefined;
+}
+
+function groupAlive(pgid: number): boolean {
+  try {
+    process.kill(-pgid, 0);
+    return true;
+  } catch (e) {
+    return (e as NodeJS.ErrnoException).code !== 'ESRCH';
+  }
+}
+
+describe.skipIf(!haveSim || !existsSync('/proc'))('simulation session lifetime (real lockstep maa-sim)', () => {
+  let site: TestSite;
+  beforeAll(async () => {
+    site = await startSite({ maaSim: MAA_SIM, sessionIdleSeconds: 2 });
+  });
+  afterAll(() => site?.dispose());
+
+  it('ends when its last rosbridge client has been gone for the idle time, leaving no process of its group', async () => {
+    const res = await authFetch(site.url('/api/sim/start'), {
+      method: 'POST',
+      body: JSON.stringify({ app: APP, platform: 'timesync', mode: 'lockstep', speed: 1 }),
+    });
+    expect(res.status, await res.clone().text()).toBe(200);
+    const sim = simBelow(site.dir);
+    expect(sim, 'maa-sim runs').toBeDefined();
+    const pgid = sim!.pgid;
+    expect(pgid, 'maa-sim leads a process group of its own').toBe(sim!.pid);
+    const client = await rosbridge(site.url('/sim/rosbridge').replace(/^http/, 'ws'));
+    client.ws.send(JSON.stringify({ op: 'call_service', id: 'topics', service: '/rosapi/topics', args: {} }));
+    expect((await client.next((m) => m.id === 'topics')).result).toBe(true);
+    const closed = new Promise((r) => client.ws.once('close', r));
+    client.ws.close();
+    await closed;
+    // Not polling the status meanwhile: that would count as a sign of life.
+    const deadline = Date.now() + 60_000;
+    while (groupAlive(pgid) && Date.now() < deadline) await new Promise((r) => setTimeout(r, 200));
+    expect(groupAlive(pgid), `process group ${pgid} still has processes 60 s after the client left`).toBe(false);
+    const status = await json<{ running: boolean; log: string[] }>(await authFetch(site.url('/api/sim/status')));
+    expect(status.running).toBe(false);
+    expect(status.log.join('\n')).toContain('no client for 2 s');
   });
 });
