@@ -1,5 +1,5 @@
 import path from 'node:path';
-import { Command, InvalidArgumentError } from 'commander';
+import { Command, CommanderError, InvalidArgumentError } from 'commander';
 import { tokenProblem } from './access.js';
 import { defaults, startIdeServer } from './server.js';
 
@@ -70,8 +70,13 @@ Examples:
 
 /** Entry point of the `maa-ide` bin. */
 export function run(argv: readonly string[]): void {
-  const program = createProgram();
-  program.parse([...argv]);
+  const program = createProgram().exitOverride();
+  try {
+    program.parse([...argv]);
+  } catch (e) {
+    // Commander printed the message (or the help); a usage error exits 2 like a failed start.
+    process.exit(e instanceof CommanderError && e.exitCode === 0 ? 0 : 2);
+  }
   const options = program.opts<CliOptions>();
   const workspace = path.resolve(options.workspace);
   const fromEnv = process.env['MAA_IDE_TOKEN'];
@@ -80,7 +85,10 @@ export function run(argv: readonly string[]): void {
   let token = options.token;
   if (token === undefined && fromEnv !== undefined && fromEnv !== '') {
     const problem = tokenProblem(fromEnv);
-    if (problem) program.error(`error: MAA_IDE_TOKEN: ${problem}`, { exitCode: 2 });
+    if (problem) {
+      console.error(`maa-ide: error: MAA_IDE_TOKEN: ${problem}`);
+      process.exit(2);
+    }
     token = fromEnv;
   }
   startIdeServer({
