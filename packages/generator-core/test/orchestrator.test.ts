@@ -1,4 +1,4 @@
-import { existsSync, readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { afterEach, describe, expect, test } from 'vitest';
 import { GenerateInputError, TRACE_FILE, type GenerateResult } from '../src/node.js';
@@ -225,6 +225,28 @@ describe('writing', () => {
         expect(errors(r)).toEqual([expect.stringContaining(`gen/invalid-output`)]);
         expect(errors(r)[0]).toContain(message);
         expect(existsSync(w.out())).toBe(false);
+    });
+});
+
+describe('write failures', () => {
+    test('gen/write-failed names the path as displayPath shows it, and nothing changes', async () => {
+        const w = workspace();
+        expect((await w.generate({ platforms: ['alpha'] })).ok).toBe(true);
+        const before = snapshot(w.out());
+        w.write('models/robot/Filter.arc', MODELS['robot/Filter.arc']!.replace('raw / 2', 'raw / 5'));
+        // The user put a file where generated files need a folder.
+        rmSync(w.out('alpha/components/filter.py'));
+        const components = readFileSync(w.out('alpha/components/ctrl.py'), 'utf8');
+        rmSync(w.out('alpha/components'), { recursive: true });
+        writeFileSync(w.out('alpha/components'), components);
+        const blocked = snapshot(w.out());
+        const r = await w.generate({ platforms: ['alpha'], displayPath: (p) => path.relative(w.dir, p) });
+        expect(r.ok).toBe(false);
+        expect(errors(r)).toEqual([
+            `App.arcapp:1 gen/write-failed Cannot write the output: ${path.join('out', 'alpha', 'components')}: is a file where generated files need a folder. Nothing was changed.`
+        ]);
+        expect(snapshot(w.out())).toEqual(blocked);
+        expect(blocked).not.toEqual(before);
     });
 });
 
