@@ -114,6 +114,7 @@ async function benchWorkspace(label, workspaceFrom, startFile, edits, browser) {
   const result = { label, load: [], edits: {} };
   try {
     const { page } = browser;
+    await ide.login(page);
     for (let i = 0; i < Math.max(2, Math.min(RUNS, 3)); i++) {
       result.load.push(await loadIde(page, ide.url, startFile));
       progress(`${label}: load ${i + 1}: ${JSON.stringify(result.load.at(-1))}`);

@@ -34,7 +34,11 @@ export function writeLargeModel(root, components) {
   return { gen, types };
 }
 
-/** Starts maa-ide on a free port; resolves with its URL once it prints it. */
+/**
+ * Starts maa-ide on a free port; resolves once it prints its URL (`http://127.0.0.1:<port>/?token=...`)
+ * with `url` (the address without the token, for scenarios to navigate below), `tokenUrl` and
+ * `login(page)`, which opens the token URL so the browser keeps the token in maa-ide's cookie.
+ */
 export async function startIde(workspace, { log = false } = {}) {
   const bin = path.join(repo, 'packages', 'ide-server', 'bin', 'maa-ide.js');
   if (!existsSync(path.join(appDir, 'index.html'))) {
@@ -43,14 +47,14 @@ export async function startIde(workspace, { log = false } = {}) {
   const child = spawn(process.execPath, [bin, '--workspace', workspace, '--port', '0', '--app-dir', appDir],
     { cwd: repo, stdio: ['ignore', 'pipe', 'pipe'] });
   const output = [];
-  const url = await new Promise((resolve, reject) => {
+  const printed = await new Promise((resolve, reject) => {
     const timer = setTimeout(() => reject(new Error(`maa-ide did not print its URL within 60 s:\n${output.join('')}`)), 60_000);
     const onData = (chunk) => {
       const text = chunk.toString();
       output.push(text);
       if (log) process.stderr.write(`[maa-ide] ${text}`);
-      const match = /https?:\/\/[^\s]+/.exec(output.join(''));
-      if (match) { clearTimeout(timer); resolve(match[0].replace(/\/?$/, '/')); }
+      const match = /serving .* at (http:\/\/\S+)/.exec(output.join(''));
+      if (match) { clearTimeout(timer); resolve(new URL(match[1])); }
     };
     child.stdout.on('data', onData);
     child.stderr.on('data', onData);
@@ -58,8 +62,18 @@ export async function startIde(workspace, { log = false } = {}) {
   });
   child.stdout.on('data', (c) => output.push(c.toString()));
   child.stderr.on('data', (c) => output.push(c.toString()));
+  const token = printed.searchParams.get('token');
+  if (!token) throw new Error(`maa-ide printed a URL without its token: ${printed}`);
+  const tokenUrl = printed.toString();
   return {
-    url, output,
+    url: `${printed.origin}/`, tokenUrl, token, output,
+    /** Opens the token URL: maa-ide sets its cookie and redirects to the app. */
+    async login(page) {
+      const response = await page.goto(tokenUrl);
+      if (!response?.ok() || new URL(page.url()).searchParams.has('token')) {
+        throw new Error(`opening ${tokenUrl} did not lead to the app (${response?.status()} at ${page.url()})`);
+      }
+    },
     async stop() {
       if (child.exitCode !== null) return;
       const exited = new Promise((resolve) => child.once('exit', resolve));

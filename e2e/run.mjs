@@ -29,6 +29,7 @@ try {
   ide = await startIde(ws.workspace, { log });
   console.log(`e2e: maa-ide at ${ide.url} on ${ws.workspace}`);
   browser = await launchBrowser();
+  await ide.login(browser.page);
   for (const scenario of selected) {
     const started = Date.now();
     const ctx = { page: browser.page, url: ide.url, workspace: ws.workspace, shot: (name) => screenshot(browser.page, `${scenario.id}-${name}`) };
