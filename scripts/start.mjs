@@ -2,9 +2,10 @@
 // `npm start`: the main job. Builds every package (the browser app included), sets up the
 // simulator's Python environment, prepares the workspace (a copy of examples/ in
 // .maa-workspace/, created once and then kept, so your edits survive restarts) and starts the
-// IDE backend `maa-ide`, which prints the address to open.
+// IDE backend `maa-ide`, which prints the address to open: it holds a secret token made at each
+// start (docs/ide.md "Access"; MAA_IDE_TOKEN in the environment fixes it).
 //
-//   npm start                              http://127.0.0.1:3000/
+//   npm start                              http://127.0.0.1:3000/?token=...
 //   npm start -- --port 4000 --host 0.0.0.0
 //   npm start -- --workspace ~/my-models   (any folder; not copied)
 //   npm start -- --reset-workspace         (a fresh copy of examples/)
@@ -26,7 +27,9 @@ Options:
   --reset-workspace   replace .maa-workspace with a fresh copy of examples/
   --port N            HTTP port (default 3000; 0 = any free port)
   --host H            address to serve on (default 127.0.0.1)
-  --skip-build        start without building (after a build of your own)`);
+  --session-idle S    a simulation ends S seconds after its last client left (default 60)
+  --skip-build        start without building (after a build of your own)
+Open the URL maa-ide prints (it holds ?token=...; MAA_IDE_TOKEN=<token> fixes the token).`);
   process.exit(0);
 }
 
@@ -72,6 +75,7 @@ const ideArgs = [
   '--workspace', workspace,
   '--port', option('--port') ?? process.env.PORT ?? '3000',
   '--host', option('--host') ?? '127.0.0.1',
+  ...(option('--session-idle') ? ['--session-idle', option('--session-idle')] : []),
 ];
 console.log(`\n== IDE: node ${ideArgs.join(' ')}`);
 const ide = spawn(process.execPath, ideArgs, { cwd: repo, stdio: 'inherit' });
