@@ -102,7 +102,8 @@ interface Instance {
  * architecture, run the languages' checks, the compatibility checks and the generators' rules,
  * instantiate the generators, run the data type generator, then the component generator (which
  * hands each behavior to the behavior generator of its language), and write every platform's
- * files with a trace file in one transaction. Nothing is written when any step fails.
+ * files with a trace file (output/transaction.ts: staged beside the current output, then each
+ * platform folder switched in one rename). Nothing is written when any step fails.
  */
 export async function generate(options: GenerateOptions): Promise<GenerateResult> {
     const timings = { discover: 0, load: 0, check: 0, instantiate: 0, generate: 0, trace: 0, write: 0 };
