@@ -221,7 +221,7 @@ describe('ROS 2 environment preparation with stand-in scripts', () => {
     const starting = sims.start({ app: 'a/A.arcapp', platform: 'rospython', mode: 'ros2', platformDir: root }).catch((e: unknown) => e);
     for (let i = 0; i < 50 && !sims.status().log.includes('setup: downloading'); i++) await new Promise((r) => setTimeout(r, 100));
     expect(sims.status()).toMatchObject({ running: false, preparing: true, mode: 'ros2', platform: 'rospython' });
-    expect(sims.endpoints()).toBeUndefined();
+    expect(sims.target()).toBeUndefined();
     await sims.stop();
     expect(((await starting) as HttpError).status).toBe(409);
     expect(Date.now() - t0).toBeLessThan(10_000);
@@ -229,6 +229,7 @@ describe('ROS 2 environment preparation with stand-in scripts', () => {
     expect(status.running).toBe(false);
     expect(status.preparing).toBeUndefined();
     expect(status.log.at(-1)).toContain('cancelled');
+    sims.dispose();
   });
 
   it('answers a 500 with the log tail through the API when installing the interfaces fails, and keeps serving', async () => {
