@@ -4,6 +4,7 @@ import {
 } from 'langium';
 import type { WorkspaceFolder } from 'vscode-languageserver-types';
 import { ModelRoots } from './model-roots.js';
+import { GuardedLexer } from './parser/guarded-lexer.js';
 import { AdlScopeComputation } from './scoping/adl-scope-computation.js';
 import { AdlScopeProvider } from './scoping/adl-scope-provider.js';
 import { NameResolver } from './scoping/name-resolver.js';
@@ -66,6 +67,9 @@ export const AdlSharedModule: Module<AdlSharedServices, PartialLangiumSharedCore
 
 /** The host language's services; every language of the family is injected with them. */
 export const AdlModule: Module<AdlServices, PartialLangiumCoreServices & AdlAddedServices> = {
+    parser: {
+        Lexer: (s) => new GuardedLexer(s)
+    },
     references: {
         ScopeComputation: (s) => new AdlScopeComputation(s),
         ScopeProvider: (s) => new AdlScopeProvider(s.maa.NameResolver, s.workspace.AstNodeDescriptionProvider)

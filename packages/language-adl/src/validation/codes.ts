@@ -6,6 +6,8 @@ export const Codes = {
     SyntaxToken: 'syntax/unexpected-character',
     SyntaxUnexpected: 'syntax/unexpected-token',
     SyntaxUnexpectedEnd: 'syntax/unexpected-end',
+    SyntaxTooDeep: 'syntax/too-deep',
+    SyntaxTooLarge: 'syntax/too-large',
     LinkUnresolved: 'link/unresolved-reference',
     InternalError: 'internal/check-failed',
 

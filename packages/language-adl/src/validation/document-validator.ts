@@ -1,6 +1,7 @@
 import { DefaultDocumentValidator, DocumentValidator, GrammarAST, type LangiumCoreServices, type LangiumDocument, type ParseResult, type ValidationOptions } from 'langium';
 import type { Diagnostic } from 'vscode-languageserver-types';
 import { Codes } from './codes.js';
+import { isGuardError } from '../parser/guarded-lexer.js';
 
 /**
  * Gives every diagnostic of the family a stable code: lexer and parser errors become
@@ -35,12 +36,16 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
     protected override processLexingErrors(parseResult: ParseResult, diagnostics: Diagnostic[], options: ValidationOptions): void {
         const start = diagnostics.length;
         super.processLexingErrors(parseResult, diagnostics, options);
-        for (let i = start; i < diagnostics.length; i++) retag(diagnostics[i]!, Codes.SyntaxToken);
+        // Langium turns the lexer errors into diagnostics first and in order, then its report's.
+        for (let i = start; i < diagnostics.length; i++) {
+            const error = parseResult.lexerErrors[i - start];
+            retag(diagnostics[i]!, error && isGuardError(error) ? error.code : Codes.SyntaxToken);
+        }
     }
 
     protected override processParsingErrors(parseResult: ParseResult, diagnostics: Diagnostic[], options: ValidationOptions): void {
         const start = diagnostics.length;
-        super.processParsingErrors(parseResult, diagnostics, options);
+        super.processParsingErrors(withoutFollowUps(parseResult), diagnostics, options);
         for (let i = start; i < diagnostics.length; i++) {
             const d = diagnostics[i]!;
             const atEnd = /but found:? ?[`']{2}/.test(d.message);
@@ -135,6 +140,18 @@ function concise(message: string, atEnd: boolean, softKeywords: ReadonlySet<stri
     if (/Expecting:? end of (file|input)|token of type '?EOF/i.test(message)) return `${what}; expected the end of the file (one top-level element per file).`;
     const single = /Expecting (?:token of type )?'?([^'\s]+)'?/.exec(message)?.[1];
     return single ? `${what}; expected ${single === 'ID' ? 'a name' : `'${single}'`}.` : message;
+}
+
+/**
+ * Without the parser errors that the nesting or size guard caused: the parser sees the text
+ * around a cut-out region (`x = ;`, `(( ))`) and reports the token after it, or the end of the file.
+ */
+function withoutFollowUps(parseResult: ParseResult): ParseResult {
+    const cuts = parseResult.lexerErrors.filter(isGuardError).flatMap((e) => e.regions);
+    if (cuts.length === 0) return parseResult;
+    const followUp = (offset: number): boolean => cuts.some((c) =>
+        (Number.isNaN(offset) ? c.resumeOffset === Infinity : offset >= c.offset && offset <= c.resumeOffset));
+    return { ...parseResult, parserErrors: parseResult.parserErrors.filter((e) => !followUp(e.token.startOffset)) };
 }
 
 function retag(d: Diagnostic, code: string): void {
