@@ -20,7 +20,7 @@ import { AdlReferences } from './references.js';
 import { AdlRenameProvider } from './rename.js';
 import { AdlSemanticTokenProvider } from './semantic-tokens.js';
 import { AdlDocumentSymbolProvider } from './symbols.js';
-import { AdlDocumentUpdateHandler, AdlLspDocumentBuilder, AdlLspWorkspaceManager } from './workspace.js';
+import { AdlDocumentUpdateHandler, AdlLspDocumentBuilder, AdlLspLangiumDocuments, AdlLspWorkspaceManager } from './workspace.js';
 
 /**
  * The LSP services of every language of the family. Each provider that a behavior language may
@@ -64,6 +64,7 @@ export interface AdlAddedSharedLspServices {
     workspace: {
         WorkspaceManager: AdlLspWorkspaceManager;
         DocumentBuilder: AdlLspDocumentBuilder;
+        LangiumDocuments: AdlLspLangiumDocuments;
     };
 }
 
@@ -78,7 +79,8 @@ export const AdlLspSharedModule: Module<AdlLspSharedServices, PartialLangiumShar
     },
     workspace: {
         WorkspaceManager: (s) => new AdlLspWorkspaceManager(s),
-        DocumentBuilder: (s) => new AdlLspDocumentBuilder(s)
+        DocumentBuilder: (s) => new AdlLspDocumentBuilder(s),
+        LangiumDocuments: (s) => new AdlLspLangiumDocuments(s)
     }
 };
 

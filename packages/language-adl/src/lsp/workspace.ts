@@ -1,8 +1,9 @@
 import {
-    DefaultDocumentBuilder, isOperationCancelled, URI, UriUtils, type BuildOptions, type FileSystemNode, type FileSystemProvider, type LangiumDocument,
+    DefaultDocumentBuilder, DefaultLangiumDocuments, isOperationCancelled, URI, UriUtils, type BuildOptions, type FileSystemNode, type FileSystemProvider, type LangiumDocument,
     type LangiumDocuments, type DocumentBuilder, type WorkspaceLock
 } from 'langium';
 import { DefaultDocumentUpdateHandler, type DocumentUpdateHandler, type LangiumSharedServices } from 'langium/lsp';
+import { LSPErrorCodes, ResponseError, type CancellationToken } from 'vscode-languageserver-protocol';
 import type { DidChangeWatchedFilesParams, InitializeParams } from 'vscode-languageserver-protocol';
 import type { WorkspaceFolder } from 'vscode-languageserver-types';
 import { AdlWorkspaceManager, type AdlSharedServices } from '../adl-module.js';
@@ -97,6 +98,23 @@ export class AdlLspWorkspaceManager extends AdlWorkspaceManager {
         } catch (e) {
             console.warn(`${uri.toString()}: ignored (${(e as Error).message})`);
             return undefined;
+        }
+    }
+}
+
+/**
+ * The documents of the workspace. A request for a document that is neither open nor readable
+ * (one closed a moment ago and dropped because it has no file) is refused with a RequestFailed
+ * error naming the document: Langium's request handlers read it from the file system and would
+ * answer the read error as an internal error.
+ */
+export class AdlLspLangiumDocuments extends DefaultLangiumDocuments {
+    override async getOrCreateDocument(uri: URI, cancellationToken?: CancellationToken): Promise<LangiumDocument> {
+        try {
+            return await super.getOrCreateDocument(uri, cancellationToken);
+        } catch (e) {
+            if (isOperationCancelled(e) || e instanceof ResponseError) throw e;
+            throw new ResponseError(LSPErrorCodes.RequestFailed, `${uri.toString()} is not open and cannot be read: ${e instanceof Error ? e.message : String(e)}`);
         }
     }
 }
