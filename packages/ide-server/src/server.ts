@@ -200,7 +200,8 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
     });
   });
   const port = (server.address() as AddressInfo).port;
-  const shownHost = host.includes(':') ? `[${host}]` : host;
+  // A wildcard address is no name a browser may use (the Host check refuses it): print loopback.
+  const shownHost = host === '0.0.0.0' || host === '::' ? '127.0.0.1' : host.includes(':') ? `[${host}]` : host;
   let closing: Promise<void> | undefined;
   return {
     url: `http://${shownHost}:${port}/`,

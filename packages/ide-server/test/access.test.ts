@@ -158,6 +158,18 @@ describe('access: Host, Origin and the token', () => {
 });
 
 describe('access: the --host it listens on', () => {
+  it('prints a loopback URL when it listens on every address, and refuses the wildcard as Host', async () => {
+    const site = await startSite({ empty: true, host: '0.0.0.0' });
+    try {
+      const port = site.server.port;
+      expect(site.server.loginUrl).toBe(`http://127.0.0.1:${port}/?token=${TEST_TOKEN}`);
+      expect((await rawRequest(site.server.url, '/api/files', { headers: { Host: `127.0.0.1:${port}` } })).status).toBe(200);
+      expect((await rawRequest(site.server.url, '/api/files', { headers: { Host: `0.0.0.0:${port}` } })).status).toBe(403);
+    } finally {
+      await site.dispose();
+    }
+  });
+
   it('accepts its own --host name besides the loopback names, and nothing else', async () => {
     const site = await startSite({ empty: true, host: 'localhost' });
     try {

@@ -2,8 +2,10 @@ import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { describe, expect, it } from 'vitest';
+import { readCookie, sameSecret } from '../src/access.js';
 import { platformKind } from '../src/apps.js';
 import { checkRelativePath } from '../src/confinement.js';
+import { PathRedactor, scrubAbsolutePaths } from '../src/redact.js';
 import { findPackageDir, parseReadyLine } from '../src/sim-session.js';
 
 describe('small parts', () => {
@@ -41,5 +43,30 @@ describe('small parts', () => {
     } finally {
       rmSync(dir, { recursive: true, force: true });
     }
+  });
+
+  it('reads one cookie of a Cookie header and compares secrets', () => {
+    expect(readCookie('a=1; maa-ide-token-3000=abc; b=2', 'maa-ide-token-3000')).toBe('abc');
+    expect(readCookie('maa-ide-token-30000=abc', 'maa-ide-token-3000')).toBeUndefined();
+    expect(readCookie(undefined, 'x')).toBeUndefined();
+    expect(sameSecret('same-secret', 'same-secret')).toBe(true);
+    expect(sameSecret('same-secret', 'same-secreT')).toBe(false);
+    expect(sameSecret('', 'same-secret')).toBe(false);
+  });
+
+  it('redacts known folders and absolute paths of tracebacks, keeps request paths', () => {
+    const redact = new PathRedactor([
+      ['/srv/x/ws', ''],
+      ['/srv/x/out', '<generated>'],
+    ]);
+    expect(redact.text('cannot write /srv/x/ws/a/b.arc')).toBe('cannot write a/b.arc');
+    expect(redact.text('the folder /srv/x/ws is gone')).toBe('the folder . is gone');
+    expect(redact.text('in /srv/x/out/TR/timesync')).toBe('in <generated>/TR/timesync');
+    expect(redact.value({ error: 'x /srv/x/ws/a', log: ['File "/usr/lib/python3/dist-packages/x.py", line 3'] })).toEqual({
+      error: 'x a',
+      log: ['File "…/x.py", line 3'],
+    });
+    expect(scrubAbsolutePaths('unknown route: GET /api/generated/file')).toBe('unknown route: GET /api/generated/file');
+    expect(scrubAbsolutePaths('rosbridge at ws://127.0.0.1:9090/a/b/c/d')).toBe('rosbridge at ws://127.0.0.1:9090/a/b/c/d');
   });
 });
