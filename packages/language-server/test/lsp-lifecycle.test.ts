@@ -93,7 +93,7 @@ describe('documents that were never saved', () => {
         expect(documentCount()).toBe(before);
     });
 
-    test('a closed document that has a file stays in the workspace', async () => {
+    test('a closed document that has a file stays in the workspace, with the text of its file', async () => {
         const a = uri('A.arc');
         const exists = vi.spyOn(server.family.shared.workspace.FileSystemProvider, 'exists');
         try {
@@ -106,6 +106,11 @@ describe('documents that were never saved', () => {
             expect(await asked).toBe(true);
             await new Promise((r) => setImmediate(r));
             expect(server.family.shared.workspace.LangiumDocuments.hasDocument(URI.parse(a))).toBe(true);
+            // It was closed with unsaved edits (`int x4`): the workspace goes back to the file's text.
+            await server.until('A.arc back to the text on disk', () => {
+                const doc = server.family.shared.workspace.LangiumDocuments.getDocument(URI.parse(a));
+                return doc?.textDocument.getText() === A && doc.state === DocumentState.Validated ? true : undefined;
+            });
         } finally {
             exists.mockRestore();
         }

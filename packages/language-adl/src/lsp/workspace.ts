@@ -142,7 +142,8 @@ export class AdlLspDocumentBuilder extends DefaultDocumentBuilder {
  * leaves the workspace: it is deleted from the documents and the index, the documents that
  * linked against it are rebuilt, and its diagnostics are cleared (Langium's builder publishes
  * empty diagnostics for deleted documents). Otherwise its errors would come back on every
- * later build and every such document would stay in memory.
+ * later build and every such document would stay in memory. A document with a file that was
+ * closed without saving goes back to the file's text (Langium would keep the editor's text).
  *
  * A build that fails (a bug in a check that escaped its guard, a stack overflow) is logged and
  * the server goes on; Langium leaves that rejection unhandled, which ends a Node process.
@@ -187,12 +188,26 @@ export class AdlDocumentUpdateHandler extends DefaultDocumentUpdateHandler {
     didCloseDocument(event: Parameters<NonNullable<DocumentUpdateHandler['didCloseDocument']>>[0]): void {
         const uri = URI.parse(event.document.uri);
         if (this.roots.isBuiltin(uri)) return;
-        this.afterStartup(`dropping the closed document ${uri.toString()}`, async () => {
-            if (await this.hasFile(uri)) return;
+        this.afterStartup(`handling the closed document ${uri.toString()}`, async () => {
+            const file = await this.hasFile(uri);
             // Opened again meanwhile: the editor's text is the document again.
-            if (this.openDocuments.get(uri.toString()) || !this.documents.hasDocument(uri)) return;
-            await this.lock.write((token) => this.builder.update([], [uri], token));
+            const document = this.documents.getDocument(uri);
+            if (this.openDocuments.get(uri.toString()) || !document) return;
+            if (!file) {
+                await this.lock.write((token) => this.builder.update([], [uri], token));
+            } else if (await this.differsFromFile(uri, document.textDocument.getText())) {
+                // Closed without saving: the workspace goes back to the text on disk.
+                await this.lock.write((token) => this.builder.update([uri], [], token));
+            }
         });
+    }
+
+    private async differsFromFile(uri: URI, text: string): Promise<boolean> {
+        try {
+            return (await this.files.readFile(uri)) !== text;
+        } catch {
+            return false;
+        }
     }
 
     /** Whether a document has a file (unreadable storage counts as a file: nothing is dropped on doubt). */
