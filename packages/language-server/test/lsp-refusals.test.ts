@@ -29,7 +29,16 @@ const APP = `application App for toast.Robot {
 }
 `;
 
-const FILES = { 'toast/types/Types.cd': TYPES_CD, 'toast/Robot.arc': ROBOT, 'App.arcapp': APP };
+const ARM = `package toast;
+
+robotarm Arm {
+  input int angle;
+  location toaster 120deg 20cm;
+  program Load { move toaster; move angle; }
+}
+`;
+
+const FILES = { 'toast/types/Types.cd': TYPES_CD, 'toast/Robot.arc': ROBOT, 'App.arcapp': APP, 'toast/Arm.ra': ARM };
 
 function positionOf(doc: LangiumDocument, text: string, delta = 1): { line: number; character: number } {
     const offset = doc.textDocument.getText().indexOf(text);
@@ -81,6 +90,16 @@ describe('rename refuses names that a language cannot parse', () => {
         const ws = await workspace(FILES);
         const e = await refusal(ws, 'toast/types/Types.cd', 'ToastColor', 'enum');
         expect(e.message).toMatch(/'enum' is a keyword of \.cd files/);
+    });
+
+    test('in RobotArm files: keywords of the language are refused, its soft keywords accepted', async () => {
+        const ws = await workspace(FILES);
+        const e = await refusal(ws, 'toast/Arm.ra', 'toaster 120deg', 'package');
+        expect(e.message).toMatch(/'package' is a keyword of \.ra files/);
+        await expect(refusal(ws, 'toast/Arm.ra', 'angle;', '9')).resolves.toMatchObject({ code: ErrorCodes.InvalidParams });
+        const renamed = applyWorkspaceEdit(ws, await renameAt(ws, 'toast/Arm.ra', 'toaster 120deg', 'open') as never);
+        expect(renamed['toast/Arm.ra']).toContain('location open 120deg 20cm;');
+        expect(renamed['toast/Arm.ra']).toContain('move open;');
     });
 
     test('valid names and soft keywords are accepted', async () => {
