@@ -12,6 +12,7 @@ import { RootIndex } from './scoping/root-index.js';
 import { BUILTIN_DOCUMENTS } from './types/builtin-library.js';
 import { ExpressionTyper } from './types/expression-typer.js';
 import { TypeRelations } from './types/type-relations.js';
+import { AdlLinker, AdlValidationRegistry } from './validation/check-failures.js';
 import { AdlDocumentValidator } from './validation/document-validator.js';
 import { ReservedNames } from './validation/reserved-names.js';
 
@@ -71,11 +72,13 @@ export const AdlModule: Module<AdlServices, PartialLangiumCoreServices & AdlAdde
         Lexer: (s) => new GuardedLexer(s)
     },
     references: {
+        Linker: (s) => new AdlLinker(s),
         ScopeComputation: (s) => new AdlScopeComputation(s),
         ScopeProvider: (s) => new AdlScopeProvider(s.maa.NameResolver, s.workspace.AstNodeDescriptionProvider)
     },
     validation: {
-        DocumentValidator: (s) => new AdlDocumentValidator(s)
+        DocumentValidator: (s) => new AdlDocumentValidator(s),
+        ValidationRegistry: (s) => new AdlValidationRegistry(s)
     },
     maa: {
         NameResolver: (s) => new NameResolver(s.shared.maa.RootIndex, s.shared.maa.ModelRoots, s.workspace.AstNodeDescriptionProvider),

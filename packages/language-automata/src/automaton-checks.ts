@@ -96,8 +96,8 @@ export class AutomatonChecks {
     private checkInitialAction(s: State, accept: ValidationAcceptor): void {
         if (!s.initialAction) return;
         for (const n of AstUtils.streamAllContents(s.initialAction)) {
-            if (isNameExpression(n) && isIncomingPort(n.ref.ref)) {
-                accept('error', `Incoming port '${n.ref.$refText}' cannot be read in the initial action of state '${s.name}': it runs before the first input arrives (outgoing ports may be written there).`,
+            if (isNameExpression(n) && isIncomingPort(n.ref?.ref)) {
+                accept('error', `Incoming port '${n.ref?.$refText ?? ''}' cannot be read in the initial action of state '${s.name}': it runs before the first input arrives (outgoing ports may be written there).`,
                     { node: n, code: AutomatonCodes.InputInInitial });
             }
         }

@@ -89,12 +89,12 @@ export function allTransitions(a: Automaton): AnyTransition[] {
 
 /** The source state of a transition: the referenced state, or the enclosing state of an internal one. */
 export function sourceOf(t: AnyTransition): State | undefined {
-    return t.$type === 'InternalTransition' ? t.$container : t.source.ref;
+    return t.$type === 'InternalTransition' ? t.$container : t.source?.ref; // no source: partially parsed
 }
 
 /** The target state of a transition (an internal transition stays in its state). */
 export function targetOf(t: AnyTransition): State | undefined {
-    return t.$type === 'InternalTransition' ? t.$container : t.target.ref;
+    return t.$type === 'InternalTransition' ? t.$container : t.target?.ref;
 }
 
 export function triggerOf(t: AnyTransition): Trigger {
@@ -120,7 +120,7 @@ export function isIncomingPort(node: unknown): node is Port {
 /** A short human-readable name of a transition, e.g. `S -> T` or `-> (internal in S)`. */
 export function describeTransition(t: AnyTransition): string {
     if (t.$type === 'InternalTransition') return `internal transition of state '${t.$container.name}'`;
-    return `transition '${t.source.$refText} -> ${t.target.$refText}'`;
+    return `transition '${t.source?.$refText ?? '?'} -> ${t.target?.$refText ?? '?'}'` // partially parsed: '?';
 }
 
 /**

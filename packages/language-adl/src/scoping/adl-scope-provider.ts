@@ -69,7 +69,7 @@ export class AdlScopeProvider implements ScopeProvider {
         if (!isAssignmentExpression(assign) || assign.left !== expr || assign.op !== '=') return null;
         const owner = assign.$container;
         if (isSubcomponent(owner)) return subcomponentType(owner).decl;
-        if (isParentComponent(owner)) return owner.type.ref.ref;
+        if (isParentComponent(owner)) return owner.type?.ref?.ref; // no type: partially parsed
         return null;
     }
 

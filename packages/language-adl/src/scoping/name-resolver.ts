@@ -106,7 +106,7 @@ export class NameResolver {
 function fileHeader(doc: LangiumDocument): { pkg: string | undefined; imports: string[] } {
     const top = doc.parseResult.value as ArcModel | CDModel;
     if (isArcModel(top) || isCDModel(top)) {
-        return { pkg: top.package, imports: top.imports.map((i) => i.importedNamespace) };
+        return { pkg: top.package, imports: top.imports.flatMap((i) => (i.importedNamespace ? [i.importedNamespace] : [])) }; // partially parsed imports have no name
     }
     return { pkg: undefined, imports: [] };
 }

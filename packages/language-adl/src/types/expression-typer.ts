@@ -122,6 +122,9 @@ export class ExpressionTyper {
                 }
                 return l;
             }
+            default:
+                // A node the parser's error recovery left without its expression type.
+                return ERROR_TYPE;
         }
     }
 
@@ -142,9 +145,9 @@ export class ExpressionTyper {
     }
 
     private name(e: NameExpression, p: TypeProblem[]): SymType {
-        const target = e.ref.ref;
+        const target = e.ref?.ref; // no reference: partially parsed
         if (target) return this.typeOfNamed(target);
-        const name = e.ref.$refText;
+        const name = e.ref?.$refText ?? '';
         if (isFieldAccessExpression(e.$container) && e.$container.receiver === e && this.resolver.isPackagePrefix(e, name)) {
             return { kind: 'qualifier', description: `package ${name}` };
         }
@@ -271,7 +274,7 @@ export class ExpressionTyper {
     private binary(e: BinaryExpression, p: TypeProblem[]): SymType {
         const l = this.value(e.left, p);
         const r = this.value(e.right, p);
-        const op = e.op.replace(/\s+/g, '');
+        const op = (e.op ?? '').replace(/\s+/g, ''); // no operator: partially parsed
         const lenient = isErroneous(l) || isErroneous(r);
         switch (op) {
             case '&&':
@@ -318,7 +321,7 @@ function isCallee(e: FieldAccessExpression): boolean {
 
 function isAssignable(e: Expression): boolean {
     if (e.$type === 'NameExpression') {
-        const t = e.ref.ref?.$type;
+        const t = e.ref?.ref?.$type;
         return t === undefined || ['Port', 'Field', 'LocalVariable', 'Parameter'].includes(t);
     }
     return e.$type === 'FieldAccessExpression' || e.$type === 'ArrayAccessExpression';

@@ -2,6 +2,7 @@ import { DefaultDocumentValidator, DocumentValidator, GrammarAST, type LangiumCo
 import type { Diagnostic } from 'vscode-languageserver-types';
 import { Codes } from './codes.js';
 import { isGuardError } from '../parser/guarded-lexer.js';
+import { isFailedLinkingError } from './check-failures.js';
 
 /**
  * Gives every diagnostic of the family a stable code: lexer and parser errors become
@@ -59,7 +60,7 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
         // A check that failed on an unusual (e.g. partially parsed) model must still be visible
         // with a code, and must never take the other diagnostics with it.
         for (const d of diagnostics) if (d.code === undefined) d.code = Codes.InternalError;
-        return diagnostics;
+        return onePerFailedCheck(diagnostics);
     }
 
     protected override processLinkingErrors(document: LangiumDocument, diagnostics: Diagnostic[], _options: ValidationOptions): void {
@@ -67,6 +68,11 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
             const error = reference.error;
             if (!error) continue;
             const { container, property } = error.info;
+            if (isFailedLinkingError(error)) {
+                const range = reference.$refNode?.range ?? container.$cstNode?.range;
+                if (range) diagnostics.push({ severity: 1, range, message: error.message, code: Codes.InternalError, source: this.getSource(), data: { check: error.check } });
+                continue;
+            }
             let code: string = Codes.LinkUnresolved;
             let message = error.message;
             const name = error.info.reference.$refText;
@@ -140,6 +146,19 @@ function concise(message: string, atEnd: boolean, softKeywords: ReadonlySet<stri
     if (/Expecting:? end of (file|input)|token of type '?EOF/i.test(message)) return `${what}; expected the end of the file (one top-level element per file).`;
     const single = /Expecting (?:token of type )?'?([^'\s]+)'?/.exec(message)?.[1];
     return single ? `${what}; expected ${single === 'ID' ? 'a name' : `'${single}'`}.` : message;
+}
+
+/** A check that failed on many nodes is one problem: one `internal/check-failed` per check. */
+function onePerFailedCheck(diagnostics: Diagnostic[]): Diagnostic[] {
+    const seen = new Set<string>();
+    return diagnostics.filter((d) => {
+        if (d.code !== Codes.InternalError) return true;
+        const check = (d.data as { check?: unknown } | undefined)?.check;
+        const key = typeof check === 'string' ? check : d.message;
+        if (seen.has(key)) return false;
+        seen.add(key);
+        return true;
+    });
 }
 
 /**

@@ -38,7 +38,7 @@ export class ConnectorChecks {
     };
 
     private end(c: ComponentType, access: PortAccess): End | undefined {
-        const name = access.port.$refText;
+        const name = access.port?.$refText ?? ''; // no port: partially parsed
         if (access.subcomponent) {
             const sub = access.subcomponent.ref;
             if (!sub) return undefined;
@@ -176,8 +176,8 @@ export class ConnectorChecks {
         };
         for (const con of elementsOf(decl)) {
             if (con.$type !== 'Connector') continue;
-            const s = `${con.source.subcomponent?.$refText ?? ''}.${con.source.port.$refText}`;
-            for (const t of con.targets) add(s, `${t.subcomponent?.$refText ?? ''}.${t.port.$refText}`);
+            const s = `${con.source.subcomponent?.$refText ?? ''}.${con.source.port?.$refText ?? ''}`;
+            for (const t of con.targets) add(s, `${t.subcomponent?.$refText ?? ''}.${t.port?.$refText ?? ''}`);
         }
         for (const sub of subcomponentsOf(decl)) {
             const d = subcomponentType(sub).decl;

@@ -44,8 +44,8 @@ export class ExpressionChecks {
     /** Ports are values of a time slice; they cannot configure or initialize a component. */
     checkStaticContext(expr: Expression, accept: ValidationAcceptor, where: string): void {
         for (const n of [expr, ...AstUtils.streamAllContents(expr)]) {
-            if (isNameExpression(n) && isPort(n.ref.ref)) {
-                accept('error', `Port '${n.ref.$refText}' cannot be used in ${where}: ports carry values only while the component runs.`, { node: n, code: Codes.PortInStaticContext });
+            if (isNameExpression(n) && isPort(n.ref?.ref)) {
+                accept('error', `Port '${n.ref?.$refText ?? ''}' cannot be used in ${where}: ports carry values only while the component runs.`, { node: n, code: Codes.PortInStaticContext });
             }
         }
     }

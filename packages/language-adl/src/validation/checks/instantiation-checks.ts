@@ -56,7 +56,7 @@ export class InstantiationChecks {
             let param: Parameter | undefined;
             if (key) {
                 sawKey = true;
-                param = key.ref.ref as Parameter | undefined;
+                param = key.ref?.ref as Parameter | undefined;
                 if (!param) return; // unknown key, reported by linking as arc/unknown-argument-key
             } else {
                 if (sawKey) {

@@ -153,7 +153,7 @@ export class StructureChecks {
 
     private checkInheritanceCycle(c: ComponentType, accept: ValidationAcceptor): void {
         for (const p of c.parents) {
-            const parent = p.type.ref.ref;
+            const parent = p.type?.ref?.ref; // no type: partially parsed
             if (!parent) continue;
             const path = this.inheritancePath(parent, c, new Set());
             if (path) {
