@@ -46,7 +46,9 @@ export async function startInProcess(folderUri: string): Promise<InProcessServer
         logs.push(p.message);
         wake();
     });
-    client.onRequest(() => null); // client/registerCapability and the like
+    // Requests of the server to the client (none with the capabilities sent, but answered if any).
+    client.onRequest('client/registerCapability', () => null);
+    client.onRequest('workspace/configuration', () => []);
     client.listen();
     await client.sendRequest(InitializeRequest.type, {
         processId: null, rootUri: folderUri, workspaceFolders: [{ uri: folderUri, name: 'ws' }], capabilities: {}

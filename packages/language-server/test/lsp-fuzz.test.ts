@@ -138,7 +138,9 @@ beforeAll(async () => {
     });
     // The server's console goes to the client's log: kept with stderr for failure messages.
     connection.onNotification(LogMessageNotification.type, (p) => { stderr = (stderr + p.message + '\n').slice(-20_000); });
-    connection.onRequest(() => null); // client/registerCapability and the like
+    // Requests of the server to the client (none with the capabilities sent, but answered if any).
+    connection.onRequest('client/registerCapability', () => null);
+    connection.onRequest('workspace/configuration', () => []);
     connection.listen();
     const root = pathToFileURL(tmp).toString();
     await connection.sendRequest(InitializeRequest.type, { processId: process.pid, rootUri: root, workspaceFolders: [{ uri: root, name: 'fuzz' }], capabilities: {} });

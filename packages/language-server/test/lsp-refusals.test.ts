@@ -9,6 +9,7 @@ import { URI, type LangiumDocument } from 'langium';
 import { NodeFileSystem } from 'langium/node';
 import { describe, expect, test } from 'vitest';
 import { ErrorCodes, LSPErrorCodes, ResponseError } from 'vscode-languageserver-protocol';
+import type { WorkspaceEdit } from 'vscode-languageserver-types';
 import { builtinDocuments, type AdlLspServices } from '@maa/language-adl';
 import { createMaaLspServices } from '../src/family.js';
 import { applyWorkspaceEdit, servicesOf, TYPES_CD, workspace, type Workspace } from './lsp-helpers.js';
@@ -46,7 +47,7 @@ function positionOf(doc: LangiumDocument, text: string, delta = 1): { line: numb
     return doc.textDocument.positionAt(offset + delta);
 }
 
-async function renameAt(ws: Workspace, path: string, text: string, newName: string): Promise<unknown> {
+async function renameAt(ws: Workspace, path: string, text: string, newName: string): Promise<WorkspaceEdit | undefined> {
     const doc = ws.doc(path);
     return servicesOf(doc).lsp.RenameProvider!.rename(doc, { textDocument: { uri: doc.uri.toString() }, position: positionOf(doc, text), newName });
 }
@@ -97,17 +98,17 @@ describe('rename refuses names that a language cannot parse', () => {
         const e = await refusal(ws, 'toast/Arm.ra', 'toaster 120deg', 'package');
         expect(e.message).toMatch(/'package' is a keyword of \.ra files/);
         await expect(refusal(ws, 'toast/Arm.ra', 'angle;', '9')).resolves.toMatchObject({ code: ErrorCodes.InvalidParams });
-        const renamed = applyWorkspaceEdit(ws, await renameAt(ws, 'toast/Arm.ra', 'toaster 120deg', 'open') as never);
+        const renamed = applyWorkspaceEdit(ws, await renameAt(ws, 'toast/Arm.ra', 'toaster 120deg', 'open'));
         expect(renamed['toast/Arm.ra']).toContain('location open 120deg 20cm;');
         expect(renamed['toast/Arm.ra']).toContain('move open;');
     });
 
     test('valid names and soft keywords are accepted', async () => {
         const ws = await workspace(FILES);
-        const renamed = applyWorkspaceEdit(ws, await renameAt(ws, 'toast/Robot.arc', 'distance;', '$d_2') as never);
+        const renamed = applyWorkspaceEdit(ws, await renameAt(ws, 'toast/Robot.arc', 'distance;', '$d_2'));
         expect(renamed['toast/Robot.arc']).toContain('port in int $d_2;');
         // `top` is a keyword of the robot arm language that the grammar admits as a name.
-        const soft = applyWorkspaceEdit(ws, await renameAt(ws, 'toast/Robot.arc', 'toaster 120deg', 'top') as never);
+        const soft = applyWorkspaceEdit(ws, await renameAt(ws, 'toast/Robot.arc', 'toaster 120deg', 'top'));
         expect(soft['toast/Robot.arc']).toContain('location top 120deg 20cm;');
         expect(soft['toast/Robot.arc']).toContain('move top;');
     });
