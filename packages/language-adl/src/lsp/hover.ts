@@ -1,8 +1,8 @@
-import { AstUtils, type AstNode, type MaybePromise, type ServiceRegistry } from 'langium';
+import { type AstNode, type MaybePromise, type ServiceRegistry } from 'langium';
 import { AstNodeHoverProvider } from 'langium/lsp';
 import type { AdlLspServices } from './lsp-module.js';
 import { describe } from './descriptions.js';
-import { documentation } from './node-info.js';
+import { documentation, documentOf } from './node-info.js';
 
 /**
  * Hover text for a declaration, in Markdown (a fenced signature and a sentence or two); the
@@ -39,10 +39,10 @@ export class AdlHoverProvider extends AstNodeHoverProvider {
         }
     }
 
-    /** The language id of the document a node is in (for fenced code). */
+    /** The language id of the document a node is in (for fenced code; `arc` for declarations outside the model files). */
     languageOf(node: AstNode): string {
-        const uri = AstUtils.getDocument(node).uri;
-        return this.registry.hasServices(uri) ? this.registry.getServices(uri).LanguageMetaData.languageId : 'arc';
+        const uri = documentOf(node)?.uri;
+        return uri && this.registry.hasServices(uri) ? this.registry.getServices(uri).LanguageMetaData.languageId : 'arc';
     }
 
     protected override getAstNodeHoverContent(node: AstNode): MaybePromise<string | undefined> {
