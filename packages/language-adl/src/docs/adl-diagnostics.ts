@@ -1,4 +1,6 @@
 import type { DiagnosticCatalog } from './diagnostic-catalog.js';
+import { NESTING_LIMIT } from '../parser/nesting-limit.js';
+import { SIZE_LIMIT } from '../parser/guarded-lexer.js';
 
 const lib = {
     'a/b/A.arc': 'package a.b;\ncomponent A { }',
@@ -9,7 +11,10 @@ const lib = {
 /** The host language's diagnostics (`syntax/`, `link/`, `arc/`, `expr/`, `cd/`). */
 export const ADL_DIAGNOSTICS: DiagnosticCatalog = {
     title: 'Components, connectors and expressions',
-    intro: 'Checks of the host language (`.arc`), after MontiArc\'s context conditions, and of class diagrams (`.cd`).',
+    intro: 'Checks of the host language (`.arc`), after MontiArc\'s context conditions, and of class diagrams (`.cd`). '
+        + `A model file of any language of the family with more than ${SIZE_LIMIT.toLocaleString('en')} characters is not parsed: `
+        + 'it gets one `syntax/too-large` error (at its start) and an empty model, so that one pathological file cannot keep '
+        + 'the editor or `maa-gen check` busy for minutes; see docs/cli.md for the time and memory measured at the limit.',
     entries: [
         {
             code: 'syntax/unexpected-token', severity: 'error',
@@ -28,6 +33,21 @@ export const ADL_DIAGNOSTICS: DiagnosticCatalog = {
             rule: 'A character that no token of the language starts with.',
             invalid: { files: { 'Foo.arc': 'component Foo { # }' }, at: '#' },
             valid: { files: { 'Foo.arc': 'component Foo { }' } }
+        },
+        {
+            code: 'syntax/too-deep', severity: 'error',
+            rule: 'The text nests deeper than the parser can take (its recursion would overflow the stack): '
+                + `more than ${NESTING_LIMIT} nesting levels, where a parenthesis or bracket counts 16, a brace 4, `
+                + 'a generic `<` 3, `if`/`else`/`while`/`for` 2 and any other keyword or operator 1 until its statement, '
+                + 'argument or block ends. That allows, for example, 11 nested parentheses in an expression, 47 nested '
+                + 'blocks in `compute`, 37 nested states, 86 nested `if` statements or 189 operators in one expression. The parser measured the limits with '
+                + 'Node\'s default stack (and a syntax error at the innermost point): 27 parentheses, 125 blocks, 94 states, '
+                + '452 prefix operators. The region past the limit (up to the end of its statement or enclosing bracket) is '
+                + 'not parsed; the rest of the file is checked. The diagnostic marks the first token past the limit '
+                + 'and counts further regions of the same file. Restructure the model, e.g. with local variables or '
+                + 'helper components.',
+            invalid: { files: { 'Foo.arc': `component Foo {\n  port in int i;\n  port out int o;\n  compute { o = ${'('.repeat(12)}i${')'.repeat(12)}; }\n}` }, at: '(' },
+            valid: { files: { 'Foo.arc': `component Foo {\n  port in int i;\n  port out int o;\n  compute { o = ${'('.repeat(11)}i${')'.repeat(11)}; }\n}` } }
         },
         {
             code: 'arc/file-name-mismatch', severity: 'error',

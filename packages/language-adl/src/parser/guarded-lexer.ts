@@ -1,7 +1,15 @@
 import { DefaultLexer, GrammarAST, AstUtils, type LangiumCoreServices, type LexerResult, type TokenizeOptions } from 'langium';
+import { Codes } from '../validation/codes.js';
 import { limitNesting, NESTING_LIMIT, type NestingCut } from './nesting-limit.js';
 
 type LexingError = LexerResult['errors'][number];
+
+/**
+ * The code of a file above SIZE_LIMIT. Not in `Codes` (whose every code has a catalog entry with
+ * examples, rendered into docs/diagnostics.md): an example would have to be 2 MB long; the ADL
+ * catalog's introduction documents it instead.
+ */
+export const TOO_LARGE_CODE = 'syntax/too-large';
 
 /**
  * The largest model file that is parsed, in characters. Larger files get one `syntax/too-large`
@@ -11,7 +19,7 @@ export const SIZE_LIMIT = 2_000_000;
 
 /** A lexing error of the guard: its diagnostic code and where parsing resumes after it. */
 export interface GuardError extends LexingError {
-    readonly code: 'syntax/too-deep' | 'syntax/too-large';
+    readonly code: typeof Codes.SyntaxTooDeep | typeof TOO_LARGE_CODE;
     /**
      * The regions cut out: parser errors from `offset` up to and including the token at
      * `resumeOffset` (Infinity: up to the end) are follow-ups of the cut.
@@ -55,7 +63,7 @@ function tooDeep(cuts: readonly NestingCut[]): GuardError {
     const t = cuts[0]!.token;
     const more = cuts.length > 1 ? ` (and ${cuts.length - 1} more place${cuts.length > 2 ? 's' : ''} in this file)` : '';
     return {
-        code: 'syntax/too-deep',
+        code: Codes.SyntaxTooDeep,
         offset: t.startOffset,
         line: t.startLine,
         column: t.startColumn,
@@ -69,7 +77,7 @@ function tooDeep(cuts: readonly NestingCut[]): GuardError {
 
 function tooLarge(text: string): LexerResult {
     const error: GuardError = {
-        code: 'syntax/too-large',
+        code: TOO_LARGE_CODE,
         offset: 0,
         line: 1,
         column: 1,

@@ -7,7 +7,6 @@ export const Codes = {
     SyntaxUnexpected: 'syntax/unexpected-token',
     SyntaxUnexpectedEnd: 'syntax/unexpected-end',
     SyntaxTooDeep: 'syntax/too-deep',
-    SyntaxTooLarge: 'syntax/too-large',
     LinkUnresolved: 'link/unresolved-reference',
     InternalError: 'internal/check-failed',
 

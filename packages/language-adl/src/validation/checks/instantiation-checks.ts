@@ -50,7 +50,8 @@ export class InstantiationChecks {
         let sawKey = false;
         args.forEach((arg, index) => {
             const key = keyOf(arg);
-            const value = key ? (arg as { right: Expression }).right : arg;
+            const value = key ? (arg as { right?: Expression }).right : arg;
+            if (!value) return; // `key =` without a value: partially parsed, the syntax error is reported
             this.checkSideEffects(arg, key !== undefined, accept);
             this.expressions.checkStaticContext(value, accept, `the arguments of ${what}`);
             let param: Parameter | undefined;
@@ -99,7 +100,8 @@ export class InstantiationChecks {
             accept('error', `An argument cannot contain the assignment '${arg.op}'; write 'key = value' to name a parameter.`, { node: arg, code: Codes.AssignmentInArgument });
             return;
         }
-        const start: AstNode = isKey ? (arg as { right: Expression }).right : arg;
+        const start: AstNode | undefined = isKey ? (arg as { right?: Expression }).right : arg;
+        if (!start) return; // `key =` without a value: partially parsed
         for (const n of [start, ...AstUtils.streamAllContents(start)]) {
             if (isAssignmentExpression(n) || ((isPrefixExpression(n) || isPostfixExpression(n)) && (n.op === '++' || n.op === '--'))) {
                 accept('error', `An argument cannot ${isAssignmentExpression(n) ? `contain the assignment '${n.op}'` : `use '${(n as { op: string }).op}'`}: arguments must not have side effects.`, { node: n, code: Codes.AssignmentInArgument });
