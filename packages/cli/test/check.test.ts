@@ -152,6 +152,23 @@ describe('maa-gen check, text format', () => {
       expect(codesByFile(broken).some((c) => c.startsWith('syntax/')), broken).toBe(true);
     }
   });
+
+  it('a pathologically nested file is reported with syntax/too-deep; the other files and roots are checked', async () => {
+    const m = models();
+    const states = Array.from({ length: 5_000 }, (_, k) => `state S${k} {`).join(' ') + ' }'.repeat(5_000);
+    m.write('a/Deep.arc', `component Deep {\n  port in int i;\n  port out int o;\n  automaton {\n    initial ${states}\n    S0 -> S0 [${'('.repeat(10_000)}i > 0${')'.repeat(10_000)}] / o = ${'-'.repeat(10_000)}1;\n  }\n}\n`);
+    m.write('a/Comp1.arc', COMP1);
+    m.write('b/Comp1.arc', COMP1);
+    const r = await runCli(['check', 'a', 'b'], m.dir);
+    expect(r.code).toBe(1);
+    expectNoStackTrace(r.stderr);
+    const lines = parseTextLines(r.stdout);
+    const codesByFile = (file: string) => lines.filter((l) => l['file'] === file).map((l) => l['code'] ?? '');
+    expect(codesByFile('a/Deep.arc').filter((c) => c.startsWith('syntax/'))).toEqual(['syntax/too-deep']);
+    expect(codesByFile('a/Comp1.arc')).toContain('arc/connector-in-atomic');
+    expect(codesByFile('b/Comp1.arc')).toContain('arc/connector-in-atomic');
+    expect(SUMMARY.exec(r.stderr)?.slice(3, 5)).toEqual(['3', '2']);
+  });
 });
 
 describe('maa-gen check, file arguments', () => {

@@ -1,8 +1,9 @@
 import { readFile, readdir, stat } from 'node:fs/promises';
 import { join, resolve } from 'node:path';
-import { URI, type LangiumDocument } from 'langium';
+import { DocumentState, URI, isOperationCancelled, type LangiumDocument } from 'langium';
 import { builtinDocuments } from '../adl-module.js';
 import type { HostLanguageServices } from '../services.js';
+import { Codes } from '../validation/codes.js';
 import { ReservedNames, type RootConfiguration } from '../validation/reserved-names.js';
 
 export type Severity = 'error' | 'warning' | 'info' | 'hint';
@@ -70,6 +71,7 @@ export async function checkRoots(services: HostLanguageServices, specs: readonly
     };
 
     const documents: LangiumDocument[] = [];
+    const failed: FailedFile[] = [];
     const rootOfDoc = new Map<string, string>();
     const specOfDoc = new Map<string, string>();
     let index = 0;
@@ -90,17 +92,29 @@ export async function checkRoots(services: HostLanguageServices, specs: readonly
             const uri = URI.file(file);
             const langiumDocuments = shared.workspace.LangiumDocuments;
             if (langiumDocuments.hasDocument(uri)) langiumDocuments.deleteDocument(uri);
-            documents.push(langiumDocuments.createDocument(uri, text));
             rootOfDoc.set(uri.toString(), ownRoot(file));
             specOfDoc.set(uri.toString(), specRoot);
+            try {
+                documents.push(langiumDocuments.createDocument(uri, text));
+            } catch (e) {
+                // Parsing threw (a bug, or input beyond every guard): report the file, check the others.
+                failed.push({ uri, reason: e });
+            }
         }
     }
     const builtins = builtinDocuments(shared);
     options.onProgress?.(`checking ${documents.length} files`);
-    await shared.workspace.DocumentBuilder.build([...builtins, ...documents], { validation: true });
+    failed.push(...await buildEach(shared, builtins, documents));
 
     const result: CheckDiagnostic[] = [];
+    for (const { uri, reason } of failed) {
+        const only = roots.get(specOfDoc.get(uri.toString())!);
+        if (only && !only.has(uri.fsPath)) continue;
+        result.push(notChecked(rootOfDoc.get(uri.toString())!, uri.fsPath, reason));
+    }
+    const failedUris = new Set(failed.map((f) => f.uri.toString()));
     for (const doc of documents) {
+        if (failedUris.has(doc.uri.toString())) continue;
         const root = rootOfDoc.get(doc.uri.toString())!;
         const file = doc.uri.fsPath;
         const only = roots.get(specOfDoc.get(doc.uri.toString())!);
@@ -121,6 +135,47 @@ export async function checkRoots(services: HostLanguageServices, specs: readonly
     }
     result.sort((a, b) => a.file.localeCompare(b.file) || a.line - b.line || a.column - b.column || a.code.localeCompare(b.code));
     return result;
+}
+
+/** A file that could not be checked, and why. */
+interface FailedFile {
+    readonly uri: URI;
+    readonly reason: unknown;
+}
+
+/**
+ * Builds and validates the documents together; if that throws, builds each document that is not
+ * yet validated on its own, so one file that breaks the build is reported and the others are
+ * still checked. Returns the documents that could not be checked.
+ */
+async function buildEach(shared: HostLanguageServices['shared'], builtins: LangiumDocument[], documents: LangiumDocument[]): Promise<FailedFile[]> {
+    const builder = shared.workspace.DocumentBuilder;
+    try {
+        await builder.build([...builtins, ...documents], { validation: true });
+        return [];
+    } catch (e) {
+        if (isOperationCancelled(e)) throw e;
+    }
+    const failed: FailedFile[] = [];
+    for (const doc of documents) {
+        if (doc.state >= DocumentState.Validated) continue;
+        try {
+            await builder.build([doc], { validation: true });
+        } catch (e) {
+            if (isOperationCancelled(e)) throw e;
+            failed.push({ uri: doc.uri, reason: e });
+        }
+    }
+    return failed;
+}
+
+/** The diagnostic of a file that could not be checked: an error at its start, with the reason. */
+function notChecked(root: string, file: string, reason: unknown): CheckDiagnostic {
+    const why = reason instanceof RangeError ? 'the model is nested too deeply for the parser' : reason instanceof Error ? reason.message : String(reason);
+    return {
+        root, file, line: 1, column: 1, endLine: 1, endColumn: 1, severity: 'error', code: Codes.InternalError,
+        message: `This file could not be checked (${why}); the other files were checked. Please report this with the file.`
+    };
 }
 
 /** The model files below a root and the folders below it that are roots of their own (`maa.json`). */
