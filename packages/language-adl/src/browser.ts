@@ -7,6 +7,7 @@ export * from './behavior-language.js';
 export * from './model-roots.js';
 export * from './services.js';
 export * from './components/component-model.js';
+export * from './components/autoconnect.js';
 export * from './scoping/adl-scope-provider.js';
 export * from './scoping/lookup-scope.js';
 export * from './scoping/name-resolver.js';

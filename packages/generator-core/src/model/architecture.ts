@@ -1,7 +1,7 @@
 import { AstUtils, CstUtils, type AstNode } from 'langium';
 import {
-    allPorts, ast, behaviorTiming, behaviorsOf, elementsOf, isComposed, stereotypeNames, subcomponentType, subcomponentsOf,
-    typeOfMCType, printType, type SymType, type Timing
+    allPorts, ast, behaviorTiming, impliedConnectors, behaviorsOf, elementsOf, isComposed, stereotypeNames, subcomponentType, subcomponentsOf,
+    typeOfMCType, printType, type ImpliedEnd, type SymType, type Timing
 } from '@maa/language-adl';
 
 type ComponentType = ast.ComponentType;
@@ -270,15 +270,28 @@ function componentView(c: ComponentType): ComponentView {
             const decl = subcomponentType(s).decl;
             return { name: s.name, type: decl ? componentQualifiedName(decl) : '', args: s.args, node: s };
         }),
-        connectors: elements.flatMap((e) => (e.$type === 'Connector'
-            ? [{ source: portRef(e.source), targets: e.targets.map(portRef), node: e }]
-            : [])),
+        connectors: [
+            ...elements.flatMap((e) => (e.$type === 'Connector'
+                ? [{ source: portRef(e.source), targets: e.targets.map(portRef), node: e }]
+                : [])),
+            // Connectors implied by `autoconnect` are connectors like any other; their node is
+            // the `autoconnect` declaration.
+            ...impliedConnectors(c).map((i) => ({
+                source: impliedRef(i.source),
+                targets: [impliedRef(i.target)],
+                node: i.declaration
+            }))
+        ],
         behavior: main ? { language: behaviorLanguageOf(main), node: main, component: qualifiedName, timing } : undefined,
         init,
         handwritten: stereotypeNames(c.stereotype).includes('handwritten'),
         atomic: !isComposed(c),
         stereotypes: stereotypeNames(c.stereotype)
     };
+}
+
+function impliedRef(e: ImpliedEnd): PortRef {
+    return e.sub ? { subcomponent: e.sub.name, port: e.info.name } : { port: e.info.name };
 }
 
 function portRef(p: ast.PortAccess): PortRef {

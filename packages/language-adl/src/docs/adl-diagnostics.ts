@@ -188,6 +188,24 @@ export const ADL_DIAGNOSTICS: DiagnosticCatalog = {
             valid: { files: { 'Foo.arc': 'component Foo {\n  port out int o;\n  init {\n    o = 0;\n  }\n  compute { }\n}' } }
         },
         {
+            code: 'arc/behavior-in-decomposed', severity: 'error',
+            rule: 'A decomposed component (one with subcomponents) declares no behavior besides `init`: its behavior is that of its subcomponents and connectors, and a `compute` block or automaton beside them would never run.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  component Inc {\n    port in int i;\n    port out int o;\n  }\n  Inc inc;\n  i -> inc.i;\n  inc.o -> o;\n  compute {\n    o = i;\n  }\n}' }, at: 'compute {\n    o = i;\n  }' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  component Inc {\n    port in int i;\n    port out int o;\n  }\n  Inc inc;\n  i -> inc.i;\n  inc.o -> o;\n}' } }
+        },
+        {
+            code: 'arc/multiple-autoconnects', severity: 'error',
+            rule: 'A component declares at most one `autoconnect` (`port`, `type` or `off`).',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  component Inc {\n    port in int i;\n    port out int o;\n  }\n  Inc inc;\n  autoconnect port;\n  autoconnect type;\n}' }, at: 'autoconnect type;' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  component Inc {\n    port in int i;\n    port out int o;\n  }\n  Inc inc;\n  autoconnect port;\n}' } }
+        },
+        {
+            code: 'arc/autoconnect-in-atomic', severity: 'error',
+            rule: '`autoconnect` belongs to decomposed components: an atomic component has no subcomponents whose ports it could connect.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  autoconnect port;\n  compute {\n    o = i;\n  }\n}' }, at: 'autoconnect port;' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  component Inc {\n    port in int i;\n    port out int o;\n  }\n  Inc inc;\n  autoconnect type;\n}' } }
+        },
+        {
             code: 'arc/delayed-in-port', severity: 'error',
             rule: '`<<delayed>>` applies to outgoing ports only.',
             invalid: { files: { 'Foo.arc': 'component Foo {\n  port <<delayed>> in int i;\n}' }, at: 'delayed' },

@@ -1,4 +1,5 @@
 import type { AdlServices } from '../adl-module.js';
+import { AutoConnectChecks } from './checks/autoconnect-checks.js';
 import { ConnectorChecks } from './checks/connector-checks.js';
 import { ExpressionChecks } from './checks/expression-checks.js';
 import { InstantiationChecks } from './checks/instantiation-checks.js';
@@ -11,4 +12,5 @@ export function registerAdlChecks(services: AdlServices): void {
     registry.register(new ConnectorChecks(services).checks);
     registry.register(new InstantiationChecks(services).checks);
     registry.register(new ExpressionChecks(services).checks);
+    registry.register(new AutoConnectChecks().checks);
 }

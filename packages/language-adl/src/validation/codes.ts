@@ -54,6 +54,9 @@ export const Codes = {
     RawGeneric: 'arc/raw-generic',
     NamingConvention: 'arc/naming-convention',
     UnknownStereotype: 'arc/unknown-stereotype',
+    MultipleAutoConnects: 'arc/multiple-autoconnects',
+    AutoConnectInAtomic: 'arc/autoconnect-in-atomic',
+    BehaviorInDecomposed: 'arc/behavior-in-decomposed',
 
     ExprTypeMismatch: 'expr/type-mismatch',
     ExprUnresolvedName: 'expr/unresolved-name',

@@ -1,6 +1,6 @@
 import type { AstNode } from 'langium';
 import {
-    allPorts, ast, behaviorsOf, elementsOf, isComposed, printType, stereotypeNames, subcomponentType, subcomponentsOf, type PortInfo
+    allPorts, ast, behaviorsOf, isComposed, printType, stereotypeNames, subcomponentType, subcomponentsOf, type PortInfo
 } from '@maa/language-adl';
 import { behaviorLanguageOf, componentQualifiedName } from '@maa/generator-core';
 import type { SModelElement } from 'sprotty-protocol';
@@ -8,7 +8,7 @@ import type { BuildContext } from './context.js';
 import { connectorId, instanceId, labelId, portId } from './ids.js';
 import { TYPES, type ComponentNode, type ConnectorEdge, type MaaGraph, type MaaLabel, type PortNode } from './model.js';
 import { PORT_SIZE, labelSize } from './sizes.js';
-import { atomicSourcePath, portName, type PortName } from './source-ports.js';
+import { atomicSourcePath, connectorsOf, type PortName } from './source-ports.js';
 
 type ComponentType = ast.ComponentType;
 
@@ -85,14 +85,12 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
 
     function connectors(type: ComponentType, path: string[]): ConnectorEdge[] {
         const edges: ConnectorEdge[] = [];
-        for (const e of elementsOf(type)) {
-            if (e.$type !== 'Connector') continue;
-            const source = portName(e.source);
+        for (const e of connectorsOf(type)) {
+            const source = e.source;
             const sourceId = endpointId(path, source);
             if (!ports.has(sourceId)) continue; // a broken reference: nothing to connect
             const sourcePortPath = atomicSourcePath(typeAt, path, source);
-            for (const t of e.targets) {
-                const target = portName(t);
+            for (const target of e.targets) {
                 const targetId = endpointId(path, target);
                 if (!ports.has(targetId)) continue;
                 const edge: ConnectorEdge = {
@@ -102,7 +100,7 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
                     targetId,
                     sourcePortPath
                 };
-                ctx.trace(edge, e);
+                ctx.trace(edge, e.node);
                 edges.push(edge);
             }
         }

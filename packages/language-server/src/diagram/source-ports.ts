@@ -1,4 +1,5 @@
-import { ast, elementsOf, isComposed, subcomponentType, subcomponentsOf } from '@maa/language-adl';
+import type { AstNode } from 'langium';
+import { ast, elementsOf, impliedConnectors, isComposed, subcomponentType, subcomponentsOf } from '@maa/language-adl';
 
 type ComponentType = ast.ComponentType;
 
@@ -10,6 +11,29 @@ export interface PortName {
 
 export function portName(access: ast.PortAccess): PortName {
     return access.subcomponent ? { sub: access.subcomponent.$refText, port: access.port.$refText } : { port: access.port.$refText };
+}
+
+/** A connector of a component by port names: written, or implied by `autoconnect` (its node is then the declaration). */
+export interface NamedConnector {
+    readonly source: PortName;
+    readonly targets: readonly PortName[];
+    readonly node: AstNode;
+}
+
+/** The connectors of a component: the written ones, then those its `autoconnect` implies. */
+export function connectorsOf(c: ComponentType): NamedConnector[] {
+    const result: NamedConnector[] = [];
+    for (const e of elementsOf(c)) {
+        if (e.$type === 'Connector') result.push({ source: portName(e.source), targets: e.targets.map(portName), node: e });
+    }
+    for (const i of impliedConnectors(c)) {
+        result.push({
+            source: { sub: i.source.sub?.name, port: i.source.info.name },
+            targets: [{ sub: i.target.sub?.name, port: i.target.info.name }],
+            node: i.declaration
+        });
+    }
+    return result;
 }
 
 /**
@@ -58,10 +82,8 @@ export function atomicSourcePath(typeAt: (path: readonly string[]) => ComponentT
 
 /** The source of the connector in `c` whose targets include `target`. */
 function feeder(c: ComponentType, target: PortName): PortName | undefined {
-    for (const e of elementsOf(c)) {
-        if (e.$type !== 'Connector') continue;
-        const hit = e.targets.some((t) => t.port.$refText === target.port && (t.subcomponent?.$refText ?? undefined) === target.sub);
-        if (hit) return portName(e.source);
+    for (const e of connectorsOf(c)) {
+        if (e.targets.some((t) => t.port === target.port && t.sub === target.sub)) return e.source;
     }
     return undefined;
 }

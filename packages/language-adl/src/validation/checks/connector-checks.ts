@@ -1,11 +1,12 @@
 import type { ValidationAcceptor, ValidationChecks } from 'langium';
-import type { AdlAstType, ComponentType, Connector, PortAccess, Subcomponent } from '../../generated/ast.js';
+import type { AdlAstType, AutoConnect, ComponentType, Connector, PortAccess, Subcomponent } from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import {
     allPorts, findPort, isComposed, subcomponentType, subcomponentsOf, type PortInfo, type Timing, elementsOf } from '../../components/component-model.js';
 import type { TypeRelations } from '../../types/type-relations.js';
 import { isErroneous, printType } from '../../types/sym-type.js';
 import { Codes } from '../codes.js';
+import { impliedConnectors, type ImpliedConnector } from '../../components/autoconnect.js';
 
 const STRENGTH: Readonly<Record<Timing, number>> = { untimed: 0, timed: 1, sync: 2 };
 
@@ -30,9 +31,12 @@ export class ConnectorChecks {
             const resolved = connectors.map((con) => ({ con, source: this.end(c, con.source), targets: con.targets.map((t) => this.end(c, t)) }));
             for (const r of resolved) this.checkConnector(r.source, r.targets, accept);
             if (isComposed(c)) {
+                // Connectors implied by `autoconnect` feed only ports no written connector feeds
+                // and connect ports of one type, so they count for connectedness and causality.
+                const implied = impliedConnectors(c);
                 this.checkSenders(resolved, accept);
-                this.checkConnectedness(c, resolved, accept);
-                this.checkCausality(c, resolved, accept);
+                this.checkConnectedness(c, resolved, implied, accept);
+                this.checkCausality(c, resolved, implied, accept);
             }
         }
     };
@@ -93,10 +97,13 @@ export class ConnectorChecks {
         }
     }
 
-    private checkConnectedness(c: ComponentType, resolved: Array<{ source?: End; targets: Array<End | undefined> }>, accept: ValidationAcceptor): void {
+    private checkConnectedness(c: ComponentType, resolved: Array<{ source?: End; targets: Array<End | undefined> }>, implied: readonly ImpliedConnector[], accept: ValidationAcceptor): void {
         const used = new Set<string>();
         for (const r of resolved) {
             for (const e of [r.source, ...r.targets]) if (e) used.add(`${e.sub?.name ?? ''}.${e.info.name}`);
+        }
+        for (const i of implied) {
+            for (const e of [i.source, i.target]) used.add(`${e.sub?.name ?? ''}.${e.info.name}`);
         }
         for (const sub of subcomponentsOf(c)) {
             const { decl, subst } = subcomponentType(sub);
@@ -125,9 +132,9 @@ export class ConnectorChecks {
      * delayed port (directly or inside a composed subcomponent), else its value in a time slice
      * would depend on itself.
      */
-    private checkCausality(c: ComponentType, resolved: Array<{ con: Connector; source?: End; targets: Array<End | undefined> }>, accept: ValidationAcceptor): void {
-        const edges = new Map<string, Array<{ to: string; con?: Connector }>>();
-        const add = (from: string, to: string, con?: Connector): void => {
+    private checkCausality(c: ComponentType, resolved: Array<{ con: Connector; source?: End; targets: Array<End | undefined> }>, implied: readonly ImpliedConnector[], accept: ValidationAcceptor): void {
+        const edges = new Map<string, Array<{ to: string; con?: Connector | AutoConnect }>>();
+        const add = (from: string, to: string, con?: Connector | AutoConnect): void => {
             const list = edges.get(from) ?? [];
             list.push({ to, con });
             edges.set(from, list);
@@ -136,14 +143,17 @@ export class ConnectorChecks {
             if (!r.source?.sub) continue;
             for (const t of r.targets) if (t?.sub) add(`${r.source.sub.name}.${r.source.info.name}`, `${t.sub.name}.${t.info.name}`, r.con);
         }
+        for (const i of implied) {
+            if (i.source.sub && i.target.sub) add(`${i.source.sub.name}.${i.source.info.name}`, `${i.target.sub.name}.${i.target.info.name}`, i.declaration);
+        }
         for (const sub of subcomponentsOf(c)) {
             const decl = subcomponentType(sub).decl;
             if (!decl) continue;
             for (const [i, o] of this.instantaneousPaths(decl, new Set())) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
         }
         const state = new Map<string, 1 | 2>();
-        const reported = new Set<Connector>();
-        const visit = (n: string, via: Connector[]): void => {
+        const reported = new Set<Connector | AutoConnect>();
+        const visit = (n: string, via: Array<Connector | AutoConnect>): void => {
             state.set(n, 1);
             for (const e of edges.get(n) ?? []) {
                 const path = e.con ? [...via, e.con] : via;
@@ -179,6 +189,7 @@ export class ConnectorChecks {
             const s = `${con.source.subcomponent?.$refText ?? ''}.${con.source.port?.$refText ?? ''}`;
             for (const t of con.targets) add(s, `${t.subcomponent?.$refText ?? ''}.${t.port?.$refText ?? ''}`);
         }
+        for (const i of impliedConnectors(decl)) add(`${i.source.sub?.name ?? ''}.${i.source.info.name}`, `${i.target.sub?.name ?? ''}.${i.target.info.name}`);
         for (const sub of subcomponentsOf(decl)) {
             const d = subcomponentType(sub).decl;
             if (d) for (const [i, o] of this.instantaneousPaths(d, seen)) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
