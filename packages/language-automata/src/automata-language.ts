@@ -4,6 +4,7 @@ import {
 } from '@maa/language-adl';
 import { allStates, enclosingAutomaton } from './automaton-model.js';
 import { AutomatonChecks } from './automaton-checks.js';
+import { registerModes } from './modes/mode-language.js';
 import { AutomatonCodes } from './codes.js';
 import { AUTOMATON_DIAGNOSTICS } from './docs/automaton-diagnostics.js';
 import { registerAutomatonLsp } from './lsp/automaton-lsp.js';
@@ -51,6 +52,7 @@ export const AutomataLanguage: BehaviorLanguage = {
 
         const checks = new AutomatonChecks(services);
         services.validation.ValidationRegistry.register(checks.checks, checks);
+        registerModes(services);
     },
     registerLsp: registerAutomatonLsp
 };

@@ -13,7 +13,8 @@ export const AutomatonCodes = {
     TickInUntimed: 'automaton/tick-in-untimed',
     UntimedNoEvent: 'automaton/untimed-no-event',
     InputInInitial: 'automaton/input-in-initial',
-    Nondeterministic: 'automaton/nondeterministic'
+    Nondeterministic: 'automaton/nondeterministic',
+    UnsupportedElement: 'automaton/unsupported-element'
 } as const;
 
 export type AutomatonCode = (typeof AutomatonCodes)[keyof typeof AutomatonCodes];

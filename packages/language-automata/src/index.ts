@@ -7,6 +7,9 @@ export * from './automata-language.js';
 export * from './automaton-checks.js';
 export * from './automaton-model.js';
 export * from './codes.js';
+export * from './modes/mode-codes.js';
+export * from './modes/mode-model.js';
+export * from './modes/mode-checks.js';
 export * as ast from './generated/ast.js';
 
 /** The Langium modules of this package's grammar build: the host languages plus `automaton { }`. */

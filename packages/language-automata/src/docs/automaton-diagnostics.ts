@@ -1,4 +1,5 @@
 import type { DiagnosticCatalog } from '@maa/language-adl';
+import { MODE_DIAGNOSTIC_ENTRIES } from './mode-diagnostics.js';
 
 /** The automaton language's diagnostics (`automaton/*`, and `arc/reserved-name` for state names). */
 export const AUTOMATON_DIAGNOSTICS: DiagnosticCatalog = {
@@ -80,6 +81,7 @@ export const AUTOMATON_DIAGNOSTICS: DiagnosticCatalog = {
             rule: 'A state name is no reserved word (`Tick`, Java and Python keywords, and names a model root\'s `maa.json` reserves for states or for all kinds).',
             invalid: { files: { 'Gate.arc': 'component Gate {\n  port out boolean open;\n  automaton {\n    initial state pass;\n  }\n}' }, at: 'pass' },
             valid: { files: { 'Gate.arc': 'component Gate {\n  port out boolean open;\n  automaton {\n    initial state Passing;\n  }\n}' } }
-        }
+        },
+        ...MODE_DIAGNOSTIC_ENTRIES
     ]
 };

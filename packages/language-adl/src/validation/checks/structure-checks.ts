@@ -122,7 +122,8 @@ export class StructureChecks {
     }
 
     private checkBehaviors(c: ComponentType, accept: ValidationAcceptor): void {
-        const behaviors = behaviorsOf(c).filter((b) => b.behavior?.$type !== 'InitBlock');
+        // A mode automaton (language-automata) configures subcomponents; it is no behavior of its own.
+        const behaviors = behaviorsOf(c).filter((b) => b.behavior?.$type !== 'InitBlock' && (b.behavior as AstNode | undefined)?.$type !== 'ModeAutomaton');
         if (behaviors.length > 1) {
             const kinds = behaviors.map((b) => behaviorName(b));
             for (const b of behaviors.slice(1)) {
