@@ -1,4 +1,4 @@
-import { existsSync, mkdtempSync, rmSync } from 'node:fs';
+import { existsSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { describe, expect, it } from 'vitest';
@@ -32,6 +32,21 @@ describe('stream tests of the example (maa-gen test)', () => {
         expect(r.status).toBe(1);
         expect(r.stdout).toContain('FAIL');
         expect(r.stdout).toContain('arm: expected NONE Tk LOAD_BREAD Tk; got NONE Tk Tk');
+    }, 180_000);
+
+    it('an output that cannot be written exits 2 (an I/O problem, as for generate) and runs no test', async () => {
+        const out = mkdtempSync(path.join(tmpdir(), 'maa-streams-out-'));
+        try {
+            writeFileSync(path.join(out, 'timesync'), 'a file where the platform folder belongs\n');
+            const r = await run(process.execPath, [
+                path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'test', 'examples/toast-service/TR.arcapp', '--out', out, '--python', venvPython
+            ], repoDir);
+            expect(r.stdout).toContain('gen/write-failed');
+            expect(r.stderr).toContain('no stream test was run');
+            expect(r.status).toBe(2);
+        } finally {
+            rmSync(out, { recursive: true, force: true });
+        }
     }, 180_000);
 });
 

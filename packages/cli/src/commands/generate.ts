@@ -139,7 +139,7 @@ export async function runGenerate(appArg: string, options: GenerateCommandOption
 }
 
 /** 0 generated; 2 when the output could not be written (an I/O problem, docs/cli.md); 1 for other errors. */
-function exitCodeOf(ok: boolean, diagnostics: readonly CheckDiagnostic[]): ExitCode {
+export function exitCodeOf(ok: boolean, diagnostics: readonly CheckDiagnostic[]): ExitCode {
   if (ok) return ExitCode.ok;
   return diagnostics.some((d) => d.severity === 'error' && d.code === WRITE_FAILED) ? ExitCode.usage : ExitCode.errors;
 }

@@ -8,6 +8,7 @@ import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
 import { displayPath, formatDiagnosticsText } from '../format/text.js';
 import type { CliIo } from '../io.js';
+import { exitCodeOf } from './generate.js';
 
 export interface TestCommandOptions {
   platform: string;
@@ -93,7 +94,7 @@ export async function runTest(appArg: string, files: string[], options: TestComm
       const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
       io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color: false }));
       io.err('maa-gen test: generation failed; no stream test was run\n');
-      return ExitCode.errors;
+      return exitCodeOf(false, diagnostics);
     }
     const build = path.join(outDir, options.platform);
     if (streamFiles.length === 0) {
