@@ -15,6 +15,7 @@ export * from './types/sym-type.js';
 export * from './types/type-resolver.js';
 export * from './types/type-relations.js';
 export * from './types/expression-typer.js';
+export * from './types/builtin-library.js';
 export * from './validation/codes.js';
 export * from './validation/document-validator.js';
 export * from './validation/reserved-names.js';

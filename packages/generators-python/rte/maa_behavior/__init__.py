@@ -6,17 +6,27 @@ that derives from :class:`Behavior` (see docs/runtime.md, "Behavior classes"). P
 """
 
 from maa_behavior.behavior import Behavior, Emit, NoBehavior
+from maa_behavior.jlib import JavaException, JDate, JIterator, JOptional, jcall, jfield, jformat, jhash, jstatic
 from maa_behavior.jvm import f32, jconcat, jdiv, jmod, jordinal, jstr, jushr
 
 __all__ = [
     "Behavior",
     "Emit",
+    "JDate",
+    "JIterator",
+    "JOptional",
+    "JavaException",
     "NoBehavior",
     "f32",
+    "jcall",
     "jconcat",
     "jdiv",
+    "jfield",
+    "jformat",
+    "jhash",
     "jmod",
     "jordinal",
+    "jstatic",
     "jstr",
     "jushr",
 ]

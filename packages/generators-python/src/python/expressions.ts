@@ -1,6 +1,8 @@
 import type { AstNode } from 'langium';
 import { GenerationError } from '@maa/generator-core/node';
-import { portHeader } from '@maa/language-adl';
+import { portHeader, printType, typeOfMCType } from '@maa/language-adl';
+import { JAVA_LIBRARY } from './java-library.js';
+import { ControlFlow } from './control-flow.js';
 
 /** A loosely typed AST node: the translators read `$type` and fields, so they work on any family build. */
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
@@ -62,6 +64,13 @@ function pyString(s: string): string {
 
 /** Translates the Java-like expressions and statements of the models to Python. */
 export class PythonTranslator {
+    /** do-while, switch, break and continue (control-flow.ts). */
+    private readonly control = new ControlFlow({
+        expr: (e) => this.expr(e),
+        stmt: (s) => this.stmt(s),
+        expressionStatement: (e) => this.exprStmt(e)
+    });
+
     constructor(private readonly names: NameContext) {}
 
     expr(e: Node): string {
@@ -92,6 +101,8 @@ export class PythonTranslator {
             }
             case 'FieldAccessExpression': {
                 const recv = e.receiver as Node;
+                const libType = libraryTypeOf(recv);
+                if (libType) return `jfield(${pyString(libType)}, ${pyString(String(e.member))})`;
                 const parts = qualifiedParts(e);
                 if (parts && parts.length >= 2) {
                     const type = this.names.typeBySimpleName?.(parts[parts.length - 2]);
@@ -144,15 +155,16 @@ export class PythonTranslator {
         const recv = e.receiver as Node;
         const args = (e.args as Node[]).map((a) => this.expr(a));
         if (recv.$type === 'FieldAccessExpression') {
+            const member = String(recv.member);
+            const libType = libraryTypeOf(recv.receiver as Node);
+            if (libType) return `jstatic(${pyString(libType)}, ${pyString(member)}, ${pyTuple(args)})`;
             const obj = this.expr(recv.receiver);
-            switch (recv.member) {
-                case 'equals': return `(${obj} == ${args[0]})`;
-                case 'length': case 'size': return `len(${obj})`;
-                case 'isEmpty': return `(len(${obj}) == 0)`;
-                case 'toString': return `jstr(${obj})`;
-                case 'ordinal': return `jordinal(${obj})`;
-                default: return `${obj}.${pyName(recv.member)}(${args.join(', ')})`;
+            if (member === 'ordinal' && args.length === 0) return `jordinal(${obj})`;
+            if (JAVA_LIBRARY.instanceMethods.has(member)) {
+                const hint = declaredType(recv.receiver as Node);
+                return `jcall(${obj}, ${pyString(member)}, ${pyTuple(args)}${hint ? `, ${pyString(hint)}` : ''})`;
             }
+            return `${obj}.${pyName(member)}(${args.join(', ')})`;
         }
         return `${this.expr(recv)}(${args.join(', ')})`;
     }
@@ -177,7 +189,12 @@ export class PythonTranslator {
             }
             case 'WhileStatement':
                 return [`while ${this.expr(s.condition)}:`, ...this.body(s.body)];
+            case 'DoWhileStatement': return this.control.doWhile(s);
+            case 'SwitchStatement': return this.control.switchStatement(s);
+            case 'BreakStatement': return this.control.breakStatement();
+            case 'ContinueStatement': return this.control.continueStatement(s);
             case 'ForStatement': {
+                if (this.control.needsContinueForm(s)) return this.control.forWithContinue(s);
                 const out: string[] = s.init ? this.stmt(s.init) : [];
                 const cond = s.condition ? this.expr(s.condition) : 'True';
                 const updates = (s.updates as Node[]).flatMap((u) => this.exprStmt(u));
@@ -229,6 +246,54 @@ export class PythonTranslator {
             return `${this.names.name(target, left)} = ${value}`;
         }
         return `${this.expr(left)} = ${value}`;
+    }
+}
+
+/** A Python tuple expression. */
+function pyTuple(xs: readonly string[]): string {
+    return xs.length === 0 ? '()' : `(${xs.join(', ')}${xs.length === 1 ? ',' : ''})`;
+}
+
+/** The qualified name of the JDK library type an expression names (`Math`, `java.util.Date`), if it names one. */
+function libraryTypeOf(e: Node): string | undefined {
+    if (e.$type === 'NameExpression') {
+        const target = e.ref?.ref as Node | undefined;
+        if (!target || !isTypeDecl(target) || !isBuiltin(target)) return undefined;
+        const pkg = String((rootOf(target) as Node).package ?? '');
+        return `${pkg}.${String(target.name)}`;
+    }
+    const parts = qualifiedParts(e);
+    const q = parts?.join('.');
+    return q && JAVA_LIBRARY.types.has(q) ? q : undefined;
+}
+
+function rootOf(n: Node): Node {
+    let root = n;
+    while (root.$container) root = root.$container as Node;
+    return root;
+}
+
+function isBuiltin(n: Node): boolean {
+    return (rootOf(n).$document?.uri?.scheme ?? '') === 'builtin';
+}
+
+/** The declared type of a name or literal (what Python cannot tell apart: `long`/`int`, `float`/`double`, `char`). */
+function declaredType(e: Node): string | undefined {
+    switch (e.$type) {
+        case 'IntLiteral': return 'int';
+        case 'LongLiteral': return 'long';
+        case 'FloatLiteral': return /[fF]$/.test(String(e.value)) ? 'float' : 'double';
+        case 'CharLiteral': return 'char';
+        case 'NameExpression': {
+            const t = e.ref?.ref as Node | undefined;
+            if (!t) return undefined;
+            const mcType = t.$type === 'Port' ? portHeader(t as never).type
+                : t.$type === 'Field' || t.$type === 'LocalVariable' ? (t.$container as Node).type
+                    : t.$type === 'Parameter' ? t.type : undefined;
+            return mcType ? printType(typeOfMCType(mcType as never)) : undefined;
+        }
+        default:
+            return undefined;
     }
 }
 
