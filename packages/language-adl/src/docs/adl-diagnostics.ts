@@ -344,6 +344,30 @@ export const ADL_DIAGNOSTICS: DiagnosticCatalog = {
             valid: { files: { 'Foo.arc': 'component Foo(int speed) {\n  port out int o;\n  compute {\n    o = speed;\n  }\n}' } }
         },
         {
+            code: 'expr/duplicate-case-label', severity: 'error',
+            rule: 'The labels of a `switch` are distinct: every value labels one case, and there is at most one `default`.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    switch (i) {\n      case 1:\n        o = 1;\n        break;\n      case 2, 1:\n        o = 2;\n    }\n  }\n}' }, at: '1' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    switch (i) {\n      case 1:\n        o = 1;\n        break;\n      case 2, 3:\n        o = 2;\n    }\n  }\n}' } }
+        },
+        {
+            code: 'expr/mixed-switch-labels', severity: 'error',
+            rule: 'A `switch` consists of either `case ...:` groups (which fall through) or `case ... ->` rules (which do not), not both; a rule has one label and one statement.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    switch (i) {\n      case 1:\n        o = 1;\n      case 2 -> o = 2;\n    }\n  }\n}' }, at: 'i' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    switch (i) {\n      case 1 -> o = 1;\n      case 2, 3 -> o = 2;\n      default -> o = 0;\n    }\n  }\n}' } }
+        },
+        {
+            code: 'expr/break-outside-loop', severity: 'error',
+            rule: '`break` leaves the innermost loop (`while`, `do`, `for`) or `switch`; outside of them it has nothing to leave.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = i;\n    break;\n  }\n}' }, at: 'break;' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = 0;\n    while (o < i) {\n      o++;\n      if (o > 9) break;\n    }\n  }\n}' } }
+        },
+        {
+            code: 'expr/continue-outside-loop', severity: 'error',
+            rule: '`continue` starts the next round of the innermost loop (`while`, `do`, `for`); a `switch` is no loop.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    switch (i) {\n      case 1:\n        continue;\n    }\n    o = i;\n  }\n}' }, at: 'continue;' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = 0;\n    for (int k = 0; k < i; k++) {\n      if (k == 2) continue;\n      o = o + k;\n    }\n  }\n}' } }
+        },
+        {
             code: 'cd/duplicate-name', severity: 'error',
             rule: 'A class diagram declares each type once, and an enum each constant once.',
             invalid: { files: { 't/Types.cd': 'package t;\nclassdiagram Types {\n  enum Color { RED, RED; }\n}' }, at: 'RED' },

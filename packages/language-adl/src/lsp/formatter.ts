@@ -388,6 +388,37 @@ function registerHostRules(f: AdlFormatter): void {
         on.keyword(')').prepend(Formatting.noSpace()).append(Formatting.oneSpace());
         fm.list(n, nodes(n, 'updates'));
     });
+    r.set('DoWhileStatement', (n, fm) => {
+        const on = fm.on(n);
+        on.keyword('do').append(Formatting.oneSpace());
+        on.keyword('while').surround(Formatting.oneSpace());
+        on.keyword('(').append(Formatting.noSpace());
+        on.keyword(')').prepend(Formatting.noSpace());
+        fm.semicolons(n);
+    });
+    r.set('SwitchStatement', (n, fm) => {
+        const on = fm.on(n);
+        on.keyword('switch').append(Formatting.oneSpace());
+        on.keyword('(').append(Formatting.noSpace());
+        on.keyword(')').prepend(Formatting.noSpace()).append(Formatting.oneSpace());
+        fm.elementBlock(n);
+    });
+    // `case 1:` groups: one label per line, the statements indented below; `case 1 -> s;` rules on one line.
+    r.set('SwitchGroup', (n, fm) => {
+        const on = fm.on(n);
+        const labels = nodes(n, 'labels');
+        labels.slice(1).forEach((l) => on.node(l).prepend(Formatting.newLine()));
+        const arrow = labels.some((l) => (l as AstNode & { arrow?: boolean }).arrow);
+        for (const st of nodes(n, 'statements')) on.node(st).prepend(arrow ? Formatting.oneSpace() : Formatting.indent());
+    });
+    r.set('SwitchLabel', (n, fm) => {
+        const on = fm.on(n);
+        on.keyword('case').append(Formatting.oneSpace());
+        on.keywords(':').prepend(Formatting.noSpace());
+        on.keywords('->').prepend(Formatting.oneSpace());
+        fm.list(n, nodes(n, 'values'));
+    });
+    for (const t of ['BreakStatement', 'ContinueStatement']) r.set(t, (n, fm) => fm.semicolons(n));
 
     // ---- expressions ----
     r.set('BinaryExpression', (n, fm) => fm.property(n, 'op').surround(Formatting.oneSpace()));

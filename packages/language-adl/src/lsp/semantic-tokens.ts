@@ -88,6 +88,9 @@ export class AdlSemanticTokenProvider extends AbstractSemanticTokenProvider {
         for (const { reference } of AstUtils.streamReferences(node)) this.highlightReference(reference as Reference, acceptor);
         if (node.$type === 'StereoValue') {
             acceptor({ node, property: 'name' as never, type: SemanticTokenTypes.decorator });
+        } else if (node.$type === 'AutoConnect') {
+            // `port`, `type`, `off` after `autoconnect` (`type` and `off` are names elsewhere).
+            acceptor({ node, property: 'kind' as never, type: SemanticTokenTypes.keyword });
         } else if (node.$type === 'PrimitiveType') {
             acceptor({ node, property: 'name' as never, type: SemanticTokenTypes.type, modifier: SemanticTokenModifiers.defaultLibrary });
         } else if (isFieldAccessExpression(node)) {

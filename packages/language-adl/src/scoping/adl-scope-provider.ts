@@ -4,7 +4,7 @@ import {
 } from 'langium';
 import type { ComponentType, NameExpression } from '../generated/ast.js';
 import {
-    isAssignmentExpression, isBlock, isComponentType, isForStatement, isLocalVariableDeclaration,
+    isAssignmentExpression, isBlock, isComponentType, isSwitchGroup, isForStatement, isLocalVariableDeclaration,
     isParentComponent, isPortAccess, isStatement, isSubcomponent
 } from '../generated/ast.js';
 import { allPorts, subcomponentType, subcomponentsOf, elementsOf } from '../components/component-model.js';
@@ -103,7 +103,8 @@ export class AdlScopeProvider implements ScopeProvider {
     private *localNames(expr: AstNode): Generator<{ name: string; node: AstNode }> {
         let previous: AstNode = expr;
         for (let n: AstNode | undefined = expr.$container; n; previous = n, n = n.$container) {
-            if (isBlock(n)) {
+            // A switch group's statements are a block of their own (its locals are visible after them in the group).
+            if (isBlock(n) || isSwitchGroup(n)) {
                 const upTo = isStatement(previous) ? n.statements.indexOf(previous) : n.statements.length;
                 for (let i = upTo - 1; i >= 0; i--) {
                     const s = n.statements[i];

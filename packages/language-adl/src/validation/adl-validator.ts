@@ -3,6 +3,7 @@ import { AutoConnectChecks } from './checks/autoconnect-checks.js';
 import { ConnectorChecks } from './checks/connector-checks.js';
 import { ExpressionChecks } from './checks/expression-checks.js';
 import { InstantiationChecks } from './checks/instantiation-checks.js';
+import { StatementChecks } from './checks/statement-checks.js';
 import { StructureChecks } from './checks/structure-checks.js';
 
 /** Registers the context conditions of the host language (ARCHITECTURE.md section 5, `arc/*`, `expr/*`). */
@@ -11,6 +12,8 @@ export function registerAdlChecks(services: AdlServices): void {
     registry.register(new StructureChecks(services).checks);
     registry.register(new ConnectorChecks(services).checks);
     registry.register(new InstantiationChecks(services).checks);
-    registry.register(new ExpressionChecks(services).checks);
+    const expressions = new ExpressionChecks(services);
+    registry.register(expressions.checks);
     registry.register(new AutoConnectChecks().checks);
+    registry.register(new StatementChecks(services, expressions).checks);
 }

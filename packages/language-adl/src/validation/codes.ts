@@ -60,6 +60,10 @@ export const Codes = {
 
     ExprTypeMismatch: 'expr/type-mismatch',
     ExprUnresolvedName: 'expr/unresolved-name',
+    DuplicateCaseLabel: 'expr/duplicate-case-label',
+    MixedSwitchLabels: 'expr/mixed-switch-labels',
+    BreakOutsideLoop: 'expr/break-outside-loop',
+    ContinueOutsideLoop: 'expr/continue-outside-loop',
 
     CdDuplicateName: 'cd/duplicate-name',
     CdFileNameMismatch: 'cd/file-name-mismatch',
