@@ -12,6 +12,7 @@ export * from './generators/types.js';
 export * from './manifest/manifest.js';
 export * from './manifest/schema.js';
 export * from './model/architecture.js';
+export * from './model/modes.js';
 export * from './output/file-builder.js';
 export * from './output/protected-regions.js';
 export * from './registry/discovery.js';

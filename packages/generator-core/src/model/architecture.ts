@@ -4,6 +4,8 @@ import {
     typeOfMCType, printType, type ImpliedEnd, type SymType, type Timing
 } from '@maa/language-adl';
 
+import { isModeAutomatonBlock, modeAutomatonView, modeSubcomponentsOf, type ModeAutomatonView } from './modes.js';
+
 type ComponentType = ast.ComponentType;
 type CDType = ast.CDType;
 
@@ -51,6 +53,11 @@ export interface ComponentView {
     readonly handwritten: boolean;
     /** No subcomponents. */
     readonly atomic: boolean;
+    /**
+     * The mode automaton of a decomposed component: `subcomponents` then lists the shared ones
+     * and those of every mode (all are instantiated), `connectors` only the shared ones.
+     */
+    readonly modes?: ModeAutomatonView;
     readonly stereotypes: readonly string[];
 }
 
@@ -200,7 +207,7 @@ export function buildArchitecture(root: ComponentType): ArchitectureModel {
             const decl = p.type?.ref?.ref;
             if (decl) visit(decl);
         }
-        for (const sub of subcomponentsOf(c)) {
+        for (const sub of allSubcomponents(c)) {
             const decl = subcomponentType(sub).decl;
             if (decl) visit(decl);
         }
@@ -216,7 +223,7 @@ export function buildArchitecture(root: ComponentType): ArchitectureModel {
         const view = views.get(c);
         if (!view || depth > 64) return;
         instances.push({ path, component: view, node, args });
-        for (const sub of subcomponentsOf(c)) {
+        for (const sub of allSubcomponents(c)) {
             const decl = subcomponentType(sub).decl;
             if (decl) walk(decl, [...path, sub.name], sub, sub.args, depth + 1);
         }
@@ -243,7 +250,9 @@ function componentView(c: ComponentType): ComponentView {
     const qualifiedName = componentQualifiedName(c);
     const blocks = behaviorsOf(c);
     const init = blocks.find((b) => b.behavior?.$type === 'InitBlock')?.behavior;
-    const main = blocks.find((b) => b.behavior && b.behavior.$type !== 'InitBlock')?.behavior;
+    // A mode automaton configures subcomponents: it is no behavior (modes below).
+    const main = blocks.find((b) => b.behavior && b.behavior.$type !== 'InitBlock' && !isModeAutomatonBlock(b.behavior))?.behavior;
+    const modes = modeAutomatonView(c);
     const timing = behaviorTiming(c);
     const elements = elementsOf(c);
     return {
@@ -266,7 +275,7 @@ function componentView(c: ComponentType): ComponentView {
         fields: elements.flatMap((e) => (e.$type === 'FieldDeclaration'
             ? e.fields.map((f) => ({ ...typeView(typeOfMCType(e.type)), name: f.name, init: f.init, node: f }))
             : [])),
-        subcomponents: subcomponentsOf(c).map((s) => {
+        subcomponents: allSubcomponents(c).map((s) => {
             const decl = subcomponentType(s).decl;
             return { name: s.name, type: decl ? componentQualifiedName(decl) : '', args: s.args, node: s };
         }),
@@ -285,9 +294,15 @@ function componentView(c: ComponentType): ComponentView {
         behavior: main ? { language: behaviorLanguageOf(main), node: main, component: qualifiedName, timing } : undefined,
         init,
         handwritten: stereotypeNames(c.stereotype).includes('handwritten'),
-        atomic: !isComposed(c),
+        atomic: !isComposed(c) && modeSubcomponentsOf(c).length === 0,
+        ...(modes ? { modes } : {}),
         stereotypes: stereotypeNames(c.stereotype)
     };
+}
+
+/** The subcomponents of a component and of its modes (all instantiated; modes switch connectors). */
+function allSubcomponents(c: ComponentType): ast.Subcomponent[] {
+    return [...subcomponentsOf(c), ...modeSubcomponentsOf(c)];
 }
 
 function impliedRef(e: ImpliedEnd): PortRef {

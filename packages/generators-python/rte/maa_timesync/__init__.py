@@ -7,6 +7,7 @@ schedules it with MontiArc's stream semantics (SEMANTICS.md of the montiarc-io s
 time slices ended by ticks, sync and event-driven components, delayed ports.
 """
 
+from maa_timesync.modes import ModeComponent
 from maa_timesync.runtime import (
     TICK,
     AtomicComponent,
@@ -24,6 +25,7 @@ __all__ = [
     "ComponentType",
     "ComposedComponent",
     "Instance",
+    "ModeComponent",
     "System",
     "Tick",
     "decode_item",

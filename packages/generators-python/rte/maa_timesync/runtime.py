@@ -43,6 +43,11 @@ class ComponentType:
         """The configuration arguments with defaults applied."""
         return dict(params)
 
+    @classmethod
+    def instance_class(cls) -> type[Instance]:
+        """The class of this type's instances (mode components switch their wiring: modes.py)."""
+        return Instance
+
 
 class AtomicComponent(ComponentType):
     """An atomic component type: its behavior class."""
@@ -86,6 +91,10 @@ class Instance:
             self.sync = self.behavior.TIMING == "sync"
         else:
             self.sync = False
+
+    def wired(self, children: Mapping[str, Instance]) -> None:
+        """Called once a composed instance's subcomponents exist and its connectors are wired."""
+        del children
 
     @property
     def name(self) -> str:
@@ -198,7 +207,7 @@ class System:
         self.slices = 0
 
     def _build(self, path: tuple[str, ...], ctype: type[ComponentType], params: Mapping[str, object]) -> Instance:
-        inst = Instance(self, path, ctype, params)
+        inst = ctype.instance_class()(self, path, ctype, params)
         self.instances.append(inst)
         if issubclass(ctype, ComposedComponent):
             children: dict[str, Instance] = {}
@@ -227,6 +236,7 @@ class System:
                 for port in child.ctype.IN_PORTS:
                     if (name, port) not in connected_in:
                         child.buffers.pop(port, None)
+            inst.wired(children)
         return inst
 
     def init(self) -> None:

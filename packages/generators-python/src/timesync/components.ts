@@ -8,6 +8,7 @@ import { computeClass } from '../behavior/compute.js';
 import { moduleText } from '../behavior/automata.js';
 import { PythonTranslator, isTypeDecl, pyName, type Node } from '../python/expressions.js';
 import { primitiveOf, rosName } from '../ros2/naming.js';
+import { modeClassLines } from './modes.js';
 
 const str = (s: string): string => JSON.stringify(s);
 
@@ -151,7 +152,9 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                     ...header
                 );
             } else {
-                imports.add('maa_timesync', 'ComposedComponent');
+                // A mode automaton makes it a ModeComponent (modes.ts).
+                const modeLines = modeClassLines(c, datatypes, imports);
+                if (!modeLines) imports.add('maa_timesync', 'ComposedComponent');
                 imports.add('maa_timesync', 'ComponentType');
                 const tr = configTranslator(datatypes, imports);
                 const subs: string[] = [];
@@ -180,9 +183,9 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                     return `(${str(k.source.subcomponent ?? '')}, ${str(k.source.port)}, ${tuple(targets)}),`;
                 });
                 const usesParams = subs.some((l) => l.includes('params['));
-                const header = typeHeader(c, datatypes, imports, ['    CONNECTORS = (', ...indent(conns, 8), '    )']);
+                const header = typeHeader(c, datatypes, imports, ['    CONNECTORS = (', ...indent(conns, 8), '    )', ...(modeLines ?? [])]);
                 classLines.push(
-                    `class ${pyName(c.name)}(ComposedComponent):`,
+                    `class ${pyName(c.name)}(${modeLines ? 'ModeComponent' : 'ComposedComponent'}):`,
                     `    """Component type ${c.qualifiedName} (generated)."""`,
                     '',
                     ...header,
