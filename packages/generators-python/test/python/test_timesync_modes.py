@@ -1,0 +1,151 @@
+"""maa_timesync.modes: decomposed components whose mode automaton switches subcomponents and connectors."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from maa_behavior import Behavior
+from maa_timesync import TICK, AtomicComponent, ComponentType, ModeComponent, System
+from maa_timesync.modes import ModeInstance
+from maa_timesync.runtime import Connector
+
+
+class CountBehavior(Behavior):
+    """Sync: sends how many slices with a message it has seen (its state survives resting)."""
+
+    TIMING = "sync"
+    IN_PORTS = ("i",)
+    OUT_PORTS = ("o",)
+
+    def init(self) -> None:
+        self.count = 0
+
+    def step(self, inputs: Mapping[str, object]) -> None:
+        if inputs.get("i") is not None:
+            self.count += 1
+            self._emit("o", self.count)
+
+
+class Count(AtomicComponent):
+    NAME = "t.Count"
+    IN_PORTS = ("i",)
+    OUT_PORTS = ("o",)
+    PORT_TYPES = {"i": "int", "o": "int"}
+    BEHAVIOR = CountBehavior
+
+
+class NegBehavior(Behavior):
+    """Event-driven: negates every message at once."""
+
+    TIMING = "timed"
+    IN_PORTS = ("i",)
+    OUT_PORTS = ("o",)
+
+    def on_message(self, port: str, value: object) -> None:
+        assert isinstance(value, int)
+        self._emit("o", -value)
+
+
+class Neg(AtomicComponent):
+    NAME = "t.Neg"
+    IN_PORTS = ("i",)
+    OUT_PORTS = ("o",)
+    PORT_TYPES = {"i": "int", "o": "int"}
+    BEHAVIOR = NegBehavior
+
+
+class Switch(ModeComponent):
+    """<<sync>> mode automaton { initial mode A { Count a; i -> a.i; a.o -> o; } mode B { Count b; ... } A -> B [i < 0]; B -> A [i > 0]; }."""
+
+    NAME = "t.Switch"
+    IN_PORTS = ("i",)
+    OUT_PORTS = ("o", "unused")
+    PORT_TYPES = {"i": "int", "o": "int", "unused": "int"}
+    MODES = ("A", "B")
+    INITIAL_MODE = "A"
+    MODE_TIMING = "sync"
+    MODE_SUBCOMPONENTS: Mapping[str, tuple[str, ...]] = {"A": ("a",), "B": ("b",)}
+    MODE_CONNECTORS: Mapping[str, tuple[Connector, ...]] = {
+        "A": (("", "i", (("a", "i"),)), ("a", "o", (("", "o"),))),
+        "B": (("", "i", (("b", "i"),)), ("b", "o", (("", "o"),))),
+    }
+
+    @classmethod
+    def mode_transition(cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]) -> str | None:
+        del trigger, params
+        i = inputs.get("i")
+        if mode == "A" and isinstance(i, int) and i < 0:
+            return "B"
+        if mode == "B" and isinstance(i, int) and i > 0:
+            return "A"
+        return None
+
+    @classmethod
+    def subcomponents(cls, params: Mapping[str, object]) -> list[tuple[str, type[ComponentType], dict[str, object]]]:
+        return [("a", Count, {}), ("b", Count, {})]
+
+
+class EventSwitch(ModeComponent):
+    """mode automaton (event-based) { initial mode Pass { i -> o; } mode Negate { Neg n; i -> n.i; n.o -> o; } Pass -> Negate flip; Negate -> Pass Tick; }."""
+
+    NAME = "t.EventSwitch"
+    IN_PORTS = ("i", "flip")
+    OUT_PORTS = ("o",)
+    PORT_TYPES = {"i": "int", "flip": "boolean", "o": "int"}
+    MODES = ("Pass", "Negate")
+    INITIAL_MODE = "Pass"
+    MODE_TIMING = "timed"
+    MODE_SUBCOMPONENTS: Mapping[str, tuple[str, ...]] = {"Pass": (), "Negate": ("n",)}
+    MODE_CONNECTORS: Mapping[str, tuple[Connector, ...]] = {
+        "Pass": (("", "i", (("", "o"),)),),
+        "Negate": (("", "i", (("n", "i"),)), ("n", "o", (("", "o"),))),
+    }
+
+    @classmethod
+    def mode_transition(cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]) -> str | None:
+        del inputs, params
+        if mode == "Pass" and trigger == "flip":
+            return "Negate"
+        if mode == "Negate" and trigger == "":
+            return "Pass"
+        return None
+
+    @classmethod
+    def subcomponents(cls, params: Mapping[str, object]) -> list[tuple[str, type[ComponentType], dict[str, object]]]:
+        return [("n", Neg, {})]
+
+
+def feed(system: System, port: str, items: list[object]) -> None:
+    for item in items:
+        system.receive(port, item)
+
+
+def test_sync_mode_switches_before_the_slice_and_resting_subcomponents_keep_their_state() -> None:
+    system = System(Switch)
+    system.init()
+    feed(system, "i", [5, TICK, 7, TICK, -1, TICK, -2, TICK, 3, TICK, TICK])
+    system.run()
+    # a counts slices 1, 2; slice 3 (-1) already runs in B (b: 1), slice 4 in B (b: 2);
+    # slice 5 (3) back in A, whose count went on from 2; slice 6 has no message.
+    assert system.outputs["o"] == [1, TICK, 2, TICK, 1, TICK, 2, TICK, 3, TICK, TICK]
+    # No connector drives 'unused' in any mode: it gets the slice ends.
+    assert system.outputs["unused"] == [TICK] * 6
+    top = system.top
+    assert isinstance(top, ModeInstance)
+    assert top.mode_log == ["A", "B", "A"]
+
+
+def test_event_mode_switches_on_its_trigger_ports_and_on_ticks() -> None:
+    system = System(EventSwitch)
+    system.init()
+    system.receive("i", 1)
+    system.receive("flip", True)
+    system.receive("i", 2)
+    system.receive("i", TICK)
+    system.receive("flip", TICK)
+    system.receive("i", 3)
+    system.receive("i", TICK)
+    system.receive("flip", TICK)
+    system.run()
+    # 1 passes; the message on flip switches to Negate, so 2 is negated; the tick switches back.
+    assert system.outputs["o"] == [1, -2, TICK, 3, TICK]
