@@ -1,15 +1,26 @@
 """The stream-test entry point: input streams per port (JSON) to output streams per port (JSON).
 
 Items are ``{"msg": value}`` or ``{"tick": true}``; enum constants ``{"enum": T, "literal": L}``;
-chars ``{"char": c}``; numbers of the Java types long, short, byte, float and double carry a
-``"type"``. A run description::
+chars ``{"char": c}`` (on a ``char``/``Character`` port a ``{"msg": n}`` is the character with
+code n); maps ``{"map": [[k, v], ...]}``; objects of the model's data types
+``{"object": T, "fields": {...}}``; numbers of the Java types long, short, byte, float and double
+carry a ``"type"``. A run description (the montiarc-io suite's case format)::
 
-    {"params": {...}, "inputs": {"port": [items...]},
-     "steps": [{"op": "init"}, {"op": "receive", "port": "i", "count": 2}, {"op": "run"}],
-     "run_ticks": null}
+    {"params": {...}, "type_args": ["Integer"], "inputs": {"port": [items...]},
+     "steps": [{"op": "init"}, {"op": "receive", "port": "i", "count": 2}, {"op": "run"},
+               {"op": "observe_state"}],
+     "run_ticks": null,
+     "observed_value_transform": {"o": "c -> (char) c.intValue()"},
+     "extra_assertions": [{"assert": "in_port_buffer_empty_after_run", "port": "i"}]}
 
-``observe`` names further out ports of subcomponents to report (``"sub.port"``). Without ``steps``: init, every input stream in port order, run (``run_ticks`` slices or until
-quiescent). The result is ``{"outputs": {"port": [items...]}, "states": {...}}``.
+``observe`` names further out ports of subcomponents to report (``"sub.port"``). Without
+``steps``: init, every input stream in port order, run (``run_ticks`` slices or until
+quiescent). ``type_args`` binds the type parameters of a generic component under test (a list in
+the order of its ``TYPE_PARAMETERS``, or a mapping), which gives its ports their Java types.
+``observed_value_transform`` applies a Java lambda (:mod:`maa_timesync.javalambda`) to each value
+observed on a port. The result is ``{"outputs": {"port": [items...]}, "states": {...},
+"state_trace": [state after each observe_state step], "assertions": [{"assert", "port", "holds",
+"detail"}]}``; an unknown step or assertion is an error, never skipped.
 """
 
 from __future__ import annotations
@@ -29,6 +40,26 @@ TYPED = {"long": "long", "Long": "long", "short": "short", "Short": "short", "by
          "float": "float", "Float": "float", "double": "double", "Double": "double"}
 
 
+CHARS = ("char", "Character")
+
+
+def _hashable(value: object) -> object:
+    return tuple(value) if isinstance(value, list) else value
+
+
+def _data_class(name: str) -> Any:
+    """The generated class of a model data type by its (simple or qualified) name, among the loaded modules."""
+    simple = name.rpartition(".")[2]
+    for module in list(sys.modules.values()):
+        mod_name = getattr(module, "__name__", "")
+        if mod_name.startswith(("maa_", "_")):
+            continue
+        cls = getattr(module, simple, None)
+        if isinstance(cls, type) and dataclasses.is_dataclass(cls):
+            return cls
+    raise ValueError(f"unknown data type {name}")
+
+
 def decode_value(raw: object, kind: object = None, port_type: object = None, enums: Mapping[str, type[enum.Enum]] | None = None) -> object:
     """A JSON value (``{"enum": T, "literal": L}``, ``{"value": v, "type": t}``, ``"NaN"``...) to a Python value."""
     if isinstance(raw, Mapping):
@@ -39,9 +70,19 @@ def decode_value(raw: object, kind: object = None, port_type: object = None, enu
             return cls[str(raw["literal"])]
         if "char" in raw:
             return ord(str(raw["char"]))
+        if "map" in raw:
+            return {_hashable(decode_value(k, None, None, enums)): decode_value(v, None, None, enums) for k, v in raw["map"]}
+        if "object" in raw:
+            cls = _data_class(str(raw["object"]))
+            fields = raw.get("fields") or {}
+            return cls(**{name: decode_value(v, None, None, enums) for name, v in fields.items()})
         if "value" in raw:
             return decode_value(raw["value"], raw.get("type"), port_type, enums)
         return {k: decode_value(v, None, None, enums) for k, v in raw.items()}
+    if kind is None and port_type in CHARS and isinstance(raw, int) and not isinstance(raw, bool):
+        return raw
+    if isinstance(raw, list):
+        return [decode_value(v, None, None, enums) for v in raw]
     if kind in ("float", "double") and raw is not None:
         number = float(raw) if not isinstance(raw, str) else float(raw.replace("Infinity", "inf"))
         return f32(number) if kind == "float" else number
@@ -54,6 +95,8 @@ def decode_item(item: Mapping[str, Any], port_type: object = None, enums: Mappin
         return TICK
     if "enum" in item or "char" in item:
         return decode_value(item, None, port_type, enums)
+    if port_type in CHARS and "type" not in item and isinstance(item.get("msg"), int) and not isinstance(item.get("msg"), bool):
+        return int(item["msg"])
     return decode_value(item.get("msg"), item.get("type"), port_type, enums)
 
 
@@ -76,8 +119,12 @@ def encode_item(value: object, port_type: object = None) -> dict[str, Any]:
         return {"tick": True}
     if isinstance(value, enum.Enum):
         return {"msg": {"enum": type(value).__name__, "literal": value.name}}
+    if port_type in CHARS and isinstance(value, (int, str)) and not isinstance(value, bool):
+        return {"char": chr(value) if isinstance(value, int) else value}
     if dataclasses.is_dataclass(value) and not isinstance(value, type):
         return {"msg": _plain(value), "class": type(value).__name__}
+    if isinstance(value, dict):
+        return {"msg": _plain(value)}
     if isinstance(port_type, str) and port_type in TYPED and isinstance(value, (int, float)) and not isinstance(value, bool):
         kind = TYPED[port_type]
         if kind in ("float", "double"):
@@ -95,7 +142,54 @@ def _plain(value: object) -> object:
         return {f.name: _plain(getattr(value, f.name)) for f in dataclasses.fields(value)}
     if isinstance(value, list):
         return [_plain(v) for v in value]
+    if isinstance(value, dict):
+        return {"map": [[_plain(k), _plain(v)] for k, v in value.items()]}
     return value
+
+
+def bind_type_args(ctype: type[ComponentType], type_args: object) -> dict[str, object]:
+    """The port types of a (generic) component with its type parameters bound to ``type_args``."""
+    params: tuple[str, ...] = getattr(ctype, "TYPE_PARAMETERS", ())  # generated for generic component types only
+    if type_args is None:
+        binding: dict[str, object] = {}
+    elif isinstance(type_args, Mapping):
+        binding = {str(k): v for k, v in type_args.items()}
+    elif isinstance(type_args, (list, tuple)):
+        if len(type_args) != len(params):
+            raise ValueError(f"{ctype.NAME} has {len(params)} type parameter(s) {list(params)}, the test gives {len(type_args)}")
+        binding = dict(zip(params, type_args, strict=True))
+    else:
+        raise ValueError(f"type_args must be a list or a mapping, not {type_args!r}")
+    unknown = [k for k in binding if k not in params]
+    if unknown:
+        raise ValueError(f"{ctype.NAME} has no type parameter {', '.join(unknown)}")
+
+    def bound(t: object) -> object:
+        if isinstance(t, str):
+            name = t.removesuffix("[]")
+            if name in binding:
+                arg = binding[name]
+                return f"{arg}[]" if t.endswith("[]") and isinstance(arg, str) else arg
+        return t
+
+    return {port: bound(t) for port, t in ctype.PORT_TYPES.items()}
+
+
+def _current_state(system: System) -> str | None:
+    behavior = system.top.behavior
+    return behavior.current_state() if behavior is not None else None
+
+
+def _assertion(system: System, spec: Mapping[str, Any]) -> dict[str, Any]:
+    kind = spec.get("assert")
+    port = str(spec.get("port", ""))
+    if kind == "in_port_buffer_empty_after_run":
+        if port not in system.top.ctype.IN_PORTS:
+            raise ValueError(f"{system.top.ctype.NAME} has no in port '{port}'")
+        left = list(system.top.buffers.get(port, ()))
+        detail = None if not left else f"{len(left)} item(s) left buffered on {port}: {[encode_item(x) for x in left]}"
+        return {"assert": kind, "port": port, "holds": not left, "detail": detail}
+    raise ValueError(f"unknown extra assertion {kind!r}")
 
 
 def run_streams(
@@ -104,6 +198,11 @@ def run_streams(
     enums: Mapping[str, type[enum.Enum]] | None = None,
 ) -> dict[str, Any]:
     """Runs a component on input streams and returns its output streams (JSON-ready)."""
+    from maa_timesync.javalambda import item_transform
+
+    port_types = bind_type_args(ctype, spec.get("type_args"))
+    transforms = {port: item_transform(str(text), port_types.get(port) if isinstance(port_types.get(port), str) else None)  # type: ignore[arg-type]
+                  for port, text in (spec.get("observed_value_transform") or {}).items()}
     params = {name: decode_value(raw, None, None, enums) for name, raw in (spec.get("params") or {}).items()}
     system = System(ctype, params)
     inputs: Mapping[str, Sequence[Mapping[str, Any]]] = spec.get("inputs") or {}
@@ -122,6 +221,7 @@ def run_streams(
         stream: list[object] = []
         inst.observers[port] = stream
         observed[name] = (stream, inst.ctype.PORT_TYPES.get(port))
+    state_trace: list[str | None] = []
     steps = spec.get("steps")
     if steps is None:
         steps = [{"op": "init"}] + [{"op": "receive", "port": p, "count": len(v)} for p, v in pending.items()]
@@ -134,18 +234,25 @@ def run_streams(
             port = str(step["port"])
             count = int(step.get("count", len(pending.get(port, []))))
             for raw in pending[port][:count]:
-                system.receive(port, decode_item(raw, ctype.PORT_TYPES.get(port), enums))
+                system.receive(port, decode_item(raw, port_types.get(port), enums))
             del pending[port][:count]
         elif op == "run":
             ticks = step.get("ticks")
             system.run(int(ticks) if ticks is not None else None)
+        elif op == "observe_state":
+            state_trace.append(_current_state(system))
         else:
             raise ValueError(f"unknown step {op}")
-    outputs = {port: [encode_item(v, ctype.PORT_TYPES.get(port)) for v in items] for port, items in system.outputs.items()}
+    assertions = [_assertion(system, a) for a in spec.get("extra_assertions") or []]
+    outputs = {port: [encode_item(v, port_types.get(port)) for v in items] for port, items in system.outputs.items()}
     for name, (stream, port_type) in observed.items():
         outputs[name] = [encode_item(v, port_type) for v in stream]
+    for port, transform in transforms.items():
+        if port not in outputs:
+            raise ValueError(f"observed_value_transform names no observed port '{port}'")
+        outputs[port] = [transform(item) for item in outputs[port]]
     states = {".".join(i.path): i.behavior.current_state() for i in system.instances if i.behavior is not None}
-    return {"outputs": outputs, "states": states}
+    return {"outputs": outputs, "states": states, "state_trace": state_trace, "assertions": assertions}
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -3,7 +3,7 @@
 A file tests one component type of the application::
 
     // comments run to the end of the line
-    component toast.Controller(threshold = 25);
+    component toast.Controller(threshold = 25);   // generic types: component lib.Delay<Long>;
 
     test "a plate starts loading the bread" {
       distance  = 100 Tk 20 Tk;       // input stream of a port: messages and ticks (Tk)
@@ -16,10 +16,24 @@ A file tests one component type of the application::
                                       // (default: as many slices as the inputs supply)
     }
 
-Values are integers, floats, ``true``/``false``, ``"strings"``, and enum constants (``STOP`` or
-``ToasterCmd.STOP``, resolved by the port's type). Out ports the test does not mention are not
-compared. ``python -m maa_timesync.streamtest BUILD_DIR FILE...`` prints one line per test and a
-JSON summary with ``--json``; the exit code is 1 when a test fails.
+    test "steps in order" {           // with `run` statements the body runs in file order:
+      state == Idle;                  // the state after init
+      distance = 100 Tk;              // delivered now
+      run;                            // run until quiescent (`run 3;`: exactly 3 slices)
+      state == Loading;               // the state between the steps
+      distance = 20 Tk;
+      run;
+      transform code = c -> (char) c.intValue();   // a Java lambda applied to each value of code
+      code == 'L' 'D';                // compared after the transform (types kept: 'L' is a char)
+      empty distance;                 // nothing left buffered on the in port after the run
+    }
+
+Values are integers (``5L`` a long), floats (``1.5f`` a float), ``'c'`` characters,
+``true``/``false``, ``"strings"``, and enum constants (``STOP`` or ``ToasterCmd.STOP``, resolved
+by the port's type). Out ports the test does not mention are not compared. The lambdas of
+``transform`` are the Java subset of :mod:`maa_timesync.javalambda`; a lambda outside it is an
+error of the file. ``python -m maa_timesync.streamtest BUILD_DIR FILE...`` prints one line per
+test and a JSON summary with ``--json``; the exit code is 1 when a test fails.
 """
 
 from __future__ import annotations
@@ -34,9 +48,18 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from maa_timesync.javalambda import LambdaError, item_transform, unescape
 from maa_timesync.runtime import TICK, ComponentType, System
+from maa_timesync.streams import bind_type_args, encode_item
 
-_TOKEN = re.compile(r'\s*(?:(//[^\n]*)|("(?:\\.|[^"\\])*")|(==|~=|[=;(){},])|([-+]?\d+\.\d*(?:[eE][-+]?\d+)?|[-+]?\d+)|([A-Za-z_][\w.]*))')
+_TOKEN = re.compile(
+    r'\s*(?:(//[^\n]*)|("(?:\\.|[^"\\])*")|(==|~=|[=;(){},<>!])'
+    r"|([-+]?\d+\.\d*(?:[eE][-+]?\d+)?[fF]?|[-+]?\d+[lL]?)|('(?:\\.|[^'\\])')|([A-Za-z_][\w.]*))"
+)
+_TRANSFORM = re.compile(r"\s*([A-Za-z_]\w*)\s*=\s*([^;]*);")
+_KEYWORDS = ("component", "test", "state", "ticks", "Tk")
+#: Words that start a statement only where a port name cannot stand (ports may be called so).
+_SOFT = ("run", "empty", "features")
 
 
 class StreamTestError(Exception):
@@ -52,6 +75,14 @@ class StreamTest:
     state: str | None = None
     ticks: int | None = None
     line: int = 0
+    #: The body in file order: ``("input", port, items)``, ``("run", ticks or None)``, ``("state", name, line)``.
+    actions: list[tuple[Any, ...]] = field(default_factory=list)
+    #: Whether the body has ``run`` statements (then it runs in file order).
+    sequenced: bool = False
+    #: Java lambdas per out port, applied to each observed value before comparing.
+    transforms: dict[str, str] = field(default_factory=dict)
+    #: In ports on which nothing may be left buffered after the run.
+    empty: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -60,11 +91,29 @@ class StreamTestFile:
     component: str
     params: dict[str, object]
     tests: list[StreamTest]
+    type_args: list[str] = field(default_factory=list)
+    #: The feature configuration the test expects the build to have (``features (f = true)``).
+    features: dict[str, bool] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
 class _Name:
     text: str
+
+
+@dataclass(frozen=True)
+class _Char:
+    """A ``'c'`` literal (the runtime carries a char as its code)."""
+
+    text: str
+
+
+@dataclass(frozen=True)
+class _Typed:
+    """A number literal with a Java type suffix (``5L``, ``1.5f``)."""
+
+    value: int | float
+    type: str
 
 
 def _tokens(text: str) -> list[tuple[str, object, int]]:
@@ -79,7 +128,7 @@ def _tokens(text: str) -> list[tuple[str, object, int]]:
             raise StreamTestError(f"line {line}: unexpected {text[pos:pos + 10]!r}")
         line = text.count("\n", 0, m.start()) + 1
         pos = m.end()
-        comment, string, punct, number, name = m.groups()
+        comment, string, punct, number, char, name = m.groups()
         if comment is not None:
             continue
         if string is not None:
@@ -87,15 +136,33 @@ def _tokens(text: str) -> list[tuple[str, object, int]]:
         elif punct is not None:
             out.append((punct, punct, line))
         elif number is not None:
-            out.append(("value", float(number) if "." in number or "e" in number.lower() else int(number), line))
+            out.append(("value", _number(number), line))
+        elif char is not None:
+            body = char[1:-1]
+            out.append(("value", _Char(unescape(body)), line))
         elif name is not None:
             if name in ("true", "false"):
                 out.append(("value", name == "true", line))
-            elif name in ("component", "test", "state", "ticks", "Tk"):
+            elif name == "transform" and (t := _TRANSFORM.match(text, pos)):
+                # The lambda is Java, not stream syntax: the rest of the statement is taken as it is.
+                out.append(("transform", (t.group(1), t.group(2).strip()), line))
+                pos = t.end()
+            elif name in _KEYWORDS:
                 out.append((name, name, line))
             else:
                 out.append(("name", name, line))
     return out
+
+
+def _number(text: str) -> object:
+    suffix = text[-1].lower()
+    if suffix == "l":
+        return _Typed(int(text[:-1]), "long")
+    if suffix == "f":
+        from maa_behavior import f32
+
+        return _Typed(f32(float(text[:-1])), "float")
+    return float(text) if "." in text or "e" in text.lower() else int(text)
 
 
 def parse(text: str, path: str = "<stream>") -> StreamTestFile:
@@ -119,8 +186,21 @@ def parse(text: str, path: str = "<stream>") -> StreamTestFile:
             return take("value")
         return _Name(str(take("name")))
 
+    def _soft(word: str) -> bool:
+        """A soft keyword: the word, not followed by what makes it a port's stream statement."""
+        nxt = toks[i + 1][0] if i + 1 < len(toks) else "<end>"
+        return peek() == "name" and toks[i][1] == word and nxt not in ("=", "==", "~=")
+
     take("component")
     component = str(take("name"))
+    type_args: list[str] = []
+    if peek() == "<":
+        take("<")
+        type_args.append(str(take("name")))
+        while peek() == ",":
+            take(",")
+            type_args.append(str(take("name")))
+        take(">")
     params: dict[str, object] = {}
     if peek() == "(":
         take("(")
@@ -128,6 +208,20 @@ def parse(text: str, path: str = "<stream>") -> StreamTestFile:
             pname = str(take("name"))
             take("=")
             params[pname] = value()
+            if peek() == ",":
+                take(",")
+        take(")")
+    features: dict[str, bool] = {}
+    if peek() == "name" and toks[i][1] == "features":
+        i += 1
+        take("(")
+        while peek() != ")":
+            fname = str(take("name"))
+            take("=")
+            selected = take("value")
+            if not isinstance(selected, bool):
+                raise StreamTestError(f"{path}:{toks[i - 1][2]}: feature {fname} must be true or false")
+            features[fname] = selected
             if peek() == ",":
                 take(",")
         take(")")
@@ -139,13 +233,36 @@ def parse(text: str, path: str = "<stream>") -> StreamTestFile:
         test = StreamTest(name=str(take("value")), line=line)
         take("{")
         while peek() != "}":
+            stmt_line = toks[i][2] if i < len(toks) else 0
             if peek() == "state":
                 take("state")
                 take("==")
                 test.state = str(take("name"))
+                test.actions.append(("state", test.state, stmt_line))
             elif peek() == "ticks":
                 take("ticks")
                 test.ticks = int(take("value"))  # type: ignore[arg-type]
+            elif _soft("run"):
+                i += 1
+                n = take("value") if peek() == "value" else None
+                if n is not None and (not isinstance(n, int) or isinstance(n, bool) or n < 0):
+                    raise StreamTestError(f"{path}:{stmt_line}: 'run' takes a number of slices")
+                test.actions.append(("run", n))
+                test.sequenced = True
+            elif _soft("empty"):
+                i += 1
+                test.empty.append(str(take("name")))
+                while peek() == ",":
+                    take(",")
+                    test.empty.append(str(take("name")))
+            elif peek() == "transform":
+                port, lam = take("transform")
+                try:
+                    item_transform(lam)
+                except LambdaError as exc:
+                    raise StreamTestError(f"{path}:{stmt_line}: transform {port}: {exc}") from None
+                test.transforms[port] = lam
+                continue  # the transform token includes its ';'
             else:
                 port = str(take("name"))
                 target = test.expected if peek() in ("==", "~=") else test.inputs
@@ -155,16 +272,26 @@ def parse(text: str, path: str = "<stream>") -> StreamTestFile:
                 items: list[object] = []
                 while peek() not in (";", "<end>"):
                     items.append(TICK if peek() == "Tk" and take("Tk") else value())
-                target[port] = items
+                if target is test.inputs:
+                    test.actions.append(("input", port, items))
+                    target.setdefault(port, []).extend(items)
+                else:
+                    target[port] = items
             take(";")
         take("}")
+        if test.sequenced and test.ticks is not None:
+            raise StreamTestError(f"{path}:{line}: 'ticks' and 'run' do not mix: give the slices to 'run N'")
         tests.append(test)
     if peek() != "<end>":
         raise StreamTestError(f"{path}:{toks[i][2]}: expected test, found {peek()}")
-    return StreamTestFile(path, component, params, tests)
+    return StreamTestFile(path, component, params, tests, type_args, features)
 
 
 def _resolve(item: object, port_type: object, enums: Mapping[str, type[enum.Enum]]) -> object:
+    if isinstance(item, _Char):
+        return ord(item.text)
+    if isinstance(item, _Typed):
+        return item.value
     if not isinstance(item, _Name):
         if isinstance(item, int) and not isinstance(item, bool) and port_type in ("float", "double", "Float", "Double"):
             return float(item)
@@ -180,28 +307,113 @@ def _show(items: Sequence[object]) -> str:
     return " ".join("Tk" if x is TICK else x.name if isinstance(x, enum.Enum) else json.dumps(x) for x in items) or "(empty)"
 
 
-def run_test(ctype: type[ComponentType], params: Mapping[str, object], test: StreamTest, enums: Mapping[str, type[enum.Enum]]) -> list[str]:
+def _literal_item(item: object, enums: Mapping[str, type[enum.Enum]]) -> dict[str, Any]:
+    """An expected literal of a transformed port as a JSON stream item (its Java type from the literal)."""
+    if item is TICK:
+        return {"tick": True}
+    if isinstance(item, _Char):
+        return {"char": item.text}
+    if isinstance(item, _Typed):
+        return encode_item(item.value, item.type)
+    if isinstance(item, _Name):
+        return encode_item(_resolve(item, None, enums))
+    return encode_item(item)
+
+
+def _show_items(items: Sequence[Mapping[str, Any]]) -> str:
+    def one(x: Mapping[str, Any]) -> str:
+        if x.get("tick"):
+            return "Tk"
+        if "char" in x:
+            return repr(x["char"])
+        msg = x.get("msg")
+        if isinstance(msg, Mapping) and "literal" in msg:
+            return str(msg["literal"])
+        text = json.dumps(msg)
+        return text + {"long": "L", "float": "f"}.get(str(x.get("type")), "") if x.get("type") in ("long", "float") else text
+
+    return " ".join(one(x) for x in items) or "(empty)"
+
+
+def _same_items(want: Sequence[Mapping[str, Any]], got: Sequence[Mapping[str, Any]]) -> bool:
+    return len(want) == len(got) and all(json.dumps(w, sort_keys=True) == json.dumps(g, sort_keys=True) for w, g in zip(want, got, strict=True))
+
+
+def run_test(
+    ctype: type[ComponentType],
+    params: Mapping[str, object],
+    test: StreamTest,
+    enums: Mapping[str, type[enum.Enum]],
+    port_types: Mapping[str, object] | None = None,
+) -> list[str]:
     """Runs one test; returns the differences (empty when it passes)."""
-    system = System(ctype, params)
-    system.init()
-    for port, items in test.inputs.items():
+    types = dict(ctype.PORT_TYPES) if port_types is None else dict(port_types)
+    problems: list[str] = []
+    for port in test.inputs:
         if port not in ctype.IN_PORTS:
             return [f"{ctype.NAME} has no in port '{port}'"]
+    for port in test.transforms:
+        if port not in ctype.OUT_PORTS:
+            problems.append(f"transform: {ctype.NAME} has no out port '{port}'")
+    for port in test.empty:
+        if port not in ctype.IN_PORTS:
+            problems.append(f"empty: {ctype.NAME} has no in port '{port}'")
+    if problems:
+        return problems
+    system = System(ctype, params)
+    system.init()
+
+    def feed(port: str, items: Sequence[object]) -> None:
         for item in items:
-            system.receive(port, item if item is TICK else _resolve(item, ctype.PORT_TYPES.get(port), enums))
-    if test.ticks is not None:
-        # `ticks N`: every in port gets ticks up to N slices (messages stop after the given ones).
-        for port in ctype.IN_PORTS:
-            given = sum(1 for x in test.inputs.get(port, ()) if x is TICK)
-            for _ in range(test.ticks - given):
-                system.receive(port, TICK)
-    system.run(test.ticks)
-    problems: list[str] = []
+            system.receive(port, item if item is TICK else _resolve(item, types.get(port), enums))
+
+    def check_state(name: str, line: int) -> None:
+        behavior = system.top.behavior
+        state = behavior.current_state() if behavior is not None else None
+        if state != name:
+            problems.append(f"state (line {line}): expected {name}; got {state}")
+
+    if test.sequenced:
+        for action in test.actions:
+            if action[0] == "input":
+                feed(action[1], action[2])
+            elif action[0] == "run":
+                system.run(action[1])
+            else:
+                check_state(action[1], action[2])
+    else:
+        for port, items in test.inputs.items():
+            feed(port, items)
+        if test.ticks is not None:
+            # `ticks N`: every in port gets ticks up to N slices (messages stop after the given ones).
+            for port in ctype.IN_PORTS:
+                given = sum(1 for x in test.inputs.get(port, ()) if x is TICK)
+                for _ in range(test.ticks - given):
+                    system.receive(port, TICK)
+        system.run(test.ticks)
+        for action in test.actions:
+            if action[0] == "state":
+                check_state(action[1], action[2])
     for port, items in test.expected.items():
         if port not in ctype.OUT_PORTS:
             problems.append(f"{ctype.NAME} has no out port '{port}'")
             continue
-        want = [x if x is TICK else _resolve(x, ctype.PORT_TYPES.get(port), enums) for x in items]
+        if port in test.transforms:
+            port_type = types.get(port)
+            fn = item_transform(test.transforms[port], port_type if isinstance(port_type, str) else None)
+            want_items = [_literal_item(x, enums) for x in items]
+            try:
+                got_items = [fn(encode_item(v, port_type)) for v in system.outputs[port]]
+            except LambdaError as exc:
+                problems.append(f"{port}: transform failed: {exc}")
+                continue
+            if port in test.values_only:
+                want_items = [x for x in want_items if not x.get("tick")]
+                got_items = [x for x in got_items if not x.get("tick")]
+            if not _same_items(want_items, got_items):
+                problems.append(f"{port}: expected {_show_items(want_items)}; got {_show_items(got_items)}")
+            continue
+        want = [x if x is TICK else _resolve(x, types.get(port), enums) for x in items]
         got = system.outputs[port]
         if port in test.values_only:
             want = [x for x in want if x is not TICK]
@@ -209,11 +421,10 @@ def run_test(ctype: type[ComponentType], params: Mapping[str, object], test: Str
         same = len(want) == len(got) and all(w is g if w is TICK or g is TICK else (type(w) is type(g) and w == g) for w, g in zip(want, got, strict=False))
         if not same:
             problems.append(f"{port}: expected {_show(want)}; got {_show(got)}")
-    if test.state is not None:
-        behavior = system.top.behavior
-        state = behavior.current_state() if behavior is not None else None
-        if state != test.state:
-            problems.append(f"state: expected {test.state}; got {state}")
+    for port in test.empty:
+        left = list(system.top.buffers.get(port, ()))
+        if left:
+            problems.append(f"empty {port}: {len(left)} item(s) left buffered: {_show(left)}")
     return problems
 
 
@@ -232,12 +443,25 @@ def run_files(build: Path, files: Sequence[Path]) -> list[dict[str, Any]]:
             if ctype is None:
                 raise StreamTestError(f"{file}: the application has no component type {parsed.component}")
             params = {k: _resolve(v, None, enums) for k, v in parsed.params.items()}
+            try:
+                port_types = bind_type_args(ctype, parsed.type_args or None)
+            except ValueError as exc:
+                raise StreamTestError(f"{file}: {exc}") from None
+            if not parsed.type_args and getattr(ctype, "TYPE_PARAMETERS", ()):
+                raise StreamTestError(f"{file}: {ctype.NAME} is generic: give its type arguments, e.g. component {ctype.NAME}<Integer>;")
+            if parsed.features:
+                built = getattr(ctype, "FEATURES", None)
+                if not isinstance(built, Mapping):
+                    raise StreamTestError(f"{file}: the build of {ctype.NAME} does not record a feature configuration")
+                differ = {k: v for k, v in parsed.features.items() if built.get(k) != v}
+                if differ:
+                    raise StreamTestError(f"{file}: the build of {ctype.NAME} has another feature configuration than {differ} (it has {dict(built)})")
         except (StreamTestError, OSError) as exc:
             results.append({"file": str(file), "test": None, "line": 0, "passed": False, "problems": [str(exc)]})
             continue
         for test in parsed.tests:
             try:
-                problems = run_test(ctype, params, test, enums)
+                problems = run_test(ctype, params, test, enums, port_types)
             except Exception as exc:  # the component crashed
                 problems = [f"{type(exc).__name__}: {exc}"]
             results.append({"file": str(file), "test": test.name, "line": test.line, "passed": not problems, "problems": problems})

@@ -54,6 +54,8 @@ function typeHeader(c: ComponentView, datatypes: DataTypeResult, imports: Import
         `    OUT_PORTS = ${tuple(outs.map((p) => str(p.name)))}`,
         `    PORT_TYPES: ClassVar[Mapping[str, object]] = {${c.ports.map((p) => `${str(p.name)}: ${portType(p, datatypes, imports)}`).join(', ')}}`,
         `    PARAMETERS = ${tuple(c.parameters.map((p) => str(p.name)))}`,
+        // Generic components name their type parameters: stream tests bind them (`type_args`).
+        ...(c.typeParameters.length > 0 ? [`    TYPE_PARAMETERS = ${tuple(c.typeParameters.map(str))}`] : []),
         ...extra
     ];
     imports.add('typing', 'ClassVar');

@@ -2,8 +2,12 @@
 
 ``python io_cases.py SUITE_DIR CACHE_DIR [REPORT]``: for every component of the suite, runs its
 cases in a fresh interpreter on the build that ``scripts/generate-io-cases.mjs`` wrote to
-``CACHE_DIR/builds/<component>/timesync``, compares every expected output stream item by item
-(value types respected) and writes a JSON report: per case ``passed`` and a reason.
+``CACHE_DIR/builds/<variant>/timesync`` (``generation.json`` maps each case to its build: one per
+component and feature configuration), compares every expected output stream item by item (value
+types respected, ``compare: values_only`` dropping ticks, ``observed_value_transform`` applied),
+the state trace of ``kind: state_trace`` cases with ``expected_states``, and every
+``extra_assertions`` entry, and writes a JSON report: per case ``passed`` and a reason. A field
+or value form the harness does not know fails the case instead of being ignored.
 """
 
 from __future__ import annotations
@@ -42,28 +46,76 @@ def _num(x: object) -> float | None:
     return None
 
 
+#: The case fields the harness reads; any other field fails the case (it might carry a condition).
+KNOWN_FIELDS = frozenset({
+    "id", "test_file", "test_method", "invocation", "kind", "component", "model_files", "model_sources", "params",
+    "features", "type_args", "inputs", "expected", "run_ticks", "steps", "test_line", "junit_args", "compare",
+    "implicit_empty_inputs", "extra_assertions", "observed_value_transform", "expected_states", "port_accessors",
+})
+CHARS = ("char", "Character")
+
+
+def same_value(a: object, b: object) -> bool:
+    """Equality of two JSON message values (maps unordered, objects by type and fields)."""
+    if isinstance(a, Mapping) and isinstance(b, Mapping):
+        if "map" in a or "map" in b:
+            pa, pb = a.get("map"), b.get("map")
+            if not isinstance(pa, list) or not isinstance(pb, list) or len(pa) != len(pb):
+                return False
+            return all(any(same_value(k1, k2) and same_value(v1, v2) for k2, v2 in pb) for k1, v1 in pa)
+        if a.keys() != b.keys():
+            return False
+        return all(same_value(a[k], b[k]) for k in a)
+    if isinstance(a, list) and isinstance(b, list):
+        return len(a) == len(b) and all(same_value(x, y) for x, y in zip(a, b, strict=True))
+    return type(a) is type(b) and a == b
+
+
 def same_item(expected: Mapping[str, Any], actual: Mapping[str, Any]) -> bool:
     """Equality of two stream items with Java's ``equals`` (an int 1 is not a long 1)."""
     if expected.get("tick") or actual.get("tick"):
         return bool(expected.get("tick")) and bool(actual.get("tick"))
     if "char" in expected or "char" in actual:
         return expected.get("char") == actual.get("char")
+    a, b = expected.get("msg"), actual.get("msg")
+    if isinstance(a, Mapping) and "object" in a:
+        # {"object": T, "fields": {...}} against the runtime's {"msg": fields, "class": T}.
+        return str(a["object"]).rpartition(".")[2] == actual.get("class") and same_value(a.get("fields") or {}, b)
     if expected.get("type") != actual.get("type"):
         return False
-    a, b = expected.get("msg"), actual.get("msg")
     kind = expected.get("type")
     if kind in ("float", "double"):
         a, b = _num(a), _num(b)
         if a is None or b is None:
             return False
         return _same_number(_f32(float(a)), _f32(float(b))) if kind == "float" else _same_number(float(a), float(b))
-    return type(a) is type(b) and a == b
+    return same_value(a, b)
 
 
-def compare(case: Mapping[str, Any], outputs: Mapping[str, list[dict[str, Any]]]) -> str | None:
-    """None when the case passes, else the first difference."""
+def char_items(items: list[dict[str, Any]], port_type: object) -> list[dict[str, Any]]:
+    """On a ``char``/``Character`` port the suite may write a character as its code ``{"msg": 97}``."""
+    if port_type not in CHARS:
+        return items
+    return [{"char": chr(i["msg"])} if isinstance(i.get("msg"), int) and not isinstance(i.get("msg"), bool) and "type" not in i else i for i in items]
+
+
+def compare(case: Mapping[str, Any], result: Mapping[str, Any], port_types: Mapping[str, object] | None = None) -> str | None:
+    """None when the case passes (streams, state trace, extra assertions), else the first difference."""
+    unknown = sorted(set(case) - KNOWN_FIELDS)
+    if unknown:
+        return f"unknown case field(s) {unknown}"
+    kind = case.get("kind", "io")
+    if kind not in ("io", "state_trace"):
+        return f"unknown case kind {kind!r}"
+    outputs: Mapping[str, list[dict[str, Any]]] = result["outputs"]
     modes = case.get("compare") or {}
+    for port, mode in modes.items():
+        if mode != "values_only":
+            return f"unknown compare mode {mode!r} for {port}"
+    transforms = case.get("observed_value_transform") or {}
     for port, expected in case["expected"].items():
+        if port not in transforms:
+            expected = char_items(expected, (port_types or {}).get(port))
         actual = outputs.get(port)
         if actual is None:
             return f"no out port {port}"
@@ -72,6 +124,17 @@ def compare(case: Mapping[str, Any], outputs: Mapping[str, list[dict[str, Any]]]
             actual = [i for i in actual if not i.get("tick")]
         if len(expected) != len(actual) or not all(same_item(e, a) for e, a in zip(expected, actual, strict=True)):
             return f"{port}: expected {json.dumps(expected)} got {json.dumps(actual)}"
+    if kind == "state_trace":
+        want = case.get("expected_states")
+        if not isinstance(want, list):
+            return "a state_trace case without expected_states"
+        if list(result.get("state_trace") or []) != want:
+            return f"states: expected {want} got {result.get('state_trace')}"
+    elif case.get("expected_states") is not None:
+        return "expected_states in a case that is not a state_trace"
+    for check in result.get("assertions") or []:
+        if not check["holds"]:
+            return f"{check['assert']} {check['port']}: {check['detail']}"
     return None
 
 
@@ -81,6 +144,7 @@ def run_component(build: Path, cases: list[dict[str, Any]]) -> list[dict[str, An
 
     sys.path.insert(0, str(build))
     from maa_timesync import run_streams  # type: ignore[import-not-found]
+    from maa_timesync.streams import bind_type_args  # type: ignore[import-not-found]
 
     app = importlib.import_module("maa_app")
     results = []
@@ -89,7 +153,7 @@ def run_component(build: Path, cases: list[dict[str, Any]]) -> list[dict[str, An
             spec = dict(case)
             spec["observe"] = [p for p in case["expected"] if "." in p]
             out = run_streams(app.ROOT, spec, getattr(app, "ENUMS", None))
-            reason = compare(case, out["outputs"])
+            reason = compare(case, out, bind_type_args(app.ROOT, case.get("type_args")))
         except Exception as exc:  # a crash is a failed case
             reason = f"{type(exc).__name__}: {exc}"
         results.append({"id": case["id"], "passed": reason is None, "reason": reason})
@@ -106,12 +170,12 @@ def main(argv: list[str]) -> int:
     report_file = Path(argv[2]) if len(argv) > 2 else cache / "report.json"
     cases = json.loads((suite / "io_cases.json").read_text(encoding="utf-8"))["cases"]
     generation = json.loads((cache / "generation.json").read_text(encoding="utf-8"))
-    by_component: dict[str, list[dict[str, Any]]] = {}
+    by_build: dict[str, list[dict[str, Any]]] = {}
     for case in cases:
-        by_component.setdefault(case["component"], []).append(case)
+        by_build.setdefault(generation["cases"].get(case["id"], "?"), []).append(case)
     results: list[dict[str, Any]] = []
-    for component, group in sorted(by_component.items()):
-        gen = generation.get(component)
+    for variant, group in sorted(by_build.items()):
+        gen = generation["builds"].get(variant)
         if not gen or not gen["ok"]:
             why = "; ".join(gen["errors"]) if gen else "not generated"
             results += [{"id": c["id"], "passed": False, "reason": f"generation failed: {why}"} for c in group]
@@ -129,7 +193,7 @@ def main(argv: list[str]) -> int:
         results += json.loads(proc.stdout)
     report_file.write_text(json.dumps(results, indent=1) + "\n", encoding="utf-8")
     passed = sum(1 for r in results if r["passed"])
-    print(f"montiarc-io: {passed}/{len(results)} cases passed")
+    print(f"{suite.name}: {passed}/{len(results)} cases passed")
     return 0
 
 
