@@ -318,6 +318,12 @@ function collectDataTypes(components: readonly ComponentView[]): DataTypeView[] 
     const pending: SymType[] = [];
     for (const c of components) {
         for (const t of [...c.ports, ...c.parameters, ...c.fields]) pending.push(t.type);
+        // Types the behavior names: local variable types, static calls (`Rect.square(2.0)`), enum constants.
+        for (const n of AstUtils.streamAst(c.node)) {
+            const target = n.$type === 'ReferenceType' || n.$type === 'NameExpression' ? (n as ast.ReferenceType | ast.NameExpression).ref?.ref : undefined;
+            if (target && (target.$type === 'CDClass' || target.$type === 'CDEnum')) pending.push({ kind: 'object', decl: target as CDType, args: [] });
+            else if (target?.$type === 'CDEnumConstant') pending.push({ kind: 'object', decl: target.$container as CDType, args: [] });
+        }
     }
     const add = (decl: CDType): void => {
         if (found.has(decl) || isBuiltin(decl)) return;

@@ -1,6 +1,7 @@
 import type { DataTypeGeneratorFactory, DataTypeView, TypeMapping } from '@maa/generator-core';
 import { Imports, modulePath, snake } from '../behavior/common.js';
 import { pyName } from '../python/expressions.js';
+import { methodStubs } from '../python/cd-methods.js';
 
 const PRIMITIVES: Record<string, string> = {
     int: 'int', Integer: 'int', long: 'int', Long: 'int', short: 'int', Short: 'int', byte: 'int', Byte: 'int', char: 'int',
@@ -75,7 +76,9 @@ const create: DataTypeGeneratorFactory = () => ({
                     imports.add('enum', 'Enum');
                     lines.push(`class ${pyName(t.name)}(Enum):`, `    """Enumeration ${t.qualifiedName} (generated)."""`, '');
                     t.constants.forEach((c, i) => lines.push(`    ${pyName(c)} = ${i}`));
-                    if (t.constants.length === 0) lines.push('    pass');
+                    const methods = methodStubs(t, (n) => annotation(n, local, []));
+                    if (t.constants.length === 0 && methods.length === 0) lines.push('    pass');
+                    lines.push(...methods);
                 } else {
                     imports.add('dataclasses', 'dataclass');
                     const bases: string[] = [];
@@ -98,7 +101,9 @@ const create: DataTypeGeneratorFactory = () => ({
                         if (value === undefined) lines.push(`    ${pyName(a.name)}: ${ann.endsWith('| None') ? ann : `${ann} | None`} = None`);
                         else lines.push(`    ${pyName(a.name)}: ${ann} = ${value}`);
                     }
-                    if (t.attributes.length === 0) lines.push('    pass');
+                    const methods = methodStubs(t, (n) => annotation(n, local, t.typeParameters));
+                    if (t.attributes.length === 0 && methods.length === 0) lines.push('    pass');
+                    lines.push(...methods);
                 }
                 chunks.push({ t, lines });
             }

@@ -170,7 +170,7 @@ export class ExpressionTyper {
             if (r.typeDecl) {
                 if (r.typeDecl.$type === 'CDEnum') {
                     if (r.typeDecl.constants.some((c) => c.name === member)) return { kind: 'object', decl: r.typeDecl, args: [] };
-                    return unresolved(p, e, `enum ${r.typeDecl.name} has no constant '${member}'`);
+                    if (!isCallee(e) && !this.attribute(r.typeDecl, member)) return unresolved(p, e, `enum ${r.typeDecl.name} has no constant '${member}'`);
                 }
                 const attr = this.attribute(r.typeDecl, member);
                 if (attr) return typeOfMCType(attr.type);
@@ -245,8 +245,8 @@ export class ExpressionTyper {
             const cur = queue.shift()!;
             if (cur.kind !== 'object' || seen.has(cur.decl)) continue;
             seen.add(cur.decl);
-            if (cur.decl.$type === 'CDClass') {
-                const subst = bind(cur.decl.typeParams, cur.args) as ReadonlyMap<never, SymType>;
+            if (cur.decl.$type === 'CDClass' || cur.decl.$type === 'CDEnum') {
+                const subst = bind(cur.decl.$type === 'CDClass' ? cur.decl.typeParams : [], cur.args) as ReadonlyMap<never, SymType>;
                 const candidates = cur.decl.members.filter((x): x is CDMethod => x.$type === 'CDMethod' && x.name === name && x.params.length === argTypes.length);
                 const fitting = candidates.find((m) => m.params.every((p, i) => {
                     const pt = substitute(typeOfMCType(p.type), subst);
@@ -261,7 +261,6 @@ export class ExpressionTyper {
     }
 
     private attribute(decl: CDType, name: string): CDAttribute | undefined {
-        if (decl.$type !== 'CDClass') return undefined;
         return (decl as CDClass).members.find((m): m is CDAttribute => m.$type === 'CDAttribute' && m.name === name);
     }
 
