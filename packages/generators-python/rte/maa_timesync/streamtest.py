@@ -126,7 +126,7 @@ def _tokens(text: str) -> list[tuple[str, object, int]]:
         if not m or m.end() == pos:
             line = text.count("\n", 0, pos) + 1
             raise StreamTestError(f"line {line}: unexpected {text[pos:pos + 10]!r}")
-        line = text.count("\n", 0, m.start()) + 1
+        line = text.count("\n", 0, m.start(m.lastindex or 0)) + 1  # the token's line, not its leading blanks
         pos = m.end()
         comment, string, punct, number, char, name = m.groups()
         if comment is not None:

@@ -245,6 +245,7 @@ def test_stream_steps_states_transforms_and_empty_ports(tmp_path: Path) -> None:
         ("steps in order", True), ("a state between the steps differs", False),
         ("a transformed value keeps its type", False), ("left buffered", False),
     ]
+    assert [r["line"] for r in results] == [2, 14, 15, 16]  # the line of `test`, not of the blanks before it
     assert results[1]["problems"] == ["state (line 14): expected Off; got On"]
     assert results[2]["problems"] == ["o: expected 97 Tk; got 'a' Tk"]
     assert results[3]["problems"] == ["empty i: 1 item(s) left buffered: Tk"]
