@@ -15,7 +15,7 @@ export const TOO_LARGE_CODE = 'syntax/too-large';
  * The largest model file that is parsed, in characters. Larger files get one `syntax/too-large`
  * error and an empty model (docs/diagnostics.md gives the time and memory measured at the limit).
  */
-export const SIZE_LIMIT = 2_000_000;
+export const SIZE_LIMIT = 1_000_000;
 
 /** A lexing error of the guard: its diagnostic code and where parsing resumes after it. */
 export interface GuardError extends LexingError {

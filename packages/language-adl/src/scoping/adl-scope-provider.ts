@@ -1,8 +1,8 @@
 import {
-    AstUtils, EMPTY_SCOPE, type AstNode, type AstNodeDescription, type AstNodeDescriptionProvider,
-    type ReferenceInfo, type Scope, type ScopeProvider
+    AstUtils, EMPTY_SCOPE, WorkspaceCache, type AstNode, type AstNodeDescription, type AstNodeDescriptionProvider,
+    type LangiumSharedCoreServices, type ReferenceInfo, type Scope, type ScopeProvider
 } from 'langium';
-import type { ComponentType, NameExpression } from '../generated/ast.js';
+import type { Block, ComponentType, NameExpression, SwitchGroup } from '../generated/ast.js';
 import {
     isAssignmentExpression, isBlock, isComponentType, isSwitchGroup, isForStatement, isLocalVariableDeclaration,
     isParentComponent, isPortAccess, isStatement, isSubcomponent
@@ -23,10 +23,25 @@ export class AdlScopeProvider implements ScopeProvider {
      */
     readonly contributions = new Map<string, (context: ReferenceInfo) => Scope>();
 
+    /**
+     * The names of each component (its own and inherited ports, parameters, fields, ...) and the
+     * local variables of each block, by name: resolving each of n names by scanning the component
+     * or block made linking quadratic (a model with 5,000 ports took a minute). Cleared on every
+     * change in the workspace, since inherited ports come from other documents.
+     */
+    private readonly componentTables: WorkspaceCache<ComponentType, ReadonlyMap<string, AstNode>>;
+    private readonly portTables: WorkspaceCache<ComponentType, ReadonlyMap<string, AstNode>>;
+    private readonly blockTables: WorkspaceCache<Block | SwitchGroup, ReadonlyMap<string, ReadonlyArray<{ index: number; node: AstNode }>>>;
+
     constructor(
         private readonly resolver: NameResolver,
-        private readonly descriptions: AstNodeDescriptionProvider
-    ) {}
+        private readonly descriptions: AstNodeDescriptionProvider,
+        shared: LangiumSharedCoreServices
+    ) {
+        this.componentTables = new WorkspaceCache(shared);
+        this.portTables = new WorkspaceCache(shared);
+        this.blockTables = new WorkspaceCache(shared);
+    }
 
     getScope(context: ReferenceInfo): Scope {
         const c = context.container;
@@ -44,15 +59,15 @@ export class AdlScopeProvider implements ScopeProvider {
                     return comp ? subcomponentsOf(comp) : [];
                 });
             case 'PortAccess.port':
-                return this.nodes(() => {
-                    if (!isPortAccess(c)) return [];
+                return this.table(() => {
+                    if (!isPortAccess(c)) return EMPTY_TABLE;
                     if (c.subcomponent) {
                         const sub = c.subcomponent.ref;
                         const decl = sub && subcomponentType(sub).decl;
-                        return decl ? allPorts(decl).map((p) => p.port) : [];
+                        return decl ? this.portTable(decl) : EMPTY_TABLE;
                     }
                     const comp = AstUtils.getContainerOfType(c, isComponentType);
-                    return comp ? allPorts(comp).map((p) => p.port) : [];
+                    return comp ? this.portTable(comp) : EMPTY_TABLE;
                 });
             case 'NameExpression.ref':
                 return this.expressionScope(c as NameExpression);
@@ -92,11 +107,57 @@ export class AdlScopeProvider implements ScopeProvider {
         return new LookupScope(find, all);
     }
 
+    /** The innermost name visible at an expression (as the first of localNames, by table lookups). */
     private localName(expr: AstNode, name: string): AstNode | undefined {
-        for (const entry of this.localNames(expr)) {
-            if (entry.name === name) return entry.node;
+        let previous: AstNode = expr;
+        for (let n: AstNode | undefined = expr.$container; n; previous = n, n = n.$container) {
+            // A switch group's statements are a block of their own (its locals are visible after them in the group).
+            if (isBlock(n) || isSwitchGroup(n)) {
+                // $containerIndex: indexOf would scan the block for each name again.
+                const upTo = isStatement(previous) ? previous.$containerIndex ?? n.statements.indexOf(previous) : n.statements.length;
+                const found = nearestBefore(this.blockTable(n).get(name), upTo);
+                if (found) return found;
+            } else if (isForStatement(n) && n.init) {
+                const v = n.init.variables.find((x) => x.name === name);
+                if (v) return v;
+            } else if (isComponentType(n)) {
+                return this.componentTable(n).get(name);
+            }
         }
         return undefined;
+    }
+
+    /** A component's own and inherited ports by name (the first of a name, as allPorts lists them). */
+    private portTable(c: ComponentType): ReadonlyMap<string, AstNode> {
+        return this.portTables.get(c, () => {
+            const table = new Map<string, AstNode>();
+            for (const p of allPorts(c)) if (!table.has(p.name)) table.set(p.name, p.port);
+            return table;
+        });
+    }
+
+    private componentTable(c: ComponentType): ReadonlyMap<string, AstNode> {
+        return this.componentTables.get(c, () => {
+            const table = new Map<string, AstNode>();
+            for (const { name, node } of this.componentNames(c)) if (!table.has(name)) table.set(name, node);
+            return table;
+        });
+    }
+
+    /** A block's local variables by name, each with the index of its declaring statement (ascending). */
+    private blockTable(b: Block | SwitchGroup): ReadonlyMap<string, ReadonlyArray<{ index: number; node: AstNode }>> {
+        return this.blockTables.get(b, () => {
+            const table = new Map<string, Array<{ index: number; node: AstNode }>>();
+            b.statements.forEach((s, index) => {
+                if (!isLocalVariableDeclaration(s)) return;
+                for (const v of s.variables) {
+                    const list = table.get(v.name) ?? [];
+                    list.push({ index, node: v });
+                    table.set(v.name, list);
+                }
+            });
+            return table;
+        });
     }
 
     /** Names visible at an expression, innermost first. */
@@ -131,6 +192,16 @@ export class AdlScopeProvider implements ScopeProvider {
         for (const t of c.typeParams) yield { name: t.name, node: t };
     }
 
+    /** A scope over a table of named nodes: lookups by name. */
+    private table(get: () => ReadonlyMap<string, AstNode>): Scope {
+        const find = (name: string): AstNodeDescription | undefined => {
+            const n = get().get(name);
+            return n ? this.descriptions.createDescription(n, name) : undefined;
+        };
+        const all = (): AstNodeDescription[] => [...get()].map(([name, n]) => this.descriptions.createDescription(n, name));
+        return new LookupScope(find, all);
+    }
+
     /** A scope over named nodes computed on demand (public for contributed scopes). */
     nodes(get: () => Iterable<AstNode & { name?: string }>): Scope {
         const find = (name: string): AstNodeDescription | undefined => {
@@ -140,4 +211,15 @@ export class AdlScopeProvider implements ScopeProvider {
         const all = (): AstNodeDescription[] => [...get()].filter((n) => n.name).map((n) => this.descriptions.createDescription(n, n.name!));
         return new LookupScope(find, all);
     }
+}
+
+const EMPTY_TABLE: ReadonlyMap<string, AstNode> = new Map();
+
+/** The last declaration before the statement at `upTo` (the one that shadows earlier ones). */
+function nearestBefore(declarations: ReadonlyArray<{ index: number; node: AstNode }> | undefined, upTo: number): AstNode | undefined {
+    for (let i = (declarations?.length ?? 0) - 1; i >= 0; i--) {
+        const d = declarations![i]!;
+        if (d.index < upTo) return d.node;
+    }
+    return undefined;
 }

@@ -2,10 +2,11 @@ import type { ValidationAcceptor, ValidationChecks } from 'langium';
 import type { AdlAstType, AutoConnect, ComponentType, Connector, PortAccess, Subcomponent } from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import {
-    allPorts, findPort, isComposed, subcomponentType, subcomponentsOf, type PortInfo, type Timing, elementsOf } from '../../components/component-model.js';
+    allPorts, isComposed, subcomponentType, subcomponentsOf, type PortInfo, type Timing, elementsOf } from '../../components/component-model.js';
 import type { TypeRelations } from '../../types/type-relations.js';
 import { isErroneous, printType } from '../../types/sym-type.js';
 import { Codes } from '../codes.js';
+import { PortTables } from './port-tables.js';
 import { impliedConnectors, type ImpliedConnector } from '../../components/autoconnect.js';
 
 const STRENGTH: Readonly<Record<Timing, number>> = { untimed: 0, timed: 1, sync: 2 };
@@ -28,7 +29,8 @@ export class ConnectorChecks {
     readonly checks: ValidationChecks<AdlAstType> = {
         ComponentType: (c, accept) => {
             const connectors = elementsOf(c).filter((e): e is Connector => e.$type === 'Connector');
-            const resolved = connectors.map((con) => ({ con, source: this.end(c, con.source), targets: con.targets.map((t) => this.end(c, t)) }));
+            const tables = new PortTables();
+            const resolved = connectors.map((con) => ({ con, source: this.end(c, con.source, tables), targets: con.targets.map((t) => this.end(c, t, tables)) }));
             for (const r of resolved) this.checkConnector(r.source, r.targets, accept);
             if (isComposed(c)) {
                 // Connectors implied by `autoconnect` feed only ports no written connector feeds
@@ -41,16 +43,16 @@ export class ConnectorChecks {
         }
     };
 
-    private end(c: ComponentType, access: PortAccess): End | undefined {
+    private end(c: ComponentType, access: PortAccess, tables: PortTables): End | undefined {
         const name = access.port?.$refText ?? ''; // no port: partially parsed
         if (access.subcomponent) {
             const sub = access.subcomponent.ref;
             if (!sub) return undefined;
             const { decl, subst } = subcomponentType(sub);
-            const info = decl && findPort(decl, name, subst);
+            const info = decl && tables.port(sub, name, () => allPorts(decl, subst));
             return info ? { access, info, sub } : undefined;
         }
-        const info = findPort(c, name);
+        const info = tables.port(c, name, () => allPorts(c));
         return info ? { access, info } : undefined;
     }
 
@@ -149,26 +151,47 @@ export class ConnectorChecks {
         for (const sub of subcomponentsOf(c)) {
             const decl = subcomponentType(sub).decl;
             if (!decl) continue;
+            if (!isComposed(decl)) {
+                // Every input of an atomic component may pass to every undelayed output: one node
+                // between them instead of all pairs (quadratic in its ports).
+                const hub = `${sub.name}.#`;
+                for (const p of allPorts(decl)) {
+                    if (p.direction === 'in') add(`${sub.name}.${p.name}`, hub);
+                    else if (!p.delayed) add(hub, `${sub.name}.${p.name}`);
+                }
+                continue;
+            }
             for (const [i, o] of this.instantaneousPaths(decl, new Set())) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
         }
         const state = new Map<string, 1 | 2>();
         const reported = new Set<Connector | AutoConnect>();
-        const visit = (n: string, via: Array<Connector | AutoConnect>): void => {
-            state.set(n, 1);
-            for (const e of edges.get(n) ?? []) {
-                const path = e.con ? [...via, e.con] : via;
+        // Depth-first search with an explicit stack (a chain of thousands of subcomponents would
+        // overflow the call stack); each frame knows the last connector on the path to its node.
+        const visit = (start: string): void => {
+            const stack: Array<{ node: string; next: number; last?: Connector | AutoConnect }> = [{ node: start, next: 0 }];
+            state.set(start, 1);
+            while (stack.length > 0) {
+                const frame = stack[stack.length - 1]!;
+                const e = (edges.get(frame.node) ?? [])[frame.next++];
+                if (!e) {
+                    state.set(frame.node, 2);
+                    stack.pop();
+                    continue;
+                }
+                const last = e.con ?? frame.last;
                 const s = state.get(e.to);
                 if (s === 1) {
-                    const con = path[path.length - 1];
-                    if (con && !reported.has(con)) {
-                        reported.add(con);
-                        accept('error', `The feedback loop through port '${e.to}' has no delay: its value in a time slice would depend on itself. Make an outgoing port on the loop <<delayed>>.`, { node: con, code: Codes.FeedbackNotCausal });
+                    if (last && !reported.has(last)) {
+                        reported.add(last);
+                        accept('error', `The feedback loop through port '${e.to}' has no delay: its value in a time slice would depend on itself. Make an outgoing port on the loop <<delayed>>.`, { node: last, code: Codes.FeedbackNotCausal });
                     }
-                } else if (s === undefined) visit(e.to, path);
+                } else if (s === undefined) {
+                    state.set(e.to, 1);
+                    stack.push({ node: e.to, next: 0, last });
+                }
             }
-            state.set(n, 2);
         };
-        for (const n of edges.keys()) if (!state.has(n)) visit(n, []);
+        for (const n of [...edges.keys()]) if (!state.has(n)) visit(n);
     }
 
     /** Pairs (incoming, outgoing) of a component type's ports between which messages pass within one time slice. */
