@@ -56,8 +56,9 @@ cpSync(path.join(suite, 'models'), root, { recursive: true });
 const appFile = path.join(root, 'IoCase.arcapp');
 const report = {};
 for (const [variant, { component, features }] of [...variants].sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0))) {
+  const header = `application IoCase for ${component}${bindingOf(features)} {`;
   writeFileSync(appFile, [
-    `application IoCase for ${component}${bindingOf(features)} {`,
+    header,
     '  platform timesync {',
     '    timesync.Components;',
     '    timesync.AutomataBehavior;',
@@ -73,7 +74,8 @@ for (const [variant, { component, features }] of [...variants].sort(([a], [b]) =
     const errors = result.diagnostics.filter((d) => d.severity === 'error' || d.severity === 1).map((d) => `${d.file ?? ''}:${d.range?.start?.line ?? ''} ${d.code ?? ''} ${d.message}`);
     report[variant] = { ok: result.ok, dir: path.join(dir, 'timesync'), errors };
   } catch (e) {
-    report[variant] = { ok: false, dir: path.join(dir, 'timesync'), errors: [String(e?.stack ?? e)] };
+    // Name the application header: with features, the binding is where a generator may differ.
+    report[variant] = { ok: false, dir: path.join(dir, 'timesync'), errors: [`${String(e?.message ?? e)} (application: ${header})`, String(e?.stack ?? e)] };
   }
 }
 rmSync(appFile);
