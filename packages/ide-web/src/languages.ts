@@ -44,6 +44,9 @@ export function isModelFile(path: string): boolean {
 const TYPES = ['boolean', 'byte', 'char', 'double', 'float', 'int', 'long', 'short', 'void', 'String'];
 const ARC_KEYWORDS = ['package', 'import', 'component', 'extends', 'port', 'in', 'out', 'compute', 'init', 'automaton', 'robotarm',
     'if', 'else', 'for', 'while', 'return', 'true', 'false', 'null'];
+// The words of `.stream` files (maa_timesync/streamtest.py; `run`, `empty`, `transform` and
+// `features` are soft there: ports may be called so, but they are highlighted as statements).
+const STREAM_KEYWORDS = ['component', 'test', 'state', 'ticks', 'Tk', 'run', 'empty', 'transform', 'features', 'true', 'false'];
 const AUTOMATON_KEYWORDS = ['initial', 'state', 'entry', 'exit', 'do', 'Tick', 'if', 'else', 'for', 'while', 'true', 'false', 'null'];
 const ROBOTARM_KEYWORDS = ['location', 'program', 'move', 'open', 'close', 'input', 'robotarm', 'package'];
 const ROBOTARM_CONSTANTS = ['top', 'bottom'];
@@ -185,7 +188,7 @@ export function registerLanguages(): void {
     ], [...ROBOTARM_CONSTANTS, ...ROBOTARM_UNITS]));
     monaco.languages.setMonarchTokensProvider('arcapp', simpleGrammar(ARCAPP_KEYWORDS));
 
-    for (const [id, config] of [['python', pythonGrammar()], ['maa-stream', simpleGrammar(['Tick'])]] as const) {
+    for (const [id, config] of [['python', pythonGrammar()], ['maa-stream', simpleGrammar(STREAM_KEYWORDS)]] as const) {
         monaco.languages.register({ id });
         monaco.languages.setMonarchTokensProvider(id, config);
     }
