@@ -51,6 +51,12 @@ class ModeComponent(ComposedComponent):
         return ModeInstance
 
 
+def port_value(inputs: Mapping[str, object], port: str, default: object) -> object:
+    """An in port's value in a guard: ``default`` (Java's for a primitive type) without a message."""
+    value = inputs.get(port)
+    return default if value is None else value
+
+
 class _Routes:
     """The wiring of one mode: where the in ports and the subcomponents' out ports deliver."""
 
@@ -165,4 +171,4 @@ class ModeInstance(Instance):
             self.send(port, TICK)
 
 
-__all__ = ["ModeComponent", "ModeInstance"]
+__all__ = ["ModeComponent", "ModeInstance", "port_value"]

@@ -1,6 +1,6 @@
 import type { ComponentView, ConnectorView, DataTypeResult } from '@maa/generator-core';
 import { GenerationError } from '@maa/generator-core/node';
-import { Imports, indent, typeBySimpleName, typeRef } from '../behavior/common.js';
+import { Imports, indent, primitiveDefault, typeBySimpleName, typeRef } from '../behavior/common.js';
 import { PythonTranslator, isTypeDecl, pyName, type Node } from '../python/expressions.js';
 
 const str = (s: string): string => JSON.stringify(s);
@@ -9,17 +9,39 @@ function tuple(xs: readonly string[]): string {
     return xs.length === 0 ? '()' : `(${xs.join(', ')}${xs.length === 1 ? ',' : ''})`;
 }
 
+/** An expression in parentheses (once: ruff rejects doubled ones), so that `and` binds it whole. */
+function parenthesized(e: string): string {
+    if (e.startsWith('(')) {
+        let depth = 0;
+        for (let i = 0; i < e.length; i++) {
+            if (e[i] === '(') depth++;
+            else if (e[i] === ')' && --depth === 0) return i === e.length - 1 ? e : `(${e})`;
+        }
+    }
+    return `(${e})`;
+}
+
 /** A connector as maa_timesync's `Connector` tuple. */
 export function connectorTuple(k: ConnectorView): string {
     const targets = k.targets.map((t) => `(${str(t.subcomponent ?? '')}, ${str(t.port)})`);
     return `(${str(k.source.subcomponent ?? '')}, ${str(k.source.port)}, ${tuple(targets)})`;
 }
 
-/** Guards of mode transitions: in ports are the slice's (or the message's) values, parameters the instance's. */
-function guardTranslator(datatypes: DataTypeResult, imports: Imports): PythonTranslator {
+/**
+ * Guards of mode transitions: in ports are the slice's (or the message's) values, Java's default
+ * for a primitive port without message (as atomic sync behaviors read them); parameters the
+ * instance's.
+ */
+function guardTranslator(c: ComponentView, datatypes: DataTypeResult, imports: Imports): PythonTranslator {
     return new PythonTranslator({
         name(target, ref) {
-            if (target.$type === 'Port') return `inputs.get(${str(target.name)})`;
+            if (target.$type === 'Port') {
+                const port = c.ports.find((p) => p.name === target.name);
+                const def = port ? primitiveDefault(port) : 'None';
+                if (def === 'None') return `inputs.get(${str(target.name)})`;
+                imports.add('maa_timesync.modes', 'port_value');
+                return `port_value(inputs, ${str(target.name)}, ${def})`;
+            }
             if (target.$type === 'Parameter') return `params[${str(target.name)}]`;
             if (target.$type === 'CDEnumConstant') return `${typeRef(datatypes, imports, target.$container as Node)}.${pyName(target.name)}`;
             if (isTypeDecl(target as Node)) return typeRef(datatypes, imports, target as Node);
@@ -39,7 +61,7 @@ export function modeClassLines(c: ComponentView, datatypes: DataTypeResult, impo
     const m = c.modes;
     if (!m) return undefined;
     imports.add('maa_timesync.modes', 'ModeComponent');
-    const tr = guardTranslator(datatypes, imports);
+    const tr = guardTranslator(c, datatypes, imports);
     const lines = [
         `    MODES = ${tuple(m.modes.map((x) => str(x.name)))}`,
         `    INITIAL_MODE = ${str(m.initial)}`,
@@ -62,7 +84,7 @@ export function modeClassLines(c: ComponentView, datatypes: DataTypeResult, impo
             // Event-based: a message triggers the transitions of its port; a tick those with `Tick` or no event.
             conds.push(t.trigger.kind === 'port' ? `trigger == ${str(t.trigger.port)}` : 'trigger == ""');
         }
-        if (t.guard) conds.push(`bool(${tr.expr(t.guard as Node)})`);
+        if (t.guard) conds.push(parenthesized(tr.expr(t.guard as Node)));
         body.push(`if ${conds.join(' and ')}:`, `    return ${str(t.target)}`);
     }
     const used = body.join('\n');

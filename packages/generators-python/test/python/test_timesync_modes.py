@@ -6,7 +6,7 @@ from collections.abc import Mapping
 
 from maa_behavior import Behavior
 from maa_timesync import TICK, AtomicComponent, ComponentType, ModeComponent, System
-from maa_timesync.modes import ModeInstance
+from maa_timesync.modes import ModeInstance, port_value
 from maa_timesync.runtime import Connector
 
 
@@ -149,3 +149,9 @@ def test_event_mode_switches_on_its_trigger_ports_and_on_ticks() -> None:
     system.run()
     # 1 passes; the message on flip switches to Negate, so 2 is negated; the tick switches back.
     assert system.outputs["o"] == [1, -2, TICK, 3, TICK]
+
+
+def test_port_value_gives_the_default_without_message() -> None:
+    assert port_value({"i": None}, "i", 0) == 0
+    assert port_value({}, "i", False) is False
+    assert port_value({"i": -3}, "i", 0) == -3

@@ -1,0 +1,22 @@
+import path from 'node:path';
+import { describe, expect, it } from 'vitest';
+import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
+
+interface StreamResult { file: string; test: string | null; passed: boolean; problems: string[] }
+
+// Mode automata on python-timesync, end to end: the fixture's mode component (test/fixtures/modes,
+// also a golden case) is generated and its stream tests run on the build by `maa-gen test`:
+// switching in the transition's own slice, resting subcomponents keeping their state, guards
+// reading Java's default of a slice without message.
+describe('mode automata on python-timesync (maa-gen test)', () => {
+    it('every stream test of the modes fixture passes', async () => {
+        await ensureVenv();
+        const r = await run(process.execPath, [
+            path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'test', 'packages/generators-python/test/fixtures/modes/Modes.arcapp', '--format', 'json', '--python', venvPython
+        ], repoDir);
+        const out = JSON.parse(r.stdout) as { results: StreamResult[]; summary: { passed: number; failed: number } };
+        expect(out.results.filter((x) => !x.passed)).toEqual([]);
+        expect(out.summary.passed).toBe(3);
+        expect(r.status).toBe(0);
+    }, 180_000);
+});
