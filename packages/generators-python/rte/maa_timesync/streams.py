@@ -175,9 +175,13 @@ def bind_type_args(ctype: type[ComponentType], type_args: object) -> dict[str, o
     return {port: bound(t) for port, t in ctype.PORT_TYPES.items()}
 
 
-def _current_state(system: System) -> str | None:
+def current_state(system: System) -> str | None:
+    """The top component's current automaton state: its behavior's state, or the mode of a mode automaton."""
     behavior = system.top.behavior
-    return behavior.current_state() if behavior is not None else None
+    if behavior is not None:
+        return behavior.current_state()
+    mode = getattr(system.top, "mode", None)  # maa_timesync.modes.ModeInstance
+    return mode if isinstance(mode, str) else None
 
 
 def _assertion(system: System, spec: Mapping[str, Any]) -> dict[str, Any]:
@@ -240,7 +244,7 @@ def run_streams(
             ticks = step.get("ticks")
             system.run(int(ticks) if ticks is not None else None)
         elif op == "observe_state":
-            state_trace.append(_current_state(system))
+            state_trace.append(current_state(system))
         else:
             raise ValueError(f"unknown step {op}")
     assertions = [_assertion(system, a) for a in spec.get("extra_assertions") or []]

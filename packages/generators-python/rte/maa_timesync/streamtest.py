@@ -50,7 +50,7 @@ from typing import Any
 
 from maa_timesync.javalambda import LambdaError, item_transform, unescape
 from maa_timesync.runtime import TICK, ComponentType, System
-from maa_timesync.streams import bind_type_args, encode_item
+from maa_timesync.streams import bind_type_args, current_state, encode_item
 
 _TOKEN = re.compile(
     r'\s*(?:(//[^\n]*)|("(?:\\.|[^"\\])*")|(==|~=|[=;(){},<>!])'
@@ -368,8 +368,7 @@ def run_test(
             system.receive(port, item if item is TICK else _resolve(item, types.get(port), enums))
 
     def check_state(name: str, line: int) -> None:
-        behavior = system.top.behavior
-        state = behavior.current_state() if behavior is not None else None
+        state = current_state(system)
         if state != name:
             problems.append(f"state (line {line}): expected {name}; got {state}")
 

@@ -311,3 +311,23 @@ def test_stream_syntax() -> None:
         parse('component a.B features (f = 1);\ntest "t" { }')
     with pytest.raises(StreamTestError, match="'run' takes a number"):
         parse('component a.B;\ntest "t" { run 1.5; }')
+
+
+def test_the_state_of_a_mode_automaton_is_its_mode() -> None:
+    from maa_timesync import ComposedComponent, System
+    from maa_timesync.streams import current_state
+
+    class Wrapper(ComposedComponent):
+        NAME = "t.Wrapper"
+        IN_PORTS = ("i",)
+        OUT_PORTS = ("o",)
+        PORT_TYPES = {"i": "int", "o": "int"}
+        CONNECTORS = (("", "i", (("", "o"),)),)
+
+    system = System(Wrapper, {})
+    assert current_state(system) is None
+    system.top.mode = "Doubled"  # type: ignore[attr-defined]  # what maa_timesync.modes.ModeInstance keeps
+    assert current_state(system) == "Doubled"
+    toggle = System(Toggle, {})
+    toggle.init()
+    assert current_state(toggle) == "Off"
