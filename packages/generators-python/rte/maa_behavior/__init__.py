@@ -7,7 +7,7 @@ that derives from :class:`Behavior` (see docs/runtime.md, "Behavior classes"). P
 
 from maa_behavior.behavior import Behavior, Emit, NoBehavior
 from maa_behavior.jlib import JavaException, JDate, JIterator, JOptional, jcall, jfield, jformat, jhash, jstatic
-from maa_behavior.jvm import f32, jconcat, jdiv, jmod, jordinal, jstr, jushr
+from maa_behavior.jvm import f32, jcast, jconcat, jdiv, jmod, jordinal, jstr, jushr
 
 __all__ = [
     "Behavior",
@@ -19,6 +19,7 @@ __all__ = [
     "NoBehavior",
     "f32",
     "jcall",
+    "jcast",
     "jconcat",
     "jdiv",
     "jfield",

@@ -71,6 +71,43 @@ def jconcat(a: object, b: object) -> str:
     return jstr(a) + jstr(b)
 
 
+_BITS = {"byte": 8, "short": 16, "char": 16, "int": 32, "long": 64}
+
+
+def jcast(value: object, target: str) -> object:
+    """Java's cast to a primitive type ``(target) value`` (JLS 5.1.2-5.1.4).
+
+    Characters are their codes (ints); a cast to ``char`` keeps the low 16 bits unsigned, to
+    ``byte``/``short``/``int``/``long`` the low bits in two's complement. A floating-point value
+    is first truncated toward zero to ``int`` (``long`` for a cast to ``long``), saturating at the
+    range's ends, NaN giving 0.
+    """
+    if target == "boolean":
+        return value
+    if isinstance(value, str) and len(value) == 1:
+        value = ord(value)
+    if target == "double":
+        return float(value)  # type: ignore[arg-type]
+    if target == "float":
+        return f32(float(value))  # type: ignore[arg-type]
+    bits = _BITS[target]
+    if isinstance(value, float):
+        wide = 64 if target == "long" else 32
+        low, high = -(1 << (wide - 1)), (1 << (wide - 1)) - 1
+        if math.isnan(value):
+            n = 0
+        elif math.isinf(value):
+            n = high if value > 0 else low
+        else:
+            n = max(low, min(high, int(value)))
+    else:
+        n = int(value)  # type: ignore[call-overload]
+    n &= (1 << bits) - 1
+    if target != "char" and n >= 1 << (bits - 1):
+        n -= 1 << bits
+    return n
+
+
 def jordinal(value: enum.Enum) -> int:
     """Java's ``Enum.ordinal()``."""
     return list(type(value)).index(value)

@@ -127,7 +127,7 @@ function ClassVarImports(imports: Imports): void {
 /** Writes the module of a behavior class. */
 export function moduleText(doc: string, imports: Imports, classLines: readonly string[]): string {
     const text = classLines.join('\n');
-    for (const helper of ['f32', 'jcall', 'jconcat', 'jdiv', 'jfield', 'jmod', 'jordinal', 'jstatic', 'jstr', 'jushr']) {
+    for (const helper of ['f32', 'jcall', 'jcast', 'jconcat', 'jdiv', 'jfield', 'jmod', 'jordinal', 'jstatic', 'jstr', 'jushr']) {
         if (new RegExp(`\\b${helper}\\(`).test(text)) imports.add('maa_behavior', helper);
     }
     return [`"""${doc}"""`, '', 'from __future__ import annotations', '', ...imports.lines(), '', '', ...classLines, ''].join('\n');

@@ -123,11 +123,15 @@ export class PythonTranslator {
                 if (e.op === '/') return `jdiv(${l}, ${r})`;
                 if (e.op === '%') return `jmod(${l}, ${r})`;
                 if (e.op === '>>>') return `jushr(${l}, ${r})`;
-                if (e.op === '+' && (this.isStringy(e.left) || this.isStringy(e.right))) return `jconcat(${l}, ${r})`;
+                if (e.op === '+' && (this.isStringy(e.left) || this.isStringy(e.right))) {
+                    // chars are their codes at run time; in a string they are characters again
+                    return `jconcat(${isChar(e.left) ? `chr(${l})` : l}, ${isChar(e.right) ? `chr(${r})` : r})`;
+                }
                 const op = BINARY[e.op as string];
                 if (!op) throw new GenerationError(`operator '${e.op}' is not supported by the Python generators`, e);
                 return `(${l} ${op} ${r})`;
             }
+            case 'CastExpression': return `jcast(${this.expr(e.operand)}, ${pyString(String(e.type?.name))})`;
             case 'PrefixExpression': {
                 const o = this.expr(e.operand);
                 switch (e.op) {
@@ -284,6 +288,7 @@ function declaredType(e: Node): string | undefined {
         case 'LongLiteral': return 'long';
         case 'FloatLiteral': return /[fF]$/.test(String(e.value)) ? 'float' : 'double';
         case 'CharLiteral': return 'char';
+        case 'CastExpression': return String(e.type?.name);
         case 'NameExpression': {
             const t = e.ref?.ref as Node | undefined;
             if (!t) return undefined;
@@ -295,6 +300,12 @@ function declaredType(e: Node): string | undefined {
         default:
             return undefined;
     }
+}
+
+/** Whether an expression is a `char` or `Character` (a code at run time). */
+function isChar(e: Node): boolean {
+    const t = declaredType(e);
+    return t === 'char' || t === 'Character';
 }
 
 /** Whether a node declares a class-diagram type (class, interface, enum). */

@@ -474,7 +474,7 @@ function registerHostRules(f: AdlFormatter): void {
         on.keyword('enum').append(Formatting.oneSpace());
         on.keyword('{').prepend(Formatting.oneSpace());
         on.keywords(';').prepend(Formatting.noSpace());
-        fm.statementBlock(n, nodes(n, 'constants'));
+        fm.statementBlock(n, [...nodes(n, 'constants'), ...nodes(n, 'members')]);
         fm.list(n, nodes(n, 'constants'));
     });
     r.set('CDAttribute', (n, fm) => {

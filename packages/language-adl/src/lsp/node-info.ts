@@ -206,7 +206,7 @@ export function membersOf(type: SymType, rel: TypeRelations): MemberInfo[] {
     if (type.kind === 'qualifier') {
         const decl = type.typeDecl;
         if (!decl) return [];
-        if (decl.$type === 'CDEnum') return (decl as CDEnum).constants.map((c) => ({ name: c.name, node: c, kind: 'constant' as const }));
+        if (decl.$type === 'CDEnum') return [...(decl as CDEnum).constants.map((c) => ({ name: c.name, node: c, kind: 'constant' as const })), ...classMembers(decl)];
         return classMembers(decl);
     }
     const obj = type.kind === 'typevar' ? undefined : rel.box(type);
@@ -225,7 +225,6 @@ export function membersOf(type: SymType, rel: TypeRelations): MemberInfo[] {
 }
 
 function classMembers(decl: CDType): MemberInfo[] {
-    if (decl.$type !== 'CDClass') return [];
     return decl.members.map((m) => ({ name: m.name, node: m, kind: m.$type === 'CDMethod' ? 'method' as const : 'attribute' as const }));
 }
 

@@ -88,6 +88,17 @@ export class ExpressionTyper {
                 if (!this.rel.isNumeric(t)) return fail(p, e.operand, `'${e.op}' needs a numeric operand, not ${printType(t)}`);
                 return e.op === '++' || e.op === '--' ? t : this.rel.promote(t, INT);
             }
+            case 'CastExpression': {
+                // Java's primitive casts (JLS 5.5): numeric to numeric (char included, boxes
+                // unboxed first), boolean to boolean only.
+                const target = typeOfMCType(e.type);
+                const t = this.value(e.operand, p);
+                if (isErroneous(t) || isErroneous(target)) return target;
+                const source = this.rel.unbox(t);
+                const ok = target.kind === 'primitive' && source.kind === 'primitive'
+                    && (target.name === 'boolean') === (source.name === 'boolean') && target.name !== 'void' && source.name !== 'void';
+                return ok ? target : fail(p, e, `a value of type ${printType(t)} cannot be cast to ${printType(target)}`);
+            }
             case 'PostfixExpression': {
                 const t = this.value(e.operand, p);
                 if (!isErroneous(t) && !this.rel.isNumeric(t)) return fail(p, e.operand, `'${e.op}' needs a numeric operand, not ${printType(t)}`);

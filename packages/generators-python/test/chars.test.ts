@@ -1,0 +1,88 @@
+import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
+
+/**
+ * `char` and `Character` kept apart from numbers end to end on python-timesync: Character ports
+ * receive and send characters (`'a'` in the stream file, `{"char": "a"}` in the runtime's JSON),
+ * `c + 1` is an int, `(char) (c + 1)` a character again, a char in a string is the character
+ * (not its code), comparisons and switch over chars. The component is generated and RUN
+ * (`maa-gen test`); the expected values are Java's.
+ */
+const MODEL = `package p;
+
+component Chars {
+  port <<sync>> in Character c;
+  port <<sync>> out Character next, <<sync>> out char upper, <<sync>> out int code,
+       <<sync>> out String text, <<sync>> out int kind;
+
+  compute {
+    next = (char) (c + 1);
+    if (c >= 'a' && c <= 'z') {
+      upper = (char) (c - 'a' + 'A');
+    } else {
+      upper = c;
+    }
+    code = c + 1;
+    text = "<" + c + ">" + (char) 33;
+    switch (c) {
+      case 'a', 'e', 'i', 'o', 'u':
+        kind = 1;
+        break;
+      case 'Z':
+        kind = 2;
+        break;
+      default:
+        kind = 0;
+    }
+  }
+}
+`;
+
+const APP = `application A for p.Chars {
+  platform timesync {
+    timesync.Components;
+    timesync.DataTypes;
+  }
+}
+`;
+
+const STREAM = `component p.Chars;
+
+test "characters in, characters and numbers out" {
+  c     = 'a' Tk 'y' Tk 'Z' Tk '0' Tk;
+  next  ~= 'b' 'z' '[' '1';
+  upper ~= 'A' 'Y' 'Z' '0';
+  code  ~= 98 122 91 49;
+  text  ~= "<a>!" "<y>!" "<Z>!" "<0>!";
+  kind  ~= 1 0 2 0;
+}
+`;
+
+interface StreamResult { file: string; test: string | null; passed: boolean; problems: string[] }
+
+let root = '';
+beforeAll(() => {
+    root = mkdtempSync(path.join(tmpdir(), 'maa-chars-'));
+    mkdirSync(path.join(root, 'p'));
+    writeFileSync(path.join(root, 'p', 'Chars.arc'), MODEL);
+    writeFileSync(path.join(root, 'p', 'Chars.stream'), STREAM);
+    writeFileSync(path.join(root, 'A.arcapp'), APP);
+});
+afterAll(() => {
+    if (root) rmSync(root, { recursive: true, force: true });
+});
+
+describe('char and Character in generated Python', () => {
+    it('python-timesync: the stream test passes', async () => {
+        await ensureVenv();
+        const maaGen = path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js');
+        const r = await run(process.execPath, [maaGen, 'test', path.join(root, 'A.arcapp'), '--format', 'json', '--python', venvPython], root);
+        const out = JSON.parse(r.stdout || '{}') as { results?: StreamResult[] };
+        expect(out.results, r.stdout + r.stderr).toHaveLength(1);
+        expect(out.results!.filter((x) => !x.passed), r.stdout + r.stderr).toEqual([]);
+        expect(r.status).toBe(0);
+    }, 240_000);
+});
