@@ -4,6 +4,7 @@ import type {
 } from '../generated/ast.js';
 import { isComponentType } from '../generated/ast.js';
 import { bind, typeOfMCType } from '../types/type-resolver.js';
+import { configuredElements } from './variant-context.js';
 import { EMPTY_SUBSTITUTION, substitute, type Substitution, type SymType } from '../types/sym-type.js';
 
 /**
@@ -30,9 +31,12 @@ export interface PortInfo {
     readonly owner: ComponentType;
 }
 
-/** The elements of a component body (empty while the body is still being typed). */
+/**
+ * The elements of a component body (empty while the body is still being typed); the elements
+ * of variation points (`varif`) as the current configuration selects them (variant-context.ts).
+ */
 export function elementsOf(c: ComponentType): ComponentType['body']['elements'] {
-    return c.body?.elements ?? [];
+    return configuredElements(c.body);
 }
 
 export function stereotypeNames(...stereotypes: Array<Stereotype | undefined>): string[] {

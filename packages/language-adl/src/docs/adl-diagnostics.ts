@@ -368,6 +368,30 @@ export const ADL_DIAGNOSTICS: DiagnosticCatalog = {
             valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = 0;\n    for (int k = 0; k < i; k++) {\n      if (k == 2) continue;\n      o = o + k;\n    }\n  }\n}' } }
         },
         {
+            code: 'variability/constraint-unsatisfied', severity: 'error',
+            rule: 'The `constraint`s of a variable component (its own, inherited ones and those of its subcomponents, with the arguments they are instantiated with) admit at least one configuration of its features.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  feature fast;\n  constraint(fast);\n  constraint(!fast);\n}' }, at: 'Foo' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  feature fast, cheap;\n  constraint(!(fast && cheap));\n}' } }
+        },
+        {
+            code: 'variability/subcomponent-features-unconstrained', severity: 'error',
+            rule: 'Each feature of a subcomponent is fixed by the constraints of the enclosing component (a function of its own features and parameters): a configuration of the component is a configuration of all its parts.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port out int o;\n  component Sensor {\n    feature precise;\n    port out int v;\n  }\n  Sensor s;\n  s.v -> o;\n}' }, at: 's' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  feature fast;\n  port out int o;\n  component Sensor {\n    feature precise;\n    port out int v;\n  }\n  Sensor s;\n  s.v -> o;\n  constraint(s.precise == !fast);\n}' } }
+        },
+        {
+            code: 'variability/expression-not-checkable', severity: 'error',
+            rule: 'The condition of a `constraint` or `varif` uses features, parameters, literals and boolean, comparison and arithmetic operators only: method calls and array accesses cannot be decided when the configurations are enumerated.',
+            invalid: { files: { 'Foo.arc': 'component Foo(int p) {\n  constraint(Math.abs(p) > 1);\n}' }, at: 'Math.abs(p)' },
+            valid: { files: { 'Foo.arc': 'component Foo(int p) {\n  constraint(p > 1 || p < -1);\n}' } }
+        },
+        {
+            code: 'variability/too-many-features', severity: 'warning',
+            rule: 'A variable component is checked in each of its configurations when at most 16 features, boolean parameters and conditions decide them (2^16 assignments are enumerated) and at most 256 different selections of variation points result; beyond that it is checked once with every variation point included.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  feature f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16, f17;\n}' }, at: 'Foo' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  feature f1, f2, f3, f4, f5, f6, f7, f8, f9, f10, f11, f12, f13, f14, f15, f16;\n}' } }
+        },
+        {
             code: 'cd/duplicate-name', severity: 'error',
             rule: 'A class diagram declares each type once, and an enum each constant once.',
             invalid: { files: { 't/Types.cd': 'package t;\nclassdiagram Types {\n  enum Color { RED, RED; }\n}' }, at: 'RED' },

@@ -8,6 +8,8 @@ import {
     isParentComponent, isPortAccess, isStatement, isSubcomponent
 } from '../generated/ast.js';
 import { allPorts, subcomponentType, subcomponentsOf, elementsOf } from '../components/component-model.js';
+import { allFeatures } from '../components/features.js';
+import { sameBranchFirst } from '../components/variant-context.js';
 import { LookupScope } from './lookup-scope.js';
 import type { NameResolver } from './name-resolver.js';
 
@@ -47,7 +49,10 @@ export class AdlScopeProvider implements ScopeProvider {
         const c = context.container;
         const key = `${c.$type}.${context.property}`;
         const contributed = this.contributions.get(key);
-        if (contributed) return contributed(context);
+        if (contributed) {
+            const scope = contributed(context);
+            return key === 'PortAccess.subcomponent' ? sameBranchScope(c, scope) : scope;
+        }
         switch (key) {
             case 'ReferenceType.ref':
                 return new LookupScope((n) => this.resolver.resolveType(c, n), () => this.resolver.visible(c, 'type'));
@@ -56,7 +61,8 @@ export class AdlScopeProvider implements ScopeProvider {
             case 'PortAccess.subcomponent':
                 return this.nodes(() => {
                     const comp = AstUtils.getContainerOfType(c, isComponentType);
-                    return comp ? subcomponentsOf(comp) : [];
+                    // In `varif (f) { A sub; ... } else { B sub; ... }` a connector means the `sub` of its own branch.
+                    return comp ? sameBranchFirst(c, subcomponentsOf(comp)) : [];
                 });
             case 'PortAccess.port':
                 return this.table(() => {
@@ -188,6 +194,7 @@ export class AdlScopeProvider implements ScopeProvider {
             if (e.$type === 'FieldDeclaration') for (const f of e.fields) yield { name: f.name, node: f };
         }
         for (const p of allPorts(c)) yield { name: p.name, node: p.port };
+        for (const f of allFeatures(c)) yield { name: f.name, node: f };
         for (const s of subcomponentsOf(c)) yield { name: s.name, node: s };
         for (const t of c.typeParams) yield { name: t.name, node: t };
     }
@@ -222,4 +229,19 @@ function nearestBefore(declarations: ReadonlyArray<{ index: number; node: AstNod
         if (d.index < upTo) return d.node;
     }
     return undefined;
+}
+
+/** A scope preferring, among candidates of one name, the one in the variation branch of `at` (variant-context.ts: sameBranchFirst). */
+function sameBranchScope(at: AstNode, scope: Scope): Scope {
+    const inBranch = (n: AstNode | undefined): boolean => AstUtils.getContainerOfType(n, (x): x is AstNode => x.$type === 'VarBody') !== undefined;
+    const find = (name: string): AstNodeDescription | undefined => {
+        const first = scope.getElement(name);
+        if (!inBranch(at) && !inBranch(first?.node)) return first; // no variation point involved: as before
+        const candidates = scope.getAllElements().filter((d) => d.name === name).toArray();
+        if (candidates.length <= 1) return candidates[0] ?? scope.getElement(name);
+        const nodes = candidates.flatMap((d) => (d.node ? [d.node] : []));
+        const best = sameBranchFirst(at, nodes)[0];
+        return candidates.find((d) => d.node === best) ?? candidates[0];
+    };
+    return new LookupScope(find, () => scope.getAllElements().toArray());
 }

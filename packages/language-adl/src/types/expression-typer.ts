@@ -4,6 +4,7 @@ import type {
 } from '../generated/ast.js';
 import { isCDClass, isFieldAccessExpression, isFieldDeclaration, isLocalVariableDeclaration } from '../generated/ast.js';
 import { portHeader } from '../components/component-model.js';
+import { subcomponentFeature } from '../components/features.js';
 import type { NameResolver } from '../scoping/name-resolver.js';
 import { bind, typeOfMCType } from './type-resolver.js';
 import type { TypeRelations } from './type-relations.js';
@@ -50,6 +51,8 @@ export class ExpressionTyper {
                 return { kind: 'qualifier', description: `type ${(node as CDType).name}`, typeDecl: node as CDType };
             case 'TypeParameter':
                 return { kind: 'qualifier', description: `type parameter ${(node as unknown as { name: string }).name}` };
+            case 'Feature':
+                return BOOLEAN;
             case 'Subcomponent':
                 return { kind: 'qualifier', description: `subcomponent ${(node as unknown as { name: string }).name}` };
             case 'ComponentType':
@@ -188,6 +191,8 @@ export class ExpressionTyper {
                 if (isCallee(e)) return { kind: 'qualifier', description: `method ${member}`, typeDecl: r.typeDecl };
                 return unresolved(p, e, `type ${r.typeDecl.name} has no static member '${member}'`);
             }
+            // `sub.f`: a feature of a subcomponent (MontiArc's variable architectures).
+            if (subcomponentFeature(e.receiver, member)) return BOOLEAN;
             return unresolved(p, e, `${r.description} has no member '${member}'`);
         }
         if (r.kind === 'array' && member === 'length') return INT;

@@ -58,6 +58,11 @@ export const Codes = {
     AutoConnectInAtomic: 'arc/autoconnect-in-atomic',
     BehaviorInDecomposed: 'arc/behavior-in-decomposed',
 
+    VariabilityConstraintUnsatisfied: 'variability/constraint-unsatisfied',
+    VariabilitySubcomponentFeaturesUnconstrained: 'variability/subcomponent-features-unconstrained',
+    VariabilityExpressionNotCheckable: 'variability/expression-not-checkable',
+    VariabilityTooManyFeatures: 'variability/too-many-features',
+
     ExprTypeMismatch: 'expr/type-mismatch',
     ExprUnresolvedName: 'expr/unresolved-name',
     DuplicateCaseLabel: 'expr/duplicate-case-label',

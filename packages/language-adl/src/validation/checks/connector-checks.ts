@@ -3,6 +3,7 @@ import type { AdlAstType, AutoConnect, ComponentType, Connector, PortAccess, Sub
 import type { AdlServices } from '../../adl-module.js';
 import {
     allPorts, isComposed, subcomponentType, subcomponentsOf, type PortInfo, type Timing, elementsOf } from '../../components/component-model.js';
+import { currentVariant, inSubcomponent } from '../../components/variant-context.js';
 import type { TypeRelations } from '../../types/type-relations.js';
 import { isErroneous, printType } from '../../types/sym-type.js';
 import { Codes } from '../codes.js';
@@ -46,10 +47,11 @@ export class ConnectorChecks {
     private end(c: ComponentType, access: PortAccess, tables: PortTables): End | undefined {
         const name = access.port?.$refText ?? ''; // no port: partially parsed
         if (access.subcomponent) {
-            const sub = access.subcomponent.ref;
+            // In a configuration, the subcomponent of that name the configuration has (variation points may declare several).
+            const sub = currentVariant() ? subcomponentsOf(c).find((x) => x.name === access.subcomponent?.$refText) : access.subcomponent.ref;
             if (!sub) return undefined;
             const { decl, subst } = subcomponentType(sub);
-            const info = decl && tables.port(sub, name, () => allPorts(decl, subst));
+            const info = decl && tables.port(sub, name, () => inSubcomponent(sub, () => allPorts(decl, subst)));
             return info ? { access, info, sub } : undefined;
         }
         const info = tables.port(c, name, () => allPorts(c));
@@ -110,7 +112,7 @@ export class ConnectorChecks {
         for (const sub of subcomponentsOf(c)) {
             const { decl, subst } = subcomponentType(sub);
             if (!decl) continue;
-            for (const p of allPorts(decl, subst)) {
+            for (const p of inSubcomponent(sub, () => allPorts(decl, subst))) {
                 if (used.has(`${sub.name}.${p.name}`)) continue;
                 if (p.direction === 'in') {
                     accept('error', `Incoming port '${p.name}' of subcomponent '${sub.name}' is not connected; it would never receive a message.`, { node: sub, property: 'name', code: Codes.UnconnectedSubInPort });
@@ -155,13 +157,13 @@ export class ConnectorChecks {
                 // Every input of an atomic component may pass to every undelayed output: one node
                 // between them instead of all pairs (quadratic in its ports).
                 const hub = `${sub.name}.#`;
-                for (const p of allPorts(decl)) {
+                for (const p of inSubcomponent(sub, () => allPorts(decl))) {
                     if (p.direction === 'in') add(`${sub.name}.${p.name}`, hub);
                     else if (!p.delayed) add(hub, `${sub.name}.${p.name}`);
                 }
                 continue;
             }
-            for (const [i, o] of this.instantaneousPaths(decl, new Set())) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
+            for (const [i, o] of inSubcomponent(sub, () => this.instantaneousPaths(decl, new Set()))) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
         }
         const state = new Map<string, 1 | 2>();
         const reported = new Set<Connector | AutoConnect>();
@@ -215,7 +217,7 @@ export class ConnectorChecks {
         for (const i of impliedConnectors(decl)) add(`${i.source.sub?.name ?? ''}.${i.source.info.name}`, `${i.target.sub?.name ?? ''}.${i.target.info.name}`);
         for (const sub of subcomponentsOf(decl)) {
             const d = subcomponentType(sub).decl;
-            if (d) for (const [i, o] of this.instantaneousPaths(d, seen)) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
+            if (d) for (const [i, o] of inSubcomponent(sub, () => this.instantaneousPaths(d, seen))) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
         }
         const result: Array<[string, string]> = [];
         for (const i of ins) {
