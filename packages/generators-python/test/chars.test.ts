@@ -1,4 +1,4 @@
-import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -46,6 +46,10 @@ const APP = `application A for p.Chars {
     timesync.Components;
     timesync.DataTypes;
   }
+  platform rospython {
+    ros2.Components;
+    ros2.DataTypes;
+  }
 }
 `;
 
@@ -85,4 +89,26 @@ describe('char and Character in generated Python', () => {
         expect(out.results!.filter((x) => !x.passed), r.stdout + r.stderr).toEqual([]);
         expect(r.status).toBe(0);
     }, 240_000);
+
+    it('rospython: char and Character ports use the character codec (one-character std_msgs/String), the build compiles', async () => {
+        await ensureVenv();
+        const maaGen = path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js');
+        const out = path.join(root, 'gen-ros2');
+        const g = await run(process.execPath, [maaGen, 'generate', path.join(root, 'A.arcapp'), '--platform', 'rospython', '--out', out], root);
+        expect(g.status, g.stdout + g.stderr).toBe(0);
+        const c = await run(venvPython, ['-m', 'compileall', '-q', out], root);
+        expect(c.status, c.stdout + c.stderr).toBe(0);
+        const node = files(out).find((f) => f.endsWith(path.join('nodes', 'chars.py')));
+        const text = node ? readFileSync(node, 'utf8') : '';
+        // in port c (Character), out ports next (Character) and upper (char); text is a String
+        expect(text.match(/char_port\(String\)/g), text).toHaveLength(3);
+        expect(text.match(/std_port\(String, str\)/g), text).toHaveLength(1);
+    }, 240_000);
 });
+
+function files(dir: string): string[] {
+    return readdirSync(dir).flatMap((name) => {
+        const p = path.join(dir, name);
+        return statSync(p).isDirectory() ? files(p) : [p];
+    });
+}

@@ -8,7 +8,7 @@ clock (simulation time with ``use_sim_time``). See docs/generating-ros2.md.
 
 from maa_ros2.arm import RosArm
 from maa_ros2.node import ComponentNode, InPort, OutPort, PlatformBehavior, run_node
-from maa_ros2.ports import PortCodec, class_port, enum_port, std_port
+from maa_ros2.ports import PortCodec, char_port, class_port, enum_port, std_port
 
 __all__ = [
     "ComponentNode",
@@ -17,6 +17,7 @@ __all__ = [
     "PlatformBehavior",
     "PortCodec",
     "RosArm",
+    "char_port",
     "class_port",
     "enum_port",
     "run_node",

@@ -39,6 +39,20 @@ def std_port(msg_type: Any, cast: Callable[[Any], object]) -> PortCodec:
     return PortCodec(msg_type, to_msg, from_msg)
 
 
+def char_port(msg_type: Any) -> PortCodec:
+    """A ``char``/``Character`` port: the behavior sees the character's code (as Java's ``char`` is
+    an integral type), the topic carries the character as a one-character ``std_msgs/String``."""
+
+    def to_msg(value: object) -> Any:
+        return msg_type(data=chr(value) if isinstance(value, int) and not isinstance(value, bool) else str(value))
+
+    def from_msg(msg: Any) -> object:
+        data = str(msg.data)
+        return ord(data[0]) if data else 0
+
+    return PortCodec(msg_type, to_msg, from_msg)
+
+
 def enum_port(msg_type: Any, py_type: type[enum.Enum]) -> PortCodec:
     """An enum port: the message's ``value`` is the literal's ordinal."""
     members = list(py_type)

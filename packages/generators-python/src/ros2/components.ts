@@ -168,7 +168,9 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             const prim = primitiveOf(p.type);
             if (prim) {
                 add('std_msgs.msg', prim.std);
-                return { rosType: `std_msgs/msg/${prim.std}`, codec: `std_port(${prim.std}, ${prim.py})`, sampled: true };
+                // A char is its code inside the behavior and a one-character string on the topic.
+                const isChar = p.typeName === 'char' || p.typeName === 'Character';
+                return { rosType: `std_msgs/msg/${prim.std}`, codec: isChar ? `char_port(${prim.std})` : `std_port(${prim.std}, ${prim.py})`, sampled: true };
             }
             if (p.type.kind === 'object') {
                 const msg = dt.messages[typeKey(p.type)];
