@@ -68,7 +68,7 @@ function tooDeep(cuts: readonly NestingCut[]): GuardError {
         line: t.startLine,
         column: t.startColumn,
         length: t.image.length,
-        regions: cuts.map((c) => ({ offset: c.token.startOffset, resumeOffset: c.resumeOffset })),
+        regions: cuts.map((c) => ({ offset: c.regionOffset, resumeOffset: c.resumeOffset })),
         message: `Nested too deeply${more}: '${t.image}' exceeds the nesting limit of ${NESTING_LIMIT} levels `
             + '(a parenthesis or bracket counts 16, a brace 4, a statement keyword 2, any other keyword or operator 1 until its statement ends); '
             + 'the text up to its closing bracket or the end of its statement is not parsed.'

@@ -29,13 +29,22 @@ const CLOSERS: ReadonlySet<string> = new Set([')', ']', '}']);
 /** Tokens that end a statement, an argument or a list element: the nesting they add ends too. */
 const SEPARATORS: ReadonlySet<string> = new Set([';', ',']);
 /** Keywords that recurse more than one rule deep (every other keyword and operator weighs 1). */
+const STATEMENT_ENDS: ReadonlySet<string> = new Set([';', '}']);
 const WEIGHTS: ReadonlyMap<string, number> = new Map([['<', 3], ['if', 2], ['else', 2], ['while', 2], ['for', 2], ['do', 2]]);
 
 /** A region of the token stream that was cut out because it nests beyond the budget. */
 export interface NestingCut {
     /** The first token past the limit. */
     readonly token: Token;
-    /** The offset where parsing resumes (the first kept token after the cut; Infinity at the end). */
+    /**
+     * Where the cut's enclosing bracket opens (else the cut token): the parser may report the
+     * gap as early as there (e.g. at `(` when it decides between a cast and parentheses).
+     */
+    readonly regionOffset: number;
+    /**
+     * The end of the statement the cut is in (its `;` or `}`; Infinity at the end): the parser
+     * reports the gap anywhere from regionOffset up to there.
+     */
     readonly resumeOffset: number;
 }
 
@@ -47,6 +56,7 @@ export interface NestingScan {
 interface Level {
     readonly weight: number;
     ops: number;
+    readonly open?: Token;
 }
 
 /**
@@ -71,10 +81,10 @@ export function limitNesting(tokens: readonly Token[], keywords: ReadonlySet<str
         const opener = OPENERS.get(name);
         if (opener !== undefined) {
             if (depth + opener > limit) {
-                i = cut(tokens, i, skipRest(tokens, i), cuts);
+                i = cut(tokens, i, skipRest(tokens, i), cuts, top().open);
                 continue;
             }
-            stack.push({ weight: opener, ops: 0 });
+            stack.push({ weight: opener, ops: 0, open: token });
             depth += opener;
         } else if (CLOSERS.has(name)) {
             if (stack.length > 1) {
@@ -88,7 +98,7 @@ export function limitNesting(tokens: readonly Token[], keywords: ReadonlySet<str
         } else if (keywords.has(name)) {
             const weight = WEIGHTS.get(name) ?? 1;
             if (depth + weight > limit) {
-                i = cut(tokens, i, skipRest(tokens, i), cuts);
+                i = cut(tokens, i, skipRest(tokens, i), cuts, top().open);
                 continue;
             }
             top().ops += weight;
@@ -100,8 +110,11 @@ export function limitNesting(tokens: readonly Token[], keywords: ReadonlySet<str
     return { tokens: kept, cuts };
 }
 
-function cut(tokens: readonly Token[], from: number, to: number, cuts: NestingCut[]): number {
-    cuts.push({ token: tokens[from]!, resumeOffset: tokens[to]?.startOffset ?? Infinity });
+function cut(tokens: readonly Token[], from: number, to: number, cuts: NestingCut[], open: Token | undefined): number {
+    const token = tokens[from]!;
+    let end = to;
+    while (end < tokens.length && !STATEMENT_ENDS.has(tokens[end]!.tokenType.name)) end++;
+    cuts.push({ token, regionOffset: open?.startOffset ?? token.startOffset, resumeOffset: tokens[end]?.startOffset ?? Infinity });
     return to;
 }
 
