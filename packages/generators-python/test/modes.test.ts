@@ -1,3 +1,5 @@
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
@@ -18,5 +20,22 @@ describe('mode automata on python-timesync (maa-gen test)', () => {
         expect(out.results.filter((x) => !x.passed)).toEqual([]);
         expect(out.summary.passed).toBe(3);
         expect(r.status).toBe(0);
+    }, 180_000);
+});
+
+describe('mode automata on ROS 2', () => {
+    it('are refused with the generator rule components.NoModes, naming the component and its modes', async () => {
+        const out = mkdtempSync(path.join(tmpdir(), 'maa-modes-ros2-'));
+        try {
+            const r = await run(process.execPath, [
+                path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', 'packages/generators-python/test/fixtures/modes/Modes.arcapp',
+                '--platform', 'rospython', '--out', out
+            ], repoDir);
+            expect(r.stdout + r.stderr).toContain('components.NoModes');
+            expect(r.stdout + r.stderr).toContain("component type 'gear.Gearbox' has a mode automaton (modes First, Second)");
+            expect(r.status).toBe(1);
+        } finally {
+            rmSync(out, { recursive: true, force: true });
+        }
     }, 180_000);
 });

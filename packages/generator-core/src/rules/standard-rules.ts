@@ -52,6 +52,17 @@ export const STANDARD_RULES: readonly WellFormednessRule[] = [
         }
     },
     {
+        name: 'components.NoModes',
+        description: 'Decomposed component types have no mode automaton (a platform that wires subcomponents once cannot switch them).',
+        *check({ components }) {
+            for (const c of components) {
+                if (c.modes) {
+                    yield { node: c.modes.node, message: `component type '${c.qualifiedName}' has a mode automaton (modes ${c.modes.modes.map((m) => m.name).join(', ')})` };
+                }
+            }
+        }
+    },
+    {
         name: 'components.BehaviorOrHandwritten',
         description: 'Every atomic component type has a behavior or is marked <<handwritten>>.',
         *check({ components }) {
