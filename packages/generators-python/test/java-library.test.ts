@@ -296,10 +296,20 @@ function toJava(text: string): string {
     return text.replace(/\b([A-Z]\w*)\.\1\(/g, 'new $1(');
 }
 
-function arcModel(): string {
-    const ports = cases.map((c, k) => `  port <<sync>> out ${c.type} r${k};`).join('\n');
-    const body = cases.map((c, k) => `${c.before ?? ''}\n    r${k} = ${c.expr};`).join('\n');
-    return `package probe;\n\nimport java.util.*;\n\ncomponent LibProbe {\n  port <<sync>> in int tick;\n${ports}\n\n  compute {\n${SETUP.split('\n').map((x) => `    ${x}`).join('\n')}\n    ${body}\n  }\n}\n`;
+/** The result types a ROS 2 port can carry (std_msgs); the ROS 2 probe has the cases of these types. */
+const ROS_TYPES = new Set(['boolean', 'byte', 'short', 'int', 'long', 'float', 'double', 'char', 'String']);
+const rosCases = cases.map((c, k) => ({ ...c, k })).filter((c) => ROS_TYPES.has(c.type));
+
+/**
+ * A component computing every case in its compute block, in order (cases change the sample
+ * collections, later ones see the changes); the `selected` ones go to an out port `r<index>`,
+ * the others are evaluated as statements.
+ */
+function arcModel(name: string, selected: ReadonlyArray<Case & { k: number }>): string {
+    const out = new Set(selected.map((c) => c.k));
+    const ports = selected.map((c) => `  port <<sync>> out ${c.type} r${c.k};`).join('\n');
+    const body = cases.map((c, k) => `${c.before ?? ''}\n    ${out.has(k) ? `r${k} = ` : ''}${c.expr};`).join('\n');
+    return `package probe;\n\nimport java.util.*;\n\ncomponent ${name} {\n  port <<sync>> in int tick;\n${ports}\n\n  compute {\n${SETUP.split('\n').map((x) => `    ${x}`).join('\n')}\n    ${body}\n  }\n}\n`;
 }
 
 function javaProgram(): string {
@@ -307,17 +317,18 @@ function javaProgram(): string {
     return `import java.util.*;\n\n@SuppressWarnings({"unchecked", "rawtypes", "deprecation", "removal"})\npublic class Probe {\n  public static void main(String[] args) {\n${toJava(SETUP)}\n${body}\n  }\n}\n`;
 }
 
+// Runs one step of a generated behavior class and prints each out port r<k> as Java's String.valueOf would.
 const PY_HARNESS = `
-import json, sys
+import importlib, json, sys
 sys.path.insert(0, sys.argv[1])
-from probe.lib_probe import LibProbeBehavior
+behavior = getattr(importlib.import_module(sys.argv[2]), sys.argv[3])
 from maa_behavior import jformat
-types = json.loads(sys.argv[2])
+wanted = json.loads(sys.argv[4])
 out = {}
-b = LibProbeBehavior(lambda port, value: out.__setitem__(port, value))
+b = behavior(lambda port, value: out.__setitem__(port, value))
 b.init()
 b.step({"tick": 1})
-for k, t in enumerate(types):
+for k, t in wanted:
     port = f"r{k}"
     print(jformat(out[port], t) if port in out else "<nothing emitted>")
 `;
@@ -339,20 +350,32 @@ describe('the JDK library in generated Python', () => {
     const work = mkdtempSync(path.join(tmpdir(), 'maa-java-library-'));
     afterAll(() => rmSync(work, { recursive: true, force: true }));
     let python: string[] = [];
+    let ros: string[] = [];
     let javaLines: string[] | undefined;
 
     beforeAll(async () => {
         await ensureVenv();
         const root = path.join(work, 'models');
         mkdirSync(path.join(root, 'probe'), { recursive: true });
-        writeFileSync(path.join(root, 'probe', 'LibProbe.arc'), arcModel());
+        writeFileSync(path.join(root, 'probe', 'LibProbe.arc'), arcModel('LibProbe', cases.map((c, k) => ({ ...c, k }))));
+        writeFileSync(path.join(root, 'probe', 'RosProbe.arc'), arcModel('RosProbe', rosCases));
         writeFileSync(path.join(root, 'Probe.arcapp'), 'application Probe for probe.LibProbe {\n  platform timesync {\n    timesync.Components;\n    timesync.DataTypes;\n  }\n}\n');
+        writeFileSync(path.join(root, 'RosProbe.arcapp'), 'application RosProbe for probe.RosProbe {\n  platform rospython {\n    ros2.Components;\n    ros2.DataTypes;\n  }\n}\n');
         const out = path.join(work, 'out');
-        const gen = await run(process.execPath, [path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', path.join(root, 'Probe.arcapp'), '--platform', 'timesync', '--out', out], repoDir);
-        if (gen.status !== 0) throw new Error(`maa-gen generate failed:\n${gen.stdout}\n${gen.stderr}`);
-        const py = await run(venvPython, ['-c', PY_HARNESS, path.join(out, 'timesync'), JSON.stringify(cases.map((c) => c.type))], packageDir);
-        if (py.status !== 0) throw new Error(`the generated code failed:\n${py.stdout}\n${py.stderr}`);
-        python = py.stdout.trimEnd().split('\n');
+        const generate = async (app: string, platform: string): Promise<void> => {
+            const gen = await run(process.execPath, [path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', path.join(root, app), '--platform', platform, '--out', out], repoDir);
+            if (gen.status !== 0) throw new Error(`maa-gen generate ${app} failed:\n${gen.stdout}\n${gen.stderr}`);
+        };
+        const runBehavior = async (dir: string, module: string, cls: string, wanted: ReadonlyArray<readonly [number, string]>): Promise<string[]> => {
+            const py = await run(venvPython, ['-c', PY_HARNESS, dir, module, cls, JSON.stringify(wanted)], packageDir);
+            if (py.status !== 0) throw new Error(`the generated code failed:\n${py.stdout}\n${py.stderr}`);
+            return py.stdout.trimEnd().split('\n');
+        };
+        await generate('Probe.arcapp', 'timesync');
+        python = await runBehavior(path.join(out, 'timesync'), 'probe.lib_probe', 'LibProbeBehavior', cases.map((c, k) => [k, c.type] as const));
+        // The ROS 2 build's behavior module is plain Python (no rclpy): run it the same way.
+        await generate('RosProbe.arcapp', 'rospython');
+        ros = await runBehavior(path.join(out, 'rospython', 'ros_probe'), 'ros_probe.model.probe.ros_probe_behavior', 'RosProbeBehavior', rosCases.map((c) => [c.k, c.type] as const));
         const javaDir = path.join(work, 'java');
         mkdirSync(javaDir);
         writeFileSync(path.join(javaDir, 'Probe.java'), javaProgram());
@@ -369,6 +392,17 @@ describe('the JDK library in generated Python', () => {
         expect(python).toHaveLength(cases.length);
         const rows = cases.map((c, k) => `${c.key}: ${c.expr} = ${python[k]}`);
         const expected = cases.map((c, k) => `${c.key}: ${c.expr} = ${javaLines![k]}`);
+        expect(rows).toEqual(expected);
+    });
+
+    it('the ROS 2 build computes the same (cases with results a ROS 2 port carries)', (ctx) => {
+        if (!javaLines) {
+            ctx.skip();
+            return;
+        }
+        expect(rosCases.length).toBeGreaterThan(150);
+        const rows = rosCases.map((c, i) => `${c.key}: ${c.expr} = ${ros[i]}`);
+        const expected = rosCases.map((c) => `${c.key}: ${c.expr} = ${javaLines![c.k]}`);
         expect(rows).toEqual(expected);
     });
 });
