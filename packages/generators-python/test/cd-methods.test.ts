@@ -40,12 +40,18 @@ component Calc {
 }
 `;
 
-const APP = 'application CalcApp for probe.Calc {\n  platform timesync {\n    timesync.Components;\n    timesync.DataTypes;\n  }\n}\n';
+const APP = 'application CalcApp for probe.Calc {\n  platform timesync {\n    timesync.Components;\n    timesync.DataTypes;\n  }\n  platform rospython {\n    ros2.Components;\n    ros2.DataTypes;\n  }\n}\n';
+
+/** Per platform: the folder to put on sys.path, the behavior module, the data type module. */
+const PLATFORMS = {
+    timesync: { dir: ['timesync'], behavior: 'probe.calc', types: ['timesync', 'probe', 'shapes.py'] },
+    rospython: { dir: ['rospython', 'calc'], behavior: 'calc.model.probe.calc_behavior', types: ['rospython', 'calc', 'calc', 'model', 'probe', 'shapes.py'] }
+} as const;
 
 const HARNESS = `
-import json, sys
+import importlib, json, sys
 sys.path.insert(0, sys.argv[1])
-from probe.calc import CalcBehavior
+CalcBehavior = getattr(importlib.import_module(sys.argv[2]), "CalcBehavior")
 out = {}
 b = CalcBehavior(lambda port, value: out.__setitem__(port, value))
 b.init()
@@ -68,30 +74,30 @@ describe('class-diagram methods in the Python data types', () => {
     afterAll(() => rmSync(work, { recursive: true, force: true }));
     const root = path.join(work, 'models');
     const out = path.join(work, 'out');
-    const module = path.join(out, 'timesync', 'probe', 'shapes.py');
 
-    async function generateAndRun(): Promise<{ ok?: Record<string, unknown>; not_implemented?: string }> {
-        const gen = await run(process.execPath, [path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', path.join(root, 'CalcApp.arcapp'), '--platform', 'timesync', '--out', out], repoDir);
+    async function generateAndRun(platform: keyof typeof PLATFORMS): Promise<{ ok?: Record<string, unknown>; not_implemented?: string }> {
+        const gen = await run(process.execPath, [path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', path.join(root, 'CalcApp.arcapp'), '--platform', platform, '--out', out], repoDir);
         expect(gen.status, `${gen.stdout}\n${gen.stderr}`).toBe(0);
-        const py = await run(venvPython, ['-c', HARNESS, path.join(out, 'timesync')], packageDir);
+        const py = await run(venvPython, ['-c', HARNESS, path.join(out, ...PLATFORMS[platform].dir), PLATFORMS[platform].behavior], packageDir);
         expect(py.status, py.stderr).toBe(0);
         return JSON.parse(py.stdout) as { ok?: Record<string, unknown>; not_implemented?: string };
     }
 
-    it('generated stubs raise NotImplementedError naming the method; implementations between the markers run and survive regeneration', async () => {
+    it.each(['timesync', 'rospython'] as const)('%s: generated stubs raise NotImplementedError naming the method; implementations between the markers run and survive regeneration', async (platform) => {
         await ensureVenv();
         mkdirSync(path.join(root, 'probe'), { recursive: true });
         writeFileSync(path.join(root, 'probe', 'Shapes.cd'), TYPES);
         writeFileSync(path.join(root, 'probe', 'Calc.arc'), CALC);
         writeFileSync(path.join(root, 'CalcApp.arcapp'), APP);
+        const module = path.join(out, ...PLATFORMS[platform].types);
 
-        const first = await generateAndRun();
+        const first = await generateAndRun(platform);
         expect(first.not_implemented).toContain('probe.Shapes.Rect.square(double) is declared in the class diagram');
         const text = readFileSync(module, 'utf8');
         expect(text).toContain('    @staticmethod\n    def square(side: float) -> Rect:');
         expect(text).toContain('    def area(self) -> float:');
         expect(text).toContain('    def code(self) -> int:');
-        expect(await lintPython(path.join(out, 'timesync'))).toEqual([]);
+        if (platform === 'timesync') expect(await lintPython(path.join(out, 'timesync'))).toEqual([]);
 
         // The user fills in the regions; regeneration keeps them.
         let edited = text;
@@ -101,7 +107,7 @@ describe('class-diagram methods in the Python data types', () => {
             edited = edited.replace(re, `$1${body}\n`);
         }
         writeFileSync(module, edited);
-        const second = await generateAndRun();
+        const second = await generateAndRun(platform);
         expect(second.ok).toEqual({ area: 9.0, code: 11 });
         expect(readFileSync(module, 'utf8')).toBe(edited);
     }, 240_000);
