@@ -5,6 +5,7 @@ import {
 import { allStates, enclosingAutomaton } from './automaton-model.js';
 import { AutomatonChecks } from './automaton-checks.js';
 import { registerModes } from './modes/mode-language.js';
+import { registerModeLsp } from './modes/mode-lsp.js';
 import { AutomatonCodes } from './codes.js';
 import { AUTOMATON_DIAGNOSTICS } from './docs/automaton-diagnostics.js';
 import { registerAutomatonLsp } from './lsp/automaton-lsp.js';
@@ -54,7 +55,10 @@ export const AutomataLanguage: BehaviorLanguage = {
         services.validation.ValidationRegistry.register(checks.checks, checks);
         registerModes(services);
     },
-    registerLsp: registerAutomatonLsp
+    registerLsp(services) {
+        registerAutomatonLsp(services);
+        registerModeLsp(services);
+    }
 };
 
 /** The incoming ports of the component that encloses a node, inherited ones included. */

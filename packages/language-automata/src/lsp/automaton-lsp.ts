@@ -77,6 +77,7 @@ function registerFormatting(formatter: AdlFormatter): void {
     rules.set('State', (n, f) => {
         const s = n as State;
         const on = f.on(s);
+        if (s.final) on.keyword('final').append(Formatting.oneSpace());
         if (s.initial) on.keyword('initial').append(Formatting.oneSpace());
         on.keyword('state').append(Formatting.oneSpace());
         if (s.initialAction) on.node(s.initialAction).append(Formatting.oneSpace());
