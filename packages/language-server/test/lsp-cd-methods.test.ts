@@ -1,6 +1,6 @@
-// Editor support for class-diagram methods (in classes and enums): completion of an enum's
-// constants and static methods after `Type.`, hover on a called method, go-to-definition into the
-// class diagram, and formatting of an enum body with methods.
+// Editor support for class-diagram methods (in classes and enums) and the JDK library: completion
+// of members after `Type.` and after a value (enum constant, class-diagram value, Map), hover on a
+// called method, go-to-definition into the class diagram, formatting of an enum with methods.
 import { describe, expect, test } from 'vitest';
 import { expectFormatting } from 'langium/test';
 import type { Hover } from 'vscode-languageserver-types';
@@ -52,5 +52,17 @@ describe('formatting an enum with methods', () => {
             before: 'package t;\nclassdiagram E {\n  enum Level {LOW ,HIGH ;int rank( ) ;  static Level parse(String s);}\n}\n',
             after: 'package t;\n\nclassdiagram E {\n  enum Level { LOW, HIGH; int rank(); static Level parse(String s); }\n}\n'
         });
+    });
+});
+
+describe('completion of members after a value', () => {
+    test('after an enum constant: the enum\'s methods', async () => {
+        expect(await labelsAt(model('  int c = Color.RED.<|>;'))).toContain('code');
+    });
+    test('after a class-diagram value: its attributes and methods', async () => {
+        expect(await labelsAt(model('  double a = r.<|>;'))).toEqual(expect.arrayContaining(['w', 'area']));
+    });
+    test('after a Map: the JDK library\'s methods', async () => {
+        expect(await labelsAt(model('  Map<String, Integer> mp = HashMap.HashMap();\n  boolean b = mp.<|>;'))).toEqual(expect.arrayContaining(['containsKey', 'getOrDefault', 'keySet']));
     });
 });

@@ -192,7 +192,9 @@ export class AdlCompletionProvider extends DefaultCompletionProvider {
     private receiverType(context: CompletionContext, dot: number): SymType {
         const typer = this.services.maa.ExpressionTyper;
         const cst = context.document.parseResult.value.$cstNode;
-        const leaf = cst && CstUtils.findLeafNodeBeforeOffset(cst, dot);
+        let leaf = cst && CstUtils.findLeafNodeBeforeOffset(cst, dot);
+        // The leaf found may be the `.` itself (the parser kept it): the receiver ends before it.
+        if (cst && leaf && leaf.offset >= dot && dot > 0) leaf = CstUtils.findLeafNodeBeforeOffset(cst, dot - 1);
         if (leaf && leaf.end <= dot && !leaf.hidden) {
             let expr: AstNode | undefined = leaf.astNode;
             if (expr && isExpression(expr)) {
