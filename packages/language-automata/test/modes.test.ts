@@ -71,3 +71,15 @@ describe('mode automata', () => {
         expect(found.filter((f) => f.code.startsWith('syntax/')), dump(found)).toEqual([]);
     });
 });
+
+describe('connectedness with modes', () => {
+    test('ports connected only in a mode count as connected (shared subcomponents, out ports)', async () => {
+        const found = await validate(switcher('  Pass always;\n  i -> always.i;\n  <<sync>> mode automaton {\n    initial mode Up { Pass p; always.o -> p.i; p.o -> o; }\n    mode Down { Neg n; always.o -> n.i; n.o -> o; }\n  }'));
+        expect(found.filter((f) => f.code.startsWith('arc/unconnected') || f.code.startsWith('arc/unused')), dump(found)).toEqual([]);
+    });
+
+    test('a port of a shared subcomponent connected in no mode is still reported', async () => {
+        const found = await validate(switcher('  Pass always;\n  <<sync>> mode automaton {\n    initial mode Up { Pass p; i -> p.i; p.o -> o; }\n  }'));
+        expect(found.filter((f) => f.code === 'arc/unconnected-sub-in-port').map((f) => f.text), dump(found)).toEqual(['always']);
+    });
+});

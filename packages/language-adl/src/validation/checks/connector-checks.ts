@@ -1,14 +1,31 @@
-import type { ValidationAcceptor, ValidationChecks } from 'langium';
+import type { AstNode, ValidationAcceptor, ValidationChecks } from 'langium';
 import type { AdlAstType, AutoConnect, ComponentType, Connector, PortAccess, Subcomponent } from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import {
-    allPorts, isComposed, subcomponentType, subcomponentsOf, type PortInfo, type Timing, elementsOf } from '../../components/component-model.js';
+    allPorts, behaviorsOf, isComposed, subcomponentType, subcomponentsOf, type PortInfo, type Timing, elementsOf } from '../../components/component-model.js';
 import { currentVariant, inSubcomponent } from '../../components/variant-context.js';
 import type { TypeRelations } from '../../types/type-relations.js';
 import { isErroneous, printType } from '../../types/sym-type.js';
 import { Codes } from '../codes.js';
 import { PortTables } from './port-tables.js';
 import { impliedConnectors, type ImpliedConnector } from '../../components/autoconnect.js';
+
+/**
+ * The connectors declared in the modes of a component's mode automaton (language-automata's
+ * `mode automaton { mode M { ... } }`), read by `$type` since the host's AST does not know modes.
+ */
+function modeConnectors(c: ComponentType): Connector[] {
+    const out: Connector[] = [];
+    for (const b of behaviorsOf(c)) {
+        const automaton = b.behavior as (AstNode & { elements?: AstNode[] }) | undefined;
+        if (automaton?.$type !== 'ModeAutomaton') continue;
+        for (const m of automaton.elements ?? []) {
+            if (m.$type !== 'Mode') continue;
+            for (const e of (m as AstNode & { elements?: AstNode[] }).elements ?? []) if (e.$type === 'Connector') out.push(e as Connector);
+        }
+    }
+    return out;
+}
 
 const STRENGTH: Readonly<Record<Timing, number>> = { untimed: 0, timed: 1, sync: 2 };
 
@@ -38,7 +55,10 @@ export class ConnectorChecks {
                 // and connect ports of one type, so they count for connectedness and causality.
                 const implied = impliedConnectors(c);
                 this.checkSenders(resolved, accept);
-                this.checkConnectedness(c, resolved, implied, accept);
+                // The connectors of modes (checked with their mode, language-automata) connect
+                // ports too: a port connected in some mode is connected.
+                const inModes = modeConnectors(c).map((con) => ({ con, source: this.end(c, con.source, tables), targets: con.targets.map((t) => this.end(c, t, tables)) }));
+                this.checkConnectedness(c, [...resolved, ...inModes], implied, accept);
                 this.checkCausality(c, resolved, implied, accept);
             }
         }
