@@ -81,6 +81,18 @@ describe('folding and semantic tokens', () => {
     });
 });
 
+describe('hover', () => {
+    test('hovering autoconnect lists the connectors it implies', async () => {
+        const ws = await workspace({
+            'F.arc': 'component F {\n  port in int i, out int o;\n  component Inner {\n    port in int i;\n    port out int o;\n  }\n  Inner inner;\n  auto<|>connect port;\n}\n'
+        });
+        const doc = ws.doc('F.arc');
+        const hover = await servicesOf(doc).lsp.HoverProvider!.getHoverContent(doc, { textDocument: { uri: doc.uri.toString() }, position: ws.position('F.arc') });
+        const value = (hover?.contents as { value: string } | undefined)?.value ?? '';
+        expect(value).toContain('Implied connectors: `inner.o -> o`, `i -> inner.i`.');
+    });
+});
+
 describe('diagram', () => {
     test('the connectors autoconnect implies are edges of the C&C diagram, none with autoconnect off', async () => {
         const text = (kind: string): string => `component F {\n  port in int i, out int o;\n  component Inner {\n    port in int i;\n    port out int o;\n  }\n  Inner inner;\n  autoconnect ${kind};\n}\n`;

@@ -1,6 +1,8 @@
-import { type AstNode, type MaybePromise, type ServiceRegistry } from 'langium';
+import { type AstNode, type LangiumDocument, type MaybePromise, type ServiceRegistry } from 'langium';
+import type { Hover, HoverParams } from 'vscode-languageserver-protocol';
 import { AstNodeHoverProvider } from 'langium/lsp';
 import type { AdlLspServices } from './lsp-module.js';
+import { autoConnectHover } from './autoconnect-hover.js';
 import { describe } from './descriptions.js';
 import { documentation, documentOf } from './node-info.js';
 
@@ -43,6 +45,10 @@ export class AdlHoverProvider extends AstNodeHoverProvider {
     languageOf(node: AstNode): string {
         const uri = documentOf(node)?.uri;
         return uri && this.registry.hasServices(uri) ? this.registry.getServices(uri).LanguageMetaData.languageId : 'arc';
+    }
+
+    override async getHoverContent(document: LangiumDocument, params: HoverParams): Promise<Hover | undefined> {
+        return autoConnectHover(document, params) ?? super.getHoverContent(document, params);
     }
 
     protected override getAstNodeHoverContent(node: AstNode): MaybePromise<string | undefined> {
