@@ -1,9 +1,11 @@
 // Editor support of mode automata in the composed family: formatting in MontiArc's style, hover
 // on a mode, modes as tokens of their own (declarations and references in transitions), the
-// outline, completion and rename of modes, and folding of a mode.
+// outline, completion and rename of modes, folding of a mode, and the C&C diagram.
 import { describe, expect, test } from 'vitest';
 import { expectFormatting } from 'langium/test';
+import type { SModelElement } from 'sprotty-protocol';
 import type { DocumentSymbol } from 'vscode-languageserver-types';
+import { byId, diagramWorkspace, TestClient } from './diagram-helpers.js';
 import { lspServices, servicesOf, workspace } from './lsp-helpers.js';
 
 const format = (): ReturnType<typeof expectFormatting> => expectFormatting(lspServices().Arc);
@@ -130,5 +132,22 @@ describe('navigation', () => {
         const edits = Object.values(edit?.changes ?? {}).flat();
         expect(edits.length).toBe(3);
         expect(edits.every((e) => e.newText === 'Forward')).toBe(true);
+    });
+});
+
+describe('diagram', () => {
+    test('the C&C diagram shows the subcomponents and connectors of every mode, marked with their mode', async () => {
+        const ws = await diagramWorkspace({ 'Pass.arc': PASS, 'Switch.arc': SWITCH });
+        const client = new TestClient(ws.diagrams);
+        const model = await client.requestModel({ diagramType: 'maa-cc', sourceUri: ws.uri('Switch.arc'), needsClientLayout: false });
+        const elements = [...byId(model).values()] as Array<SModelElement & { name?: string; mode?: string; composed?: boolean; sourceId?: string; targetId?: string }>;
+        const root = elements.find((e) => e.type === 'node:component' && e.name === 'Switch');
+        expect(root?.composed).toBe(true);
+        const subs = elements.filter((e) => e.type === 'node:component' && e.name !== 'Switch').map((e) => `${e.name}@${e.mode}`);
+        expect(subs.sort()).toEqual(['p@Up', 'q@Down']);
+        const edges = elements.filter((e) => e.type === 'edge:connector').map((e) => `${e.mode}: ${e.sourceId} -> ${e.targetId}`);
+        expect(edges).toHaveLength(4);
+        expect(edges.filter((e) => e.startsWith('Up:'))).toHaveLength(2);
+        expect(new Set(elements.map((e) => e.id)).size).toBe(elements.length);
     });
 });

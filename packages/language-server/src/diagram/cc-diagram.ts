@@ -2,13 +2,13 @@ import type { AstNode } from 'langium';
 import {
     allPorts, ast, behaviorsOf, isComposed, printType, stereotypeNames, subcomponentType, subcomponentsOf, type PortInfo
 } from '@maa/language-adl';
-import { behaviorLanguageOf, componentQualifiedName } from '@maa/generator-core';
+import { behaviorLanguageOf, componentQualifiedName, modeAutomatonView, modeSubcomponentsOf } from '@maa/generator-core';
 import type { SModelElement } from 'sprotty-protocol';
 import type { BuildContext } from './context.js';
 import { connectorId, instanceId, labelId, portId } from './ids.js';
 import { TYPES, type ComponentNode, type ConnectorEdge, type MaaGraph, type MaaLabel, type PortNode } from './model.js';
 import { PORT_SIZE, labelSize } from './sizes.js';
-import { atomicSourcePath, connectorsOf, type PortName } from './source-ports.js';
+import { atomicSourcePath, connectorsOf, type NamedConnector, type PortName } from './source-ports.js';
 
 type ComponentType = ast.ComponentType;
 
@@ -29,7 +29,8 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
     function componentNode(type: ComponentType, path: string[], decl: ast.Subcomponent | undefined, open: boolean): ComponentNode {
         types.set(path.join('.'), type);
         const id = ctx.id(instanceId(path), decl ?? type);
-        const composed = isComposed(type);
+        // The subcomponents of modes make a component composed too (mode automata, language-automata).
+        const composed = isComposed(type) || modeSubcomponentsOf(type).length > 0;
         const name = decl?.name ?? type.name;
         const componentType = componentQualifiedName(type);
         const node: ComponentNode = {
@@ -59,7 +60,29 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
                 const subPath = [...path, sub.name];
                 node.children!.push(componentNode(subType, subPath, sub, expanded.has(subPath.join('.'))));
             }
-            node.children!.push(...connectors(type, path));
+            node.children!.push(...connectors(connectorsOf(type), path));
+            // Modes: the subcomponents and connectors of every mode, marked with their mode.
+            const modes = modeAutomatonView(type);
+            if (modes) {
+                const byName = new Map(modeSubcomponentsOf(type).map((s) => [s.name, s]));
+                for (const m of modes.modes) {
+                    for (const name of m.subcomponents) {
+                        const sub = byName.get(name);
+                        const subType = sub && subcomponentType(sub).decl;
+                        if (!sub || !subType) continue;
+                        const subPath = [...path, sub.name];
+                        const child = componentNode(subType, subPath, sub, expanded.has(subPath.join('.')));
+                        child.mode = m.name;
+                        node.children!.push(child);
+                    }
+                    const named: NamedConnector[] = m.connectors.map((k) => ({
+                        source: { sub: k.source.subcomponent, port: k.source.port },
+                        targets: k.targets.map((t) => ({ sub: t.subcomponent, port: t.port })),
+                        node: k.node
+                    }));
+                    node.children!.push(...connectors(named, path, m.name));
+                }
+            }
         }
         return node;
     }
@@ -83,9 +106,9 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
         return node;
     }
 
-    function connectors(type: ComponentType, path: string[]): ConnectorEdge[] {
+    function connectors(list: readonly NamedConnector[], path: string[], mode?: string): ConnectorEdge[] {
         const edges: ConnectorEdge[] = [];
-        for (const e of connectorsOf(type)) {
+        for (const e of list) {
             const source = e.source;
             const sourceId = endpointId(path, source);
             if (!ports.has(sourceId)) continue; // a broken reference: nothing to connect
@@ -95,10 +118,12 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
                 if (!ports.has(targetId)) continue;
                 const edge: ConnectorEdge = {
                     type: TYPES.connector,
-                    id: ctx.id(connectorId(path, local(source), local(target))),
+                    // Two modes may connect the same ports: the mode keeps their ids apart.
+                    id: ctx.id(connectorId(path, local(source), mode ? `${local(target)}@${mode}` : local(target))),
                     sourceId,
                     targetId,
-                    sourcePortPath
+                    sourcePortPath,
+                    ...(mode ? { mode } : {})
                 };
                 ctx.trace(edge, e.node);
                 edges.push(edge);

@@ -60,6 +60,8 @@ export interface ComponentNode extends SNode, Traced {
     composed: boolean;
     expanded: boolean;
     severity?: MarkerSeverity;
+    /** A subcomponent of a mode (mode automata): the mode it is active in. */
+    mode?: string;
 }
 
 export interface PortNode extends SPort, Traced {
@@ -76,6 +78,8 @@ export interface ConnectorEdge extends SEdge, Traced {
     type: typeof TYPES.connector;
     /** The out port of an atomic instance whose values flow through this connector (`""` if none). */
     sourcePortPath: string;
+    /** A connector of a mode (mode automata): the mode it is active in. */
+    mode?: string;
 }
 
 export interface StateNode extends SNode, Traced {
