@@ -25,7 +25,9 @@ const conformance = path.resolve(repoDir, '..', 'shared', 'conformance');
  */
 const EXTENDED_SUPPORTED: readonly string[] = [
     // mode automata (12-B)
-    'montiarc.modes.sync.SimpleTransitionTest', 'montiarc.modes.sync.composition.InitiallyUnusedOutPortsTest'
+    'montiarc.modes.sync.SimpleTransitionTest', 'montiarc.modes.sync.composition.InitiallyUnusedOutPortsTest',
+    // feature configurations (12-A): one build per component and `features` of the case
+    'montiarc.sync.variability.FieldSourceTest', 'montiarc.sync.variability.OptionalDelayTest'
 ];
 
 interface Case { id: string }

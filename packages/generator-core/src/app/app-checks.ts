@@ -7,6 +7,8 @@ import { buildArchitecture, type ArchitectureModel, type BehaviorView } from '..
 import type { GeneratorRegistry, RegisteredGenerator } from '../registry/registry.js';
 import { standardRule } from '../rules/standard-rules.js';
 import { AppCodes, type AppCode } from './codes.js';
+import { applicationVariant } from './app-variant.js';
+import { withVariant } from '@maa/language-adl';
 
 /**
  * A problem of an application configuration. `node`/`property` locate it in the `.arcapp`
@@ -75,7 +77,8 @@ export function generatorForLanguage(selection: PlatformSelection, language: str
 /** The architecture of an application, or undefined while its component does not resolve. */
 export function applicationArchitecture(app: Application): ArchitectureModel | undefined {
     const root = app.component?.ref as unknown as ast.ComponentType | undefined;
-    return root ? buildArchitecture(root) : undefined;
+    // In the feature configuration the application selects (app-variant.ts).
+    return root ? withVariant(applicationVariant(app).env, () => buildArchitecture(root)) : undefined;
 }
 
 /**
@@ -92,6 +95,9 @@ export function checkApplication(app: Application, registry: GeneratorRegistry, 
         if (architecture === null) architecture = applicationArchitecture(app);
         return architecture;
     };
+    // The feature configuration concerns every platform: reported once, in the editor's check of
+    // the whole configuration (generate() reports it itself before checking each platform).
+    if (options.platform === undefined) findings.push(...applicationVariant(app).findings);
     for (const platform of app.platforms) {
         if (seenPlatforms.has(platform.name)) {
             findings.push({

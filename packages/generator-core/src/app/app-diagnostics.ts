@@ -61,6 +61,26 @@ const HIERARCHICAL = [
     '}'
 ].join('\n');
 
+const VARIABLE = [
+    'package robot;',
+    '',
+    'component Robot {',
+    '  feature cautious;',
+    '  port in int distance;',
+    '  port out boolean stop;',
+    '',
+    '  varif (cautious) {',
+    '    compute {',
+    '      stop = distance < 20;',
+    '    }',
+    '  } else {',
+    '    compute {',
+    '      stop = distance < 10;',
+    '    }',
+    '  }',
+    '}'
+].join('\n');
+
 function app(...platforms: string[]): string {
     return ['application App for robot.Robot {', ...platforms, '}'].join('\n');
 }
@@ -99,6 +119,18 @@ export const APP_DIAGNOSTICS: DiagnosticCatalog = {
             rule: 'The application names its architecture\'s top component type by a qualified name that resolves in the model root.',
             invalid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robt')), at: 'robot.Robt' },
             valid: { files: example(app(platform('python', ...FAMILY))) }
+        },
+        {
+            code: 'app/unknown-feature', severity: 'error',
+            rule: 'A feature binding of the application (`for robot.Robot(cautious = true)`) names a feature of its top component type.',
+            invalid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(careful = true)'), VARIABLE), at: 'careful' },
+            valid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(cautious = true)'), VARIABLE) }
+        },
+        {
+            code: 'app/feature-configuration-excluded', severity: 'error',
+            rule: 'The feature bindings of the application select a configuration that the constraints of the top component type (and of its subcomponents) admit, and in which all instances of one component type select the same variation points (a generated component type has one configuration).',
+            invalid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(cautious = false)'), VARIABLE.replace('  feature cautious;', '  feature cautious;\n  constraint(cautious);')), at: 'cautious = false' },
+            valid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(cautious = true)'), VARIABLE.replace('  feature cautious;', '  feature cautious;\n  constraint(cautious);')) }
         },
         {
             code: 'app/unknown-generator', severity: 'error',

@@ -16,7 +16,9 @@ export const AppCodes = {
     DuplicateBehaviorGenerator: 'app/duplicate-behavior-generator',
     GplMismatch: 'app/gpl-mismatch',
     RteMismatch: 'app/rte-mismatch',
-    GeneratorRuleViolated: 'app/generator-rule-violated'
+    GeneratorRuleViolated: 'app/generator-rule-violated',
+    UnknownFeature: 'app/unknown-feature',
+    FeatureConfigurationExcluded: 'app/feature-configuration-excluded'
 } as const;
 
 export type AppCode = (typeof AppCodes)[keyof typeof AppCodes];

@@ -4,6 +4,7 @@ import {
     typeOfMCType, printType, type ImpliedEnd, type SymType, type Timing
 } from '@maa/language-adl';
 
+import { currentVariant } from '@maa/language-adl';
 import { isModeAutomatonBlock, modeAutomatonView, modeSubcomponentsOf, type ModeAutomatonView } from './modes.js';
 
 type ComponentType = ast.ComponentType;
@@ -59,6 +60,8 @@ export interface ComponentView {
      */
     readonly modes?: ModeAutomatonView;
     readonly stereotypes: readonly string[];
+    /** The values of the component's features in the generated configuration (variable components only). */
+    readonly features?: Readonly<Record<string, boolean>>;
 }
 
 export interface TypeView {
@@ -255,6 +258,7 @@ function componentView(c: ComponentType): ComponentView {
     const modes = modeAutomatonView(c);
     const timing = behaviorTiming(c);
     const elements = elementsOf(c);
+    const features = currentVariant()?.featureValues?.(c);
     return {
         qualifiedName,
         name: c.name,
@@ -296,7 +300,9 @@ function componentView(c: ComponentType): ComponentView {
         handwritten: stereotypeNames(c.stereotype).includes('handwritten'),
         atomic: !isComposed(c) && modeSubcomponentsOf(c).length === 0,
         ...(modes ? { modes } : {}),
-        stereotypes: stereotypeNames(c.stereotype)
+        stereotypes: stereotypeNames(c.stereotype),
+        // The feature configuration generated (variable architectures: app-variant.ts).
+        ...(features ? { features } : {})
     };
 }
 

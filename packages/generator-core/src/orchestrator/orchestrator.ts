@@ -4,6 +4,8 @@ import { pathToFileURL } from 'node:url';
 import { performance } from 'node:perf_hooks';
 import { AstUtils, GrammarUtils, URI, type AstNode, type LangiumDocument } from 'langium';
 import { checkRoots, CheckInputError, type CheckDiagnostic, type HostLanguageServices, type Severity } from '@maa/language-adl';
+import { applicationVariant } from '../app/app-variant.js';
+import { setVariant } from '@maa/language-adl';
 import { applicationArchitecture, checkApplication, generatorForLanguage, selectGenerators, type AppFinding, type PlatformSelection } from '../app/app-checks.js';
 import { configureGeneratorRegistry } from '../app/registry-provider.js';
 import type { AppPlatform, Application, ArcAppModel } from '../generated/ast.js';
@@ -106,6 +108,15 @@ interface Instance {
  * platform folder switched in one rename). Nothing is written when any step fails.
  */
 export async function generate(options: GenerateOptions): Promise<GenerateResult> {
+    const previous = setVariant(undefined);
+    try {
+        return await generateInConfiguration(options);
+    } finally {
+        setVariant(previous);
+    }
+}
+
+async function generateInConfiguration(options: GenerateOptions): Promise<GenerateResult> {
     const timings = { discover: 0, load: 0, check: 0, instantiate: 0, generate: 0, trace: 0, write: 0 };
     const progress = options.onProgress ?? (() => undefined);
     const appFile = path.resolve(options.appFile);
@@ -151,6 +162,9 @@ export async function generate(options: GenerateOptions): Promise<GenerateResult
     }
 
     const platforms = selectPlatforms(app, options.platforms);
+    // The generators read the model in the application's feature configuration (restored by generate()).
+    const variant = applicationVariant(app);
+    setVariant(variant.env);
     const architecture = applicationArchitecture(app);
     // Diagnostics of the files generation reads: the configuration (except what concerns other
     // platforms, and the app/ checks, which run below per platform) and the architecture's files.
@@ -162,6 +176,8 @@ export async function generate(options: GenerateOptions): Promise<GenerateResult
         if (d.file === appFile && otherPlatforms.some((p) => inside(d, p))) continue;
         diagnostics.push(d);
     }
+    // The feature configuration concerns every platform (checkApplication reports it in the editor only).
+    for (const f of variant.findings) diagnostics.push(findingDiagnostic(modelRoot, f));
     if (!architecture || diagnostics.some((d) => d.severity === 'error')) return fail();
 
     const infoOf = (p: AppPlatform): PlatformInfo => ({ application: app.name, platform: p.name, rootComponent: architecture.root.qualifiedName });

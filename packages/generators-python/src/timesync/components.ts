@@ -56,6 +56,8 @@ function typeHeader(c: ComponentView, datatypes: DataTypeResult, imports: Import
         `    PARAMETERS = ${tuple(c.parameters.map((p) => str(p.name)))}`,
         // Generic components name their type parameters: stream tests bind them (`type_args`).
         ...(c.typeParameters.length > 0 ? [`    TYPE_PARAMETERS = ${tuple(c.typeParameters.map(str))}`] : []),
+        // A variable component records the feature configuration it was generated in (stream tests check it).
+        ...(c.features ? [`    FEATURES: ClassVar[Mapping[str, bool]] = {${Object.entries(c.features).map(([k, v]) => `${str(k)}: ${v ? 'True' : 'False'}`).join(', ')}}`] : []),
         ...extra
     ];
     imports.add('typing', 'ClassVar');

@@ -1,5 +1,5 @@
 import type { AstNode } from 'langium';
-import type { ComponentBody, Subcomponent, VarIf } from '../generated/ast.js';
+import type { ComponentBody, ComponentType, Subcomponent, VarIf } from '../generated/ast.js';
 
 /**
  * The configuration that component-model.ts reads a component in (MontiArc's variable
@@ -14,6 +14,8 @@ export interface VariantEnv {
     decide(v: VarIf): boolean;
     /** The configuration of a subcomponent's type (its features, bound parameters). */
     sub(s: Subcomponent): VariantEnv;
+    /** The values of a component type's features in this configuration, if known (generation). */
+    featureValues?(c: ComponentType): Readonly<Record<string, boolean>> | undefined;
 }
 
 let current: VariantEnv | undefined;
@@ -119,4 +121,14 @@ export function sameBranchFirst<T extends AstNode>(at: AstNode, candidates: read
         return true;
     };
     return [...candidates.filter(visible), ...candidates.filter((x) => !visible(x))];
+}
+
+/**
+ * Sets the configuration for everything that follows, until set again (for asynchronous work
+ * such as a generator run, which withVariant cannot span); returns the previous one.
+ */
+export function setVariant(env: VariantEnv | undefined): VariantEnv | undefined {
+    const saved = current;
+    current = env;
+    return saved;
 }

@@ -1,0 +1,51 @@
+import { allFeatures, configurationSpace, isVariable, type VariantEnv, type ast } from '@maa/language-adl';
+import type { Application } from '../generated/ast.js';
+import type { AppFinding } from './app-checks.js';
+import { AppCodes } from './codes.js';
+
+/**
+ * The feature configuration an application generates (`application A for C(f = true) { ... }`):
+ * the configuration of the root component's constraints that binds the listed features as
+ * given, the others (and the features of subcomponents the constraints leave open) taking the
+ * first admitted values, `false` before `true`. Undefined without variability.
+ */
+export function applicationVariant(app: Application): { env?: VariantEnv; findings: AppFinding[] } {
+    const root = app.component?.ref as unknown as ast.ComponentType | undefined;
+    const findings: AppFinding[] = [];
+    if (!root) return { findings };
+    const features = new Set(allFeatures(root).map((f) => f.name));
+    for (const b of app.features) {
+        if (!features.has(b.feature)) {
+            findings.push({
+                code: AppCodes.UnknownFeature, severity: 'error', node: b, property: 'feature',
+                message: `Component '${root.name}' has no feature '${b.feature}'${features.size > 0 ? `; its features are ${[...features].map((f) => `'${f}'`).join(', ')}` : ''}.`
+            });
+        }
+    }
+    if (findings.length > 0 || (app.features.length === 0 && !isVariable(root))) return { findings };
+    const space = configurationSpace(root);
+    if (space.tooLarge) {
+        findings.push({ code: AppCodes.FeatureConfigurationExcluded, severity: 'error', node: app, property: 'component', message: `The configurations of component '${root.name}' are too many to enumerate (variability/too-many-features); it cannot be generated.` });
+        return { findings };
+    }
+    const chosen = space.configurations.find((a) => app.features.every((b) => space.value(a, b.feature) === (b.value === 'true')));
+    if (chosen === undefined) {
+        const node = app.features[0] ?? app;
+        findings.push({
+            code: AppCodes.FeatureConfigurationExcluded, severity: 'error', node, ...(app.features[0] ? {} : { property: 'component' }),
+            message: app.features.length > 0
+                ? `The constraints of component '${root.name}' admit no configuration with ${app.features.map((b) => `${b.feature} = ${b.value}`).join(', ')}.`
+                : `The constraints of component '${root.name}' admit no configuration.`
+        });
+        return { findings };
+    }
+    const conflicts = space.conflicts(chosen);
+    if (conflicts.length > 0) {
+        findings.push({
+            code: AppCodes.FeatureConfigurationExcluded, severity: 'error', node: app.features[0] ?? app, ...(app.features[0] ? {} : { property: 'component' }),
+            message: `In this configuration two instances of one component type select different variation points (e.g. 'varif (${conflicts[0]!.condition?.$cstNode?.text ?? ''})'); a generated component type has one configuration.`
+        });
+        return { findings };
+    }
+    return { env: space.generationEnv(chosen), findings };
+}
