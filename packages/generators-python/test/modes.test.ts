@@ -1,8 +1,8 @@
-import { mkdtempSync, rmSync } from 'node:fs';
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { describe, expect, it } from 'vitest';
-import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
+import { ensureVenv, lintPython, repoDir, run, venvPython } from './python-env.js';
 
 interface StreamResult { file: string; test: string | null; passed: boolean; problems: string[] }
 
@@ -34,6 +34,43 @@ describe('mode automata on ROS 2', () => {
             expect(r.stdout + r.stderr).toContain('components.NoModes');
             expect(r.stdout + r.stderr).toContain("component type 'gear.Gearbox' has a mode automaton (modes First, Second)");
             expect(r.status).toBe(1);
+        } finally {
+            rmSync(out, { recursive: true, force: true });
+        }
+    }, 180_000);
+});
+
+// The event-based mode automaton of the fixture (gear.Shifter), generated and fed message by
+// message: a message `true` on flip switches to negating before it is forwarded, `false` does
+// not (guard), and the tick switches back.
+const DRIVER = `import json, sys
+sys.path.insert(0, sys.argv[1])
+from gear.shifter import Shifter
+from maa_timesync import TICK, System
+system = System(Shifter)
+system.init()
+for port, item in [("i", 1), ("flip", True), ("i", 2), ("i", TICK), ("flip", TICK), ("i", 3), ("flip", False), ("i", 4), ("i", TICK), ("flip", TICK)]:
+    system.receive(port, item)
+system.run()
+print(json.dumps(["Tk" if x is TICK else x for x in system.outputs["o"]]))
+`;
+
+describe('event-based mode automata on python-timesync', () => {
+    it('switch on the message of their trigger port before forwarding it, and back on the tick', async () => {
+        await ensureVenv();
+        const out = mkdtempSync(path.join(tmpdir(), 'maa-modes-event-'));
+        try {
+            const gen = await run(process.execPath, [
+                path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', 'packages/generators-python/test/fixtures/modes/Shifter.arcapp',
+                '--platform', 'timesync', '--out', out
+            ], repoDir);
+            expect(gen.status, gen.stdout + gen.stderr).toBe(0);
+            const build = path.join(out, 'timesync');
+            expect(await lintPython(build)).toEqual([]);
+            writeFileSync(path.join(out, 'driver.py'), DRIVER);
+            const r = await run(venvPython, [path.join(out, 'driver.py'), build], repoDir);
+            expect(r.status, r.stderr).toBe(0);
+            expect(JSON.parse(r.stdout)).toEqual([1, -2, 'Tk', 3, 4, 'Tk']);
         } finally {
             rmSync(out, { recursive: true, force: true });
         }
