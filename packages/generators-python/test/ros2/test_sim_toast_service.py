@@ -30,10 +30,13 @@ try:
 except ImportError as exc:  # pragma: no cover - the setup script installs it
     raise ImportError(f"maa_sim is missing in this venv: run scripts/setup_ros2_venv.sh ({exc})") from exc
 
-#: the toast lies on the plate within this much simulated time (about 15.5 s in practice)
-GOAL_SIM_TIME = 40.0
-#: wall-clock limit of a run: at speed 2 the goal takes ~8 s; 15x margin for a loaded machine
-WALL_TIMEOUT = 240.0
+#: the toast lies on the plate within this much simulated time: about 15.5 s on a quiet machine.
+#: The simulated clock does not wait for the nodes, so on a loaded machine their late reactions
+#: cost simulated time (40 s were not enough with both cores busy); the run ends at the goal, so
+#: the bound costs nothing when the robot is on time.
+GOAL_SIM_TIME = 120.0
+#: wall-clock limit of a run: at speed 1 the goal takes ~16 s; a wide margin for a loaded machine
+WALL_TIMEOUT = 600.0
 
 
 def _app(package: Path, log_dir: Path, **options: object) -> SimApp:
@@ -41,7 +44,8 @@ def _app(package: Path, log_dir: Path, **options: object) -> SimApp:
         RunOptions(
             package=package,
             mode="ros2",
-            speed=2.0,
+            # real time: the nodes, seven processes, keep up with the clock on a loaded 2-core machine
+            speed=1.0,
             rosbridge_port=0,
             viser_port=None,
             startup_timeout=120.0,
