@@ -83,3 +83,16 @@ describe('connectedness with modes', () => {
         expect(found.filter((f) => f.code === 'arc/unconnected-sub-in-port').map((f) => f.text), dump(found)).toEqual(['always']);
     });
 });
+
+describe('partial input', () => {
+    test.each([
+        '  <<sync>> mode automaton {\n    initial mode',
+        '  <<sync>> mode automaton {\n    initial mode A { Pass p; -> p.i; }\n    A -> ;\n  }',
+        '  <<sync>> mode automaton {\n    mode { i -> }\n    -> B [;\n  }',
+        '  mode automaton { initial mode A { port in int; } A -> A Tick / o = ; }'
+    ])('gives diagnostics, never a failed check: %s', async (body) => {
+        const found = await validate(switcher(body));
+        expect(found.filter((f) => f.code === 'internal/check-failed'), dump(found)).toEqual([]);
+        expect(found.length).toBeGreaterThan(0);
+    });
+});

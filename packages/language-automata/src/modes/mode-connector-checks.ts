@@ -31,6 +31,7 @@ export class ModeConnectorChecks {
             for (const t of con.targets) senders.set(key(t), t);
         }
         for (const con of own) {
+            if (!con.source) continue; // partially parsed
             const source = end(c, con.source);
             let sourceOk = true;
             if (source && !(source.sub ? source.info.direction === 'out' : source.info.direction === 'in')) {
