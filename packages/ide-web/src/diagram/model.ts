@@ -10,6 +10,8 @@ export class MaaGraph extends SGraphImpl {
 }
 
 export class ComponentNode extends SNodeImpl {
+    /** The condition of the `varif` the element belongs to (variable architectures). */
+    declare variationPoint?: string;
     declare name?: string;
     declare componentType?: string;
     declare instancePath?: string;
@@ -21,6 +23,8 @@ export class ComponentNode extends SNodeImpl {
 }
 
 export class MaaPort extends SPortImpl {
+    /** The condition of the `varif` the element belongs to (variable architectures). */
+    declare variationPoint?: string;
     declare name?: string;
     declare direction?: 'in' | 'out';
     declare portType?: string;
@@ -30,6 +34,8 @@ export class MaaPort extends SPortImpl {
 }
 
 export class ConnectorEdge extends SEdgeImpl {
+    /** The condition of the `varif` the element belongs to (variable architectures). */
+    declare variationPoint?: string;
     declare sourcePortPath?: string;
     declare severity?: Severity;
     declare trace?: string;

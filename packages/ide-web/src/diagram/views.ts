@@ -156,7 +156,7 @@ export function createViews(state: ViewState): ViewClasses {
             const kind = node.behaviorKind ?? (node.composed ? 'composed' : '');
             const isRoot = !node.instancePath;
             const parts: VNode[] = [
-                svg('title', {}, `${node.name ?? node.id}: ${node.componentType ?? ''}`),
+                svg('title', {}, `${node.name ?? node.id}: ${node.componentType ?? ''}${node.variationPoint ? ` (variation point: varif (${node.variationPoint}))` : ''}`),
                 svg('rect', { class: { 'maa-component-body': true }, x: 0, y: 0, width: w, height: h, rx: 6, ry: 6 }),
             ];
             if (!hasOwnLabels(node)) {
@@ -221,6 +221,7 @@ export function createViews(state: ViewState): ViewClasses {
                         'maa-root': isRoot,
                         'maa-composed': !!node.composed,
                         'maa-expanded': !!node.expanded,
+                        'maa-variable': !!node.variationPoint,
                         [`maa-kind-${kind || 'none'}`]: true,
                         selected: node.selected,
                         mouseover: node.hoverFeedback,
@@ -243,11 +244,11 @@ export function createViews(state: ViewState): ViewClasses {
             const h = port.size.height > 0 ? port.size.height : 8;
             const dir = port.direction === 'out' ? 'out' : 'in';
             const value = state.liveValue(port.portPath);
-            const title = `${port.name ?? port.id}: ${port.portType ?? ''}${dir === 'in' ? ' (in)' : ' (out)'}${value !== undefined ? ` = ${value}` : ''}`;
+            const title = `${port.name ?? port.id}: ${port.portType ?? ''}${dir === 'in' ? ' (in)' : ' (out)'}${value !== undefined ? ` = ${value}` : ''}${port.variationPoint ? ` (variation point: varif (${port.variationPoint}))` : ''}`;
             const vnode = svg(
                 'g',
                 {
-                    class: { 'maa-port': true, [`maa-port-${dir}`]: true, 'maa-port-live': value !== undefined, selected: port.selected, mouseover: port.hoverFeedback },
+                    class: { 'maa-port': true, [`maa-port-${dir}`]: true, 'maa-port-live': value !== undefined, 'maa-variable': !!port.variationPoint, selected: port.selected, mouseover: port.hoverFeedback },
                     'data-port-path': port.portPath ?? '',
                 },
                 svg('title', {}, title),

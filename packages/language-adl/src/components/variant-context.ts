@@ -132,3 +132,23 @@ export function setVariant(env: VariantEnv | undefined): VariantEnv | undefined 
     current = env;
     return saved;
 }
+
+/**
+ * The condition under which an element of a variation point is part of a configuration, as
+ * text (`fast`, `!(fast) && safe`), or undefined outside variation points (the diagram shows it).
+ */
+export function variationCondition(node: AstNode | undefined): string | undefined {
+    const parts: string[] = [];
+    let child: AstNode | undefined = node;
+    for (let n: AstNode | undefined = node?.$container; n; child = n, n = n.$container) {
+        if (n.$type !== 'VarIf' || !child || child.$type !== 'VarBody') continue;
+        const v = n as VarIf;
+        const text = v.condition?.$cstNode?.text ?? '?';
+        parts.unshift(v.then === child ? text : `!(${text})`);
+        // An `else varif`: the earlier conditions of its chain are false too.
+        for (let up: AstNode | undefined = v.$container; up?.$type === 'VarIf' && (up as VarIf).elseIf === n; n = up, up = up.$container) {
+            parts.unshift(`!(${(up as VarIf).condition?.$cstNode?.text ?? '?'})`);
+        }
+    }
+    return parts.length > 0 ? parts.join(' && ') : undefined;
+}

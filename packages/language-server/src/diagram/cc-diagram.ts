@@ -1,6 +1,6 @@
 import type { AstNode } from 'langium';
 import {
-    allPorts, ast, behaviorsOf, isComposed, printType, stereotypeNames, subcomponentType, subcomponentsOf, type PortInfo
+    allPorts, ast, behaviorsOf, isComposed, printType, stereotypeNames, subcomponentType, subcomponentsOf, variationCondition, type PortInfo
 } from '@maa/language-adl';
 import { behaviorLanguageOf, componentQualifiedName, modeAutomatonView, modeSubcomponentsOf } from '@maa/generator-core';
 import type { SModelElement } from 'sprotty-protocol';
@@ -46,6 +46,8 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
         };
         const severity = ctx.severity(decl, type);
         if (severity) node.severity = severity;
+        const condition = variationCondition(decl);
+        if (condition) node.variationPoint = condition;
         ctx.trace(node, decl ?? type);
         node.children!.push(
             label(TYPES.nameLabel, labelId(id, 'name'), name, decl ?? type),
@@ -102,6 +104,8 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
         };
         const severity = ctx.severity(p.port);
         if (severity) node.severity = severity;
+        const condition = variationCondition(p.port);
+        if (condition) node.variationPoint = condition;
         ctx.trace(node, p.port);
         return node;
     }
@@ -125,6 +129,8 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
                     sourcePortPath,
                     ...(mode ? { mode } : {})
                 };
+                const condition = variationCondition(e.node);
+                if (condition) edge.variationPoint = condition;
                 ctx.trace(edge, e.node);
                 edges.push(edge);
             }

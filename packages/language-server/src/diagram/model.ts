@@ -49,6 +49,8 @@ export interface MaaGraph extends SGraph {
 }
 
 export interface ComponentNode extends SNode, Traced {
+    /** The condition of the variation point (`varif`) the element belongs to, if any (MontiArc's variable architectures). */
+    variationPoint?: string;
     type: typeof TYPES.component;
     name: string;
     /** Qualified name of the component type. */
@@ -65,6 +67,8 @@ export interface ComponentNode extends SNode, Traced {
 }
 
 export interface PortNode extends SPort, Traced {
+    /** The condition of the variation point (`varif`) the element belongs to, if any (MontiArc's variable architectures). */
+    variationPoint?: string;
     type: typeof TYPES.port;
     name: string;
     direction: 'in' | 'out';
@@ -75,6 +79,8 @@ export interface PortNode extends SPort, Traced {
 }
 
 export interface ConnectorEdge extends SEdge, Traced {
+    /** The condition of the variation point (`varif`) the element belongs to, if any (MontiArc's variable architectures). */
+    variationPoint?: string;
     type: typeof TYPES.connector;
     /** The out port of an atomic instance whose values flow through this connector (`""` if none). */
     sourcePortPath: string;
