@@ -8,7 +8,7 @@ import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
  * `char` and `Character` kept apart from numbers end to end on python-timesync: Character ports
  * receive and send characters (`'a'` in the stream file, `{"char": "a"}` in the runtime's JSON),
  * `c + 1` is an int, `(char) (c + 1)` a character again, a char in a string is the character
- * (not its code), comparisons and switch over chars. The component is generated and RUN
+ * (not its code), also with `+=`, comparisons and switch over chars. The component is generated and RUN
  * (`maa-gen test`); the expected values are Java's.
  */
 const MODEL = `package p;
@@ -16,7 +16,7 @@ const MODEL = `package p;
 component Chars {
   port <<sync>> in Character c;
   port <<sync>> out Character next, <<sync>> out char upper, <<sync>> out int code,
-       <<sync>> out String text, <<sync>> out int kind;
+       <<sync>> out String text, <<sync>> out String text2, <<sync>> out int kind;
 
   compute {
     next = (char) (c + 1);
@@ -27,6 +27,11 @@ component Chars {
     }
     code = c + 1;
     text = "<" + c + ">" + (char) 33;
+    String t = "<" + c;
+    t += '>';
+    t += (char) 33;
+    t += 1;
+    text2 = t;
     switch (c) {
       case 'a', 'e', 'i', 'o', 'u':
         kind = 1;
@@ -61,6 +66,7 @@ test "characters in, characters and numbers out" {
   upper ~= 'A' 'Y' 'Z' '0';
   code  ~= 98 122 91 49;
   text  ~= "<a>!" "<y>!" "<Z>!" "<0>!";
+  text2 ~= "<a>!1" "<y>!1" "<Z>!1" "<0>!1";
   kind  ~= 1 0 2 0;
 }
 `;
@@ -100,9 +106,9 @@ describe('char and Character in generated Python', () => {
         expect(c.status, c.stdout + c.stderr).toBe(0);
         const node = files(out).find((f) => f.endsWith(path.join('nodes', 'chars.py')));
         const text = node ? readFileSync(node, 'utf8') : '';
-        // in port c (Character), out ports next (Character) and upper (char); text is a String
+        // in port c (Character), out ports next (Character) and upper (char); text and text2 are Strings
         expect(text.match(/char_port\(String\)/g), text).toHaveLength(3);
-        expect(text.match(/std_port\(String, str\)/g), text).toHaveLength(1);
+        expect(text.match(/std_port\(String, str\)/g), text).toHaveLength(2);
     }, 240_000);
 });
 

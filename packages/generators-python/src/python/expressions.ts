@@ -230,7 +230,9 @@ export class PythonTranslator {
             if (e.op !== '=') {
                 const op = (e.op as string).slice(0, -1);
                 const cur = this.expr(left);
-                value = op === '/' ? `jdiv(${cur}, ${value})` : op === '%' ? `jmod(${cur}, ${value})` : op === '>>>' ? `jushr(${cur}, ${value})` : `(${cur} ${op} ${value})`;
+                // `s += x` on a String is Java's concatenation (a char joins as the character)
+                if (op === '+' && declaredType(left) === 'String') value = `jconcat(${cur}, ${isChar(e.right as Node) ? `chr(${value})` : value})`;
+                else value = op === '/' ? `jdiv(${cur}, ${value})` : op === '%' ? `jmod(${cur}, ${value})` : op === '>>>' ? `jushr(${cur}, ${value})` : `(${cur} ${op} ${value})`;
             }
             return [this.assign(left, value)];
         }
