@@ -96,3 +96,15 @@ describe('partial input', () => {
         expect(found.length).toBeGreaterThan(0);
     });
 });
+
+describe('subcomponent names', () => {
+    test('are unique across the component and all its modes (arc/duplicate-name)', async () => {
+        const found = await validate(switcher('  Pass p;\n  i -> p.i;\n  <<sync>> mode automaton {\n    initial mode Up { Pass q; p.o -> q.i; q.o -> o; }\n    mode Down { Pass p; Neg q; p.o -> q.i; q.o -> o; }\n  }'));
+        expect(found.filter((f) => f.code === 'arc/duplicate-name').map((f) => f.text).sort(), dump(found)).toEqual(['p', 'q']);
+    });
+
+    test('distinct names in different modes are fine', async () => {
+        const found = await validate(switcher(TWO_MODES));
+        expect(found.filter((f) => f.code === 'arc/duplicate-name'), dump(found)).toEqual([]);
+    });
+});

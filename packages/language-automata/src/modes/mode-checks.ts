@@ -1,9 +1,9 @@
 import type { ValidationAcceptor, ValidationChecks } from 'langium';
-import { ExpressionChecks, isErroneous, printType, type AdlServices, type TypeRelations } from '@maa/language-adl';
+import { Codes, ExpressionChecks, isErroneous, printType, subcomponentsOf, type AdlServices, type ast as adl, type TypeRelations } from '@maa/language-adl';
 import type { AutomataAstType, Automaton, ComponentType, Mode, ModeAutomaton, ModeTransition, State } from '../generated/ast.js';
 import { isMode, isState } from '../generated/ast.js';
 import { AutomatonCodes } from '../codes.js';
-import { initialModes, isDecomposedWithModes, modeAutomataOf, modeAutomatonTiming, modesOf, enclosingModeAutomaton } from './mode-model.js';
+import { initialModes, isDecomposedWithModes, modeAutomataOf, modeAutomatonTiming, modesOf, modeSubcomponents, enclosingModeAutomaton } from './mode-model.js';
 import { ModeCodes } from './mode-codes.js';
 import { ModeConnectorChecks } from './mode-connector-checks.js';
 
@@ -50,6 +50,17 @@ export class ModeChecks {
         for (const extra of automata.slice(1)) {
             accept('error', `Component '${c.name}' declares more than one mode automaton: at most one is allowed; put all modes into one.`,
                 { node: extra, keyword: 'mode', code: ModeCodes.MultipleModeAutomata });
+        }
+        // All subcomponents exist at once (modes switch their connectors): one namespace.
+        const seen = new Set(subcomponentsOf(c as adl.ComponentType).map((x) => x.name));
+        for (const m of automata.flatMap(modesOf)) {
+            for (const sub of modeSubcomponents(m)) {
+                if (!sub.name) continue;
+                if (seen.has(sub.name)) {
+                    accept('error', `Component '${c.name}' declares the subcomponent name '${sub.name}' more than once (in mode '${m.name}' here): the subcomponents of the component and of all its modes exist at the same time, so their names are unique.`,
+                        { node: sub, property: 'name', code: Codes.DuplicateName });
+                } else seen.add(sub.name);
+            }
         }
     }
 
