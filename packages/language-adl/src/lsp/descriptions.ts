@@ -34,6 +34,7 @@ export function signature(node: AstNode): string | undefined {
             const decl = f.$container;
             return `${isFieldDeclaration(decl) ? sourceText(decl.type) : '?'} ${f.name}${f.init ? ` = ${sourceText(f.init)}` : ''}`;
         }
+        case 'Feature': return `feature ${(node as unknown as { name: string }).name}`;
         case 'Parameter': {
             const p = node as Parameter;
             return `${sourceText(p.type)} ${p.name}${p.default ? ` = ${sourceText(p.default)}` : ''}`;
@@ -86,6 +87,7 @@ export function detail(node: AstNode): string | undefined {
             return isFieldDeclaration(decl) ? sourceText(decl.type) : undefined;
         }
         case 'Parameter': return sourceText((node as Parameter).type);
+        case 'Feature': return 'boolean';
         case 'LocalVariable': {
             const decl = node.$container;
             return isLocalVariableDeclaration(decl) ? sourceText(decl.type) : undefined;
@@ -173,6 +175,9 @@ export function describe(node: AstNode, languageOf: LanguageOf): string | undefi
         }
         case 'Field':
             parts.push(`Field of component \`${enclosingComponent(node)?.name ?? '?'}\`.`);
+            break;
+        case 'Feature':
+            parts.push(`Feature of component \`${enclosingComponent(node)?.name ?? '?'}\`: selects variation points (\`varif\`); its value is fixed per configuration (\`constraint\`, the application's binding).`);
             break;
         case 'Parameter':
             parts.push(`Configuration parameter of component \`${enclosingComponent(node)?.name ?? '?'}\`${(node as Parameter).default ? ' (optional)' : ''}.`);

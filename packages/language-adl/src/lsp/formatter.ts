@@ -341,6 +341,27 @@ function registerHostRules(f: AdlFormatter): void {
         fm.semicolons(n);
     });
     r.set('Field', (n, fm) => fm.keywordSpacing(n, { around: ['='] }));
+    // Variable architectures: `feature a, b;`, `constraint(e);`, `varif (e) { ... } else { ... }`.
+    r.set('FeatureDeclaration', (n, fm) => {
+        const features = nodes(n, 'features');
+        if (features[0]) fm.on(n).node(features[0]).prepend(Formatting.oneSpace());
+        fm.list(n, features);
+        fm.semicolons(n);
+    });
+    r.set('ConstraintDeclaration', (n, fm) => {
+        const on = fm.on(n);
+        on.keyword('(').prepend(Formatting.noSpace()).append(Formatting.noSpace());
+        on.keyword(')').prepend(Formatting.noSpace());
+        fm.semicolons(n);
+    });
+    r.set('VarIf', (n, fm) => {
+        const on = fm.on(n);
+        on.keyword('varif').append(Formatting.oneSpace());
+        on.keyword('(').append(Formatting.noSpace());
+        on.keyword(')').prepend(Formatting.noSpace()).append(Formatting.oneSpace());
+        on.keywords('else').surround(Formatting.oneSpace());
+    });
+    r.set('VarBody', (n, fm) => fm.elementBlock(n));
     r.set('ComponentInstantiation', (n, fm) => {
         const instances = nodes(n, 'instances');
         if (instances[0]) fm.on(n).node(instances[0]).prepend(Formatting.oneSpace());

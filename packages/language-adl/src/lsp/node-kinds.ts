@@ -17,6 +17,7 @@ export class AdlNodeKindProvider implements NodeKindProvider {
         // Ports are the interface of a component.
         ['Port', { symbol: SymbolKind.Interface, completion: CompletionItemKind.Interface }],
         ['Field', { symbol: SymbolKind.Field, completion: CompletionItemKind.Field }],
+        ['Feature', { symbol: SymbolKind.Boolean, completion: CompletionItemKind.Value }],
         ['Parameter', { symbol: SymbolKind.Constant, completion: CompletionItemKind.Constant }],
         ['Subcomponent', { symbol: SymbolKind.Object, completion: CompletionItemKind.Module }],
         ['TypeParameter', { symbol: SymbolKind.TypeParameter, completion: CompletionItemKind.TypeParameter }],

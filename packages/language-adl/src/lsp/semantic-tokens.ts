@@ -49,6 +49,7 @@ export class AdlSemanticTokenProvider extends AbstractSemanticTokenProvider {
         ['ComponentType', { type: SemanticTokenTypes.class }],
         ['Port', (n) => ({ type: SemanticTokenTypes.property, modifiers: portHeader(n as Port).direction === 'in' ? [SemanticTokenModifiers.readonly] : [] })],
         ['Field', { type: SemanticTokenTypes.variable }],
+        ['Feature', { type: SemanticTokenTypes.variable, modifiers: [SemanticTokenModifiers.readonly] }],
         ['Parameter', { type: SemanticTokenTypes.parameter }],
         ['Subcomponent', { type: SemanticTokenTypes.variable, modifiers: [SemanticTokenModifiers.readonly] }],
         ['LocalVariable', { type: SemanticTokenTypes.variable }],
