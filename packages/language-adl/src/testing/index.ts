@@ -2,3 +2,4 @@
 export * from './model-validation.js';
 export * from './catalog-tests.js';
 export * from './fuzz-corpus.js';
+export * from './montiarc-cocos.js';
