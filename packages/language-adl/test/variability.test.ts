@@ -151,3 +151,24 @@ describe('variability: structural checks hold in every configuration', () => {
         expect(codes(await validate({ 'Foo.arc': 'component Foo {\n  feature f;\n  varif (f) {\n    compute { }\n  }\n  compute { }\n}' }))).toContain('arc/multiple-behaviors');
     });
 });
+
+describe('variability: feature bindings on instantiation', () => {
+    const D = { 'a/D.arc': 'package a;\ncomponent D {\n  feature ff;\n  varif (ff) {\n    port in int io;\n  } else {\n    port out int io;\n  }\n}' };
+
+    test('sub(ff = true) fixes the feature: no unconstrained feature, the interface of that configuration', async () => {
+        const ok = await validate({ ...D, 'Foo.arc': 'component Foo {\n  port in int i;\n  a.D sub(ff = true);\n  i -> sub.io;\n}' });
+        expect(codes(ok).filter((c) => c.startsWith('arc/') && c !== 'arc/naming-convention' || c.startsWith('variability/') || c.startsWith('link/')), JSON.stringify(ok)).toEqual([]);
+        const bad = await validate({ ...D, 'Foo.arc': 'component Foo {\n  port in int i;\n  a.D sub(ff = false);\n  i -> sub.io;\n}' });
+        expect(codes(bad)).toContain('arc/target-direction-mismatch');
+    });
+
+    test('a binding needs a boolean, and an unknown key is still refused', async () => {
+        expect(codes(await validate({ ...D, 'Foo.arc': 'component Foo {\n  a.D sub(ff = 1);\n}' }))).toContain('arc/argument-type-mismatch');
+        expect(codes(await validate({ ...D, 'Foo.arc': 'component Foo {\n  a.D sub(gg = true);\n}' }))).toContain('arc/unknown-argument-key');
+    });
+
+    test('a binding may follow the enclosing component\'s own feature', async () => {
+        const found = await validate({ ...D, 'Foo.arc': 'component Foo {\n  feature f;\n  a.D sub(ff = f);\n}' });
+        expect(codes(found)).not.toContain('variability/subcomponent-features-unconstrained');
+    });
+});

@@ -240,6 +240,7 @@ function bindingsOf(sub: Subcomponent, decl: ComponentType, outer: Instance): Ma
             if (key) result.set(key, { expr: arg.right, outer });
             continue;
         }
+        if (arg.$type === 'AssignmentExpression') continue; // another key form: not a parameter value
         const p = decl.params[positional++];
         if (p) result.set(p.name, { expr: arg, outer });
     }
@@ -281,6 +282,15 @@ export function configurationSpace(c: ComponentType): ConfigurationSpace {
             const decl = subcomponentType(s).decl;
             if (!decl || active.has(decl)) continue;
             const child: Instance = { decl, prefix: `${inst.prefix}${s.name}.`, path: [...inst.path, s], bindings: bindingsOf(s, decl, inst) };
+            // Feature bindings of the instantiation (`sub(f = true)`) fix the subcomponent's features.
+            for (const arg of s.args) {
+                if (arg.$type !== 'AssignmentExpression' || arg.op !== '=' || arg.left.$type !== 'NameExpression') continue;
+                const target = arg.left.ref?.ref;
+                if (target?.$type !== 'Feature') continue;
+                const feature = compiler.variable(child.prefix + target.name, 'feature', child.path);
+                const value = compiler.compile(arg.right, inst);
+                constraints.push((a) => feature(a) === value(a));
+            }
             visit(child, depth + 1, new Set([...active, decl]));
         }
     };

@@ -97,7 +97,8 @@ export class AdlScopeProvider implements ScopeProvider {
     private expressionScope(expr: NameExpression): Scope {
         const keyTarget = this.argumentKeyTarget(expr);
         if (keyTarget !== null) {
-            return this.nodes(() => keyTarget?.params ?? []);
+            // A key names a parameter or (MontiArc's feature binding, `sub(f = true)`) a feature.
+            return this.nodes(() => (keyTarget ? [...keyTarget.params, ...allFeatures(keyTarget)] : []));
         }
         const find = (name: string): AstNodeDescription | undefined => {
             const local = this.localName(expr, name);

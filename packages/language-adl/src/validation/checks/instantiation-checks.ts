@@ -7,7 +7,7 @@ import type { AdlServices } from '../../adl-module.js';
 import { allPorts, ownPorts, parentsOf, substitutionFor } from '../../components/component-model.js';
 import type { TypeRelations } from '../../types/type-relations.js';
 import { bind, typeOfMCType } from '../../types/type-resolver.js';
-import { isErroneous, printType, substitute, type Substitution } from '../../types/sym-type.js';
+import { BOOLEAN, isErroneous, printType, substitute, type Substitution } from '../../types/sym-type.js';
 import { Codes } from '../codes.js';
 import { ExpressionChecks } from './expression-checks.js';
 
@@ -48,6 +48,7 @@ export class InstantiationChecks {
         const what = isParentComponent(owner) ? `parent '${decl.name}'` : `subcomponent '${owner.name}'`;
         const bound = new Map<Parameter, Expression>();
         let sawKey = false;
+        const boundFeatures = new Set<unknown>();
         args.forEach((arg, index) => {
             const key = keyOf(arg);
             const value = key ? (arg as { right?: Expression }).right : arg;
@@ -57,7 +58,15 @@ export class InstantiationChecks {
             let param: Parameter | undefined;
             if (key) {
                 sawKey = true;
-                param = key.ref?.ref as Parameter | undefined;
+                const target = key.ref?.ref;
+                if (target?.$type === 'Feature') {
+                    // A feature binding (`sub(f = true)`): a boolean, once per feature.
+                    this.expressions.expectType(value, BOOLEAN, accept, Codes.ArgumentTypeMismatch, `The binding of feature '${key.ref?.$refText ?? ''}'`);
+                    if (boundFeatures.has(target)) accept('error', `Feature '${key.ref?.$refText ?? ''}' of ${decl.name} gets more than one value.`, { node: arg, code: Codes.ArgumentMultipleValues });
+                    boundFeatures.add(target);
+                    return;
+                }
+                param = target as Parameter | undefined;
                 if (!param) return; // unknown key, reported by linking as arc/unknown-argument-key
             } else {
                 if (sawKey) {
@@ -83,8 +92,9 @@ export class InstantiationChecks {
                 accept('error', `Argument for parameter '${param.name}' of ${decl.name} must be of type ${printType(expected)}, but is of type ${printType(actual)}.`, { node: value, code: Codes.ArgumentTypeMismatch });
             }
         });
-        if (args.length > decl.params.length) {
-            accept('error', `${cap(what)} gets ${args.length} argument(s), but ${decl.name} has ${decl.params.length} parameter(s).`, { node: args[decl.params.length]!, code: Codes.TooManyArguments });
+        const valueArgs = args.filter((a) => keyOf(a)?.ref?.ref?.$type !== 'Feature');
+        if (valueArgs.length > decl.params.length) {
+            accept('error', `${cap(what)} gets ${valueArgs.length} argument(s), but ${decl.name} has ${decl.params.length} parameter(s).`, { node: valueArgs[decl.params.length]!, code: Codes.TooManyArguments });
         }
         const missing = decl.params.filter((p) => !p.default && !bound.has(p));
         if (missing.length > 0) {
