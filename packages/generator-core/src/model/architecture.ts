@@ -4,7 +4,7 @@ import {
     typeOfMCType, printType, type ImpliedEnd, type SymType, type Timing
 } from '@maa/language-adl';
 
-import { currentVariant } from '@maa/language-adl';
+import { currentVariant, isFeatureBinding } from '@maa/language-adl';
 import { isModeAutomatonBlock, modeAutomatonView, modeSubcomponentsOf, type ModeAutomatonView } from './modes.js';
 
 type ComponentType = ast.ComponentType;
@@ -228,7 +228,7 @@ export function buildArchitecture(root: ComponentType): ArchitectureModel {
         instances.push({ path, component: view, node, args });
         for (const sub of allSubcomponents(c)) {
             const decl = subcomponentType(sub).decl;
-            if (decl) walk(decl, [...path, sub.name], sub, sub.args, depth + 1);
+            if (decl) walk(decl, [...path, sub.name], sub, sub.args.filter((a) => !isFeatureBinding(a)), depth + 1);
         }
     };
     walk(root, [], undefined, [], 0);
@@ -281,7 +281,8 @@ function componentView(c: ComponentType): ComponentView {
             : [])),
         subcomponents: allSubcomponents(c).map((s) => {
             const decl = subcomponentType(s).decl;
-            return { name: s.name, type: decl ? componentQualifiedName(decl) : '', args: s.args, node: s };
+            // Feature bindings (`sub(f = true)`) select the configuration; they are no arguments.
+            return { name: s.name, type: decl ? componentQualifiedName(decl) : '', args: s.args.filter((a) => !isFeatureBinding(a)), node: s };
         }),
         connectors: [
             ...elements.flatMap((e) => (e.$type === 'Connector'

@@ -48,3 +48,10 @@ export function subcomponentFeature(receiver: AstNode | undefined, member: strin
     const decl = subcomponentType(target as Subcomponent).decl;
     return decl ? allFeatures(decl).find((f) => f.name === member) : undefined;
 }
+
+/** Whether an instantiation argument binds a feature (`sub(f = true)`) rather than a parameter. */
+export function isFeatureBinding(arg: AstNode): boolean {
+    if (arg.$type !== 'AssignmentExpression') return false;
+    const left = (arg as { left?: AstNode }).left;
+    return left?.$type === 'NameExpression' && (left as { ref?: { ref?: AstNode } }).ref?.ref?.$type === 'Feature';
+}
