@@ -22,7 +22,7 @@ export function applicationVariant(app: Application): { env?: VariantEnv; findin
             });
         }
     }
-    if (findings.length > 0 || (app.features.length === 0 && !isVariable(root))) return { findings };
+    if (findings.length > 0 || (app.features.length === 0 && !isVariable(root, new Map()))) return { findings };
     const space = configurationSpace(root);
     if (space.tooLarge) {
         findings.push({ code: AppCodes.FeatureConfigurationExcluded, severity: 'error', node: app, property: 'component', message: `The configurations of component '${root.name}' are too many to enumerate (variability/too-many-features); it cannot be generated.` });

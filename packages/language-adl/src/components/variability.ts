@@ -247,17 +247,30 @@ function bindingsOf(sub: Subcomponent, decl: ComponentType, outer: Instance): Ma
     return result;
 }
 
-/** Whether a component type has anything variable: features, constraints, variation points, or subcomponents that do. */
-export function isVariable(c: ComponentType, seen = new Set<ComponentType>()): boolean {
-    if (seen.has(c)) return false;
-    seen.add(c);
-    if (allFeatures(c).length > 0) return true;
-    const d = declarationsOf(c);
-    if (d.constraints.length > 0 || d.points.length > 0) return true;
-    return allSubcomponents(c).some((s) => {
-        const decl = subcomponentType(s).decl;
-        return decl !== undefined && isVariable(decl, seen);
-    });
+/**
+ * Whether a component type has anything variable: features, constraints, variation points, or
+ * subcomponents that do. `memo` (e.g. a workspace cache) answers for types asked before, so
+ * asking every type of a large model walks each type once.
+ */
+export function isVariable(c: ComponentType, memo?: Map<ComponentType, boolean> | { get(c: ComponentType): boolean | undefined; set(c: ComponentType, v: boolean): void }, active = new Set<ComponentType>()): boolean {
+    const known = memo?.get(c);
+    if (known !== undefined) return known;
+    if (active.has(c)) return false; // a cycle (reported elsewhere)
+    active.add(c);
+    let result = allFeatures(c).length > 0;
+    if (!result) {
+        const d = declarationsOf(c);
+        result = d.constraints.length > 0 || d.points.length > 0;
+    }
+    if (!result) {
+        result = allSubcomponents(c).some((s) => {
+            const decl = subcomponentType(s).decl;
+            return decl !== undefined && isVariable(decl, memo, active);
+        });
+    }
+    active.delete(c);
+    memo?.set(c, result);
+    return result;
 }
 
 /** Variation points and constraints of the instance tree of `c` (for diagnostics on a component's own ones). */

@@ -20,17 +20,20 @@ type ComponentCheck = ValidationCheck<ComponentType>;
  */
 export class VariabilityChecks {
     private readonly spaces: WorkspaceCache<ComponentType, ConfigurationSpace | undefined>;
+    private readonly variable: WorkspaceCache<ComponentType, boolean>;
 
     private readonly expressions: ExpressionChecks;
 
     constructor(services: AdlServices) {
         this.spaces = new WorkspaceCache(services.shared);
+        this.variable = new WorkspaceCache(services.shared);
         this.expressions = new ExpressionChecks(services);
     }
 
     /** The configurations of a variable component (undefined for a component without variability). */
     space(c: ComponentType): ConfigurationSpace | undefined {
-        return this.spaces.get(c, () => (isVariable(c) ? configurationSpace(c) : undefined));
+        const memo = { get: (x: ComponentType) => (this.variable.has(x) ? this.variable.get(x) : undefined), set: (x: ComponentType, v: boolean) => this.variable.set(x, v) };
+        return this.spaces.get(c, () => (isVariable(c, memo) ? configurationSpace(c) : undefined));
     }
 
     readonly checks: ValidationChecks<AdlAstType> = {
