@@ -1,7 +1,7 @@
-import { readdir, readFile } from 'node:fs/promises';
-import path from 'node:path';
+import { readFile } from 'node:fs/promises';
 import type { appAst } from '@maa/generator-core';
 import { HttpError } from './http-util.js';
+import { walkTree } from './walk.js';
 import { isSkippedName, type Workspace } from './workspace.js';
 
 export interface AppPlatformInfo {
@@ -77,21 +77,9 @@ export async function readApp(workspace: Workspace, rel: string): Promise<AppInf
 /** Every application configuration of the workspace, sorted by path. */
 export async function listApps(workspace: Workspace): Promise<AppInfo[]> {
   const files: string[] = [];
-  const walk = async (dir: string, rel: string): Promise<void> => {
-    let entries;
-    try {
-      entries = await readdir(dir, { withFileTypes: true });
-    } catch {
-      return;
-    }
-    for (const e of entries) {
-      if (isSkippedName(e.name)) continue;
-      const childRel = rel ? `${rel}/${e.name}` : e.name;
-      if (e.isDirectory()) await walk(path.join(dir, e.name), childRel);
-      else if (e.isFile() && e.name.endsWith('.arcapp')) files.push(childRel);
-    }
-  };
-  await walk(workspace.root, '');
+  for await (const { dirent, rel } of walkTree(workspace.root, ({ dirent }) => !isSkippedName(dirent.name))) {
+    if (dirent.isFile() && dirent.name.endsWith('.arcapp') && !isSkippedName(dirent.name)) files.push(rel);
+  }
   files.sort();
   const apps: AppInfo[] = [];
   for (const f of files) {

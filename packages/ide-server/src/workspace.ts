@@ -4,6 +4,7 @@ import { chmod, lstat, mkdir, readdir, readFile, realpath, rename, rm, stat, wri
 import path from 'node:path';
 import { ConfinedRoot } from './confinement.js';
 import { HttpError } from './http-util.js';
+import { walkTree } from './walk.js';
 
 export interface WorkspaceEntry {
   path: string;
@@ -140,24 +141,13 @@ export class Workspace {
    */
   async removeOrphanTemps(): Promise<string[]> {
     const removed: string[] = [];
-    const walk = async (dir: string, rel: string): Promise<void> => {
-      let entries;
-      try {
-        entries = await readdir(dir, { withFileTypes: true });
-      } catch {
-        return;
+    for await (const { dirent, abs, rel } of walkTree(this.root, ({ dirent }) => dirent.name !== 'node_modules')) {
+      const pid = dirent.isFile() ? TEMP_FILE.exec(dirent.name)?.[1] : undefined;
+      if (pid !== undefined && !processAlive(Number(pid))) {
+        await rm(abs, { force: true });
+        removed.push(rel);
       }
-      for (const e of entries) {
-        const childRel = rel ? `${rel}/${e.name}` : e.name;
-        if (e.isDirectory() && e.name !== 'node_modules') await walk(path.join(dir, e.name), childRel);
-        const pid = e.isFile() ? TEMP_FILE.exec(e.name)?.[1] : undefined;
-        if (pid !== undefined && !processAlive(Number(pid))) {
-          await rm(path.join(dir, e.name), { force: true });
-          removed.push(childRel);
-        }
-      }
-    };
-    await walk(this.root, '');
+    }
     return removed;
   }
 }

@@ -7,6 +7,7 @@ import { platformKind } from '../src/apps.js';
 import { checkRelativePath } from '../src/confinement.js';
 import { PathRedactor, scrubAbsolutePaths } from '../src/redact.js';
 import { findPackageDir, parseReadyLine } from '../src/sim-session.js';
+import { walkTree } from '../src/walk.js';
 
 describe('small parts', () => {
   it('derives a platform kind from its generator names', () => {
@@ -68,5 +69,26 @@ describe('small parts', () => {
     });
     expect(scrubAbsolutePaths('unknown route: GET /api/generated/file')).toBe('unknown route: GET /api/generated/file');
     expect(scrubAbsolutePaths('rosbridge at ws://127.0.0.1:9090/a/b/c/d')).toBe('rosbridge at ws://127.0.0.1:9090/a/b/c/d');
+  });
+});
+
+describe('walkTree', () => {
+  it('yields every entry depth first, enters only the folders it is allowed to, and passes over unreadable ones', async () => {
+    const root = mkdtempSync(path.join(tmpdir(), 'maa-walk-'));
+    try {
+      mkdirSync(path.join(root, 'a', 'b'), { recursive: true });
+      mkdirSync(path.join(root, 'node_modules', 'x'), { recursive: true });
+      writeFileSync(path.join(root, 'a', 'b', 'f.txt'), '');
+      writeFileSync(path.join(root, 'node_modules', 'x', 'g.txt'), '');
+      writeFileSync(path.join(root, 'top.txt'), '');
+      const seen: string[] = [];
+      for await (const { rel } of walkTree(root, ({ dirent }) => dirent.name !== 'node_modules')) seen.push(rel);
+      expect(seen.sort()).toEqual(['a', 'a/b', 'a/b/f.txt', 'node_modules', 'top.txt']);
+      const none: string[] = [];
+      for await (const { rel } of walkTree(path.join(root, 'missing'))) none.push(rel);
+      expect(none).toEqual([]);
+    } finally {
+      rmSync(root, { recursive: true, force: true });
+    }
   });
 });
