@@ -20,7 +20,7 @@ from collections import deque
 from collections.abc import Mapping
 from typing import ClassVar
 
-from maa_timesync.runtime import TICK, ComposedComponent, Connector, Instance, Target, _Forward
+from maa_timesync.runtime import TICK, ComposedComponent, Connector, Instance, Target, _Forward, drain_slice
 
 
 class ModeComponent(ComposedComponent):
@@ -128,16 +128,7 @@ class ModeInstance(Instance):
 
     # -- steps ---------------------------------------------------------------------------
     def _sync_slice(self) -> None:
-        inputs: dict[str, object] = {}
-        for port, buf in self.buffers.items():
-            last: object = None
-            while True:
-                item = buf.popleft()
-                if item is TICK:
-                    break
-                last = item
-            if port:
-                inputs[port] = last
+        inputs = drain_slice(self.buffers)
         self._switch(None, inputs)
         for port in self.ctype.IN_PORTS:
             value = inputs.get(port)

@@ -159,16 +159,7 @@ class Instance:
                     self.queue.append(port)
 
     def _sync_slice(self) -> None:
-        inputs: dict[str, object] = {}
-        for port, buf in self.buffers.items():
-            last: object = None
-            while True:
-                item = buf.popleft()
-                if item is TICK:
-                    break
-                last = item
-            if port:
-                inputs[port] = last
+        inputs = drain_slice(self.buffers)
         assert self.behavior is not None
         self.behavior.step(inputs)
         for port in self.ctype.OUT_PORTS:
@@ -295,6 +286,22 @@ class _Forward:
 
     def deliver(self, _port: str, item: object) -> None:
         self.inst.send(self.port, item)
+
+
+def drain_slice(buffers: Mapping[str, deque[object]]) -> dict[str, object]:
+    """Takes one slice off every in-port buffer (up to and including its tick): the last message of
+    each port, None where the slice held none. The '' buffer is the tick-only trigger, not a port."""
+    inputs: dict[str, object] = {}
+    for port, buf in buffers.items():
+        last: object = None
+        while True:
+            item = buf.popleft()
+            if item is TICK:
+                break
+            last = item
+        if port:
+            inputs[port] = last
+    return inputs
 
 
 def make_system(ctype: type[ComponentType], params: Mapping[str, object] | None = None) -> System:
