@@ -48,6 +48,9 @@ import {
     type ViewportResult,
 } from 'sprotty-protocol';
 import type { DiagramHost, DiagramTarget, DiagramView, Disposable, TextPosition } from '../contracts.js';
+import {
+    ALL_VARIATION_POINTS, chooseFeature, configurationStatus, featureChecked, featuresOption, graphFeatureInfo, showAll, type FeatureSelection
+} from './configuration.js';
 import { ComponentNode, ConnectorEdge, MaaGraph, MaaPort, StateNode, TransitionEdge } from './model.js';
 import {
     absoluteBounds,
@@ -200,7 +203,12 @@ export function mountDiagram(container: HTMLElement, host: DiagramHost): MaaDiag
     empty.className = 'maa-diagram-empty';
     empty.textContent = 'No diagram yet: open a model file.';
     canvas.appendChild(empty);
-    container.replaceChildren(toolbar, canvas);
+    // The feature control of a variable component (configuration.ts), hidden for all others.
+    const featureBar = document.createElement('div');
+    featureBar.className = 'maa-diagram-features';
+    featureBar.dataset['testid'] = 'diagram-features';
+    featureBar.hidden = true;
+    container.replaceChildren(toolbar, featureBar, canvas);
 
     // --- state -------------------------------------------------------------------------------
     let liveValues: ReadonlyMap<string, string> = new Map();
@@ -218,6 +226,7 @@ export function mountDiagram(container: HTMLElement, host: DiagramHost): MaaDiag
     let fitPending = false;
     let restoreViewport: Viewport | undefined;
     const expandedByTarget = new Map<string, Set<string>>();
+    const selectionByTarget = new Map<string, FeatureSelection>();
     const selectHandlers = new Set<(traces: string[]) => void>();
     const modelHandlers = new Set<() => void>();
     const programmatic = new WeakSet<Action>();
@@ -228,6 +237,13 @@ export function mountDiagram(container: HTMLElement, host: DiagramHost): MaaDiag
         let s = expandedByTarget.get(k);
         if (!s) expandedByTarget.set(k, (s = new Set()));
         return s;
+    };
+
+    const selectionOf = (t: DiagramTarget): FeatureSelection => selectionByTarget.get(targetKey(t)) ?? ALL_VARIATION_POINTS;
+    const select = (selection: FeatureSelection): void => {
+        if (!current) return;
+        selectionByTarget.set(targetKey(current), selection);
+        void rememberViewport().then(() => request(false));
     };
 
     const viewState: ViewState = {
@@ -367,7 +383,7 @@ export function mountDiagram(container: HTMLElement, host: DiagramHost): MaaDiag
     const request = (fit: boolean): void => {
         if (!current || disposed) return;
         fitPending = fit;
-        const options: Record<string, string | boolean | string[]> = {
+        const options: Record<string, string | boolean | string[] | Record<string, boolean>> = {
             diagramType: current.diagramType,
             sourceUri: current.uri,
             needsClientLayout: false,
@@ -375,6 +391,10 @@ export function mountDiagram(container: HTMLElement, host: DiagramHost): MaaDiag
             expanded: [...expandedOf(current)].sort(),
         };
         if (current.component) options['component'] = current.component;
+        if (current.diagramType === 'maa-cc') {
+            const features = featuresOption(selectionOf(current), graphFeatureInfo(schema).features);
+            if (features) options['features'] = features;
+        }
         void dispatch(RequestModelAction.create(options));
     };
 
@@ -444,6 +464,44 @@ export function mountDiagram(container: HTMLElement, host: DiagramHost): MaaDiag
             switchButton.title = 'Show the state machine of this component';
             title.textContent = comp.split('.').pop() ?? '';
         }
+        updateFeatureBar();
+    }
+
+    /** "All variation points" and a checkbox per feature, for the C&C diagram of a component with features. */
+    function updateFeatureBar(): void {
+        const info = graphFeatureInfo(current?.diagramType === 'maa-cc' ? schema : undefined);
+        featureBar.hidden = info.features.length === 0;
+        if (featureBar.hidden || !current) {
+            featureBar.replaceChildren();
+            return;
+        }
+        const selection = selectionOf(current);
+        const checkbox = (text: string, testid: string, checked: boolean, title: string, onChange: (checked: boolean) => void): HTMLLabelElement => {
+            const label = document.createElement('label');
+            label.className = 'maa-diagram-feature';
+            label.title = title;
+            const input = document.createElement('input');
+            input.type = 'checkbox';
+            input.checked = checked;
+            input.dataset['testid'] = testid;
+            input.addEventListener('change', () => onChange(input.checked));
+            label.append(input, text);
+            return label;
+        };
+        const items: HTMLElement[] = [
+            checkbox('All variation points', 'diagram-features-all', selection.all, 'Show every variation point (varif) with its condition', (all) => select(showAll(selection, all))),
+        ];
+        for (const f of info.features) {
+            const box = checkbox(f, `diagram-feature-${f}`, featureChecked(info, selection, f), `Feature ${f}: checked shows a configuration with it, unchecked one without`,
+                (value) => select(chooseFeature(selection, f, value)));
+            if (selection.all) box.classList.add('maa-diagram-feature-inactive');
+            items.push(box);
+        }
+        const status = document.createElement('span');
+        status.className = 'maa-diagram-features-status';
+        status.textContent = configurationStatus(info, selection);
+        items.push(status);
+        featureBar.replaceChildren(...items);
     }
     updateToolbar();
 

@@ -1,6 +1,6 @@
 import type { AstNode } from 'langium';
 import {
-    allPorts, ast, behaviorsOf, isComposed, printType, stereotypeNames, subcomponentType, subcomponentsOf, variationCondition, type PortInfo
+    allPorts, ast, behaviorsOf, inSubcomponent, isComposed, printType, stereotypeNames, subcomponentType, subcomponentsOf, variationCondition, type PortInfo
 } from '@maa/language-adl';
 import { behaviorLanguageOf, componentQualifiedName, modeAutomatonView, modeSubcomponentsOf } from '@maa/generator-core';
 import type { SModelElement } from 'sprotty-protocol';
@@ -60,7 +60,8 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
                 const subType = subcomponentType(sub).decl;
                 if (!subType) continue;
                 const subPath = [...path, sub.name];
-                node.children!.push(componentNode(subType, subPath, sub, expanded.has(subPath.join('.'))));
+                // A shown configuration (withVariant) decides the subcomponent's variation points by its own features.
+                node.children!.push(inSubcomponent(sub, () => componentNode(subType, subPath, sub, expanded.has(subPath.join('.')))));
             }
             node.children!.push(...connectors(connectorsOf(type), path));
             // Modes: the subcomponents and connectors of every mode, marked with their mode.
@@ -85,6 +86,9 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
                     node.children!.push(...connectors(named, path, m.name));
                 }
             }
+        } else if (open) {
+            // A shown configuration may leave no subcomponent (`varif (f) { Sub s; ... } else { in -> out; }`).
+            node.children!.push(...connectors(connectorsOf(type), path));
         }
         return node;
     }

@@ -1,7 +1,7 @@
 import { AstUtils, type AstNode, type LangiumDocuments } from 'langium';
 import { LangiumDiagramGenerator, type GeneratorContext, type LangiumSprottyServices } from 'langium-sprotty';
 import type { IModelLayoutEngine, SModelRoot } from 'sprotty-protocol';
-import { ast } from '@maa/language-adl';
+import { allFeatures, ast, configurationSpace, withVariant, type VariantEnv } from '@maa/language-adl';
 import { componentQualifiedName } from '@maa/generator-core';
 import { buildAutomatonDiagram } from './automaton-diagram.js';
 import { buildComponentDiagram } from './cc-diagram.js';
@@ -32,7 +32,12 @@ export class MaaDiagramGenerator extends LangiumDiagramGenerator {
         } else if (options.diagramType === 'maa-automaton') {
             graph = buildAutomatonDiagram(component, ctx);
         } else {
-            graph = buildComponentDiagram(component, new Set(options.expanded ?? []), ctx);
+            const features = allFeatures(component).map((f) => f.name);
+            const chosen = options.features && features.length > 0 ? chooseConfiguration(component, features, options.features) : undefined;
+            graph = withVariant(chosen?.env, () => buildComponentDiagram(component, new Set(options.expanded ?? []), ctx));
+            if (features.length > 0) graph.features = features;
+            if (chosen?.env) graph.configuration = chosen.values;
+            else if (chosen) graph.configurationRejected = true;
         }
         return this.layoutEngine.layout(graph);
     }
@@ -44,4 +49,19 @@ export class MaaDiagramGenerator extends LangiumDiagramGenerator {
             AstUtils.streamAst(root).filter(ast.isComponentType).find((c) => componentQualifiedName(c) === qualifiedName);
         return matches(source) ?? this.documents.all.map((d) => matches(d.parseResult.value)).find((c) => c !== undefined);
     }
+}
+
+/**
+ * The first admitted configuration of `component` (configurationSpace: constraints, feature
+ * bindings of its subcomponents) whose own features agree with `wanted`; `env` is undefined
+ * when none does (or the space is too large to enumerate).
+ */
+export function chooseConfiguration(
+    component: ast.ComponentType, features: readonly string[], wanted: Readonly<Record<string, boolean>>
+): { env: VariantEnv | undefined; values: Record<string, boolean> } {
+    const space = configurationSpace(component);
+    const asked = features.filter((f) => typeof wanted[f] === 'boolean');
+    const match = space.configurations.find((a) => asked.every((f) => space.value(a, f) === wanted[f]));
+    if (match === undefined) return { env: undefined, values: {} };
+    return { env: space.env(match), values: Object.fromEntries(features.map((f) => [f, space.value(match, f)])) };
 }

@@ -17,6 +17,13 @@ export interface MaaDiagramOptions {
     readonly component?: string;
     /** Instance paths of composed subcomponents to show opened. */
     readonly expanded?: readonly string[];
+    /**
+     * A feature configuration to show (C&C diagram of a variable component): values of the shown
+     * component's features; the diagram shows the first admitted configuration (constraints,
+     * feature bindings) that agrees with them, features not given take that configuration's
+     * value. Without it, every variation point is shown.
+     */
+    readonly features?: Readonly<Record<string, boolean>>;
     readonly needsClientLayout?: boolean;
 }
 
@@ -46,6 +53,15 @@ interface Traced {
 export interface MaaGraph extends SGraph {
     /** Qualified name of the shown component. */
     component: string;
+    /** The features (own and inherited) of the shown component, if it has any (C&C diagram). */
+    features?: string[];
+    /**
+     * The feature values of the shown configuration when the request asked for one and an
+     * admitted configuration agrees with it; absent when every variation point is shown.
+     */
+    configuration?: Record<string, boolean>;
+    /** Set when the requested feature values admit no configuration (every variation point is shown). */
+    configurationRejected?: boolean;
 }
 
 export interface ComponentNode extends SNode, Traced {
