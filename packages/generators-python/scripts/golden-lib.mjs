@@ -2,7 +2,7 @@
 // test/golden/cases.json into <base>/<name>, where base is a folder directly inside .cache/ (so
 // the trace file's relative model root is the same for every base), and lists the files that are
 // compared with test/golden/<name>/.
-import { mkdirSync, mkdtempSync, readdirSync, readFileSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -15,8 +15,18 @@ export function freshBase() {
   mkdirSync(cacheDir, { recursive: true });
   return mkdtempSync(path.join(cacheDir, 'golden-'));
 }
-/** Folders of the output that are verbatim copies of rte/ (compared with rte/ instead). */
-export const RTE_FOLDERS = ['maa_behavior', 'maa_timesync'];
+/** Folders of the output that are verbatim copies of rte/ (compared with rte/ instead): at the
+ * top of the platform folder (timesync) or of its package folder (ROS 2: `<pkg>/maa_ros2`). */
+export const RTE_FOLDERS = ['maa_behavior', 'maa_timesync', 'maa_ros2'];
+
+/** Where the copies of rte/<name> are in a platform folder, if there. */
+export function rteCopy(dir, name) {
+  if (existsSync(path.join(dir, name))) return path.join(dir, name);
+  for (const e of readdirSync(dir, { withFileTypes: true })) {
+    if (e.isDirectory() && existsSync(path.join(dir, e.name, name))) return path.join(dir, e.name, name);
+  }
+  return undefined;
+}
 
 export function goldenCases() {
   return JSON.parse(readFileSync(path.join(goldenDir, 'cases.json'), 'utf8'));
@@ -46,7 +56,7 @@ export function listFiles(dir, skipRte = true) {
       const r = rel ? `${rel}/${e.name}` : e.name;
       if (e.name === '__pycache__' || e.name === '.ruff_cache') continue;
       if (e.isDirectory()) {
-        if (!(skipRte && !rel && RTE_FOLDERS.includes(e.name))) visit(path.join(d, e.name), r);
+        if (!(skipRte && !rel.includes('/') && RTE_FOLDERS.includes(e.name))) visit(path.join(d, e.name), r);
       } else out.push(r);
     }
   };

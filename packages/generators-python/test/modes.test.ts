@@ -1,4 +1,4 @@
-import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { describe, expect, it } from 'vitest';
@@ -24,17 +24,46 @@ describe('mode automata on python-timesync (maa-gen test)', () => {
 });
 
 describe('mode automata on ROS 2', () => {
-    it('are refused with the generator rule components.NoModes, naming the component and its modes', async () => {
+    it('generate a mode manager node and gated subcomponent nodes (no components.NoModes refusal); test/ros2/test_ros2_modes.py runs them', async () => {
         const out = mkdtempSync(path.join(tmpdir(), 'maa-modes-ros2-'));
         try {
             const r = await run(process.execPath, [
                 path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', 'packages/generators-python/test/fixtures/modes/Modes.arcapp',
                 '--platform', 'rospython', '--out', out
             ], repoDir);
-            expect(r.stdout + r.stderr).toContain('components.NoModes');
-            expect(r.stdout + r.stderr).toContain("component type 'gear.Gearbox' has a mode automaton (modes First, Second)");
-            expect(r.status).toBe(1);
+            expect(r.stdout + r.stderr).not.toContain('components.NoModes');
+            expect(r.status).toBe(0);
+            const deployment = JSON.parse(readFileSync(path.join(out, 'rospython', 'gearbox', 'deployment.json'), 'utf8')) as {
+                nodes: Array<{ name: string; namespace: string; subscribes: Array<{ topic: string }>; publishes: Array<{ port?: string; topic: string }> }>
+            };
+            const byName = new Map(deployment.nodes.map((n) => [n.name, n]));
+            expect([...byName.keys()].sort()).toEqual(['maa_modes', 's1', 's10', 't']);
+            const manager = byName.get('maa_modes')!;
+            expect(manager.publishes.map((t) => t.topic)).toEqual(['/gearbox/maa_modes/mode', '/gearbox/maa_modes/s1/i', '/gearbox/o', '/gearbox/maa_modes/s10/i', '/gearbox/maa_modes/t/i', '/gearbox/total']);
+            for (const n of ['s1', 's10', 't']) expect(byName.get(n)!.subscribes.map((t) => t.topic)).toContain('/gearbox/maa_modes/mode');
         } finally {
+            rmSync(out, { recursive: true, force: true });
+        }
+    }, 180_000);
+
+    it('an application whose mode component has a parameter of a non-primitive type is refused with a diagnostic', async () => {
+        const dir = mkdtempSync(path.join(tmpdir(), 'maa-modes-ros2-bad-'));
+        const out = mkdtempSync(path.join(tmpdir(), 'maa-modes-ros2-out-'));
+        try {
+            mkdirSync(path.join(dir, 'm'));
+            writeFileSync(path.join(dir, 'm', 'Level.cd'), 'package m;\n\nclassdiagram Level {\n  enum Level { LOW, HIGH; }\n}\n');
+            writeFileSync(path.join(dir, 'm', 'Pass.arc'), 'package m;\n\ncomponent Pass {\n  port in int i;\n  port out int o;\n\n  <<sync>> compute {\n    o = i;\n  }\n}\n');
+            writeFileSync(path.join(dir, 'm', 'Sw.arc'), [
+                'package m;', '', 'import m.Level.*;', '', 'component Sw(Level level = Level.LOW) {', '  port in int i;', '  port out int o;', '',
+                '  <<sync>> mode automaton {', '    initial mode A {', '      Pass p;', '      i -> p.i;', '      p.o -> o;', '    }',
+                '    mode B {', '      Pass q;', '      i -> q.i;', '      q.o -> o;', '    }', '    A -> B [i < 0];', '  }', '}', ''
+            ].join('\n'));
+            writeFileSync(path.join(dir, 'App.arcapp'), 'application App for m.Sw {\n  platform rospython {\n    ros2.Components;\n    ros2.AutomataBehavior;\n    ros2.DataTypes;\n  }\n}\n');
+            const r = await run(process.execPath, [path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', path.join(dir, 'App.arcapp'), '--platform', 'rospython', '--out', out], repoDir);
+            expect(r.stdout + r.stderr).toContain('the mode manager of m.Sw takes parameters of primitive types only');
+            expect(r.status).not.toBe(0);
+        } finally {
+            rmSync(dir, { recursive: true, force: true });
             rmSync(out, { recursive: true, force: true });
         }
     }, 180_000);

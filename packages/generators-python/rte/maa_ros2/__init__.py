@@ -7,19 +7,24 @@ clock (simulation time with ``use_sim_time``). See docs/generating-ros2.md.
 """
 
 from maa_ros2.arm import RosArm
-from maa_ros2.node import ComponentNode, InPort, OutPort, PlatformBehavior, run_node
+from maa_ros2.modes import ModeManagerNode, Relay, port_value
+from maa_ros2.node import ComponentNode, InPort, ModeGate, OutPort, PlatformBehavior, run_node
 from maa_ros2.ports import PortCodec, char_port, class_port, enum_port, std_port
 
 __all__ = [
     "ComponentNode",
     "InPort",
+    "ModeGate",
+    "ModeManagerNode",
     "OutPort",
     "PlatformBehavior",
     "PortCodec",
+    "Relay",
     "RosArm",
     "char_port",
     "class_port",
     "enum_port",
+    "port_value",
     "run_node",
     "std_port",
 ]

@@ -74,6 +74,25 @@ class OutPort:
     delayed: bool = False
 
 
+#: QoS of a mode topic (docs/generating-ros2.md, "Mode automata"): std_msgs/String with the current
+#: mode, latched (transient-local, the last message kept) so that a node started late learns it.
+MODE_QOS = QoSProfile(
+    history=HistoryPolicy.KEEP_LAST,
+    depth=1,
+    reliability=ReliabilityPolicy.RELIABLE,
+    durability=DurabilityPolicy.TRANSIENT_LOCAL,
+)
+
+
+@dataclass(frozen=True)
+class ModeGate:
+    """A node of a subcomponent declared in modes: active only while the mode on ``topic`` is one of ``modes``."""
+
+    topic: str
+    modes: tuple[str, ...]
+    initial: str
+
+
 class PlatformBehavior(Behavior):
     """Base class of handwritten (platform) components on ROS 2.
 
@@ -106,8 +125,16 @@ class ComponentNode(Node):
         parameters: Mapping[str, ParameterValue] | None = None,
         period: float = DEFAULT_PERIOD,
         convert_parameters: Callable[[dict[str, object]], dict[str, object]] | None = None,
+        gates: Sequence[ModeGate] = (),
     ) -> None:
         super().__init__(name)
+        # the modes of the enclosing mode components: the node rests (does not step, publishes
+        # nothing) while one of them is not its mode; what arrives meanwhile waits for its mode
+        # (a relay forwards only in the mode, but its message may overtake the mode's)
+        self._maa_modes = {g.topic: g.initial for g in gates}
+        self._maa_gates = tuple(gates)
+        for g in gates:
+            self.create_subscription(String, g.topic, self._mode_receiver(g.topic), MODE_QOS)
         values: dict[str, object] = {}
         for key, default in (parameters or {}).items():
             values[key] = self.declare_parameter(key, default).value
@@ -120,6 +147,7 @@ class ComponentNode(Node):
         self._maa_held: dict[str, object] = {}
         self._maa_events: dict[str, object] = {}
         self._maa_queued: list[tuple[str, object]] = []
+        self._maa_pending: list[tuple[str, object]] = []
         self._maa_delay_passed = False
         self.behavior = behavior_type(self._emit, values)
         self.behavior.set_delay_hook(self._pass_delay_point)
@@ -138,6 +166,21 @@ class ComponentNode(Node):
         )
         self.slice_timer = self.create_timer(self.period, self._on_period)
 
+    # -- modes ------------------------------------------------------------------------------
+    def active(self) -> bool:
+        """Whether every enclosing mode component is in a mode this node belongs to."""
+        return all(self._maa_modes[g.topic] in g.modes for g in self._maa_gates)
+
+    def _mode_receiver(self, topic: str) -> Callable[[Any], None]:
+        def receive(msg: Any) -> None:
+            self._maa_modes[topic] = str(msg.data)
+            if self.active():
+                pending, self._maa_pending = self._maa_pending, []
+                for port, value in pending:
+                    self.behavior.on_message(port, value)
+
+        return receive
+
     # -- messages ---------------------------------------------------------------------------
     def _receiver(self, port: InPort) -> Callable[[Any], None]:
         def receive(msg: Any) -> None:
@@ -147,6 +190,8 @@ class ComponentNode(Node):
                     self._maa_held[port.port] = value
                 else:
                     self._maa_events[port.port] = value
+            elif not self.active():
+                self._maa_pending.append((port.port, value))
             else:
                 self.behavior.on_message(port.port, value)
 
@@ -156,6 +201,8 @@ class ComponentNode(Node):
         out = self._maa_outputs.get(port)
         if out is None:
             raise KeyError(f"{self.get_name()}: the behavior emitted on {port!r}, which is no out port")
+        if not self.active():
+            return
         if out.delayed and self._maa_delay_passed:
             self._maa_queued.append((port, value))
         else:
@@ -169,6 +216,8 @@ class ComponentNode(Node):
 
     # -- time -------------------------------------------------------------------------------
     def _on_period(self) -> None:
+        if not self.active():
+            return
         queued, self._maa_queued = self._maa_queued, []
         for name, value in queued:
             self._publish(name, value)

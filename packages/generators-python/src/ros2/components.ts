@@ -4,11 +4,12 @@ import path from 'node:path';
 import { AstUtils, type AstNode } from 'langium';
 import type { SymType } from '@maa/language-adl';
 import { sourceText, type ComponentGenerationContext, type ComponentGeneratorFactory, type ComponentView,
-    type InstanceView, type PortView
+    type ConnectorView, type InstanceView, type PortView
 } from '@maa/generator-core';
 import { behaviorModule, moduleText } from '../behavior/automata.js';
 import { Imports } from '../behavior/common.js';
 import { computeClass } from '../behavior/compute.js';
+import { modeTransitionBody } from '../timesync/modes.js';
 import { MODEL_PACKAGE, interfacePackageName, isBuiltinDecl, isRosDataTypeResult, primitiveOf, rosName, rosPackageName, typeKey, type RosDataTypeResult } from './naming.js';
 
 /**
@@ -54,6 +55,24 @@ interface NodeSpec {
     readonly parameters: Array<{ name: string; value: boolean | number | string; enumType?: string; float: boolean }>;
     readonly platformSubscribes: TopicRef[];
     readonly platformPublishes: TopicRef[];
+    /** The modes of enclosing mode components this node belongs to (docs/generating-ros2.md, "Mode automata"). */
+    readonly gates: Array<{ topic: string; modes: string[]; initial: string }>;
+}
+
+/** The mode manager node of an instance of a component with a mode automaton. */
+interface ManagerSpec {
+    readonly instance: InstanceView;
+    readonly name: string;
+    readonly namespace: string;
+    readonly fqn: string;
+    readonly module: string;
+    readonly moduleName: string;
+    readonly file: string;
+    readonly modeTopic: string;
+    readonly inputs: NodePort[];
+    readonly relays: Array<{ source: string; target: string; rosType: string; codec: string; modes: string[]; port?: string }>;
+    readonly parameters: Array<{ name: string; value: boolean | number | string; float: boolean }>;
+    readonly imports: Map<string, Set<string>>;
 }
 
 const FLOAT_MARK = '__maa_float__';
@@ -111,6 +130,11 @@ function evaluate(expr: AstNode, type: SymType, env: ReadonlyMap<string, boolean
         if (index >= 0) return index;
     }
     throw new GenerationError(`ros2.Components needs a literal value here (ROS parameters are static): '${text}'`, expr);
+}
+
+/** A Python tuple of strings. */
+function pyTuple(xs: readonly string[]): string {
+    return xs.length === 0 ? '()' : `(${xs.map((x) => JSON.stringify(x)).join(', ')}${xs.length === 1 ? ',' : ''})`;
 }
 
 function isFloatType(t: SymType): boolean {
@@ -199,12 +223,21 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
         };
         const outTopic = (inst: InstanceView, port: string): string => `${fqnOf(inst)}/${rosName(port)}`;
 
+        // Mode automata: the connectors declared in modes are relayed by the instance's mode manager
+        // node, `<instance>/maa_modes`, to topics of their own (the instance's out ports: `<instance>/<port>`).
+        const modeConnectors = (inst: InstanceView): ConnectorView[] => inst.component.modes?.modes.flatMap((m) => [...m.connectors]) ?? [];
+        const managerFqn = (inst: InstanceView): string => `${fqnOf(inst)}/maa_modes`;
+        const modeTopic = (inst: InstanceView): string => `${managerFqn(inst)}/mode`;
+        const relayTopic = (inst: InstanceView, sub: string | undefined, port: string): string =>
+            sub ? `${managerFqn(inst)}/${rosName(sub)}/${rosName(port)}` : `${fqnOf(inst)}/${rosName(port)}`;
+
         /** The topic an instance's in port reads: follow the connectors back to an atomic source (or a root in port). */
         const sourceTopic = (inst: InstanceView, port: string, depth = 0): string | undefined => {
             if (depth > 64) return undefined;
             if (inst.path.length === 0) return `${rootNs}/${rosName(port)}`; // an in port of the root: fed from outside
             const parent = byPath.get(inst.path.slice(0, -1).join('.'))!;
             const name = inst.path[inst.path.length - 1]!;
+            if (modeConnectors(parent).some((c) => c.targets.some((t) => t.subcomponent === name && t.port === port))) return relayTopic(parent, name, port);
             const conn = parent.component.connectors.find((c) => c.targets.some((t) => t.subcomponent === name && t.port === port));
             if (!conn) return undefined;
             return resolveSource(parent, conn.source.subcomponent, conn.source.port, depth + 1);
@@ -215,6 +248,7 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             const child = byPath.get([...inst.path, sub].join('.'));
             if (!child) return undefined;
             if (child.component.atomic) return outTopic(child, port);
+            if (modeConnectors(child).some((c) => c.targets.some((t) => !t.subcomponent && t.port === port))) return relayTopic(child, undefined, port);
             const conn = child.component.connectors.find((c) => c.targets.some((t) => !t.subcomponent && t.port === port));
             return conn ? resolveSource(child, conn.source.subcomponent, conn.source.port, depth + 1) : undefined;
         };
@@ -346,10 +380,17 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             if (!set) imports.set(b.module, (set = new Set()));
             set.add(b.cls);
             const platform = handwritten.get(c) ?? (b.language === 'robotarm' ? ARM_TOPICS : { subscribes: [], publishes: [] });
+            const gates: NodeSpec['gates'] = [];
+            for (let k = 0; k < inst.path.length; k++) {
+                const ancestor = byPath.get(inst.path.slice(0, k).join('.'))!;
+                const m = ancestor.component.modes;
+                const modes = m?.modes.filter((x) => x.subcomponents.includes(inst.path[k]!)).map((x) => x.name) ?? [];
+                if (m && modes.length > 0) gates.push({ topic: modeTopic(ancestor), modes, initial: m.initial });
+            }
             nodes.push({
                 instance: inst, name, namespace, fqn: fqnOf(inst), module: `${pkg}.nodes.${moduleName}`, moduleName,
                 file: `${pkg}/${pkg}/nodes/${moduleName}.py`, component: c, inputs, outputs, parameters,
-                platformSubscribes: platform.subscribes, platformPublishes: platform.publishes
+                platformSubscribes: platform.subscribes, platformPublishes: platform.publishes, gates
             });
             for (const [m, names] of imports) {
                 let all = pyImports.get(`${moduleName}|${m}`);
@@ -358,9 +399,55 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             }
         }
 
+        const managers: ManagerSpec[] = [];
+        for (const inst of arch.instances.filter((i) => i.component.modes)) {
+            const c = inst.component;
+            const m = c.modes!;
+            const imports = new Map<string, Set<string>>();
+            const inputs: NodePort[] = [];
+            for (const p of c.ports.filter((x) => x.direction === 'in')) {
+                const topic = sourceTopic(inst, p.name);
+                if (topic) inputs.push({ port: p.name, topic, ...portType(p, imports), delayed: false, node: p.node });
+            }
+            const relays: ManagerSpec['relays'] = [];
+            for (const mode of m.modes) {
+                for (const k of mode.connectors) {
+                    const source = resolveSource(inst, k.source.subcomponent, k.source.port, 0);
+                    if (!source) continue;
+                    for (const t of k.targets) {
+                        const port = t.subcomponent ? byPath.get([...inst.path, t.subcomponent].join('.'))?.component.ports.find((x) => x.name === t.port) : c.ports.find((x) => x.name === t.port);
+                        if (!port) continue;
+                        const target = relayTopic(inst, t.subcomponent, t.port);
+                        const known = relays.find((r) => r.source === source && r.target === target);
+                        if (known) known.modes.push(mode.name);
+                        else relays.push({ source, target, ...portType(port, imports), modes: [mode.name], ...(t.subcomponent ? {} : { port: t.port }) });
+                    }
+                }
+            }
+            const parameters = c.parameters.map((p) => {
+                if (p.type.kind === 'object' && !primitiveOf(p.type)) {
+                    throw new GenerationError(`ros2.Components: the mode manager of ${c.qualifiedName} takes parameters of primitive types only ('${p.name}' is ${p.typeName})`, p.node);
+                }
+                return { name: p.name, value: instanceParams.get(inst)!.get(p.name)!, float: isFloatType(p.type) };
+            });
+            const base = inst.path.length === 0 ? '' : `${inst.path.map(rosName).join('__')}__`;
+            const moduleName = `${base}maa_modes`;
+            managers.push({
+                instance: inst, name: 'maa_modes', namespace: fqnOf(inst), fqn: managerFqn(inst), module: `${pkg}.nodes.${moduleName}`, moduleName,
+                file: `${pkg}/${pkg}/nodes/${moduleName}.py`, modeTopic: modeTopic(inst), inputs, relays, parameters, imports
+            });
+        }
+
         // Every topic has exactly one type and at most one publisher.
         const publishers = new Map<string, { fqn: string; node: AstNode }>();
         const types = new Map<string, string>();
+        for (const mg of managers) {
+            for (const topic of [mg.modeTopic, ...new Set(mg.relays.map((r) => r.target))]) {
+                const other = publishers.get(topic);
+                if (other) throw new GenerationError(`topic ${topic} would have two publishers, ${other.fqn} and ${mg.fqn}; a topic has exactly one publisher`, mg.instance.component.node);
+                publishers.set(topic, { fqn: mg.fqn, node: mg.instance.component.node });
+            }
+        }
         for (const n of nodes) {
             const pubs = [...n.outputs.map((o) => ({ topic: o.topic, type: o.rosType, node: o.node })), ...n.platformPublishes.map((t) => ({ ...t, node: n.component.node as AstNode }))];
             for (const p of pubs) {
@@ -387,6 +474,7 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
         for (const n of nodes) {
             const own = new Map([...pyImports].filter(([k]) => k.startsWith(`${n.moduleName}|`)).map(([k, names]) => [k.slice(n.moduleName.length + 1), new Set(names)] as const));
             const maa = ['ComponentNode', 'InPort', 'OutPort', 'run_node', ...new Set([...n.inputs, ...n.outputs].map((p) => p.codec.replace(/\(.*$/, '')))];
+            if (n.gates.length > 0) maa.push('ModeGate');
             own.set('maa_ros2', new Set([...(own.get('maa_ros2') ?? []), ...maa]));
             const b = behaviors.get(n.component)!;
             const text = ctx.templates.render('node.py.njk', {
@@ -396,10 +484,69 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                 instance: [rootInstance, ...n.instance.path].join('.'),
                 imports: importLines(own),
                 params: n.parameters.map((p) => ({ name: p.name, literal: pyLiteral(p.value, p.float), enumType: p.enumType })),
-                enumParams: n.parameters.filter((p) => p.enumType)
+                enumParams: n.parameters.filter((p) => p.enumType),
+                gates: n.gates.map((g) => ({ topic: g.topic, initial: g.initial, modes: pyTuple(g.modes) }))
             });
             files.add(n.file);
             ctx.out.file(n.file).write(text, n.instance.node ?? n.component.node);
+        }
+        for (const mg of managers) {
+            const c = mg.instance.component;
+            const guards = new Imports();
+            const body = modeTransitionBody(c, dt, guards, 'maa_ros2.modes');
+            guards.add('collections.abc', 'Mapping');
+            for (const name of ['InPort', 'ModeManagerNode', 'Relay', 'run_node', ...new Set([...mg.inputs, ...mg.relays].map((p) => p.codec.replace(/\(.*$/, '')))]) guards.add('maa_ros2', name);
+            for (const [module, names] of mg.imports) for (const name of names) guards.add(module, name);
+            const instance = [rootInstance, ...mg.instance.path].join('.');
+            const lines = [
+                `"""ROS 2 mode manager of instance ${instance} (${c.qualifiedName}).`,
+                '',
+                `Generated by ros2.Components. Node ${mg.fqn}: takes the mode transitions, publishes the current mode on`,
+                `${mg.modeTopic} (latched) and relays the connectors of the current mode; run it with`,
+                `\`ros2 run ${pkg} ${mg.moduleName}\` or \`python -m ${mg.module}\`.`,
+                '"""',
+                '',
+                'from __future__ import annotations',
+                '',
+                ...guards.lines(),
+                '',
+                mg.inputs.length ? 'INPUTS = (' : 'INPUTS: tuple[InPort, ...] = ()',
+                ...mg.inputs.map((p) => `    InPort(${JSON.stringify(p.port)}, ${JSON.stringify(p.topic)}, ${p.codec}, sampled=${p.sampled ? 'True' : 'False'}),`),
+                ...(mg.inputs.length ? [')'] : []),
+                '#: The connectors declared in modes: source topic, target topic, the modes that forward.',
+                mg.relays.length ? 'RELAYS = (' : 'RELAYS: tuple[Relay, ...] = ()',
+                ...mg.relays.map((r) => `    Relay(${JSON.stringify(r.source)}, ${JSON.stringify(r.target)}, ${r.codec}, ${pyTuple(r.modes)}),`),
+                ...(mg.relays.length ? [')'] : []),
+                ...(mg.parameters.length ? [
+                    'PARAMETERS: dict[str, bool | int | float | str] = {',
+                    ...mg.parameters.map((p) => `    ${JSON.stringify(p.name)}: ${pyLiteral(p.value, p.float)},`),
+                    '}'
+                ] : ['PARAMETERS: dict[str, bool | int | float | str] = {}']),
+                '',
+                '',
+                'def mode_transition(',
+                '    mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]',
+                ') -> str | None:',
+                `    """The target of the first enabled transition of ${c.qualifiedName}'s mode automaton from \`mode\`, if any."""`,
+                ...body.map((l) => `    ${l}`),
+                '',
+                '',
+                'def create_node() -> ModeManagerNode:',
+                '    return ModeManagerNode(',
+                `        ${JSON.stringify(mg.name)}, ${JSON.stringify(mg.modeTopic)}, ${JSON.stringify(c.modes!.initial)}, ${JSON.stringify(c.modes!.timing)},`,
+                '        mode_transition, INPUTS, RELAYS, PARAMETERS,',
+                '    )',
+                '',
+                '',
+                'def main() -> None:',
+                '    run_node(create_node)',
+                '',
+                '',
+                'if __name__ == "__main__":',
+                '    main()',
+                ''
+            ];
+            write(mg.file, lines.join('\n'), c.modes!.node);
         }
 
         // __init__.py of every Python package of the ament package (behavior generators wrote their modules).
@@ -425,7 +572,7 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
         }
 
         const pythonPackages = [...pyPackages.map((p) => p.slice(pkg.length + 1).replace(/\//g, '.')), 'maa_behavior', 'maa_ros2'].sort(compare);
-        const scripts = nodes.map((n) => ({ name: n.moduleName, module: n.module }));
+        const scripts = [...nodes, ...managers].map((n) => ({ name: n.moduleName, module: n.module }));
         const info = { pkg, ifacePkg, app: ctx.platform.application, root: arch.root.qualifiedName, launch: `${rosName(ctx.platform.application)}.launch.py` };
         write(`${pkg}/package.xml`, ctx.templates.render('package.xml.njk', info), arch.root.node);
         write(`${pkg}/setup.py`, ctx.templates.render('setup.py.njk', { ...info, packages: pythonPackages, scripts }), arch.root.node);
@@ -433,7 +580,7 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
         write(`${pkg}/resource/${pkg}`, '');
         write(`${pkg}/launch/${info.launch}`, ctx.templates.render('launch.py.njk', {
             ...info,
-            nodes: nodes.map((n) => ({ ...n, executable: n.moduleName, params: n.parameters.map((p) => ({ name: p.name, literal: pyLiteral(p.value, p.float) })) }))
+            nodes: [...nodes, ...managers].map((n) => ({ ...n, executable: n.moduleName, params: n.parameters.map((p) => ({ name: p.name, literal: pyLiteral(p.value, p.float) })) }))
         }), arch.root.node);
         const deployment = {
             format: 'maa-deployment/1',
@@ -441,7 +588,7 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             package: pkg,
             python_path: ['.'],
             env: {},
-            nodes: nodes.map((n) => ({
+            nodes: [...nodes.map((n) => ({
                 name: n.name,
                 namespace: n.namespace,
                 instance: [rootInstance, ...n.instance.path].join('.'),
@@ -451,13 +598,30 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                 parameters: Object.fromEntries(n.parameters.map((p) => [p.name, p.float && typeof p.value === 'number' && Number.isInteger(p.value) ? `${FLOAT_MARK}${p.value}.0` : p.value])),
                 subscribes: [
                     ...n.inputs.map((i) => ({ port: i.port, topic: i.topic, type: i.rosType })),
-                    ...n.platformSubscribes.map((t) => ({ topic: t.topic, type: t.type }))
+                    ...n.platformSubscribes.map((t) => ({ topic: t.topic, type: t.type })),
+                    ...n.gates.map((g) => ({ topic: g.topic, type: 'std_msgs/msg/String' }))
                 ],
                 publishes: [
                     ...n.outputs.map((o) => ({ port: o.port, topic: o.topic, type: o.rosType })),
                     ...n.platformPublishes.map((t) => ({ topic: t.topic, type: t.type }))
                 ]
-            }))
+            })), ...managers.map((mg) => ({
+                name: mg.name,
+                namespace: mg.namespace,
+                instance: [rootInstance, ...mg.instance.path].join('.'),
+                component: mg.instance.component.qualifiedName,
+                module: mg.module,
+                args: [],
+                parameters: Object.fromEntries(mg.parameters.map((p) => [p.name, p.float && typeof p.value === 'number' && Number.isInteger(p.value) ? `${FLOAT_MARK}${p.value}.0` : p.value])),
+                subscribes: [
+                    ...mg.inputs.map((i) => ({ port: i.port, topic: i.topic, type: i.rosType })),
+                    ...[...new Map(mg.relays.map((r) => [r.source, r.rosType])).entries()].filter(([t]) => !mg.inputs.some((i) => i.topic === t)).map(([topic, type]) => ({ topic, type }))
+                ],
+                publishes: [
+                    { topic: mg.modeTopic, type: 'std_msgs/msg/String' },
+                    ...[...new Map(mg.relays.map((r) => [r.target, r])).values()].map((r) => ({ ...(r.port ? { port: r.port } : {}), topic: r.target, type: r.rosType }))
+                ]
+            }))]
         };
         // A double parameter keeps its decimal point (`1.0`): rcl would read `1` as an integer and
         // reject it for a parameter the node declares as double.

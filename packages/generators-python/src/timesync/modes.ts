@@ -32,14 +32,14 @@ export function connectorTuple(k: ConnectorView): string {
  * for a primitive port without message (as atomic sync behaviors read them); parameters the
  * instance's.
  */
-function guardTranslator(c: ComponentView, datatypes: DataTypeResult, imports: Imports): PythonTranslator {
+function guardTranslator(c: ComponentView, datatypes: DataTypeResult, imports: Imports, rte: string): PythonTranslator {
     return new PythonTranslator({
         name(target, ref) {
             if (target.$type === 'Port') {
                 const port = c.ports.find((p) => p.name === target.name);
                 const def = port ? primitiveDefault(port) : 'None';
                 if (def === 'None') return `inputs.get(${str(target.name)})`;
-                imports.add('maa_timesync.modes', 'port_value');
+                imports.add(rte, 'port_value');
                 return `port_value(inputs, ${str(target.name)}, ${def})`;
             }
             if (target.$type === 'Parameter') return `params[${str(target.name)}]`;
@@ -61,7 +61,6 @@ export function modeClassLines(c: ComponentView, datatypes: DataTypeResult, impo
     const m = c.modes;
     if (!m) return undefined;
     imports.add('maa_timesync.modes', 'ModeComponent');
-    const tr = guardTranslator(c, datatypes, imports);
     const lines = [
         `    MODES = ${tuple(m.modes.map((x) => str(x.name)))}`,
         `    INITIAL_MODE = ${str(m.initial)}`,
@@ -77,6 +76,20 @@ export function modeClassLines(c: ComponentView, datatypes: DataTypeResult, impo
         '    def mode_transition(cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]) -> str | None:'
     ];
     imports.add('maa_timesync.runtime', 'Connector');
+    const body = modeTransitionBody(c, datatypes, imports, 'maa_timesync.modes');
+    lines.push(...indent(body, 8));
+    return lines;
+}
+
+/**
+ * The body of `mode_transition(mode, trigger, inputs, params)`: the transitions in declaration
+ * order, returning the target of the first enabled one (or None). `rte` is the module with
+ * `port_value` (maa_timesync.modes, maa_ros2.modes).
+ */
+export function modeTransitionBody(c: ComponentView, datatypes: DataTypeResult, imports: Imports, rte: string): string[] {
+    const m = c.modes;
+    if (!m) return ['del mode, trigger, inputs, params', 'return None'];
+    const tr = guardTranslator(c, datatypes, imports, rte);
     const body: string[] = [];
     for (const t of m.transitions) {
         const conds = [`mode == ${str(t.source)}`];
@@ -91,6 +104,5 @@ export function modeClassLines(c: ComponentView, datatypes: DataTypeResult, impo
     const unused = ['mode', 'trigger', 'inputs', 'params'].filter((v) => !new RegExp(`\\b${v}\\b`).test(used));
     if (unused.length > 0) body.unshift(`del ${unused.join(', ')}`);
     body.push('return None');
-    lines.push(...indent(body, 8));
-    return lines;
+    return body;
 }
