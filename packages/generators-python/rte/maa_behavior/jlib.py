@@ -193,7 +193,7 @@ def _double_hash(d: float) -> int:
 
 
 def _float_hash(d: float) -> int:
-    return struct.unpack(">i", struct.pack(">f", math.nan if math.isnan(d) else d))[0]
+    return int(struct.unpack(">i", struct.pack(">f", math.nan if math.isnan(d) else d))[0])
 
 
 def jhash(value: object, hint: str | None = None) -> int:
@@ -353,7 +353,9 @@ def _set_time(d: JDate, t: int) -> None:
 
 
 def _is_java_space(c: int) -> bool:
-    return chr(c) in " \t\n\x0b\f\r\x1c\x1d\x1e\x1f" or (chr(c).isspace() and c not in (0xA0, 0x2007, 0x202F) and c > 0x7F)
+    if chr(c) in " \t\n\x0b\f\r\x1c\x1d\x1e\x1f":
+        return True
+    return chr(c).isspace() and c not in (0xA0, 0x2007, 0x202F) and c > 0x7F
 
 
 Method = Callable[..., object]
@@ -383,7 +385,9 @@ _STRING: dict[str, Method] = {
     "length/0": len,
     "isEmpty/0": lambda s: len(s) == 0,
     "charAt/1": lambda s, i: (
-        _char(ord(s[i])) if 0 <= i < len(s) else _raise(f"java.lang.StringIndexOutOfBoundsException: index {i}, length {len(s)}")
+        _char(ord(s[i]))
+        if 0 <= i < len(s)
+        else _raise(f"java.lang.StringIndexOutOfBoundsException: index {i}, length {len(s)}")
     ),
     "substring/1": _substring,
     "substring/2": _substring,
@@ -392,7 +396,9 @@ _STRING: dict[str, Method] = {
     "contains/1": lambda s, x: x in s,
     "indexOf/1": lambda s, x: s.find(x),
     "lastIndexOf/1": lambda s, x: s.rfind(x),
-    "equalsIgnoreCase/1": lambda s, o: isinstance(o, str) and len(s) == len(o) and (s.upper() == o.upper() or s.lower() == o.lower()),
+    "equalsIgnoreCase/1": lambda s, o: (
+        isinstance(o, str) and len(s) == len(o) and (s.upper() == o.upper() or s.lower() == o.lower())
+    ),
     "replace/2": lambda s, a, b: s.replace(a, b),
     "repeat/1": lambda s, n: s * n if n >= 0 else _raise(f"java.lang.IllegalArgumentException: count is negative: {n}"),
     "toUpperCase/0": str.upper,
@@ -571,7 +577,7 @@ def _pow(a: float, b: float) -> float:
     try:
         return math.pow(a, b)
     except OverflowError:
-        return math.inf if a > 0 or float(b).is_integer() and int(b) % 2 == 0 else -math.inf
+        return math.inf if a > 0 or (float(b).is_integer() and int(b) % 2 == 0) else -math.inf
     except ValueError:
         if a == 0:
             return math.inf
@@ -584,7 +590,9 @@ def _min(a: object, b: object) -> object:
         if math.isnan(x) or math.isnan(y):
             return math.nan
         return x if _compare_double(x, y) <= 0 else y
-    return min(a, b)  # type: ignore[type-var]
+    # Math.min of ints and longs (floats and doubles were handled above)
+    assert isinstance(a, int) and isinstance(b, int)
+    return min(a, b)
 
 
 def _max(a: object, b: object) -> object:
@@ -593,7 +601,9 @@ def _max(a: object, b: object) -> object:
         if math.isnan(x) or math.isnan(y):
             return math.nan
         return x if _compare_double(x, y) >= 0 else y
-    return max(a, b)  # type: ignore[type-var]
+    # Math.max of ints and longs (floats and doubles were handled above)
+    assert isinstance(a, int) and isinstance(b, int)
+    return max(a, b)
 
 
 def _round(a: float) -> int:
