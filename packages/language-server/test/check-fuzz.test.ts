@@ -64,6 +64,9 @@ describe(`fuzz corpus (seed ${SEED}; MAA_FUZZ_SEED reproduces it)`, () => {
                 }
             });
             for (const d of docs) shared.workspace.LangiumDocuments.deleteDocument(d.uri);
+            // An in-memory build never waits for I/O: without this the whole loop is one stretch of
+            // microtasks, during which the worker cannot answer Vitest's RPC (docs/testing.md).
+            await new Promise((resolve) => setImmediate(resolve));
         }
         expect(failures, `seed ${SEED}`).toEqual([]);
     });
