@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import json
 import os
-import signal
 import subprocess
 import threading
 import time
@@ -19,7 +18,7 @@ from typing import Any
 
 import pytest
 from ros2_support import MAA_GEN, PACKAGE_DIR
-from test_ros2_toast_service import start_nodes
+from test_ros2_toast_service import deployed_nodes
 
 rclpy = pytest.importorskip("rclpy")
 
@@ -142,22 +141,10 @@ def test_deployment_has_a_mode_manager_and_gated_nodes(package: Path) -> None:
 def probe(package: Path, ros_domain: int, tmp_path: Path) -> Iterator[Probe]:
     del ros_domain
     p = Probe()
-    processes = start_nodes(package, tmp_path)
     try:
-        yield p
-        for name, proc in processes:
-            log = (tmp_path / f"{name}.log").read_text()
-            assert proc.poll() is None, f"node {name} ended with {proc.returncode}:\n{log}"
+        with deployed_nodes(package, tmp_path):
+            yield p
     finally:
-        for _, proc in processes:
-            if proc.poll() is None:
-                os.killpg(proc.pid, signal.SIGINT)
-        for _, proc in processes:
-            try:
-                proc.wait(timeout=5)
-            except subprocess.TimeoutExpired:
-                os.killpg(proc.pid, signal.SIGKILL)
-                proc.wait()
         p.close()
 
 

@@ -9,6 +9,7 @@ watches the actuator topics.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import signal
@@ -169,23 +170,15 @@ def start_nodes(package: Path, log_dir: Path) -> list[tuple[str, subprocess.Pope
     return processes
 
 
-@pytest.fixture()
-def running(installed: Installed, ros_domain: int, tmp_path: Path) -> Iterator[tuple[FakeSimulator, Path]]:
-    del ros_domain
-    sim = FakeSimulator()
-    package = installed.generated.package
-    from toast_service_robot_interfaces.msg import ArmProgram, ArmStatus, ToasterCmd  # built by `installed`
-
-    sim.subscribe("/toast_service_robot/ctrl/arm", ArmProgram, "arm_cmd", lambda m: int(m.value))
-    sim.subscribe("/toast_service_robot/arm/status", ArmStatus, "arm_status", lambda m: int(m.value))
-    sim.subscribe("/toast_service_robot/ctrl/toaster", ToasterCmd, "toaster_cmd", lambda m: int(m.value))
-    processes = start_nodes(package, tmp_path)
+@contextlib.contextmanager
+def deployed_nodes(package: Path, log_dir: Path) -> Iterator[list[tuple[str, subprocess.Popen[bytes]]]]:
+    """The nodes of deployment.json while the block runs: each must still run at its end (its log
+    otherwise), and all are stopped afterwards (SIGINT to their sessions, SIGKILL after 5 s)."""
+    processes = start_nodes(package, log_dir)
     try:
-        up = sim.wait_graph(json.loads((package / "deployment.json").read_text(encoding="utf-8")))
-        print(f"7 nodes up and matched after {up:.1f} s")
-        yield sim, tmp_path
+        yield processes
         for name, p in processes:
-            assert p.poll() is None, f"node {name} ended with {p.returncode}:\n{(tmp_path / f'{name}.log').read_text()}"
+            assert p.poll() is None, f"node {name} ended with {p.returncode}:\n{(log_dir / f'{name}.log').read_text()}"
     finally:
         for _, p in processes:
             if p.poll() is None:
@@ -196,6 +189,24 @@ def running(installed: Installed, ros_domain: int, tmp_path: Path) -> Iterator[t
             except subprocess.TimeoutExpired:
                 os.killpg(p.pid, signal.SIGKILL)
                 p.wait()
+
+
+@pytest.fixture()
+def running(installed: Installed, ros_domain: int, tmp_path: Path) -> Iterator[tuple[FakeSimulator, Path]]:
+    del ros_domain
+    sim = FakeSimulator()
+    package = installed.generated.package
+    from toast_service_robot_interfaces.msg import ArmProgram, ArmStatus, ToasterCmd  # built by `installed`
+
+    sim.subscribe("/toast_service_robot/ctrl/arm", ArmProgram, "arm_cmd", lambda m: int(m.value))
+    sim.subscribe("/toast_service_robot/arm/status", ArmStatus, "arm_status", lambda m: int(m.value))
+    sim.subscribe("/toast_service_robot/ctrl/toaster", ToasterCmd, "toaster_cmd", lambda m: int(m.value))
+    try:
+        with deployed_nodes(package, tmp_path):
+            up = sim.wait_graph(json.loads((package / "deployment.json").read_text(encoding="utf-8")))
+            print(f"7 nodes up and matched after {up:.1f} s")
+            yield sim, tmp_path
+    finally:
         sim.close()
 
 
