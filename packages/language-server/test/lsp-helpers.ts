@@ -111,3 +111,34 @@ classdiagram Types {
   }
 }
 `;
+
+/** A decoded semantic token: its line, its text, its type and its modifiers (sorted). */
+export interface SemanticToken {
+    line: number;
+    text: string;
+    type: string;
+    modifiers: string[];
+}
+
+/** The semantic tokens of a document as the editor would read them (LSP's relative encoding decoded). */
+export async function semanticTokensOf(doc: LangiumDocument): Promise<SemanticToken[]> {
+    const provider = servicesOf(doc).lsp.SemanticTokenProvider!;
+    const result = await provider.semanticHighlight(doc, { textDocument: { uri: doc.uri.toString() } });
+    const types = Object.entries(provider.tokenTypes as Record<string, number>);
+    const modifiers = Object.entries(provider.tokenModifiers as Record<string, number>);
+    const out: SemanticToken[] = [];
+    let line = 0;
+    let char = 0;
+    for (let i = 0; i < result.data.length; i += 5) {
+        const [dl, dc, length, type, mods] = result.data.slice(i, i + 5) as [number, number, number, number, number];
+        line += dl;
+        char = dl === 0 ? char + dc : dc;
+        out.push({
+            line,
+            text: doc.textDocument.getText({ start: { line, character: char }, end: { line, character: char + length } }),
+            type: types.find(([, v]) => v === type)?.[0] ?? '?',
+            modifiers: modifiers.filter(([, v]) => (mods & v) !== 0).map(([k]) => k).sort()
+        });
+    }
+    return out;
+}

@@ -6,7 +6,7 @@ import { expectFormatting } from 'langium/test';
 import type { SModelElement } from 'sprotty-protocol';
 import type { DocumentSymbol } from 'vscode-languageserver-types';
 import { byId, diagramWorkspace, TestClient } from './diagram-helpers.js';
-import { lspServices, servicesOf, workspace } from './lsp-helpers.js';
+import { lspServices, semanticTokensOf, servicesOf, workspace } from './lsp-helpers.js';
 
 const format = (): ReturnType<typeof expectFormatting> => expectFormatting(lspServices().Arc);
 
@@ -100,19 +100,7 @@ describe('navigation', () => {
     test('modes are tokens of their own; a mode folds', async () => {
         const ws = await workspace({ 'Pass.arc': PASS, 'Switch.arc': SWITCH });
         const f = ws.doc('Switch.arc');
-        const provider = servicesOf(f).lsp.SemanticTokenProvider!;
-        const result = await provider.semanticHighlight(f, { textDocument: { uri: f.uri.toString() } });
-        const types = Object.entries(provider.tokenTypes as Record<string, number>);
-        const found: string[] = [];
-        let line = 0;
-        let char = 0;
-        for (let i = 0; i < result.data.length; i += 5) {
-            const [dl, dc, length, type] = result.data.slice(i, i + 4) as [number, number, number, number];
-            line += dl;
-            char = dl === 0 ? char + dc : dc;
-            const text = f.textDocument.getText({ start: { line, character: char }, end: { line, character: char + length } });
-            found.push(`${line}:${text}:${types.find(([, v]) => v === type)?.[0] ?? '?'}`);
-        }
+        const found = (await semanticTokensOf(f)).map((t) => `${t.line}:${t.text}:${t.type}`);
         expect(found).toContain('4:Up:namespace');
         expect(found).toContain('14:Up:namespace');
         expect(found).toContain('14:Down:namespace');

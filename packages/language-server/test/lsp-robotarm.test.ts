@@ -10,7 +10,7 @@ import { describe, expect, test } from 'vitest';
 import { expectFormatting } from 'langium/test';
 import type { LangiumDocument } from 'langium';
 import { SymbolKind, type CodeAction, type CompletionItem, type Diagnostic, type DocumentSymbol, type Hover, type Location } from 'vscode-languageserver-types';
-import { applyEdits, applyWorkspaceEdit, lspServices, servicesOf, textAt, workspace, type Workspace } from './lsp-helpers.js';
+import { applyEdits, applyWorkspaceEdit, lspServices, servicesOf, semanticTokensOf, textAt, workspace, type SemanticToken, type Workspace } from './lsp-helpers.js';
 
 const TYPES = `package toast.types;
 
@@ -259,32 +259,9 @@ describe('outline', () => {
 });
 
 describe('semantic tokens', () => {
-    interface Token { text: string; type: string; modifiers: string[] }
+    const tokens = (ws: Workspace, path: string): Promise<SemanticToken[]> => semanticTokensOf(ws.doc(path));
 
-    async function tokens(ws: Workspace, path: string): Promise<Token[]> {
-        const doc = ws.doc(path);
-        const provider = servicesOf(doc).lsp.SemanticTokenProvider!;
-        const result = await provider.semanticHighlight(doc, { textDocument: { uri: doc.uri.toString() } });
-        const types = Object.entries(provider.tokenTypes as Record<string, number>);
-        const modifiers = Object.entries(provider.tokenModifiers as Record<string, number>);
-        const out: Token[] = [];
-        let line = 0;
-        let char = 0;
-        for (let i = 0; i < result.data.length; i += 5) {
-            const [dl, dc, length, type, mods] = result.data.slice(i, i + 5) as [number, number, number, number, number];
-            line += dl;
-            char = dl === 0 ? char + dc : dc;
-            const start = { line, character: char };
-            out.push({
-                text: doc.textDocument.getText({ start, end: { line, character: char + length } }),
-                type: types.find(([, v]) => v === type)![0],
-                modifiers: modifiers.filter(([, v]) => (mods & v) !== 0).map(([k]) => k).sort()
-            });
-        }
-        return out;
-    }
-
-    const show = (t: Token): string => `${t.text} ${t.type}${t.modifiers.length ? ` ${t.modifiers.join(',')}` : ''}`;
+    const show = (t: SemanticToken): string => `${t.text} ${t.type}${t.modifiers.length ? ` ${t.modifiers.join(',')}` : ''}`;
 
     test('embedded: locations, programs, the constants, numbers and units, ports after move styled as ports', async () => {
         const ws = await workspace(FILES);

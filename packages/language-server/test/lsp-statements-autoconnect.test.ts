@@ -6,7 +6,7 @@ import { describe, expect, test } from 'vitest';
 import { expectFormatting } from 'langium/test';
 import type { SModelElement } from 'sprotty-protocol';
 import { byId, diagramWorkspace, TestClient } from './diagram-helpers.js';
-import { lspServices, servicesOf, workspace } from './lsp-helpers.js';
+import { lspServices, semanticTokensOf, servicesOf, workspace } from './lsp-helpers.js';
 
 const format = (): ReturnType<typeof expectFormatting> => expectFormatting(lspServices().Arc);
 
@@ -63,19 +63,7 @@ describe('folding and semantic tokens', () => {
         expect(ranges.map((r) => `${r.startLine}-${r.endLine}`)).toContain('3-8');
 
         const f = ws.doc('F.arc');
-        const provider = servicesOf(f).lsp.SemanticTokenProvider!;
-        const result = await provider.semanticHighlight(f, { textDocument: { uri: f.uri.toString() } });
-        const types = Object.entries(provider.tokenTypes as Record<string, number>);
-        const found: string[] = [];
-        let line = 0;
-        let char = 0;
-        for (let i = 0; i < result.data.length; i += 5) {
-            const [dl, dc, length, type] = result.data.slice(i, i + 4) as [number, number, number, number];
-            line += dl;
-            char = dl === 0 ? char + dc : dc;
-            const text = f.textDocument.getText({ start: { line, character: char }, end: { line, character: char + length } });
-            found.push(`${line}:${text}:${types.find(([, v]) => v === type)?.[0] ?? '?'}`);
-        }
+        const found = (await semanticTokensOf(f)).map((t) => `${t.line}:${t.text}:${t.type}`);
         expect(found).toContain('7:port:keyword');
         expect(found).toContain('1:type:property');
     });
