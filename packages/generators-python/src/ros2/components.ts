@@ -41,7 +41,8 @@ interface NodePort {
     readonly node: AstNode;
 }
 
-interface NodeSpec {
+/** What every generated node has: the instance it runs, its ROS name and its Python module. */
+interface NodeIdentity {
     readonly instance: InstanceView;
     readonly name: string;
     readonly namespace: string;
@@ -49,6 +50,9 @@ interface NodeSpec {
     readonly module: string;
     readonly moduleName: string;
     readonly file: string;
+}
+
+interface NodeSpec extends NodeIdentity {
     readonly component: ComponentView;
     readonly inputs: NodePort[];
     readonly outputs: NodePort[];
@@ -60,14 +64,7 @@ interface NodeSpec {
 }
 
 /** The mode manager node of an instance of a component with a mode automaton. */
-interface ManagerSpec {
-    readonly instance: InstanceView;
-    readonly name: string;
-    readonly namespace: string;
-    readonly fqn: string;
-    readonly module: string;
-    readonly moduleName: string;
-    readonly file: string;
+interface ManagerSpec extends NodeIdentity {
     readonly modeTopic: string;
     readonly inputs: NodePort[];
     readonly relays: Array<{ source: string; target: string; rosType: string; codec: string; modes: string[]; port?: string }>;
