@@ -67,3 +67,13 @@ export function signalGroup(pgid: number, signal: NodeJS.Signals | 0): boolean {
 export function groupAlive(pgid: number): boolean {
   return signalGroup(pgid, 0);
 }
+
+/** Whether a process with this id exists (EPERM: it does, as another user's; a zombie counts until reaped). */
+export function processAlive(pid: number): boolean {
+  try {
+    process.kill(pid, 0);
+    return true;
+  } catch (e) {
+    return (e as NodeJS.ErrnoException).code === 'EPERM';
+  }
+}

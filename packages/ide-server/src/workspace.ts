@@ -4,6 +4,7 @@ import { chmod, lstat, mkdir, readdir, readFile, realpath, rename, rm, stat, wri
 import path from 'node:path';
 import { ConfinedRoot } from './confinement.js';
 import { HttpError } from './http-util.js';
+import { processAlive } from './process-group.js';
 import { walkTree } from './walk.js';
 
 export interface WorkspaceEntry {
@@ -149,15 +150,5 @@ export class Workspace {
       }
     }
     return removed;
-  }
-}
-
-/** Whether a process with this id exists (EPERM: it does, as another user's). */
-function processAlive(pid: number): boolean {
-  try {
-    process.kill(pid, 0);
-    return true;
-  } catch (e) {
-    return (e as NodeJS.ErrnoException).code === 'EPERM';
   }
 }

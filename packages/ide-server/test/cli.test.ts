@@ -4,7 +4,8 @@ import { createServer, type Server } from 'node:net';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { repo, TEST_TOKEN } from './helpers.js';
+import { processAlive } from '../src/process-group.js';
+import { repo, TEST_TOKEN, until } from './helpers.js';
 
 // The built `maa-ide` bin as a user starts it (`npm test` builds first): the URL it prints, the
 // token options, the umask of what it writes, and its simulations ending with it.
@@ -44,22 +45,7 @@ async function stopBin(running: Running): Promise<void> {
   await running.exited;
 }
 
-function alive(pid: number): boolean {
-  try {
-    process.kill(pid, 0);
-    return true;
-  } catch (e) {
-    return (e as NodeJS.ErrnoException).code !== 'ESRCH';
-  }
-}
 
-async function until(check: () => boolean, what: string, boundMs = 60_000): Promise<void> {
-  const deadline = Date.now() + boundMs;
-  while (!check()) {
-    if (Date.now() > deadline) throw new Error(`not within ${boundMs / 1000} s: ${what}`);
-    await new Promise((r) => setTimeout(r, 100));
-  }
-}
 
 describe.skipIf(!built)('the maa-ide bin', () => {
   let dir: string;
@@ -173,7 +159,7 @@ describe.skipIf(!built)('the maa-ide bin', () => {
       const pids = await startSession(running, path.join(dir, 'polite-sim.pids'));
       running.child.kill('SIGTERM');
       expect((await running.exited).code).toBe(0);
-      await until(() => pids.every((p) => !alive(p)), 'maa-sim and its child are gone');
+      await until(() => pids.every((p) => !processAlive(p)), 'maa-sim and its child are gone');
     } finally {
       await stopBin(running);
     }
@@ -190,7 +176,7 @@ describe.skipIf(!built)('the maa-ide bin', () => {
       running.child.kill('SIGINT');
       expect((await running.exited).code).toBe(130);
       // The exit handler sent SIGKILL synchronously; the processes disappear once reaped.
-      await until(() => pids.every((p) => !alive(p)), 'maa-sim and its child are gone');
+      await until(() => pids.every((p) => !processAlive(p)), 'maa-sim and its child are gone');
     } finally {
       await stopBin(running);
     }

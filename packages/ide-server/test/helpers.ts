@@ -92,3 +92,12 @@ export function rawRequest(
 export function rawGet(base: string, rawPath: string): Promise<{ status: number; body: string }> {
   return rawRequest(base, rawPath);
 }
+
+/** Waits until `check` holds, polling; fails after a bound generous for a loaded machine. */
+export async function until(check: () => boolean | Promise<boolean>, what: string, boundMs = 60_000): Promise<void> {
+  const deadline = Date.now() + boundMs;
+  while (!(await check())) {
+    if (Date.now() > deadline) throw new Error(`not within ${boundMs / 1000} s: ${what}`);
+    await new Promise((r) => setTimeout(r, 100));
+  }
+}

@@ -5,29 +5,13 @@ import path from 'node:path';
 import { afterAll, afterEach, beforeAll, describe, expect, it } from 'vitest';
 import WebSocket, { WebSocketServer } from 'ws';
 import { startIdeServer, type IdeServerOptions } from '../src/index.js';
-import { authFetch, BEARER, json, startSite, TEST_TOKEN, type TestSite } from './helpers.js';
+import { processAlive } from '../src/process-group.js';
+import { authFetch, BEARER, json, startSite, TEST_TOKEN, until, type TestSite } from './helpers.js';
 
 // Session lifetime and the proxy's contract with maa-sim, with a shell script standing in for
 // maa-sim and a WebSocket/HTTP server of the test standing in for its rosbridge and viser.
 
-/** Whether a process exists (a zombie counts until it is reaped). */
-function alive(pid: number): boolean {
-  try {
-    process.kill(pid, 0);
-    return true;
-  } catch (e) {
-    return (e as NodeJS.ErrnoException).code !== 'ESRCH';
-  }
-}
 
-/** Waits until `check` holds, polling; fails after a bound generous for a loaded machine. */
-async function until(check: () => boolean | Promise<boolean>, what: string, boundMs = 60_000): Promise<void> {
-  const deadline = Date.now() + boundMs;
-  while (!(await check())) {
-    if (Date.now() > deadline) throw new Error(`not within ${boundMs / 1000} s: ${what}`);
-    await new Promise((r) => setTimeout(r, 100));
-  }
-}
 
 /** Waits for a file the stand-in writes once it started. */
 async function readWhenWritten(file: string): Promise<string> {
@@ -138,11 +122,11 @@ describe('simulation session lifetime and the proxy to maa-sim (stand-in)', () =
     const ws = await openWs(site.url('/sim/rosbridge'), BEARER);
     // While a client is connected, the idle timer cannot run out (several idle times pass).
     for (let i = 0; i < 30; i++) await new Promise((r) => setTimeout(r, 100));
-    expect(alive(group)).toBe(true);
+    expect(processAlive(group)).toBe(true);
     const closed = new Promise((r) => ws.once('close', r));
     ws.close();
     await closed;
-    await until(() => !alive(group) && !alive(child), 'maa-sim and its child are gone');
+    await until(() => !processAlive(group) && !processAlive(child), 'maa-sim and its child are gone');
     const status = await json<{ running: boolean; log: string[] }>(await authFetch(site.url('/api/sim/status')));
     expect(status.running).toBe(false);
     expect(status.log.join('\n')).toContain('no client for 1 s');
@@ -157,7 +141,7 @@ describe('simulation session lifetime and the proxy to maa-sim (stand-in)', () =
       expect((await json(await authFetch(site.url('/api/sim/status'))))['running']).toBe(true);
       await new Promise((r) => setTimeout(r, 100));
     }
-    expect(alive(group)).toBe(true);
+    expect(processAlive(group)).toBe(true);
   });
 
   it('stops with SIGKILL what ignores SIGTERM, and the groups of descendants that made their own session', async () => {
@@ -166,9 +150,9 @@ describe('simulation session lifetime and the proxy to maa-sim (stand-in)', () =
     site = await siteWith(`trap '' TERM\nsleep 300 & CHILD=$!\nsetsid sleep 300 & echo $! > "${'$'}(dirname "$0")/own-session"`, { simStopGraceMs: 500 });
     const { group, child } = await start(site);
     const ownSession = Number(await readWhenWritten(path.join(site.dir, 'own-session')));
-    expect(alive(ownSession)).toBe(true);
+    expect(processAlive(ownSession)).toBe(true);
     const res = await authFetch(site.url('/api/sim/stop'), { method: 'POST' });
     expect(res.status).toBe(200);
-    await until(() => !alive(group) && !alive(child) && !alive(ownSession), 'all three processes are gone');
+    await until(() => !processAlive(group) && !processAlive(child) && !processAlive(ownSession), 'all three processes are gone');
   });
 });
