@@ -2,6 +2,9 @@ import { lstat, realpath } from 'node:fs/promises';
 import path from 'node:path';
 import { HttpError } from './http-util.js';
 
+/** The longest file or folder name (one path segment) Linux file systems take (NAME_MAX). */
+export const MAX_NAME_BYTES = 255;
+
 /**
  * Checks the syntax of a client path (relative, POSIX, no `..`): 400 otherwise. Query values
  * arrive URL-decoded, so `%2e%2e/` is checked as `../`.
@@ -14,6 +17,10 @@ export function checkRelativePath(rel: string, what = 'path'): string[] {
   const segments = rel.split('/').filter((s) => s !== '' && s !== '.');
   if (segments.some((s) => s === '..')) throw new HttpError(400, `'..' segments are not allowed in ${what}: ${rel}`);
   if (segments.length === 0) throw new HttpError(400, `${what} names no file: ${rel}`);
+  const long = segments.find((s) => Buffer.byteLength(s) > MAX_NAME_BYTES);
+  if (long !== undefined) {
+    throw new HttpError(400, `a name in ${what} is too long (${Buffer.byteLength(long)} bytes; file systems allow ${MAX_NAME_BYTES}): ${long.slice(0, 40)}…`);
+  }
   return segments;
 }
 

@@ -21,8 +21,18 @@ const NEW_FILE_MODE = 0o664;
 const NEW_FOLDER_MODE = 0o775;
 const WORLD_WRITABLE = 0o002;
 
-/** The temporary file of a save: `.<name>.maa-ide-<pid>-<uuid>.tmp` in the file's folder. */
+/** The temporary file of a save: `.<name, cut to 64 bytes>.maa-ide-<pid>-<uuid>.tmp` in the file's folder. */
 const TEMP_FILE = /^\..+\.maa-ide-(\d+)-[0-9a-f]{8}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{12}\.tmp$/;
+
+/**
+ * The start of a file name that its temporary file carries (for a person looking at the folder):
+ * at most 64 bytes, so that the temporary name stays within NAME_MAX for every name that is.
+ */
+function tempStem(name: string): string {
+  let stem = name;
+  while (Buffer.byteLength(stem) > 64) stem = stem.slice(0, -1);
+  return stem;
+}
 
 /** Names the listing and the app search leave out. */
 export function isSkippedName(name: string): boolean {
@@ -110,7 +120,7 @@ export class Workspace {
     // A symlinked target (already checked to point inside) is written through, not replaced.
     const target = (await lstat(abs).catch(() => undefined))?.isSymbolicLink() ? await realpath(abs) : abs;
     // A name of its own per write: two saves of one file in the same millisecond must not share it.
-    const temp = path.join(path.dirname(target), `.${path.basename(target)}.maa-ide-${process.pid}-${randomUUID()}.tmp`);
+    const temp = path.join(path.dirname(target), `.${tempStem(path.basename(target))}.maa-ide-${process.pid}-${randomUUID()}.tmp`);
     try {
       // 'wx': a fresh file, never one (or a symlink) someone put there.
       await writeFile(temp, content, { flag: 'wx', mode: NEW_FILE_MODE });

@@ -53,6 +53,16 @@ describe('workspace writes: hidden paths and file modes', () => {
     expect(readFileSync(path.join(site.workspace, 'models', '.env'), 'utf8')).toBe('SECRET=1\n');
   });
 
+  it('saves a file whose name is as long as the file system allows, and refuses a longer one with 400', async () => {
+    const longest = `${'n'.repeat(251)}.arc`;
+    expect((await file(`models/${longest}`, { method: 'PUT', body: 'component N {}\n' })).status).toBe(200);
+    expect(readFileSync(path.join(site.workspace, 'models', longest), 'utf8')).toBe('component N {}\n');
+    const tooLong = `${'ü'.repeat(130)}.arc`;
+    const res = await file(`models/${tooLong}`, { method: 'PUT', body: 'component U {}\n' });
+    expect(res.status).toBe(400);
+    expect((await json(res))['error']).toContain('too long (264 bytes');
+  });
+
   it('still writes, reads and deletes ordinary paths, including names with inner dots', async () => {
     expect((await file('models/A.v2.arc', { method: 'PUT', body: 'component A {}\n' })).status).toBe(200);
     expect(await (await file('models/A.v2.arc')).text()).toBe('component A {}\n');
