@@ -1,4 +1,4 @@
-import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { describe, expect, it } from 'vitest';
@@ -19,6 +19,17 @@ describe('mode automata on python-timesync (maa-gen test)', () => {
         const out = JSON.parse(r.stdout) as { results: StreamResult[]; summary: { passed: number; failed: number } };
         expect(out.results.filter((x) => !x.passed)).toEqual([]);
         expect(out.summary.passed).toBe(3);
+        expect(r.status).toBe(0);
+    }, 180_000);
+
+    it('a guard over an enum parameter switches only the instance whose parameter allows it (mode-params fixture)', async () => {
+        await ensureVenv();
+        const r = await run(process.execPath, [
+            path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'test', 'packages/generators-python/test/fixtures/mode-params/SelectorPair.arcapp', '--format', 'json', '--python', venvPython
+        ], repoDir);
+        const out = JSON.parse(r.stdout) as { results: StreamResult[]; summary: { passed: number; failed: number } };
+        expect(out.results.filter((x) => !x.passed)).toEqual([]);
+        expect(out.summary.passed).toBe(1);
         expect(r.status).toBe(0);
     }, 180_000);
 });
@@ -46,24 +57,27 @@ describe('mode automata on ROS 2', () => {
         }
     }, 180_000);
 
-    it('an application whose mode component has a parameter of a non-primitive type is refused with a diagnostic', async () => {
-        const dir = mkdtempSync(path.join(tmpdir(), 'maa-modes-ros2-bad-'));
-        const out = mkdtempSync(path.join(tmpdir(), 'maa-modes-ros2-out-'));
+    it('a mode manager takes enum parameters as the regular nodes do (by ordinal, converted back for the guards)', async () => {
+        const out = mkdtempSync(path.join(tmpdir(), 'maa-mode-params-ros2-'));
         try {
-            mkdirSync(path.join(dir, 'm'));
-            writeFileSync(path.join(dir, 'm', 'Level.cd'), 'package m;\n\nclassdiagram Level {\n  enum Level { LOW, HIGH; }\n}\n');
-            writeFileSync(path.join(dir, 'm', 'Pass.arc'), 'package m;\n\ncomponent Pass {\n  port in int i;\n  port out int o;\n\n  <<sync>> compute {\n    o = i;\n  }\n}\n');
-            writeFileSync(path.join(dir, 'm', 'Sw.arc'), [
-                'package m;', '', 'import m.Level.*;', '', 'component Sw(Level level = Level.LOW) {', '  port in int i;', '  port out int o;', '',
-                '  <<sync>> mode automaton {', '    initial mode A {', '      Pass p;', '      i -> p.i;', '      p.o -> o;', '    }',
-                '    mode B {', '      Pass q;', '      i -> q.i;', '      q.o -> o;', '    }', '    A -> B [i < 0];', '  }', '}', ''
-            ].join('\n'));
-            writeFileSync(path.join(dir, 'App.arcapp'), 'application App for m.Sw {\n  platform rospython {\n    ros2.Components;\n    ros2.AutomataBehavior;\n    ros2.DataTypes;\n  }\n}\n');
-            const r = await run(process.execPath, [path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', path.join(dir, 'App.arcapp'), '--platform', 'rospython', '--out', out], repoDir);
-            expect(r.stdout + r.stderr).toContain('the mode manager of m.Sw takes parameters of primitive types only');
-            expect(r.status).not.toBe(0);
+            const r = await run(process.execPath, [
+                path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', 'packages/generators-python/test/fixtures/mode-params/SelectorPair.arcapp',
+                '--platform', 'rospython', '--out', out
+            ], repoDir);
+            expect(r.stdout + r.stderr).not.toContain('primitive types only');
+            expect(r.status, r.stdout + r.stderr).toBe(0);
+            const pkg = path.join(out, 'rospython', 'selector_pair');
+            const deployment = JSON.parse(readFileSync(path.join(pkg, 'deployment.json'), 'utf8')) as {
+                nodes: Array<{ name: string; namespace: string; parameters: Record<string, unknown> }>
+            };
+            const managers = new Map(deployment.nodes.filter((n) => n.name === 'maa_modes').map((n) => [n.namespace, n.parameters]));
+            expect(managers.get('/selector_pair/a')).toEqual({ kind: 0 });
+            expect(managers.get('/selector_pair/b')).toEqual({ kind: 1 });
+            const manager = readFileSync(path.join(pkg, 'selector_pair', 'nodes', 'b__maa_modes.py'), 'utf8');
+            expect(manager).toContain('values["kind"] = list(Kind)[int(values["kind"])]');
+            expect(manager).toContain('convert_parameters=convert_parameters');
+            expect(manager).toContain('params["kind"] == Kind.FAST');
         } finally {
-            rmSync(dir, { recursive: true, force: true });
             rmSync(out, { recursive: true, force: true });
         }
     }, 180_000);

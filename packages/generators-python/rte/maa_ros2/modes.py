@@ -64,11 +64,15 @@ class ModeManagerNode(Node):
         relays: Sequence[Relay],
         parameters: Mapping[str, ParameterValue] | None = None,
         period: float = DEFAULT_PERIOD,
+        convert_parameters: Callable[[dict[str, object]], dict[str, object]] | None = None,
     ) -> None:
         super().__init__(name)
         self.params: dict[str, object] = {}
         for key, default in (parameters or {}).items():
             self.params[key] = self.declare_parameter(key, default).value
+        # parameters travel as the regular nodes' do (enums by ordinal); the guards read the values
+        if convert_parameters is not None:
+            self.params = convert_parameters(self.params)
         self.period = float(self.declare_parameter("period", period).value)
         self.mode = initial
         self.sync = timing == "sync"

@@ -41,6 +41,14 @@ interface NodePort {
     readonly node: AstNode;
 }
 
+/** A ROS parameter: its value (an enum constant's by ordinal) and, for an enum, the Python enum it converts back to. */
+interface ParameterSpec {
+    readonly name: string;
+    readonly value: boolean | number | string;
+    readonly enumType?: string | undefined;
+    readonly float: boolean;
+}
+
 /** What every generated node has: the instance it runs, its ROS name and its Python module. */
 interface NodeIdentity {
     readonly instance: InstanceView;
@@ -56,7 +64,7 @@ interface NodeSpec extends NodeIdentity {
     readonly component: ComponentView;
     readonly inputs: NodePort[];
     readonly outputs: NodePort[];
-    readonly parameters: Array<{ name: string; value: boolean | number | string; enumType?: string; float: boolean }>;
+    readonly parameters: ParameterSpec[];
     readonly platformSubscribes: TopicRef[];
     readonly platformPublishes: TopicRef[];
     /** The modes of enclosing mode components this node belongs to (docs/generating-ros2.md, "Mode automata"). */
@@ -68,7 +76,7 @@ interface ManagerSpec extends NodeIdentity {
     readonly modeTopic: string;
     readonly inputs: NodePort[];
     readonly relays: Array<{ source: string; target: string; rosType: string; codec: string; modes: string[]; port?: string }>;
-    readonly parameters: Array<{ name: string; value: boolean | number | string; float: boolean }>;
+    readonly parameters: ParameterSpec[];
     readonly imports: Map<string, Set<string>>;
 }
 
@@ -345,6 +353,17 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             instanceParams.set(inst, values);
         }
 
+        /** A ROS parameter of a node or mode manager: its value (an enum's by ordinal) and the enum type to convert it back to. */
+        const parameterSpec = (p: ComponentView['parameters'][number], value: boolean | number | string, imports: Map<string, Set<string>>): ParameterSpec => {
+            const enumType = p.type.kind === 'object' && !primitiveOf(p.type) ? dt.types?.[typeKey(p.type)] : undefined;
+            if (enumType?.module && enumType.name) {
+                let set = imports.get(enumType.module);
+                if (!set) imports.set(enumType.module, (set = new Set()));
+                set.add(enumType.name);
+            }
+            return { name: p.name, value, enumType: enumType?.name, float: isFloatType(p.type) };
+        };
+
         const nodes: NodeSpec[] = [];
         for (const inst of atomic) {
             const c = inst.component;
@@ -362,16 +381,7 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                     outputs.push({ port: p.name, topic: outTopic(inst, p.name), ...t, sampled: false, delayed: p.delayed, node: p.node });
                 }
             }
-            const parameters = c.parameters.map((p) => {
-                const value = instanceParams.get(inst)!.get(p.name)!;
-                const enumType = p.type.kind === 'object' && !primitiveOf(p.type) ? dt.types?.[typeKey(p.type)] : undefined;
-                if (enumType?.module && enumType.name) {
-                    let set = imports.get(enumType.module);
-                    if (!set) imports.set(enumType.module, (set = new Set()));
-                    set.add(enumType.name);
-                }
-                return { name: p.name, value, enumType: enumType?.name, float: isFloatType(p.type) };
-            });
+            const parameters = c.parameters.map((p) => parameterSpec(p, instanceParams.get(inst)!.get(p.name)!, imports));
             const b = behaviors.get(c)!;
             let set = imports.get(b.module);
             if (!set) imports.set(b.module, (set = new Set()));
@@ -421,12 +431,8 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                     }
                 }
             }
-            const parameters = c.parameters.map((p) => {
-                if (p.type.kind === 'object' && !primitiveOf(p.type)) {
-                    throw new GenerationError(`ros2.Components: the mode manager of ${c.qualifiedName} takes parameters of primitive types only ('${p.name}' is ${p.typeName})`, p.node);
-                }
-                return { name: p.name, value: instanceParams.get(inst)!.get(p.name)!, float: isFloatType(p.type) };
-            });
+            // The parameters as the regular nodes take them (enums by ordinal, converted back for the guards).
+            const parameters = c.parameters.map((p) => parameterSpec(p, instanceParams.get(inst)!.get(p.name)!, imports));
             const base = inst.path.length === 0 ? '' : `${inst.path.map(rosName).join('__')}__`;
             const moduleName = `${base}maa_modes`;
             managers.push({
@@ -495,6 +501,7 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             for (const name of ['InPort', 'ModeManagerNode', 'Relay', 'run_node', ...new Set([...mg.inputs, ...mg.relays].map((p) => p.codec.replace(/\(.*$/, '')))]) guards.add('maa_ros2', name);
             for (const [module, names] of mg.imports) for (const name of names) guards.add(module, name);
             const instance = [rootInstance, ...mg.instance.path].join('.');
+            const enumParams = mg.parameters.filter((p) => p.enumType);
             const lines = [
                 `"""ROS 2 mode manager of instance ${instance} (${c.qualifiedName}).`,
                 '',
@@ -519,6 +526,14 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                     ...mg.parameters.map((p) => `    ${JSON.stringify(p.name)}: ${pyLiteral(p.value, p.float)},`),
                     '}'
                 ] : ['PARAMETERS: dict[str, bool | int | float | str] = {}']),
+                ...(enumParams.length ? [
+                    '',
+                    '',
+                    'def convert_parameters(values: dict[str, object]) -> dict[str, object]:',
+                    '    """Enum parameters travel as their literal\'s ordinal, as for every node."""',
+                    ...enumParams.map((p) => `    values[${JSON.stringify(p.name)}] = list(${p.enumType})[int(values[${JSON.stringify(p.name)}])]  # type: ignore[call-overload]`),
+                    '    return values'
+                ] : []),
                 '',
                 '',
                 'def mode_transition(',
@@ -531,7 +546,7 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                 'def create_node() -> ModeManagerNode:',
                 '    return ModeManagerNode(',
                 `        ${JSON.stringify(mg.name)}, ${JSON.stringify(mg.modeTopic)}, ${JSON.stringify(c.modes!.initial)}, ${JSON.stringify(c.modes!.timing)},`,
-                '        mode_transition, INPUTS, RELAYS, PARAMETERS,',
+                `        mode_transition, INPUTS, RELAYS, PARAMETERS,${enumParams.length ? ' convert_parameters=convert_parameters,' : ''}`,
                 '    )',
                 '',
                 '',

@@ -1,18 +1,21 @@
 """Mode automata on ROS 2 for real: the generated nodes of the modes fixture (gear.Gearbox) run as
 rclpy processes; a mode switch changes which subcomponent's output reaches the out port ``o``.
+The mode-params fixture (pick.SelectorPair) has two mode components whose guard reads an enum
+parameter (``kind == Kind.FAST``): only the FAST instance switches.
 
-The fixture needs no message package of its own (its ports are ``int``), so the generated package
-runs from its folder (deployment.json's ``python_path``) without being built or installed.
+The fixtures need no message package of their own (their ports are ``int``), so the generated
+packages run from their folder (deployment.json's ``python_path``) without being built or installed.
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import subprocess
 import threading
 import time
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -23,14 +26,16 @@ from test_ros2_toast_service import deployed_nodes
 rclpy = pytest.importorskip("rclpy")
 
 MODES_APP = PACKAGE_DIR / "test" / "fixtures" / "modes" / "Modes.arcapp"
+MODE_PARAMS_APP = PACKAGE_DIR / "test" / "fixtures" / "mode-params" / "SelectorPair.arcapp"
 TIMEOUT = 30.0
 
 
 class Probe:
-    """Publishes ``/clock`` (the nodes run on simulation time), feeds ``/gearbox/speed`` and records
-    what arrives on the out ports and the mode topic."""
+    """Publishes ``/clock`` (the nodes run on simulation time), feeds the ``Int32`` topic ``speed`` and
+    records what arrives on the ``Int32`` topics ``outputs`` and the (latched) mode topics ``modes``,
+    each under its name."""
 
-    def __init__(self) -> None:
+    def __init__(self, speed: str, outputs: Mapping[str, str], modes: Mapping[str, str]) -> None:
         from rclpy.executors import SingleThreadedExecutor
         from rclpy.node import Node
         from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
@@ -46,21 +51,30 @@ class Probe:
         self.clock_type = Clock
         self.clock = self.node.create_publisher(Clock, "/clock", 10)
         self.sim_ns = 0
-        self.speed = self.node.create_publisher(Int32, "/gearbox/speed", 10)
+        self.speed = self.node.create_publisher(Int32, speed, 10)
         self.lock = threading.Lock()
         self.events: list[tuple[str, Any]] = []
-        self.node.create_subscription(Int32, "/gearbox/o", lambda m: self._event("o", m.data), 10)
-        self.node.create_subscription(Int32, "/gearbox/total", lambda m: self._event("total", m.data), 10)
+        for name, topic in outputs.items():
+            self.node.create_subscription(Int32, topic, self._recorder(name), 10)
         latched = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=1, reliability=ReliabilityPolicy.RELIABLE,
                              durability=DurabilityPolicy.TRANSIENT_LOCAL)
-        self.node.create_subscription(String, "/gearbox/maa_modes/mode", lambda m: self._event("mode", m.data), latched)
+        for name, topic in modes.items():
+            self.node.create_subscription(String, topic, self._recorder(name), latched)
         self.running = True
         self.thread = threading.Thread(target=self._loop, daemon=True)
         self.thread.start()
 
+    def _recorder(self, name: str) -> Any:
+        return lambda m: self._event(name, m.data)
+
     def _event(self, name: str, value: Any) -> None:
         with self.lock:
             self.events.append((name, value))
+
+    def values(self, name: str, since: int = 0) -> list[Any]:
+        """What arrived under ``name`` after the first ``since`` events."""
+        with self.lock:
+            return [v for n, v in self.events[since:] if n == name]
 
     def _loop(self) -> None:
         period = 0.02
@@ -106,17 +120,26 @@ class Probe:
         rclpy.shutdown(context=self.context)
 
 
-@pytest.fixture(scope="module")
-def package(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    out = tmp_path_factory.mktemp("modes")
+def generate_package(app: Path, out: Path, name: str) -> Path:
+    """The ament package ``name`` of ``app`` generated for rospython into ``out``."""
     result = subprocess.run(
-        ["node", str(MAA_GEN), "generate", str(MODES_APP), "--platform", "rospython", "--out", str(out)],
+        ["node", str(MAA_GEN), "generate", str(app), "--platform", "rospython", "--out", str(out)],
         capture_output=True,
         text=True,
         check=False,
     )
     assert result.returncode == 0, f"maa-gen generate failed:\n{result.stdout}\n{result.stderr}"
-    return out / "rospython" / "gearbox"
+    return out / "rospython" / name
+
+
+@pytest.fixture(scope="module")
+def package(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return generate_package(MODES_APP, tmp_path_factory.mktemp("modes"), "gearbox")
+
+
+@pytest.fixture(scope="module")
+def selector_package(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return generate_package(MODE_PARAMS_APP, tmp_path_factory.mktemp("mode-params"), "selector_pair")
 
 
 def test_deployment_has_a_mode_manager_and_gated_nodes(package: Path) -> None:
@@ -137,15 +160,32 @@ def test_deployment_has_a_mode_manager_and_gated_nodes(package: Path) -> None:
             publishers[t["topic"]] = n["name"]
 
 
-@pytest.fixture()
-def probe(package: Path, ros_domain: int, tmp_path: Path) -> Iterator[Probe]:
-    del ros_domain
-    p = Probe()
+@contextlib.contextmanager
+def probing(package: Path, log_dir: Path, speed: str, outputs: Mapping[str, str], modes: Mapping[str, str]) -> Iterator[Probe]:
+    """A probe on the deployed nodes of ``package`` while the block runs."""
+    p = Probe(speed, outputs, modes)
     try:
-        with deployed_nodes(package, tmp_path):
+        with deployed_nodes(package, log_dir):
             yield p
     finally:
         p.close()
+
+
+@pytest.fixture()
+def probe(package: Path, ros_domain: int, tmp_path: Path) -> Iterator[Probe]:
+    del ros_domain
+    with probing(package, tmp_path, "/gearbox/speed", {"o": "/gearbox/o", "total": "/gearbox/total"},
+                 {"mode": "/gearbox/maa_modes/mode"}) as p:
+        yield p
+
+
+@pytest.fixture()
+def selector_probe(selector_package: Path, ros_domain: int, tmp_path: Path) -> Iterator[Probe]:
+    del ros_domain
+    root = "/selector_pair"
+    with probing(selector_package, tmp_path, f"{root}/speed", {"slow": f"{root}/a/o", "fast": f"{root}/b/o"},
+                 {"a": f"{root}/a/maa_modes/mode", "b": f"{root}/b/maa_modes/mode"}) as p:
+        yield p
 
 
 def test_a_mode_switch_changes_which_subcomponent_reaches_the_out_port(probe: Probe) -> None:
@@ -169,6 +209,33 @@ def test_a_mode_switch_changes_which_subcomponent_reaches_the_out_port(probe: Pr
     since = probe.mark()
     probe.send(4)
     probe.wait_for("o", 4, since)
-    with probe.lock:
-        after = [v for n, v in probe.events[since:] if n == "o"]
+    after = probe.values("o", since)
     assert set(after) <= {0, 4}, f"only s1's outputs reach o in mode First: {after}"
+
+
+def test_the_mode_managers_take_enum_parameters_as_the_nodes_do(selector_package: Path) -> None:
+    data = json.loads((selector_package / "deployment.json").read_text(encoding="utf-8"))
+    managers = {n["namespace"]: n for n in data["nodes"] if n["name"] == "maa_modes"}
+    # Kind.SLOW and Kind.FAST by ordinal, as every node's enum parameters
+    assert managers["/selector_pair/a"]["parameters"] == {"kind": 0}
+    assert managers["/selector_pair/b"]["parameters"] == {"kind": 1}
+
+
+def test_a_guard_over_an_enum_parameter_switches_only_the_fast_instance(selector_probe: Probe) -> None:
+    probe = selector_probe
+    probe.wait_for("a", "Slow")
+    probe.wait_for("b", "Slow")
+    # a positive input: b (kind FAST) switches to Fast before relaying, a (kind SLOW) stays in Slow
+    probe.wait_for("fast", 20, resend=2)
+    probe.wait_for("b", "Fast")
+    probe.wait_for("slow", 2)
+    since = probe.mark()
+    probe.send(3)
+    probe.wait_for("fast", 30, since)
+    probe.wait_for("slow", 3, since)
+    # zero switches b back
+    since = probe.mark()
+    probe.send(0)
+    probe.wait_for("b", "Slow", since)
+    probe.wait_for("fast", 0, since)
+    assert probe.values("a") == ["Slow"], f"the SLOW selector never leaves its first mode: {probe.values('a')}"
