@@ -8,6 +8,9 @@ their mode is inactive. Every connector declared in a mode is a :class:`Relay` o
 forwards the messages of the connector's source topic to the target's topic while one of its
 modes is current.
 
+The current mode is also published on ``maa_ros2.node.STATES_TOPIC`` (the IDE's live states)
+under the instance's node path, the manager's namespace.
+
 - ``<<sync>>``: a message on an in port updates the port's value (primitive ports keep their
   last value, others hold it until the end of the period) and the transitions are taken with
   those values before the message is relayed, so the new mode's connectors carry it; at the end
@@ -23,7 +26,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from maa_ros2.node import DEFAULT_PERIOD, MODE_QOS, PORT_QOS, InPort, ParameterValue
+from maa_ros2.node import DEFAULT_PERIOD, MODE_QOS, PORT_QOS, STATES_QOS, STATES_TOPIC, InPort, ParameterValue, state_message
 from maa_ros2.ports import PortCodec
 from rclpy.node import Node
 from rclpy.publisher import Publisher
@@ -80,6 +83,9 @@ class ModeManagerNode(Node):
         self._sampled: dict[str, object] = {}
         self._events: dict[str, object] = {}
         self._mode_publisher = self.create_publisher(String, mode_topic, MODE_QOS)
+        # the mode is the instance's live state too (docs/ide.md, "Live values"): under the
+        # instance's node path, which is the manager's namespace
+        self._state_publisher = self.create_publisher(String, STATES_TOPIC, STATES_QOS)
         self._relay_publishers: dict[str, Publisher[Any]] = {}
         topics: dict[str, tuple[Any, list[InPort], list[Relay]]] = {}
         for p in inputs:
@@ -97,6 +103,7 @@ class ModeManagerNode(Node):
         msg = String()
         msg.data = self.mode
         self._mode_publisher.publish(msg)
+        self._state_publisher.publish(state_message(self.get_namespace(), self.mode))
 
     def _switch(self, trigger: str | None, inputs: Mapping[str, object]) -> None:
         target = self._transition(self.mode, trigger, inputs, self.params)

@@ -48,7 +48,9 @@ DEFAULT_PERIOD = 0.02
 #: Where every node with an automaton publishes its current state (docs/ide.md, "Live values"):
 #: std_msgs/String, data = JSON ``{"<node name>": "<state path>"}`` (one key per message), in the
 #: first period and in every period in which the state changed. Transient-local (the last message
-#: of each node is kept for subscribers that ask for it) and reliable.
+#: of each node is kept for subscribers that ask for it) and reliable. The mode manager of a mode
+#: component publishes the component's current mode the same way, under the instance's node path
+#: (the manager's namespace).
 STATES_TOPIC = "/maa/automaton_states"
 STATES_QOS = QoSProfile(
     history=HistoryPolicy.KEEP_LAST,
@@ -56,6 +58,13 @@ STATES_QOS = QoSProfile(
     reliability=ReliabilityPolicy.RELIABLE,
     durability=DurabilityPolicy.TRANSIENT_LOCAL,
 )
+
+
+def state_message(node: str, state: str) -> String:
+    """A message of :data:`STATES_TOPIC`: the state path (or mode) of the instance at node path ``node``."""
+    msg = String()
+    msg.data = json.dumps({node: state})
+    return msg
 
 
 @dataclass(frozen=True)
@@ -242,9 +251,7 @@ class ComponentNode(Node):
         if state is None or state == self._maa_state:
             return
         self._maa_state = state
-        msg = String()
-        msg.data = json.dumps({self.get_fully_qualified_name(): state})
-        self._maa_state_publisher.publish(msg)
+        self._maa_state_publisher.publish(state_message(self.get_fully_qualified_name(), state))
 
 
 def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> None:

@@ -9,11 +9,12 @@ from __future__ import annotations
 
 import json
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from enum import Enum
 from typing import Any
 
 from maa_behavior.robotarm import Arm, RobotArmExecutor
+from maa_timesync.modes import ModeInstance
 from maa_timesync.runtime import TICK, ComponentType, System
 from maa_timesync.streams import decode_value, encode_item
 
@@ -124,14 +125,20 @@ def port_value(message: Mapping[str, Any], port_type: object) -> object:
     return data
 
 
+def _mode_of(inst: ModeInstance) -> Callable[[], str | None]:
+    """The live state of a mode component: its current mode."""
+    return lambda: inst.mode
+
+
 class LockstepApp:
     """One architecture time slice per ``step``; implements the simulator's lock-step protocol.
 
     With ``port_topics`` (``"<instance path>.<out port>"`` of atomic instances and ``"<in port>"`` of
     the root -> ``(topic, type)``, generated into ``maa_app.PORT_TOPICS``) every slice's result also
     holds the value of every port that got one in that slice, under its ROS 2 topic name, and the
-    automaton states on :data:`STATES_TOPIC` (in the first slice and whenever one changed). Messages
-    on the root's in-port topics among the inputs are fed into those ports for the slice.
+    automaton states and the modes of mode components on :data:`STATES_TOPIC` (in the first slice and
+    whenever one changed). Messages on the root's in-port topics among the inputs are fed into those
+    ports for the slice.
     """
 
     def __init__(
@@ -167,11 +174,14 @@ class LockstepApp:
                     self._observed.append((entry[0], inst.observers.setdefault(port, [])))
         self._states: dict[str, str] | None = None
         system.init()
-        self._automata = [
-            (self.node_names.get(".".join(inst.path), ".".join(inst.path)), inst.behavior)
-            for inst in system.instances
-            if inst.behavior is not None and inst.behavior.state_path() is not None
-        ]
+        # live states: the state path of every automaton and the mode of every mode component
+        self._automata: list[tuple[str, Callable[[], str | None]]] = []
+        for inst in system.instances:
+            node = self.node_names.get(".".join(inst.path), ".".join(inst.path))
+            if isinstance(inst, ModeInstance):
+                self._automata.append((node, _mode_of(inst)))
+            elif inst.behavior is not None and inst.behavior.state_path() is not None:
+                self._automata.append((node, inst.behavior.state_path))
         return system
 
     def reset(self) -> None:
@@ -204,7 +214,7 @@ class LockstepApp:
                 items.clear()
                 if values:
                     out.setdefault(topic, []).extend(values)
-            states = {node: b.state_path() or "" for node, b in self._automata}
+            states = self.states()
             if states != self._states:
                 self._states = states
                 out[STATES_TOPIC] = [{"data": json.dumps(states)}]
@@ -217,8 +227,8 @@ class LockstepApp:
             port_value(message, self.root.PORT_TYPES.get(port))
 
     def states(self) -> dict[str, str]:
-        """The current state path of every automaton, by ROS 2 node name."""
-        return {node: b.state_path() or "" for node, b in self._automata}
+        """The current state path of every automaton and mode of every mode component, by ROS 2 node name."""
+        return {node: state() or "" for node, state in self._automata}
 
     def topics(self) -> dict[str, str]:
         """The port topics this build emits (and the root's in ports it reads), with their types."""

@@ -236,9 +236,11 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
         for (const p of root.ports.filter((x) => x.direction === 'in')) {
             portTopics.push(`${str(p.name)}: (${str(`${rootNs}/${rosName(p.name)}`)}, ${str(topicType(p))}),`);
         }
-        for (const inst of ctx.architecture.instances.filter((i) => i.component.atomic)) {
+        // Mode components have a live state too, their mode (under their instance's node path, as on ROS 2).
+        for (const inst of ctx.architecture.instances.filter((i) => i.component.atomic || i.component.modes)) {
             const node = [rootNs, ...inst.path.map(rosName)].join('/');
             nodeNames.push(`${str(inst.path.join('.'))}: ${str(node)},`);
+            if (!inst.component.atomic) continue;
             for (const p of inst.component.ports.filter((x) => x.direction === 'out')) {
                 portTopics.push(`${str(`${inst.path.join('.')}.${p.name}`)}: (${str(`${node}/${rosName(p.name)}`)}, ${str(topicType(p))}),`);
             }
@@ -264,7 +266,7 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             'PORT_TOPICS: dict[str, tuple[str, str]] = {',
             ...indent(portTopics, 4),
             '}',
-            '#: ROS 2 node names of the atomic instances (keys of /maa/automaton_states).',
+            '#: ROS 2 node names of the atomic instances and mode components (keys of /maa/automaton_states).',
             'NODE_NAMES: dict[str, str] = {',
             ...indent(nodeNames, 4),
             '}',

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import json
 from collections.abc import Mapping
 
 from maa_behavior import Behavior
 from maa_timesync import TICK, AtomicComponent, ComponentType, ModeComponent, System
+from maa_timesync.lockstep import STATES_TOPIC, LockstepApp
 from maa_timesync.modes import ModeInstance, port_value
 from maa_timesync.runtime import Connector
 
@@ -155,3 +157,14 @@ def test_port_value_gives_the_default_without_message() -> None:
     assert port_value({"i": None}, "i", 0) == 0
     assert port_value({}, "i", False) is False
     assert port_value({"i": -3}, "i", 0) == -3
+
+
+def test_lockstep_publishes_the_mode_as_the_live_state_of_the_mode_component() -> None:
+    # the same live-state entry as an automaton's: the instance's node path -> its mode
+    app = LockstepApp(Switch, {}, {"i": ("/switch/i", "std_msgs/msg/Int32")}, {"": "/switch"})
+    first = app.step({})
+    assert first[STATES_TOPIC] == [{"data": json.dumps({"/switch": "A"})}]
+    assert STATES_TOPIC not in app.step({"/switch/i": {"data": 4}})  # no switch: nothing new
+    switched = app.step({"/switch/i": {"data": -1}})
+    assert switched[STATES_TOPIC] == [{"data": json.dumps({"/switch": "B"})}]
+    assert app.states() == {"/switch": "B"}

@@ -60,12 +60,18 @@ class Probe:
                              durability=DurabilityPolicy.TRANSIENT_LOCAL)
         for name, topic in modes.items():
             self.node.create_subscription(String, topic, self._recorder(name), latched)
+        # the IDE's live states: every entry as the event "state <node path>"
+        self.node.create_subscription(String, "/maa/automaton_states", self._states, latched)
         self.running = True
         self.thread = threading.Thread(target=self._loop, daemon=True)
         self.thread.start()
 
     def _recorder(self, name: str) -> Any:
         return lambda m: self._event(name, m.data)
+
+    def _states(self, msg: Any) -> None:
+        for node, state in json.loads(msg.data).items():
+            self._event(f"state {node}", state)
 
     def _event(self, name: str, value: Any) -> None:
         with self.lock:
@@ -196,6 +202,8 @@ def test_a_mode_switch_changes_which_subcomponent_reaches_the_out_port(probe: Pr
     since = probe.mark()
     probe.send(-1)
     probe.wait_for("mode", "Second", since)
+    # the mode is the live state of the mode component's instance (the root: /gearbox), as the IDE reads it
+    probe.wait_for("state /gearbox", "Second", since)
     probe.wait_for("o", -10, since)
     probe.wait_for("total", -10, since)
     since = probe.mark()
@@ -228,6 +236,7 @@ def test_a_guard_over_an_enum_parameter_switches_only_the_fast_instance(selector
     # a positive input: b (kind FAST) switches to Fast before relaying, a (kind SLOW) stays in Slow
     probe.wait_for("fast", 20, resend=2)
     probe.wait_for("b", "Fast")
+    probe.wait_for("state /selector_pair/b", "Fast")
     probe.wait_for("slow", 2)
     since = probe.mark()
     probe.send(3)
@@ -239,3 +248,4 @@ def test_a_guard_over_an_enum_parameter_switches_only_the_fast_instance(selector
     probe.wait_for("b", "Slow", since)
     probe.wait_for("fast", 0, since)
     assert probe.values("a") == ["Slow"], f"the SLOW selector never leaves its first mode: {probe.values('a')}"
+    assert probe.values("state /selector_pair/a") == ["Slow"]

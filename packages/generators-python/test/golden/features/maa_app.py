@@ -40,7 +40,7 @@ PORT_TOPICS: dict[str, tuple[str, str]] = {
     "other.reading": ("/features/other/reading", "std_msgs/msg/String"),
     "other.pair": ("/features/other/pair", "std_msgs/msg/String"),
 }
-#: ROS 2 node names of the atomic instances (keys of /maa/automaton_states).
+#: ROS 2 node names of the atomic instances and mode components (keys of /maa/automaton_states).
 NODE_NAMES: dict[str, str] = {
     "counter": "/features/counter",
     "lamp": "/features/lamp",

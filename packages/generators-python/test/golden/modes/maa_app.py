@@ -28,8 +28,9 @@ PORT_TOPICS: dict[str, tuple[str, str]] = {
     "s10.o": ("/gearbox/s10/o", "std_msgs/msg/Int32"),
     "t.o": ("/gearbox/t/o", "std_msgs/msg/Int32"),
 }
-#: ROS 2 node names of the atomic instances (keys of /maa/automaton_states).
+#: ROS 2 node names of the atomic instances and mode components (keys of /maa/automaton_states).
 NODE_NAMES: dict[str, str] = {
+    "": "/gearbox",
     "s1": "/gearbox/s1",
     "s10": "/gearbox/s10",
     "t": "/gearbox/t",

@@ -47,7 +47,7 @@ PORT_TOPICS: dict[str, tuple[str, str]] = {
     "toasterCtrl.leverDown": ("/toast_service_robot/toaster_ctrl/lever_down", "std_msgs/msg/Bool"),
     "arm.status": ("/toast_service_robot/arm/status", "std_msgs/msg/String"),
 }
-#: ROS 2 node names of the atomic instances (keys of /maa/automaton_states).
+#: ROS 2 node names of the atomic instances and mode components (keys of /maa/automaton_states).
 NODE_NAMES: dict[str, str] = {
     "dist": "/toast_service_robot/dist",
     "color": "/toast_service_robot/color",

@@ -27,7 +27,7 @@ PORT_TOPICS: dict[str, tuple[str, str]] = {
     "lamp.brightness": ("/room/lamp/brightness", "std_msgs/msg/Int32"),
     "doubler.o": ("/room/doubler/o", "std_msgs/msg/Int32"),
 }
-#: ROS 2 node names of the atomic instances (keys of /maa/automaton_states).
+#: ROS 2 node names of the atomic instances and mode components (keys of /maa/automaton_states).
 NODE_NAMES: dict[str, str] = {
     "lamp": "/room/lamp",
     "doubler": "/room/doubler",
