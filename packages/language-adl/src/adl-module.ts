@@ -74,7 +74,7 @@ export const AdlModule: Module<AdlServices, PartialLangiumCoreServices & AdlAdde
     references: {
         Linker: (s) => new AdlLinker(s),
         ScopeComputation: (s) => new AdlScopeComputation(s),
-        ScopeProvider: (s) => new AdlScopeProvider(s.maa.NameResolver, s.workspace.AstNodeDescriptionProvider, s.shared)
+        ScopeProvider: (s) => new AdlScopeProvider(s.maa.NameResolver, s.workspace.AstNodeDescriptionProvider, s.shared, () => s.maa.ExpressionTyper)
     },
     validation: {
         DocumentValidator: (s) => new AdlDocumentValidator(s),

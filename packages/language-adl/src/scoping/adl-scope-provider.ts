@@ -2,11 +2,13 @@ import {
     AstUtils, EMPTY_SCOPE, WorkspaceCache, type AstNode, type AstNodeDescription, type AstNodeDescriptionProvider,
     type LangiumSharedCoreServices, type ReferenceInfo, type Scope, type ScopeProvider
 } from 'langium';
-import type { Block, ComponentType, NameExpression, SwitchGroup } from '../generated/ast.js';
+import type { Block, CDEnum, ComponentType, NameExpression, SwitchGroup } from '../generated/ast.js';
 import {
-    isAssignmentExpression, isBlock, isComponentType, isSwitchGroup, isForStatement, isLocalVariableDeclaration,
+    isAssignmentExpression, isBlock, isCDEnum, isComponentType, isSwitchGroup, isForStatement, isLocalVariableDeclaration,
     isParentComponent, isPortAccess, isStatement, isSubcomponent
 } from '../generated/ast.js';
+import type { ExpressionTyper } from '../types/expression-typer.js';
+import { switchOfLabelValue } from './switch-labels.js';
 import { allPorts, subcomponentType, subcomponentsOf, elementsOf } from '../components/component-model.js';
 import { allFeatures } from '../components/features.js';
 import { sameBranchFirst } from '../components/variant-context.js';
@@ -38,7 +40,9 @@ export class AdlScopeProvider implements ScopeProvider {
     constructor(
         private readonly resolver: NameResolver,
         private readonly descriptions: AstNodeDescriptionProvider,
-        shared: LangiumSharedCoreServices
+        shared: LangiumSharedCoreServices,
+        /** The typer, for the selector type of a switch whose case labels name enum constants (lazy: it needs the scopes). */
+        private readonly typer?: () => ExpressionTyper
     ) {
         this.componentTables = new WorkspaceCache(shared);
         this.portTables = new WorkspaceCache(shared);
@@ -100,6 +104,12 @@ export class AdlScopeProvider implements ScopeProvider {
             // A key names a parameter or (MontiArc's feature binding, `sub(f = true)`) a feature.
             return this.nodes(() => (keyTarget ? [...keyTarget.params, ...allFeatures(keyTarget)] : []));
         }
+        const labelEnum = this.caseLabelEnum(expr);
+        if (labelEnum) {
+            // Java's enum switch (JLS 14.11.1, MontiCore's EnumConstantSwitchLabel): a bare case
+            // label names a constant of the selector's enum, whatever else that name means here.
+            return this.nodes(() => labelEnum.constants);
+        }
         const find = (name: string): AstNodeDescription | undefined => {
             const local = this.localName(expr, name);
             if (local) return this.descriptions.createDescription(local, name);
@@ -112,6 +122,14 @@ export class AdlScopeProvider implements ScopeProvider {
             return out;
         };
         return new LookupScope(find, all);
+    }
+
+    /** The enum whose constants a bare case label names (`case RED:` in a switch over a `Color`), if `expr` is one. */
+    private caseLabelEnum(expr: NameExpression): CDEnum | undefined {
+        const sw = switchOfLabelValue(expr);
+        if (!sw || !this.typer) return undefined;
+        const t = this.typer().typeOf(sw.selector);
+        return t.kind === 'object' && isCDEnum(t.decl) ? t.decl : undefined;
     }
 
     /** The innermost name visible at an expression (as the first of localNames, by table lookups). */

@@ -1,5 +1,6 @@
 import { type AstNode, type ValidationAcceptor, type ValidationChecks } from 'langium';
-import type { AdlAstType, SwitchStatement } from '../../generated/ast.js';
+import type { AdlAstType, Expression, SwitchStatement } from '../../generated/ast.js';
+import { isCDEnumConstant, isCDEnum, isFieldAccessExpression, isNameExpression } from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import type { ExpressionChecks } from './expression-checks.js';
 import type { TypeRelations } from '../../types/type-relations.js';
@@ -44,6 +45,7 @@ export class StatementChecks {
         if (!selectorOk) {
             accept('error', `A switch selector must be of type char, byte, short, int (or their boxes), String or an enum, but the expression is of type ${printType(selector)}.`, { node: s.selector, code: Codes.ExprTypeMismatch });
         }
+        const selectorEnum = selector.kind === 'object' && isCDEnum(selector.decl) ? selector.decl : undefined;
         const seen = new Map<string, AstNode>();
         let defaults = 0;
         let arrows = 0;
@@ -57,11 +59,17 @@ export class StatementChecks {
                     if (defaults > 1) accept('error', 'A switch has at most one default label.', { node: label, code: Codes.DuplicateCaseLabel });
                 }
                 for (const v of label.values) {
+                    if (selectorEnum && isNameExpression(v) && !v.ref.ref) {
+                        // A bare label of an enum switch names a constant of the selector's enum (scoping).
+                        accept('error', `'${v.ref.$refText}' is not a constant of enum ${selectorEnum.name}; the labels of a switch over ${printType(selector)} are its constants: ${selectorEnum.constants.map((c) => c.name).join(', ') || '(none)'}.`, { node: v, code: Codes.ExprUnresolvedName });
+                        continue;
+                    }
                     const t = this.expressions.checkExpression(v, accept);
                     if (selectorOk && !isErroneous(selector) && !isErroneous(t) && !this.rel.isAssignable(selector, t)) {
                         accept('error', `A case label of a switch over ${printType(selector)} must be of that type, but it is of type ${printType(t)}.`, { node: v, code: Codes.ExprTypeMismatch });
                     }
-                    const key = v.$cstNode?.text.replace(/\s+/g, '') ?? '';
+                    // `RED` and `Color.RED` label the same constant of an enum switch.
+                    const key = (selectorEnum && t.kind === 'object' && t.decl === selectorEnum ? enumConstantName(v) : undefined) ?? v.$cstNode?.text.replace(/\s+/g, '') ?? '';
                     if (key && seen.has(key)) {
                         accept('error', `Duplicate case label '${key}': every value may label one case only.`, { node: v, code: Codes.DuplicateCaseLabel });
                     } else if (key) seen.set(key, v);
@@ -82,6 +90,12 @@ export class StatementChecks {
         if (t.kind === 'object') return t.decl.$type === 'CDEnum' || (t.decl.name === 'String' && printType(t) === 'String');
         return false;
     }
+}
+
+/** The constant an enum label names, bare (`RED`) or qualified (`Color.RED`, `pkg.Color.RED`). */
+function enumConstantName(v: Expression): string | undefined {
+    if (isNameExpression(v)) return isCDEnumConstant(v.ref.ref) ? v.ref.ref.name : undefined;
+    return isFieldAccessExpression(v) ? v.member : undefined;
 }
 
 /**
