@@ -26,7 +26,16 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from maa_ros2.node import DEFAULT_PERIOD, MODE_QOS, PORT_QOS, STATES_QOS, STATES_TOPIC, InPort, ParameterValue, state_message
+from maa_ros2.node import (
+    DEFAULT_PERIOD,
+    MODE_QOS,
+    PORT_QOS,
+    STATES_QOS,
+    STATES_TOPIC,
+    InPort,
+    ParameterValue,
+    state_message,
+)
 from maa_ros2.ports import PortCodec
 from rclpy.node import Node
 from rclpy.publisher import Publisher
