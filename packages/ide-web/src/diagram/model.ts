@@ -20,6 +20,8 @@ export class ComponentNode extends SNodeImpl {
     declare expanded?: boolean;
     declare severity?: Severity;
     declare trace?: string;
+    /** A subcomponent declared in a mode (mode automata): the mode it is active in. */
+    declare mode?: string;
 }
 
 export class MaaPort extends SPortImpl {
@@ -39,6 +41,8 @@ export class ConnectorEdge extends SEdgeImpl {
     declare sourcePortPath?: string;
     declare severity?: Severity;
     declare trace?: string;
+    /** A connector declared in a mode (mode automata): the mode it is active in. */
+    declare mode?: string;
 }
 
 export class StateNode extends SNodeImpl {

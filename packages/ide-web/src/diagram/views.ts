@@ -21,6 +21,7 @@ import {
     type SParentElementImpl,
 } from 'sprotty';
 import { stateActivity } from './schema.js';
+import { modeActivity } from '../simulate/states.js';
 import type { ComponentNode, ConnectorEdge, MaaGraph, MaaPort, StateNode, TransitionEdge } from './model.js';
 
 type VNode = ReturnType<typeof svg>;
@@ -139,6 +140,12 @@ export interface ViewClasses {
 }
 
 export function createViews(state: ViewState): ViewClasses {
+    /** The current mode of the component node that declares an element (its parent), if it has one live. */
+    const modeOf = (parent: unknown): string | undefined => {
+        const owner = parent as Partial<ComponentNode> | undefined;
+        return owner?.type === 'node:component' && owner.composed ? state.activeStateOf(owner.instancePath) : undefined;
+    };
+
     class GraphView extends SGraphView {
         override render(model: Readonly<MaaGraph>, context: RenderingContext): VNode {
             const vnode = super.render(model, context);
@@ -180,6 +187,12 @@ export function createViews(state: ViewState): ViewClasses {
             if (active) {
                 parts.push(boxedText({ x: w / 2, y: h - 10 }, `▶ ${active}`, 'maa-current-state', 'maa-state-active'));
             }
+            // A decomposed component's live state is its current mode (mode automata).
+            const currentMode = node.composed ? state.activeStateOf(node.instancePath) : undefined;
+            if (currentMode) {
+                parts.push(boxedText({ x: w / 2, y: h - 10 }, `▶ mode ${currentMode}`, 'maa-current-mode', 'maa-mode-current'));
+            }
+            const inMode = modeActivity(node.mode, node.mode ? modeOf(node.parent) : undefined);
             if (node.composed && !isRoot && node.instancePath) {
                 const path = node.instancePath;
                 const expanded = !!node.expanded;
@@ -222,11 +235,15 @@ export function createViews(state: ViewState): ViewClasses {
                         'maa-composed': !!node.composed,
                         'maa-expanded': !!node.expanded,
                         'maa-variable': !!node.variationPoint,
+                        'maa-mode-active': inMode === 'active',
+                        'maa-mode-inactive': inMode === 'inactive',
                         [`maa-kind-${kind || 'none'}`]: true,
                         selected: node.selected,
                         mouseover: node.hoverFeedback,
                     },
                     'data-instance-path': node.instancePath ?? '',
+                    ...(node.mode ? { 'data-mode': node.mode } : {}),
+                    ...(currentMode ? { 'data-current-mode': currentMode } : {}),
                     on,
                 },
                 ...parts,
@@ -266,6 +283,9 @@ export function createViews(state: ViewState): ViewClasses {
             if (vnode) {
                 setClass(vnode, 'maa-connector', true);
                 setClass(vnode, 'maa-connector-live', state.liveValue(connectorPortPath(edge)) !== undefined);
+                const inMode = modeActivity(edge.mode, edge.mode ? modeOf(edge.parent) : undefined);
+                setClass(vnode, 'maa-mode-active', inMode === 'active');
+                setClass(vnode, 'maa-mode-inactive', inMode === 'inactive');
                 severityClasses(vnode, edge.severity);
             }
             return vnode;
