@@ -1,6 +1,7 @@
-import { execFile, spawn } from 'node:child_process';
+import { execFile } from 'node:child_process';
 import { chmodSync, existsSync, readdirSync, readFileSync, readlinkSync, statSync } from 'node:fs';
 import path from 'node:path';
+import { killWhenPaused } from '@maa/generator-core/node';
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
 import { BIN, ModelDir, parseTextLines, requireBuiltCli, runCli } from './helpers.js';
 
@@ -103,26 +104,6 @@ function runCliAs(args: string[], cwd: string): Promise<{ code: number | null; s
       if (error && typeof error.code !== 'number') reject(error);
       else resolve({ code: error ? (error.code as number) : 0, stdout, stderr });
     });
-  });
-}
-
-/** Runs maa-gen until the writer pauses (MAA_GEN_PAUSE_AT), then kills it with SIGKILL; returns where it paused. */
-function killWhenPaused(args: string[], cwd: string, pauseAt: string): Promise<string> {
-  return new Promise((resolve, reject) => {
-    const child = spawn(process.execPath, [BIN, ...args], { cwd, env: { ...process.env, NO_COLOR: '1', MAA_GEN_PAUSE_AT: pauseAt }, stdio: ['ignore', 'ignore', 'pipe'] });
-    let stderr = '';
-    let paused = '';
-    child.stderr.setEncoding('utf8');
-    child.stderr.on('data', (chunk: string) => {
-      stderr += chunk;
-      const m = /maa-gen: paused at (\S+ \d+)/.exec(stderr);
-      if (m && !paused) {
-        paused = m[1]!;
-        child.kill('SIGKILL');
-      }
-    });
-    child.on('error', reject);
-    child.on('exit', (code, signal) => (paused && signal === 'SIGKILL' ? resolve(paused) : reject(new Error(`maa-gen did not pause at ${pauseAt} (exit ${code}): ${stderr}`))));
   });
 }
 
@@ -290,7 +271,7 @@ describe('maa-gen generate', () => {
       const fromNewer = JSON.stringify(tree(w.path('out/alpha'))) === JSON.stringify(newer);
       const [from, to] = fromNewer ? [newer, older] : [older, newer];
       w.write('models/robot/Sensor.arc', sensor(!fromNewer));
-      const paused = await killWhenPaused(args, w.dir, `${phase}:2`);
+      const paused = await killWhenPaused(process.execPath, [BIN, ...args], `${phase}:2`, { cwd: w.dir, env: { ...process.env, NO_COLOR: '1' } });
       expect(paused).toMatch(new RegExp(`^${phase} \\d+$`));
       expect(tree(w.path('out/alpha')), `killed at ${paused}`).toEqual(phase === 'staging' ? from : to);
       const again = await runCli(args, w.dir);

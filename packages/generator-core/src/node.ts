@@ -4,4 +4,5 @@ export * from './index.js';
 export * from './orchestrator/orchestrator.js';
 export * from './orchestrator/gen-codes.js';
 export * from './output/writer.js';
+export { killWhenPaused } from './output/pause.js';
 export * from './templates/environment.js';

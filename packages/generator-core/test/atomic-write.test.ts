@@ -1,11 +1,10 @@
-import { spawn } from 'node:child_process';
 import { existsSync, lstatSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, readlinkSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import { OutputWriteError, STATE_DIR } from '../src/output/layout.js';
-import type { WritePhase } from '../src/output/pause.js';
+import { killWhenPaused, type WritePhase } from '../src/output/pause.js';
 import { OutputTransaction } from '../src/output/transaction.js';
 import { planOutput, type OutputFile } from '../src/output/writer.js';
 import { snapshot } from './test-generators.js';
@@ -113,25 +112,7 @@ beforeAll(() => {
 function killAt(out: string, phase: WritePhase, n: number): Promise<string> {
     const spec = path.join(path.dirname(out), `spec-${phase}-${n}.json`);
     writeFileSync(spec, JSON.stringify({ outRoot: out, platforms: NEW }));
-    return new Promise((resolve, reject) => {
-        const child = spawn(process.execPath, [CHILD, spec], { env: { ...process.env, MAA_GEN_PAUSE_AT: `${phase}:${n}` }, stdio: ['ignore', 'ignore', 'pipe'] });
-        let stderr = '';
-        let paused = '';
-        child.stderr.setEncoding('utf8');
-        child.stderr.on('data', (chunk: string) => {
-            stderr += chunk;
-            const m = /maa-gen: paused at (\S+ \d+)/.exec(stderr);
-            if (m && !paused) {
-                paused = m[1]!;
-                child.kill('SIGKILL');
-            }
-        });
-        child.on('error', reject);
-        child.on('exit', (code, signal) => {
-            if (paused && signal === 'SIGKILL') resolve(paused);
-            else reject(new Error(`the writer did not pause at ${phase}:${n} (exit ${code}, signal ${signal}): ${stderr}`));
-        });
-    });
+    return killWhenPaused(process.execPath, [CHILD, spec], `${phase}:${n}`);
 }
 
 function platformState(out: string, platform: 'alpha' | 'beta'): 'old' | 'new' | 'mixed' {
