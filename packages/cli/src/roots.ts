@@ -1,10 +1,21 @@
 import { accessSync, constants, readFileSync, statSync, type Stats } from 'node:fs';
 import path from 'node:path';
 import type { RootSpec } from '@maa/language-server';
+import { LANGUAGE_FACTS } from '@maa/language-server/language-facts';
 import { CliError } from './errors.js';
 
-/** File extensions of model files (kept in line with the language family's file discovery). */
-export const MODEL_FILE_EXTENSIONS: readonly string[] = ['.arc', '.cd', '.ra'];
+/**
+ * File extensions of model files: those of every file language of the family, from the language
+ * facts the grammar composer writes (so a new language is discovered without a change here). The
+ * checker's own discovery (`checkRoots`) reads the same extensions from the family's service
+ * registry, so `.arcapp` application configurations have always been checked with their folder;
+ * as file arguments they are checked within the root of modelRootOfFile (for a configuration
+ * without a package declaration, its own folder, which is also the default `--root` of
+ * `maa-gen generate`).
+ */
+export const MODEL_FILE_EXTENSIONS: readonly string[] = [
+  ...new Set(LANGUAGE_FACTS.languages.flatMap((l) => l.fileExtensions)),
+].sort();
 
 export function isModelFile(file: string): boolean {
   return MODEL_FILE_EXTENSIONS.includes(path.extname(file));

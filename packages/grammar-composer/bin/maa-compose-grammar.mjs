@@ -18,16 +18,23 @@
  * one registration entry per language). With --registry the tool also writes a TypeScript module
  * exporting `BEHAVIOR_LANGUAGES`, the run-time registration objects (`maa.language.behavior.export`)
  * of the composed behavior languages.
+ *
+ * The tool also writes the family's language facts next to the generated sources:
+ * `language-facts.json` and `language-facts.ts` (`LANGUAGE_FACTS`): each language's id, file
+ * extensions, aliases, keywords read from the composed grammar (hard and soft) and scope names
+ * (see ../lib/language-facts.mjs). The IDE's highlighting and the CLI's file discovery read them.
  */
 import { spawnSync } from 'node:child_process';
 import { copyFileSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { basename, dirname, join, relative, resolve } from 'node:path';
+import { computeLanguageFacts, languageFactsModule } from '../lib/language-facts.mjs';
 
 /**
- * @typedef {{ id: string, grammar: string, fileExtensions: string[], export?: string }} LanguageEntry
+ * @typedef {{ id: string, grammar: string, fileExtensions: string[], aliases?: string[], export?: string }} LanguageEntry
  * @typedef {{ grammars: string[], languages?: LanguageEntry[], hostBehaviors?: string[],
- *             behavior?: { rule: string, keyword: string, export?: string }, softKeywords?: string[],
+ *             behavior?: { rule: string, keyword: string, export?: string, id?: string, aliases?: string[] },
+ *             softKeywords?: string[],
  *             hostBehaviorGrammars?: string[] }} LanguageManifest
  */
 
@@ -64,7 +71,7 @@ function packageDir(spec) {
     return dirname(require.resolve(`${spec}/package.json`));
 }
 
-function main() {
+async function main() {
     const opts = parseArgs(process.argv.slice(2));
     const buildDir = resolve(opts.build);
     rmSync(buildDir, { recursive: true, force: true });
@@ -82,6 +89,8 @@ function main() {
     const registrations = [];
     /** @type {Array<{ pkg: string, name: string, module: string }>} */
     const languageRegistrations = [];
+    /** @type {import('../lib/language-facts.mjs').ComposedPackage[]} */
+    const composed = [];
 
     for (const spec of opts.packages) {
         const dir = packageDir(spec);
@@ -96,6 +105,7 @@ function main() {
             copyFileSync(join(dir, g), join(buildDir, basename(g)));
         }
         for (const kw of manifest.softKeywords ?? []) softKeywords.add(kw);
+        composed.push({ package: pkg.name, languages: manifest.languages ?? [], behavior: manifest.behavior, softKeywords: manifest.softKeywords ?? [] });
         for (const rule of manifest.hostBehaviors ?? []) behaviorRules.push(rule);
         if (manifest.behavior) {
             if (!manifest.behavior.export) {
@@ -145,8 +155,9 @@ function main() {
         // Production mode: the parser must not print its ambiguity reports (Tick as a soft
         // keyword is one, resolved as intended) into the output of tools such as `maa-gen --format json`.
         mode: 'production',
-        // `export` is ours (the registration object), not langium-cli's: its schema rejects it.
-        languages: languages.map(({ export: _export, ...l }) => ({ ...l, grammar: basename(l.grammar) })),
+        // `export` and `aliases` are ours (the registration object, the language facts), not
+        // langium-cli's: its schema rejects them.
+        languages: languages.map(({ export: _export, aliases: _aliases, ...l }) => ({ ...l, grammar: basename(l.grammar) })),
         out: relative(buildDir, outDir)
     };
     writeFileSync(join(buildDir, 'langium-config.json'), JSON.stringify(config, null, 2) + '\n');
@@ -180,7 +191,17 @@ function main() {
         writeFileSync(resolve(opts.registry), lines.join('\n'));
     }
 
+    if (result.status === 0) {
+        const facts = await computeLanguageFacts(buildDir, composed);
+        mkdirSync(outDir, { recursive: true });
+        writeFileSync(join(outDir, 'language-facts.json'), JSON.stringify(facts, null, 2) + '\n');
+        writeFileSync(join(outDir, 'language-facts.ts'), languageFactsModule(facts));
+    }
+
     process.exit(result.status ?? 1);
 }
 
-main();
+main().catch((e) => {
+    console.error(`maa-compose-grammar: ${e instanceof Error ? e.message : String(e)}`);
+    process.exit(1);
+});

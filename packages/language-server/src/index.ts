@@ -3,3 +3,4 @@ export { checkModelRoots } from './check.js';
 export { CheckInputError, type CheckDiagnostic, type CheckOptions, type RootSpec, type Severity } from '@maa/language-adl';
 export { familyDiagnostics, renderDiagnosticsMarkdown } from './docs/render-diagnostics.js';
 export * from './diagram/index.js';
+export { LANGUAGE_FACTS, type LanguageFact, type LanguageFacts, type LanguageScopes } from './generated/language-facts.js';

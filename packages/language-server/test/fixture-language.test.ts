@@ -147,6 +147,25 @@ describe('composition (maa-compose-grammar)', () => {
         expect(registry[0]).toBe(TableLanguage);
     });
 
+    test('the language facts list the fixture as a behavior language of the host, with its keywords from the grammar', async () => {
+        type Facts = typeof import('../src/generated/language-facts.js').LANGUAGE_FACTS;
+        const json = JSON.parse(readFileSync(join(tmp, 'generated', 'language-facts.json'), 'utf8')) as Facts;
+        const { LANGUAGE_FACTS } = await import(pathToFileURL(join(tmp, 'generated', 'language-facts.ts')).href) as { LANGUAGE_FACTS: Facts };
+        expect(LANGUAGE_FACTS).toEqual(json);
+        const table = json.languages.find((l) => l.id === 'table');
+        expect(table).toMatchObject({ kind: 'behavior', package: '@maa-fixtures/table-language', blockKeyword: 'table', fileExtensions: [] });
+        // `table` is soft (package.json); `default` comes from DefaultRow, the expression keywords from the host's Expression.
+        expect(table?.softKeywords).toContain('table');
+        expect(table?.keywords).toEqual(expect.arrayContaining(['default', 'true', 'false']));
+        expect(table?.keywords).not.toContain('table');
+        // The host's files may hold `table { }` blocks; its own keywords do not include the fixture's.
+        const arc = json.languages.find((l) => l.id === 'arc');
+        expect(arc?.embeds).toEqual(['table']);
+        expect(arc?.fileExtensions).toEqual(['.arc']);
+        expect(json.languages.map((l) => l.id)).toEqual(['arc', 'cd', 'table']);
+        expect(json.softKeywords).toContain('table');
+    });
+
     test('the fixture uses only the public API of @maa/language-adl (no deep imports)', () => {
         for (const file of readdirSync(fixtureDir).filter((f) => f.endsWith('.ts'))) {
             const text = readFileSync(join(fixtureDir, file), 'utf8');
