@@ -53,6 +53,12 @@ export type Authentication =
   | { ok: true; via: 'query' }
   | { ok: false; refusal: AccessRefusal };
 
+/** A request (or WebSocket upgrade) let in, with its parsed URL, or refused and why. */
+export type Admission =
+  | { ok: true; url: URL; via: 'cookie' | 'bearer' | 'query' }
+  /** `unauthenticated`: the Host and Origin were fine, the token was missing or wrong (401). */
+  | { ok: false; refusal: AccessRefusal; unauthenticated: boolean };
+
 export class AccessGuard {
   private readonly hostnames: Set<string>;
 
@@ -76,6 +82,23 @@ export class AccessGuard {
   /** The `Set-Cookie` value that stores the token in the browser. */
   setCookie(): string {
     return `${this.cookieName}=${this.token}; HttpOnly; SameSite=Strict; Path=/`;
+  }
+
+  /**
+   * Every check a request or upgrade passes before it is routed, in this order: Host and Origin
+   * (so a refused page reads, writes and starts nothing), a well-formed URL, the token.
+   */
+  admit(req: IncomingMessage): Admission {
+    const refusal = this.checkOrigin(req);
+    if (refusal) return { ok: false, refusal, unauthenticated: false };
+    let url: URL;
+    try {
+      url = new URL(req.url ?? '/', 'http://localhost');
+    } catch {
+      return { ok: false, refusal: { status: 400, message: 'malformed URL' }, unauthenticated: false };
+    }
+    const auth = this.authenticate(req, url.searchParams);
+    return auth.ok ? { ok: true, url, via: auth.via } : { ok: false, refusal: auth.refusal, unauthenticated: true };
   }
 
   /** Host and Origin (docs/ide.md): undefined when both are acceptable. */

@@ -4,7 +4,7 @@ import type { AddressInfo } from 'node:net';
 import path from 'node:path';
 import type { Duplex } from 'node:stream';
 import { fileURLToPath } from 'node:url';
-import { AccessGuard, generateToken, loginPage, tokenProblem } from './access.js';
+import { AccessGuard, generateToken, loginPage, tokenProblem, type AccessRefusal } from './access.js';
 import { createApiRouter } from './api.js';
 import { GenerationService } from './generation.js';
 import { sendError, sendJson, sendText } from './http-util.js';
@@ -116,42 +116,30 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
   let guard!: AccessGuard;
 
   const handle = async (req: IncomingMessage, res: ServerResponse): Promise<void> => {
-    // Host and Origin first: a refused request reads, writes and starts nothing.
-    const refusal = guard.checkOrigin(req);
-    if (refusal) {
-      sendJson(res, refusal.status, { error: refusal.message });
+    const admission = guard.admit(req);
+    if (!admission.ok) {
+      refuse(req, res, admission.refusal, admission.unauthenticated);
       return;
     }
-    let url: URL;
-    try {
-      url = new URL(req.url ?? '/', 'http://localhost');
-    } catch {
-      sendJson(res, 400, { error: 'malformed URL' });
-      return;
-    }
-    const pathname = url.pathname;
-    const isApi = pathname === '/api' || pathname.startsWith('/api/');
-    const isSim = pathname === '/sim' || pathname.startsWith('/sim/');
-    const isGet = req.method === 'GET' || req.method === 'HEAD';
-    const auth = guard.authenticate(req, url.searchParams);
-    if (!auth.ok) {
-      res.setHeader('WWW-Authenticate', 'Bearer realm="maa-ide"');
-      if (isGet && !isApi && !isSim && (req.headers.accept ?? '').includes('text/html')) sendText(res, 401, loginPage(), 'text/html; charset=utf-8');
-      else sendJson(res, auth.refusal.status, { error: auth.refusal.message });
-      return;
-    }
-    if (auth.via === 'query') {
+    const { url } = admission;
+    if (admission.via === 'query') {
       res.setHeader('Set-Cookie', guard.setCookie());
-      if (isGet && !isApi) {
+      if (isPage(req, url.pathname)) {
         // The token leaves the address bar (and history); the cookie carries it from now on.
         res.writeHead(302, { Location: withoutToken(url), 'Content-Length': 0, 'Cache-Control': 'no-store' });
         res.end();
         return;
       }
     }
+    await route(req, res, url);
+  };
+
+  /** Where an admitted request goes: the REST API, the simulator's proxy, or the app's files. */
+  const route = async (req: IncomingMessage, res: ServerResponse, url: URL): Promise<void> => {
+    const pathname = url.pathname;
     if (pathname.startsWith('/api/sim/')) sims.signOfLife();
-    if (isApi) await api.dispatch(req, res, pathname, url.searchParams);
-    else if (isSim) {
+    if (isUnder(pathname, '/api')) await api.dispatch(req, res, pathname, url.searchParams);
+    else if (isUnder(pathname, '/sim')) {
       if (!proxy.handleRequest(req, res, pathname)) sendJson(res, 404, { error: `unknown route: ${req.method} ${pathname}` });
     } else await app.handle(req, res, pathname);
   };
@@ -165,23 +153,12 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
     upgraded.add(socket);
     socket.on('close', () => upgraded.delete(socket));
     socket.on('error', () => socket.destroy());
-    const refusal = guard.checkOrigin(req);
-    if (refusal) {
-      rejectUpgrade(socket, refusal.status, refusal.message);
+    const admission = guard.admit(req);
+    if (!admission.ok) {
+      rejectUpgrade(socket, admission.refusal.status, admission.refusal.message);
       return;
     }
-    let url: URL;
-    try {
-      url = new URL(req.url ?? '/', 'http://localhost');
-    } catch {
-      rejectUpgrade(socket, 400, 'malformed URL');
-      return;
-    }
-    const auth = guard.authenticate(req, url.searchParams);
-    if (!auth.ok) {
-      rejectUpgrade(socket, auth.refusal.status, auth.refusal.message);
-      return;
-    }
+    const { url } = admission;
     // maa-ide's token is not the simulator's business.
     req.url = withoutToken(url);
     if (!proxy.handleUpgrade(req, socket, head, url.pathname)) rejectUpgrade(socket, 404, `no WebSocket endpoint at ${url.pathname}`);
@@ -225,6 +202,28 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
 }
 
 /** The path and query of a URL without its `token` parameter. */
+/** Whether `pathname` is `prefix` or below it. */
+function isUnder(pathname: string, prefix: string): boolean {
+  return pathname === prefix || pathname.startsWith(`${prefix}/`);
+}
+
+/** A page a browser navigates to (not the API or the simulator): gets HTML, and redirects. */
+function isPage(req: IncomingMessage, pathname: string): boolean {
+  return (req.method === 'GET' || req.method === 'HEAD') && !isUnder(pathname, '/api') && !isUnder(pathname, '/sim');
+}
+
+/** Answers a refused request: a page that asks for the token gets the login page, the rest JSON. */
+function refuse(req: IncomingMessage, res: ServerResponse, refusal: AccessRefusal, unauthenticated: boolean): void {
+  if (!unauthenticated) {
+    sendJson(res, refusal.status, { error: refusal.message });
+    return;
+  }
+  res.setHeader('WWW-Authenticate', 'Bearer realm="maa-ide"');
+  const pathname = (req.url ?? '/').split('?')[0] ?? '/';
+  if (isPage(req, pathname) && (req.headers.accept ?? '').includes('text/html')) sendText(res, 401, loginPage(), 'text/html; charset=utf-8');
+  else sendJson(res, refusal.status, { error: refusal.message });
+}
+
 function withoutToken(url: URL): string {
   const query = new URLSearchParams(url.searchParams);
   query.delete('token');
