@@ -51,6 +51,34 @@ describe('feature configurations on python-timesync (maa-gen test)', () => {
     }
 });
 
+// Instances of one component type in different configurations (hall.Hall: a dimmable and a plain
+// lamp, wings whose lamps differ): each configuration is generated as a variant of the type, and
+// the stream test sees every lamp behave as its own instance is configured.
+const instancesApp = path.join(repoDir, 'packages', 'generators-python', 'test', 'fixtures', 'variability-instances', 'Instances.arcapp');
+
+describe('instances of one type in different configurations (maa-gen test)', () => {
+    it('python-timesync: each lamp behaves per its instance\'s configuration; a stream test of the type finds the variant of its features', async () => {
+        await ensureVenv();
+        const r = await run(process.execPath, [cli, 'test', instancesApp, '--format', 'json', '--python', venvPython], repoDir);
+        const out = JSON.parse(r.stdout) as { results: StreamResult[] };
+        // LampPlain.stream names hall.Lamp with dimmable = false: it runs against the variant Lamp__no_dimmable.
+        expect(out.results.map((x) => x.file.split(/[\\/]/).pop()).sort()).toEqual(['Hall.stream', 'LampDimmable.stream', 'LampPlain.stream']);
+        expect(out.results.filter((x) => !x.passed)).toEqual([]);
+        expect(r.status, r.stdout + r.stderr).toBe(0);
+    }, 180_000);
+
+    it('both platforms generate one variant per configuration, named after its features', async () => {
+        for (const platform of ['timesync', 'rospython']) {
+            const dir = path.join(work, `instances-${platform}`);
+            const r = await run(process.execPath, [cli, 'generate', instancesApp, '--platform', platform, '--out', dir], repoDir);
+            expect(r.status, r.stdout + r.stderr).toBe(0);
+            const text = allText(dir);
+            for (const cls of ['class LampBehavior', 'class Lamp__no_dimmableBehavior']) expect(text).toContain(cls);
+            expect(text).not.toContain('class Lamp__dimmable');
+        }
+    }, 180_000);
+});
+
 describe('feature configurations on ROS 2', () => {
     it('generate each configuration: the dimmed room has its doubler node, the plain one none', async () => {
         const texts: Record<string, string> = {};

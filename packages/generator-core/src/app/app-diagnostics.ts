@@ -128,7 +128,7 @@ export const APP_DIAGNOSTICS: DiagnosticCatalog = {
         },
         {
             code: 'app/feature-configuration-excluded', severity: 'error',
-            rule: 'The feature bindings of the application select a configuration that the constraints of the top component type (and of its subcomponents) admit, and in which all instances of one component type select the same variation points (a generated component type has one configuration).',
+            rule: 'The feature bindings of the application select a configuration that the constraints of the top component type (and of its subcomponents) admit (instances of one component type in different configurations are generated as variants of the type).',
             invalid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(cautious = false)'), VARIABLE.replace('  feature cautious;', '  feature cautious;\n  constraint(cautious);')), at: 'cautious = false' },
             valid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(cautious = true)'), VARIABLE.replace('  feature cautious;', '  feature cautious;\n  constraint(cautious);')) }
         },

@@ -7,7 +7,10 @@ import { AppCodes } from './codes.js';
  * The feature configuration an application generates (`application A for C(f = true) { ... }`):
  * the configuration of the root component's constraints that binds the listed features as
  * given, the others (and the features of subcomponents the constraints leave open) taking the
- * first admitted values, `false` before `true`. Undefined without variability.
+ * first admitted values, `false` before `true`. Undefined without variability. The configuration
+ * is per instance: two instances of one type may be configured differently (`Lamp a(dimmable =
+ * true); Lamp b(dimmable = false);`), and generation then emits one variant of the type per
+ * configuration (model/architecture.ts, `variantName`).
  */
 export function applicationVariant(app: Application): { env?: VariantEnv; findings: AppFinding[] } {
     const root = app.component?.ref as unknown as ast.ComponentType | undefined;
@@ -39,13 +42,6 @@ export function applicationVariant(app: Application): { env?: VariantEnv; findin
         });
         return { findings };
     }
-    const conflicts = space.conflicts(chosen);
-    if (conflicts.length > 0) {
-        findings.push({
-            code: AppCodes.FeatureConfigurationExcluded, severity: 'error', node: app.features[0] ?? app, ...(app.features[0] ? {} : { property: 'component' }),
-            message: `In this configuration two instances of one component type select different variation points (e.g. 'varif (${conflicts[0]!.condition?.$cstNode?.text ?? ''})'); a generated component type has one configuration.`
-        });
-        return { findings };
-    }
+    // Instances of one type may differ: each configuration of a type becomes a variant of it (buildArchitecture).
     return { env: space.generationEnv(chosen), findings };
 }

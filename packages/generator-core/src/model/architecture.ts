@@ -4,7 +4,7 @@ import {
     typeOfMCType, printType, type ImpliedEnd, type SymType, type Timing
 } from '@maa/language-adl';
 
-import { currentVariant, isFeatureBinding } from '@maa/language-adl';
+import { currentVariant, isFeatureBinding, variationPoints, withVariant, type VariantEnv } from '@maa/language-adl';
 import { isModeAutomatonBlock, modeAutomatonView, modeSubcomponentsOf, type ModeAutomatonView } from './modes.js';
 
 type ComponentType = ast.ComponentType;
@@ -198,47 +198,111 @@ function isBuiltin(node: AstNode): boolean {
     return AstUtils.getDocument(node).uri.scheme === 'builtin';
 }
 
-/** Builds the view of the architecture below a root component type. */
+/**
+ * One configuration of a component type in the generated architecture. Without variability every
+ * type has one; with a feature configuration (app-variant.ts) two instances of one type may
+ * select different variation points or feature values, or contain subcomponents in different
+ * configurations: each distinct configuration is a variant, generated as a type of its own.
+ */
+interface Variant {
+    readonly id: number;
+    readonly decl: ComponentType;
+    /** The configuration the variant is read in (the first instance's; all instances of the variant agree). */
+    readonly env: VariantEnv | undefined;
+    /** The variant of each subcomponent, by name. */
+    readonly subs: ReadonlyMap<string, Variant>;
+    readonly parents: readonly Variant[];
+    readonly features: Readonly<Record<string, boolean>> | undefined;
+    /** Position of the first instance in depth-first declaration order: the first variant of a type keeps its name. */
+    first: number;
+    name: string;
+    qualifiedName: string;
+}
+
+/**
+ * The name of a variant of a component type other than its first one (in depth-first
+ * declaration order of the instances, which keeps the type's name): the type's name, two
+ * underscores, and the features the variant selects (`Lamp__dimmable`, `Room__dim_fast`), or
+ * `no_` and the type's features when it selects none (`Lamp__no_dimmable`); a variant that
+ * differs by something else (a boolean parameter bound by its instantiation, a subcomponent's
+ * configuration) gets the number of the variant (`Lamp__2`). A name already taken gets `_2`, `_3`, ...
+ */
+export function variantName(typeName: string, features: Readonly<Record<string, boolean>> | undefined, index: number, taken: (name: string) => boolean): string {
+    const all = Object.keys(features ?? {}).sort(compare);
+    const selected = all.filter((f) => features?.[f]);
+    const suffix = selected.length > 0 ? selected.join('_') : all.length > 0 ? `no_${all.join('_')}` : String(index + 1);
+    let name = `${typeName}__${suffix}`;
+    for (let i = 2; taken(name); i++) name = `${typeName}__${suffix}_${i}`;
+    return name;
+}
+
+/** Builds the view of the architecture below a root component type (in the current feature configuration, if any). */
 export function buildArchitecture(root: ComponentType): ArchitectureModel {
-    const views = new Map<ComponentType, ComponentView>();
-    const order: ComponentType[] = [];
-    const visit = (c: ComponentType): void => {
-        if (views.has(c)) return;
-        views.set(c, undefined as unknown as ComponentView); // cycle guard
-        order.push(c);
+    const byType = new Map<ComponentType, Map<string, Variant>>();
+    const variantsInOrder: Variant[] = [];
+    let seq = 0;
+    interface Entry { path: string[]; node: AstNode | undefined; args: readonly AstNode[]; variant?: Variant }
+    const entries: Entry[] = [];
+
+    /** The variant of `c` in configuration `env`; `entry` is its instance (undefined for a parent type). */
+    const resolve = (c: ComponentType, env: VariantEnv | undefined, entry: Entry | undefined, active: ReadonlySet<ComponentType>): Variant => {
+        const position = seq++;
+        if (entry) entries.push(entry);
+        const inner = new Set([...active, c]);
+        const subs = new Map<string, Variant>();
+        for (const sub of withVariant(env, () => allSubcomponents(c))) {
+            const decl = subcomponentType(sub).decl;
+            if (!decl || inner.has(decl) || inner.size > 64) continue; // a cycle (reported elsewhere)
+            const path = entry ? [...entry.path, sub.name] : undefined;
+            const child: Entry | undefined = path ? { path, node: sub, args: sub.args.filter((a) => !isFeatureBinding(a)) } : undefined;
+            subs.set(sub.name, resolve(decl, env?.sub(sub), child, inner));
+        }
+        const parents: Variant[] = [];
         for (const p of c.parents) {
             const decl = p.type?.ref?.ref;
-            if (decl) visit(decl);
+            if (decl && !inner.has(decl)) parents.push(resolve(decl, env, undefined, inner));
         }
-        for (const sub of allSubcomponents(c)) {
-            const decl = subcomponentType(sub).decl;
-            if (decl) visit(decl);
+        const features = env?.featureValues?.(c);
+        const decisions = env ? withVariant(env, () => variationPointsOf(c).map((v) => (env.decide(v) ? '1' : '0')).join('')) : '';
+        const key = [decisions, JSON.stringify(features ?? null), [...subs].map(([n, v]) => `${n}:${v.id}`).join(','), parents.map((v) => v.id).join(',')].join('|');
+        let variants = byType.get(c);
+        if (!variants) byType.set(c, (variants = new Map()));
+        let variant = variants.get(key);
+        if (!variant) {
+            variant = { id: variantsInOrder.length, decl: c, env, subs, parents, features, first: position, name: c.name, qualifiedName: componentQualifiedName(c) };
+            variants.set(key, variant);
+            variantsInOrder.push(variant);
         }
+        if (entry) entry.variant = variant;
+        return variant;
     };
-    visit(root);
-    for (const c of order) views.set(c, componentView(c));
+    const rootVariant = resolve(root, currentVariant(), { path: [], node: undefined, args: [] }, new Set());
+
+    // Names: the first variant of a type (by its first instance) keeps the type's name.
+    const taken = new Set(variantsInOrder.map((v) => v.qualifiedName));
+    for (const variants of byType.values()) {
+        const sorted = [...variants.values()].sort((x, y) => x.first - y.first);
+        sorted.forEach((v, i) => {
+            if (i === 0) return;
+            const outer = v.qualifiedName.slice(0, v.qualifiedName.length - v.decl.name.length);
+            v.name = variantName(v.decl.name, v.features, i, (n) => taken.has(`${outer}${n}`));
+            v.qualifiedName = `${outer}${v.name}`;
+            taken.add(v.qualifiedName);
+        });
+    }
+    const views = new Map<Variant, ComponentView>();
+    for (const v of variantsInOrder) views.set(v, withVariant(v.env, () => componentView(v)));
 
     const components = [...views.values()].sort((a, b) => compare(a.qualifiedName, b.qualifiedName));
     const byName = new Map(components.map((c) => [c.qualifiedName, c]));
-
-    const instances: InstanceView[] = [];
-    const walk = (c: ComponentType, path: string[], node: AstNode | undefined, args: readonly AstNode[], depth: number): void => {
-        const view = views.get(c);
-        if (!view || depth > 64) return;
-        instances.push({ path, component: view, node, args });
-        for (const sub of allSubcomponents(c)) {
-            const decl = subcomponentType(sub).decl;
-            if (decl) walk(decl, [...path, sub.name], sub, sub.args.filter((a) => !isFeatureBinding(a)), depth + 1);
-        }
-    };
-    walk(root, [], undefined, [], 0);
+    const instances: InstanceView[] = entries.flatMap((e) => (e.variant ? [{ path: e.path, component: views.get(e.variant)!, node: e.node, args: e.args }] : []));
 
     const behaviors = components.flatMap((c) => (c.behavior ? [c.behavior] : []));
     const languages = [...new Set([...behaviors.map((b) => b.language), ...components.filter((c) => c.init).map(() => 'compute')])].sort(compare);
     const dataTypes = collectDataTypes(components);
     const typeByName = new Map(dataTypes.map((t) => [t.qualifiedName, t]));
     return {
-        root: views.get(root)!,
+        root: views.get(rootVariant)!,
         components,
         instances,
         behaviors,
@@ -249,8 +313,16 @@ export function buildArchitecture(root: ComponentType): ArchitectureModel {
     };
 }
 
-function componentView(c: ComponentType): ComponentView {
-    const qualifiedName = componentQualifiedName(c);
+/** The variation points of a component type and of its parents (each decided in the type's configuration). */
+function variationPointsOf(c: ComponentType, seen = new Set<ComponentType>()): ast.VarIf[] {
+    if (seen.has(c)) return [];
+    seen.add(c);
+    return [...variationPoints(c.body?.elements ?? []), ...c.parents.flatMap((p) => (p.type?.ref?.ref ? variationPointsOf(p.type.ref.ref, seen) : []))];
+}
+
+function componentView(v: Variant): ComponentView {
+    const c = v.decl;
+    const qualifiedName = v.qualifiedName;
     const blocks = behaviorsOf(c);
     const init = blocks.find((b) => b.behavior?.$type === 'InitBlock')?.behavior;
     // A mode automaton configures subcomponents: it is no behavior (modes below).
@@ -258,14 +330,14 @@ function componentView(c: ComponentType): ComponentView {
     const modes = modeAutomatonView(c);
     const timing = behaviorTiming(c);
     const elements = elementsOf(c);
-    const features = currentVariant()?.featureValues?.(c);
+    const features = v.features;
     return {
         qualifiedName,
-        name: c.name,
+        name: v.name,
         packageName: packageOf(c),
         node: c,
         typeParameters: c.typeParams.map((t) => t.name),
-        parents: c.parents.flatMap((p) => (p.type?.ref?.ref ? [componentQualifiedName(p.type.ref.ref)] : [])),
+        parents: v.parents.map((p) => p.qualifiedName),
         ports: allPorts(c).map((p) => ({
             ...typeView(p.type),
             name: p.name,
@@ -282,7 +354,7 @@ function componentView(c: ComponentType): ComponentView {
         subcomponents: allSubcomponents(c).map((s) => {
             const decl = subcomponentType(s).decl;
             // Feature bindings (`sub(f = true)`) select the configuration; they are no arguments.
-            return { name: s.name, type: decl ? componentQualifiedName(decl) : '', args: s.args.filter((a) => !isFeatureBinding(a)), node: s };
+            return { name: s.name, type: v.subs.get(s.name)?.qualifiedName ?? (decl ? componentQualifiedName(decl) : ''), args: s.args.filter((a) => !isFeatureBinding(a)), node: s };
         }),
         connectors: [
             ...elements.flatMap((e) => (e.$type === 'Connector'

@@ -427,6 +427,28 @@ def run_test(
     return problems
 
 
+def _in_configuration(
+    components: Mapping[str, type[ComponentType]], ctype: type[ComponentType], name: str, features: Mapping[str, bool], file: Path
+) -> type[ComponentType]:
+    """The build of component type ``name`` in the feature configuration ``features``: the type itself,
+    or one of its variants (``<name>__<suffix>``: instances of one type in different configurations)."""
+
+    def differ(c: type[ComponentType]) -> dict[str, bool] | None:
+        built = getattr(c, "FEATURES", None)
+        return {k: v for k, v in features.items() if built.get(k) != v} if isinstance(built, Mapping) else None
+
+    own = differ(ctype)
+    if own is None:
+        raise StreamTestError(f"{file}: the build of {ctype.NAME} does not record a feature configuration")
+    if not own:
+        return ctype
+    for key in sorted(components):
+        if key.startswith(f"{name}__") and differ(components[key]) == {}:
+            return components[key]
+    built = dict(getattr(ctype, "FEATURES", {}))
+    raise StreamTestError(f"{file}: the build of {ctype.NAME} has another feature configuration than {own} (it has {built})")
+
+
 def run_files(build: Path, files: Sequence[Path]) -> list[dict[str, Any]]:
     """Runs the stream test files against a generated build; one result per test."""
     if str(build) not in sys.path:
@@ -449,12 +471,7 @@ def run_files(build: Path, files: Sequence[Path]) -> list[dict[str, Any]]:
             if not parsed.type_args and getattr(ctype, "TYPE_PARAMETERS", ()):
                 raise StreamTestError(f"{file}: {ctype.NAME} is generic: give its type arguments, e.g. component {ctype.NAME}<Integer>;")
             if parsed.features:
-                built = getattr(ctype, "FEATURES", None)
-                if not isinstance(built, Mapping):
-                    raise StreamTestError(f"{file}: the build of {ctype.NAME} does not record a feature configuration")
-                differ = {k: v for k, v in parsed.features.items() if built.get(k) != v}
-                if differ:
-                    raise StreamTestError(f"{file}: the build of {ctype.NAME} has another feature configuration than {differ} (it has {dict(built)})")
+                ctype = _in_configuration(components, ctype, parsed.component, parsed.features, file)
         except (StreamTestError, OSError) as exc:
             results.append({"file": str(file), "test": None, "line": 0, "passed": False, "problems": [str(exc)]})
             continue

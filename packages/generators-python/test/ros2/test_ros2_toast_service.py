@@ -152,7 +152,8 @@ class FakeSimulator:
 
 
 def start_nodes(package: Path, log_dir: Path) -> list[tuple[str, subprocess.Popen[bytes]]]:
-    """Starts every node of deployment.json the way sim-server does."""
+    """Starts every node of deployment.json the way sim-server does; each with its log
+    ``<namespace>.<name>.log`` (dots for slashes) in ``log_dir``, listed under that stem."""
     deployment = json.loads((package / "deployment.json").read_text(encoding="utf-8"))
     env = dict(os.environ)
     env["PYTHONUNBUFFERED"] = "1"
@@ -160,12 +161,14 @@ def start_nodes(package: Path, log_dir: Path) -> list[tuple[str, subprocess.Pope
     processes = []
     for n in deployment["nodes"]:
         fqn = f"{n['namespace'].rstrip('/')}/{n['name']}"
-        params = log_dir / f"{n['name']}.params.yaml"
+        # files named by the whole node name: two nodes may share a name in different namespaces
+        stem = fqn.strip("/").replace("/", ".")
+        params = log_dir / f"{stem}.params.yaml"
         params.write_text(json.dumps({fqn: {"ros__parameters": n["parameters"]}}), encoding="utf-8")
-        log = (log_dir / f"{n['name']}.log").open("wb")
+        log = (log_dir / f"{stem}.log").open("wb")
         cmd = [sys.executable, "-m", n["module"], *n["args"], "--ros-args", "-r", f"__node:={n['name']}",
                "-r", f"__ns:={n['namespace']}", "-p", "use_sim_time:=true", "--params-file", str(params)]
-        processes.append((n["name"], subprocess.Popen(cmd, cwd=package, env=env, stdout=log, stderr=subprocess.STDOUT,
+        processes.append((stem, subprocess.Popen(cmd, cwd=package, env=env, stdout=log, stderr=subprocess.STDOUT,
                                                       start_new_session=True)))
     return processes
 

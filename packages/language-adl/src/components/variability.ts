@@ -64,13 +64,12 @@ export interface ConfigurationSpace {
     /** The configuration of the checked component for an assignment (for withVariant). */
     env(a: Assignment): VariantEnv;
     /**
-     * The configuration for generation: each variation point decided as in its first instance
-     * below the root (a generated component type has one body, so every instance of a variable
-     * type must agree; `conflicts` lists the variation points where they do not).
+     * The configuration for generation, per instance: the root's configuration, whose `sub(s)`
+     * is the configuration of instance `s` (its variation points decided and its features valued
+     * as in that instance). Instances of one type in different configurations become variants of
+     * the generated type (generator-core's buildArchitecture).
      */
     generationEnv(a: Assignment): VariantEnv;
-    /** Variation points that two instances of one component type decide differently in `a`. */
-    conflicts(a: Assignment): VarIf[];
     /** The value of a variable in a configuration. */
     value(a: Assignment, key: string): boolean;
     /** A key telling configurations apart that select different variation points anywhere in the tree. */
@@ -278,9 +277,7 @@ export function configurationSpace(c: ComponentType): ConfigurationSpace {
     const compiler = new Compiler();
     const constraints: Formula[] = [];
     const points: Array<{ point: VarIf; inst: Instance; formula: Formula }> = [];
-    const instances: Instance[] = [];
     const visit = (inst: Instance, depth: number, active: ReadonlySet<ComponentType>): void => {
-        instances.push(inst);
         // Every own and inherited feature is a variable even when no constraint names it.
         for (const f of allFeatures(inst.decl)) compiler.variable(inst.prefix + f.name, 'feature', inst.path);
         const d = declarationsOf(inst.decl);
@@ -354,35 +351,30 @@ export function configurationSpace(c: ComponentType): ConfigurationSpace {
         variants,
         env: (a) => envFor(a, '', new Map()),
         generationEnv: (a) => {
+            // Deeper than MAX_DEPTH an instance has no formulas of its own: it follows the first instance of its type.
             const first = new Map<VarIf, Formula>();
             for (const p of points) if (!first.has(p.point)) first.set(p.point, p.formula);
-            const firstInstance = new Map<ComponentType, Instance>();
-            for (const inst of instances) if (!firstInstance.has(inst.decl)) firstInstance.set(inst.decl, inst);
-            const env: VariantEnv = {
-                decide: (v) => first.get(v)?.(a) ?? true,
-                sub: () => env,
-                featureValues: (c) => {
-                    const inst = firstInstance.get(c);
-                    const features = inst ? allFeatures(c) : [];
-                    if (!inst || features.length === 0) return undefined;
-                    return Object.fromEntries(features.map((f) => {
-                        const i = keys.indexOf(inst.prefix + f.name);
-                        return [f.name, i >= 0 && Math.floor(a / 2 ** i) % 2 === 1];
-                    }));
-                }
+            const cache = new Map<string, VariantEnv>();
+            const instanceEnv = (prefix: string): VariantEnv => {
+                const cached = cache.get(prefix);
+                if (cached) return cached;
+                const own = formulaOf.get(prefix);
+                const env: VariantEnv = {
+                    decide: (v) => (own?.get(v) ?? first.get(v))?.(a) ?? true,
+                    sub: (s) => instanceEnv(`${prefix}${s.name}.`),
+                    featureValues: (c) => {
+                        const features = allFeatures(c);
+                        if (features.length === 0) return undefined;
+                        return Object.fromEntries(features.map((f) => {
+                            const i = keys.indexOf(prefix + f.name);
+                            return [f.name, i >= 0 && Math.floor(a / 2 ** i) % 2 === 1];
+                        }));
+                    }
+                };
+                cache.set(prefix, env);
+                return env;
             };
-            return env;
-        },
-        conflicts: (a) => {
-            const decided = new Map<VarIf, boolean>();
-            const result = new Set<VarIf>();
-            for (const p of points) {
-                const v = p.formula(a);
-                const prev = decided.get(p.point);
-                if (prev === undefined) decided.set(p.point, v);
-                else if (prev !== v) result.add(p.point);
-            }
-            return [...result];
+            return instanceEnv('');
         },
         value: (a, key) => {
             const i = keys.indexOf(key);
