@@ -459,9 +459,10 @@ export function mountDiagram(container: HTMLElement, host: DiagramHost): MaaDiag
             title.textContent = `${comp.split('.').pop() ?? ''} — automaton`;
         } else {
             const node = schema ? shownComponentNode(schema) : undefined;
-            switchButton.hidden = (node?.['behaviorKind'] ?? schema?.['behaviorKind']) !== 'automaton';
+            const modes = (node?.['modeAutomaton'] ?? schema?.['modeAutomaton']) === true;
+            switchButton.hidden = (node?.['behaviorKind'] ?? schema?.['behaviorKind']) !== 'automaton' && !modes;
             switchButton.textContent = 'Automaton';
-            switchButton.title = 'Show the state machine of this component';
+            switchButton.title = modes ? 'Show the mode automaton of this component' : 'Show the state machine of this component';
             title.textContent = comp.split('.').pop() ?? '';
         }
         updateFeatureBar();

@@ -22,6 +22,8 @@ export class ComponentNode extends SNodeImpl {
     declare trace?: string;
     /** A subcomponent declared in a mode (mode automata): the mode it is active in. */
     declare mode?: string;
+    /** A decomposed component with a mode automaton (its automaton view shows the modes). */
+    declare modeAutomaton?: boolean;
 }
 
 export class MaaPort extends SPortImpl {

@@ -219,7 +219,7 @@ export function createViews(state: ViewState): ViewClasses {
                 );
             }
             const on: Record<string, (e: Event) => void> = {};
-            if (kind === 'automaton' && node.componentType && !isRoot) {
+            if ((kind === 'automaton' || node.modeAutomaton) && node.componentType && !isRoot) {
                 const type = node.componentType;
                 on['dblclick'] = (e: Event) => {
                     e.stopPropagation();

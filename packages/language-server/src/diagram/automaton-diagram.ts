@@ -5,6 +5,7 @@ import { componentQualifiedName } from '@maa/generator-core';
 import type { BuildContext } from './context.js';
 import { labelId, stateId, transitionId } from './ids.js';
 import { TYPES, type MaaGraph, type MaaLabel, type StateNode, type TransitionEdge } from './model.js';
+import { addModeAutomaton } from './mode-diagram.js';
 import { labelSize, shortenTransitionLabel } from './sizes.js';
 
 type State = ast.State;
@@ -12,13 +13,17 @@ type State = ast.State;
 /**
  * The automaton view of a component: its states (substates nested in their state), the initial
  * ones marked, and its transitions with `trigger [guard] / action` labels. An internal
- * transition is a loop on its state. Empty when the component has no automaton.
+ * transition is a loop on its state. A decomposed component shows its mode automaton
+ * (mode-diagram.ts). Empty when the component has neither.
  */
 export function buildAutomatonDiagram(component: adl.ComponentType, ctx: BuildContext): MaaGraph {
     const qualifiedName = componentQualifiedName(component);
     const graph: MaaGraph = { type: TYPES.graph, id: ctx.id(`automaton:${qualifiedName}`), component: qualifiedName, children: [] };
     const automaton = behaviorsOf(component).map((b) => b.behavior as AstNode | undefined).find((b): b is ast.Automaton => b?.$type === 'Automaton');
-    if (!automaton) return graph;
+    if (!automaton) {
+        addModeAutomaton(component, graph, ctx); // a decomposed component's mode automaton, if any
+        return graph;
+    }
 
     const nodes = new Map<State, StateNode>();
     const addStates = (level: ast.Automaton | State, into: StateNode[]): void => {

@@ -44,6 +44,7 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
             expanded: composed && open,
             children: []
         };
+        if (modeAutomatonView(type)) node.modeAutomaton = true;
         const severity = ctx.severity(decl, type);
         if (severity) node.severity = severity;
         const condition = variationCondition(decl);

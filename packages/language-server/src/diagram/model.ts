@@ -80,6 +80,8 @@ export interface ComponentNode extends SNode, Traced {
     severity?: MarkerSeverity;
     /** A subcomponent of a mode (mode automata): the mode it is active in. */
     mode?: string;
+    /** Set on a decomposed component with a mode automaton (its automaton view shows the modes). */
+    modeAutomaton?: boolean;
 }
 
 export interface PortNode extends SPort, Traced {
