@@ -38,7 +38,8 @@ def room_package(dim: bool, out: Path) -> Path:
     app = copy / ROOM_APP.name
     text = app.read_text(encoding="utf-8")
     assert "lamp.Room(dim = true)" in text
-    app.write_text(text.replace("lamp.Room(dim = true)", f"lamp.Room(dim = {'true' if dim else 'false'})"), encoding="utf-8")
+    binding = f"lamp.Room(dim = {'true' if dim else 'false'})"
+    app.write_text(text.replace("lamp.Room(dim = true)", binding), encoding="utf-8")
     return generate_package(app, out / "gen", "room")
 
 
@@ -120,7 +121,8 @@ def test_the_plain_room_switches_its_lamp_fully_on(plain_probe: Probe) -> None:
     since = probe.mark()
     probe.send(7)
     probe.wait_for("brightness", 100, since)
-    assert set(probe.values("brightness")) <= {0, 100}, f"a plain lamp knows two brightnesses: {probe.values('brightness')}"
+    seen = probe.values("brightness")
+    assert set(seen) <= {0, 100}, f"a plain lamp knows two brightnesses: {seen}"
 
 
 def test_each_lamp_of_the_hall_behaves_as_its_instance_is_configured(hall_probe: Probe) -> None:
