@@ -79,6 +79,7 @@ describe('instances of one type in different configurations (maa-gen test)', () 
     }, 180_000);
 });
 
+// The generated ROS 2 nodes of these configurations run with real rclpy in test/ros2/test_ros2_variability.py.
 describe('feature configurations on ROS 2', () => {
     it('generate each configuration: the dimmed room has its doubler node, the plain one none', async () => {
         const texts: Record<string, string> = {};
