@@ -1,9 +1,10 @@
 """Lock-step mode with generated timesync builds: the toast is served, and the IDE's live values arrive.
 
 The builds are generated at test time (``maa-gen generate ... --platform timesync``): the
-ToastServiceRobot, and the generator tests' Features fixture, whose root has in ports (input
-injection over rosbridge) and a hierarchical automaton. docs/ide.md ("Live values") is the contract:
-port topics under their ROS 2 names, automaton states on ``/maa/automaton_states``.
+ToastServiceRobot, the generator tests' Features fixture, whose root has in ports (input
+injection over rosbridge) and a hierarchical automaton, and their Modes fixture, whose root has a
+mode automaton. docs/ide.md ("Live values") is the contract: port topics under their ROS 2 names,
+automaton states and the modes of mode components on ``/maa/automaton_states``.
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ REPO = Path(__file__).resolve().parents[2]
 MAA_GEN = REPO / "packages" / "cli" / "bin" / "maa-gen.js"
 TOAST_APP = REPO / "examples" / "toast-service" / "TR.arcapp"
 FEATURES_APP = REPO / "packages" / "generators-python" / "test" / "fixtures" / "features" / "Features.arcapp"
+MODES_APP = REPO / "packages" / "generators-python" / "test" / "fixtures" / "modes" / "Modes.arcapp"
 STATES = "/maa/automaton_states"
 #: The toast must be on the plate within this much simulated time (about 15 s).
 TIME_BOUND = 30.0
@@ -53,6 +55,11 @@ def toast_build(tmp_path_factory: pytest.TempPathFactory) -> Path:
 @pytest.fixture(scope="module")
 def features_build(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return generate(FEATURES_APP, tmp_path_factory.mktemp("features-timesync"))
+
+
+@pytest.fixture(scope="module")
+def modes_build(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return generate(MODES_APP, tmp_path_factory.mktemp("modes-timesync"))
 
 
 def lockstep_app(package: Path, **options: Any) -> SimApp:
@@ -160,6 +167,37 @@ def test_injection_on_root_in_ports_over_rosbridge(features_build: Path) -> None
         assert [json.loads(m["msg"]["data"]) for m in second if m.get("topic") == STATES] == [
             {"/features/lamp": "On.Bright"}
         ]
+        client.close()
+    finally:
+        app.stop()
+
+
+def test_the_mode_of_a_mode_component_is_its_live_state(modes_build: Path) -> None:
+    app = lockstep_app(modes_build, speed=0.0)
+    app.start()
+    try:
+        assert app.rosbridge is not None
+        client = Client.of(app.rosbridge)
+        for topic in ("/gearbox/s1/o", "/gearbox/s10/o", STATES):
+            client.send({"op": "subscribe", "topic": topic})
+        first = step(client)
+        # the root gear.Gearbox has no automaton state of its own: its live state is its mode
+        assert [json.loads(m["msg"]["data"]) for m in first if m.get("topic") == STATES] == [{"/gearbox": "First"}]
+        client.send({"op": "advertise", "topic": "/gearbox/speed", "type": "std_msgs/msg/Int32"})
+        client.send({"op": "publish", "topic": "/gearbox/speed", "msg": {"data": -1}})
+        # the slices until the message is fed (no state changes before: a slice without speed stays in First)
+        for _ in range(50):
+            second = step(client)
+            changes = [json.loads(m["msg"]["data"]) for m in second if m.get("topic") == STATES]
+            if changes:
+                break
+        # a negative speed switches to Second in its own slice: s10 handles it
+        assert changes == [{"/gearbox": "Second"}]
+        assert [m["msg"]["data"] for m in second if m.get("topic") == "/gearbox/s10/o"] == [-10]
+        assert client.call("/sim/get_status")["values"]["automaton_states"] == {"/gearbox": "Second"}
+        # the next slice has no speed (Java's 0 in the guard): back to First
+        third = step(client)
+        assert [json.loads(m["msg"]["data"]) for m in third if m.get("topic") == STATES] == [{"/gearbox": "First"}]
         client.close()
     finally:
         app.stop()
