@@ -38,7 +38,9 @@ const sharedStates: Record<string, Rule[]> = {
  */
 export function familyGrammar(fact: LanguageFact): monaco.languages.IMonarchLanguage {
     const attributes: Record<string, readonly string[]> = { types: TYPES };
-    const states: Record<string, Rule[]> = { ...sharedStates };
+    // Monarch starts in the first state of `tokenizer` unless `start` says otherwise: `root` is
+    // created first, and named as the start state too.
+    const states: Record<string, Rule[]> = {};
     const stateOf = (lang: LanguageFact, root: boolean): string => {
         const key = lang.id.replace(/\W/g, '_');
         const name = root ? 'root' : `embedded_${key}`;
@@ -68,7 +70,7 @@ export function familyGrammar(fact: LanguageFact): monaco.languages.IMonarchLang
         return name;
     };
     stateOf(fact, true);
-    return { defaultToken: '', ...attributes, tokenizer: states } as monaco.languages.IMonarchLanguage;
+    return { defaultToken: '', start: 'root', ...attributes, tokenizer: { ...states, ...sharedStates } } as monaco.languages.IMonarchLanguage;
 }
 
 export function simpleGrammar(keywords: string[]): monaco.languages.IMonarchLanguage {

@@ -52,7 +52,7 @@ describe('language table from the language facts', () => {
 describe('Monarch grammars from the language facts', () => {
     // Monaco's own Monarch compiler: it rejects a case naming an undefined word list and a
     // `next` state that does not exist, as Monaco would when the IDE registers the grammar.
-    type Compiled = { tokenizer: Record<string, unknown> };
+    type Compiled = { start: string | null; tokenizer: Record<string, unknown> };
     // Not in the package's `exports`: imported by file, from the nearest node_modules that has it.
     const compilerUrl = (): string => {
         const relative = join('node_modules', '@codingame', 'monaco-vscode-editor-api', 'vscode', 'src', 'vs', 'editor', 'standalone', 'common', 'monarch', 'monarchCompile.js');
@@ -70,6 +70,9 @@ describe('Monarch grammars from the language facts', () => {
             const fact = LANGUAGE_FACT_BY_ID.get(lang.id)!;
             const grammar = familyGrammar(fact) as unknown as Record<string, unknown> & { tokenizer: Record<string, unknown> };
             const compiled = await compile(lang.id, grammar);
+            // Monarch starts in `start`, or else in the first state: it must be `root`, not `comment`.
+            expect(compiled.start, lang.id).toBe('root');
+            expect(Object.keys(grammar.tokenizer)[0], lang.id).toBe('root');
             const embedded = new Set<string>();
             const visit = (id: string): void => {
                 for (const e of LANGUAGE_FACT_BY_ID.get(id)?.embeds ?? []) if (!embedded.has(e)) { embedded.add(e); visit(e); }
