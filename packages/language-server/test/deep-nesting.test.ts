@@ -18,6 +18,7 @@ const CONSTRUCTS: Record<string, { file: string; model: (k: number) => string; b
     'nested blocks': { file: 'A.arc', model: (k) => arc(`  compute { ${'{ '.repeat(k)}o = 1;${' }'.repeat(k)} }`) },
     'nested states': { file: 'A.arc', model: (k) => arc(`  automaton {\n    initial ${states(k)}\n  }`) },
     'nested ifs in an action': { file: 'A.arc', model: (k) => arc(`  automaton {\n    initial state A;\n    A -> A / { ${'if (i > 0) '.repeat(k)}o = 1; }\n  }`) },
+    'nested switch expressions': { file: 'A.arc', model: (k) => arc(`  compute { o = ${'switch (i) { default -> '.repeat(k)}0${'; }'.repeat(k)}; }`) },
     'binary operators': { file: 'A.arc', model: (k) => arc(`  compute { o = i${' + i'.repeat(k)}; }`) },
     'robot arm move arguments': { file: 'A.arc', model: (k) => arc(`  robotarm {\n    location L 10deg 5cm;\n    program P { move${' L'.repeat(k)}; }\n  }`) },
     'braces in a class diagram': { file: 'T.cd', model: (k) => `classdiagram T {\n  class C { int x; ${'{ '.repeat(k)}${'} '.repeat(k)}}\n}\n`, broken: true },

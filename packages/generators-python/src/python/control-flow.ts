@@ -7,6 +7,8 @@ export interface StatementHost {
     stmt(s: Node): string[];
     /** Python statements for an expression used as a statement (an assignment, `i++`, a call). */
     expressionStatement(e: Node): string[];
+    /** The Python name of a model name (a local variable's). */
+    pyName(name: string): string;
 }
 
 const LOOPS = new Set(['WhileStatement', 'DoWhileStatement', 'ForStatement']);
@@ -108,6 +110,51 @@ export class ControlFlow {
         return out;
     }
 
+    /**
+     * A switch expression as one conditional chain that evaluates the selector once, first (a
+     * walrus in the first test), then the matching arm only: `(10 if (_maa_sw1 := s) == 1 or
+     * _maa_sw1 == 2 else 0)`. A block arm becomes a local function `_maa_armN` that `hoist`
+     * places right before the statement using the expression (its `yield`s return; outer locals
+     * it assigns are `nonlocal`); the chain calls it. Without a `default` (an enum switch naming
+     * every constant) the last arm is the chain's `else`.
+     */
+    switchExpression(e: Node, hoist: ((lines: string[]) => void) | undefined): string {
+        const value = this.fresh('sw');
+        const selector = `(${value} := ${this.host.expr(e.selector)})`;
+        const arms = e.arms as Node[];
+        let defaultArm: Node | undefined;
+        const cases: Array<{ tests: string[]; arm: Node }> = [];
+        for (const arm of arms) {
+            const label = arm.label as Node;
+            if (label.default) defaultArm = arm;
+            const values = label.values as Node[];
+            if (values.length > 0) cases.push({ tests: values.map((v) => this.host.expr(v)), arm });
+        }
+        const armValue = (arm: Node): string => (arm.value ? this.host.expr(arm.value) : this.blockArm(arm.body as Node, hoist));
+        let last = defaultArm;
+        if (!last) {
+            const final = cases.pop();
+            if (!final) throw new GenerationError('a switch expression without arms', e);
+            last = final.arm;
+        }
+        if (cases.length === 0) return `(${selector}, ${armValue(last)})[1]`;
+        const parts: string[] = [];
+        cases.forEach((c, i) => {
+            const tests = c.tests.map((t, j) => `${i === 0 && j === 0 ? selector : value} == ${t}`);
+            parts.push(`${armValue(c.arm)} if ${tests.join(' or ')} else`);
+        });
+        return `(${parts.join(' ')} ${armValue(last)})`;
+    }
+
+    private blockArm(body: Node, hoist: ((lines: string[]) => void) | undefined): string {
+        if (!hoist) throw new GenerationError('a switch expression with a block arm is supported by the Python generators inside statements only (compute blocks, actions), not in guards or initializers', body);
+        const fn = this.fresh('arm');
+        const lines = this.host.stmt(body);
+        const nonlocals = assignedOuterLocals(body).map((n) => this.host.pyName(n));
+        hoist([`def ${fn}():`, ...(nonlocals.length > 0 ? [`    nonlocal ${nonlocals.join(', ')}`] : []), ...indent(lines)]);
+        return `${fn}()`;
+    }
+
     breakStatement(): string[] {
         return ['break'];
     }
@@ -133,6 +180,30 @@ export class ControlFlow {
     private needsContinueFlag(s: Node): boolean {
         return continuesOf(s, true).length > 0;
     }
+}
+
+/** Names of the local variables declared outside `body` that it assigns (`x = ...`, `x += ...`, `x++`). */
+function assignedOuterLocals(body: Node): string[] {
+    const names = new Set<string>();
+    const inside = (n: Node): boolean => {
+        for (let c: Node | undefined = n; c; c = c.$container as Node | undefined) if (c === body) return true;
+        return false;
+    };
+    const visit = (n: Node): void => {
+        let target: Node | undefined;
+        if (n.$type === 'AssignmentExpression') target = n.left as Node;
+        else if ((n.$type === 'PrefixExpression' || n.$type === 'PostfixExpression') && (n.op === '++' || n.op === '--')) target = n.operand as Node;
+        const decl = target?.$type === 'NameExpression' ? target.ref?.ref as Node | undefined : undefined;
+        if (decl?.$type === 'LocalVariable' && !inside(decl)) names.add(String(decl.name));
+        for (const [key, value] of Object.entries(n)) {
+            if (key.startsWith('$')) continue;
+            for (const c of Array.isArray(value) ? value : [value]) {
+                if (c && typeof c === 'object' && typeof (c as Node).$type === 'string') visit(c as Node);
+            }
+        }
+    };
+    visit(body);
+    return [...names].sort();
 }
 
 /**

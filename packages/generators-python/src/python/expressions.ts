@@ -68,7 +68,8 @@ export class PythonTranslator {
     private readonly control = new ControlFlow({
         expr: (e) => this.expr(e),
         stmt: (s) => this.stmt(s),
-        expressionStatement: (e) => this.exprStmt(e)
+        expressionStatement: (e) => this.exprStmt(e),
+        pyName
     });
 
     constructor(private readonly names: NameContext) {}
@@ -117,6 +118,10 @@ export class PythonTranslator {
             case 'ArrayAccessExpression': return `${this.expr(e.receiver)}[${this.expr(e.index)}]`;
             case 'ConditionalExpression':
                 return `(${this.expr(e.then)} if ${this.expr(e.condition)} else ${this.expr(e.else)})`;
+            case 'SwitchExpression': {
+                const hoisted = this.hoisted;
+                return this.control.switchExpression(e, hoisted && ((lines) => hoisted.push(...lines)));
+            }
             case 'BinaryExpression': {
                 const l = this.expr(e.left);
                 const r = this.expr(e.right);
@@ -173,8 +178,26 @@ export class PythonTranslator {
         return `${this.expr(recv)}(${args.join(', ')})`;
     }
 
+    /**
+     * Lines to place before the statement being translated (the local functions of switch
+     * expressions' block arms, control-flow.ts); undefined outside a statement.
+     */
+    private hoisted: string[] | undefined;
+
     /** Python statements (one per line, unindented) for a statement. */
     stmt(s: Node): string[] {
+        const outer = this.hoisted;
+        const hoisted: string[] = [];
+        this.hoisted = hoisted;
+        try {
+            const lines = this.statement(s);
+            return hoisted.length > 0 ? [...hoisted, ...lines] : lines;
+        } finally {
+            this.hoisted = outer;
+        }
+    }
+
+    private statement(s: Node): string[] {
         switch (s.$type) {
             case 'Block': {
                 const out = (s.statements as Node[]).flatMap((x) => this.stmt(x));
@@ -206,6 +229,8 @@ export class PythonTranslator {
                 return out;
             }
             case 'ExpressionStatement': return this.exprStmt(s.expression);
+            // Only in a switch expression's block arm (checked), which is a local function (control-flow.ts).
+            case 'YieldStatement': return [`return ${this.expr(s.value)}`];
             default:
                 throw new GenerationError(`statement '${s.$type}' is not supported by the Python generators`, s);
         }

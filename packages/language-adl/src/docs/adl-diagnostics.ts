@@ -368,6 +368,30 @@ export const ADL_DIAGNOSTICS: DiagnosticCatalog = {
             valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = 0;\n    for (int k = 0; k < i; k++) {\n      if (k == 2) continue;\n      o = o + k;\n    }\n  }\n}' } }
         },
         {
+            code: 'statement/switch-not-exhaustive', severity: 'error',
+            rule: 'A switch expression has a value for every selector value: a `default` arm, or (over an enum) an arm for every constant of the enum. (Switch expressions are Java 14\'s; MontiArc has none, this IDE offers them as an extension.)',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = switch (i) {\n      case 1 -> 10;\n      case 2 -> 20;\n    };\n  }\n}' }, at: 'i' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = switch (i) {\n      case 1 -> 10;\n      case 2 -> 20;\n      default -> 0;\n    };\n  }\n}' } }
+        },
+        {
+            code: 'statement/missing-yield', severity: 'error',
+            rule: 'A block arm of a switch expression (`case 1 -> { int y = 2; yield y; }`) ends with `yield value;` on every path: the yield gives the switch expression its value.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = switch (i) {\n      case 1 -> {\n        int y = i * 2;\n      }\n      default -> 0;\n    };\n  }\n}' }, at: '{\n        int y = i * 2;\n      }' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = switch (i) {\n      case 1 -> {\n        int y = i * 2;\n        yield y;\n      }\n      default -> 0;\n    };\n  }\n}' } }
+        },
+        {
+            code: 'statement/yield-outside-switch-expression', severity: 'error',
+            rule: '`yield value;` gives a block arm of a switch expression its value; elsewhere (a compute block, a switch statement) it is not allowed. `yield` stays usable as a name.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    switch (i) {\n      case 1 -> {\n        yield 2;\n      }\n      default -> o = 1;\n    }\n  }\n}' }, at: 'yield 2;' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    int yield = 2;\n    o = switch (i) {\n      case 1 -> {\n        yield yield;\n      }\n      default -> 1;\n    };\n  }\n}' } }
+        },
+        {
+            code: 'statement/jump-out-of-switch-expression', severity: 'error',
+            rule: '`break` and `continue` cannot leave a switch expression (its value would be missing); loops and switch statements inside an arm keep their own `break` and `continue`.',
+            invalid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    while (o < i) {\n      o = switch (i) {\n        case 1 -> {\n          break;\n        }\n        default -> o + 1;\n      };\n    }\n  }\n}' }, at: 'break;' },
+            valid: { files: { 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = switch (i) {\n      case 1 -> {\n        int n = 0;\n        while (true) {\n          n++;\n          if (n > 3) break;\n        }\n        yield n;\n      }\n      default -> 0;\n    };\n  }\n}' } }
+        },
+        {
             code: 'variability/constraint-unsatisfied', severity: 'error',
             rule: 'The `constraint`s of a variable component (its own, inherited ones and those of its subcomponents, with the arguments they are instantiated with) admit at least one configuration of its features.',
             invalid: { files: { 'Foo.arc': 'component Foo {\n  feature fast;\n  constraint(fast);\n  constraint(!fast);\n}' }, at: 'Foo' },

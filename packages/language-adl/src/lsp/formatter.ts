@@ -439,6 +439,24 @@ function registerHostRules(f: AdlFormatter): void {
         on.keywords('->').prepend(Formatting.oneSpace());
         fm.list(n, nodes(n, 'values'));
     });
+    // Switch expressions: like the statement, one arm per line (`case 1 -> value;`, `case 2 -> { ... }`).
+    r.set('SwitchExpression', (n, fm) => {
+        const on = fm.on(n);
+        on.keyword('switch').append(Formatting.oneSpace());
+        on.keyword('(').append(Formatting.noSpace());
+        on.keyword(')').prepend(Formatting.noSpace()).append(Formatting.oneSpace());
+        fm.elementBlock(n);
+    });
+    r.set('SwitchArm', (n, fm) => {
+        const on = fm.on(n);
+        const part = child(n, 'value') ?? child(n, 'body');
+        if (part) on.node(part).prepend(Formatting.oneSpace());
+        fm.semicolons(n);
+    });
+    r.set('YieldStatement', (n, fm) => {
+        fm.on(n).keyword('yield').append(Formatting.oneSpace());
+        fm.semicolons(n);
+    });
     for (const t of ['BreakStatement', 'ContinueStatement']) r.set(t, (n, fm) => fm.semicolons(n));
 
     // ---- expressions ----

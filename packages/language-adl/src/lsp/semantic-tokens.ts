@@ -92,6 +92,9 @@ export class AdlSemanticTokenProvider extends AbstractSemanticTokenProvider {
         } else if (node.$type === 'AutoConnect') {
             // `port`, `type`, `off` after `autoconnect` (`type` and `off` are names elsewhere).
             acceptor({ node, property: 'kind' as never, type: SemanticTokenTypes.keyword });
+        } else if (node.$type === 'YieldStatement') {
+            // `yield` is a name elsewhere (a soft keyword).
+            acceptor({ node, keyword: 'yield', type: SemanticTokenTypes.keyword });
         } else if (node.$type === 'PrimitiveType') {
             acceptor({ node, property: 'name' as never, type: SemanticTokenTypes.type, modifier: SemanticTokenModifiers.defaultLibrary });
         } else if (isFieldAccessExpression(node)) {

@@ -1,8 +1,10 @@
 import type { AstNode } from 'langium';
 import type {
-    BinaryExpression, CallExpression, CDAttribute, CDClass, CDMethod, CDType, Expression, FieldAccessExpression, NameExpression, Port
+    BinaryExpression, CallExpression, CDAttribute, CDClass, CDMethod, CDType, Expression, FieldAccessExpression, NameExpression, Port,
+    SwitchExpression
 } from '../generated/ast.js';
-import { isCDClass, isFieldAccessExpression, isFieldDeclaration, isLocalVariableDeclaration } from '../generated/ast.js';
+import { isCDClass, isCDEnum, isFieldAccessExpression, isFieldDeclaration, isLocalVariableDeclaration, isNameExpression } from '../generated/ast.js';
+import { notAConstantMessage, yieldsOf } from '../scoping/switch-labels.js';
 import { portHeader } from '../components/component-model.js';
 import { subcomponentFeature } from '../components/features.js';
 import type { NameResolver } from '../scoping/name-resolver.js';
@@ -108,6 +110,7 @@ export class ExpressionTyper {
                 return t;
             }
             case 'BinaryExpression': return this.binary(e, p);
+            case 'SwitchExpression': return this.switchExpression(e, p);
             case 'ConditionalExpression': {
                 const c = this.value(e.condition, p);
                 this.expect(e.condition, c, 'boolean', p);
@@ -143,6 +146,39 @@ export class ExpressionTyper {
     }
 
     /** The type of a sub-expression that must denote a value. */
+    /**
+     * A switch expression: its selector and labels (reported here, as parts of the root
+     * expression), and the common type of its arms, as for `?:` (numeric promotion, else the arm
+     * the others are assignable to). The values of `yield` statements in block arms are typed
+     * without reporting: their statements report them (statement-checks.ts).
+     */
+    private switchExpression(e: SwitchExpression, p: TypeProblem[]): SymType {
+        const selector = this.value(e.selector, p);
+        const en = selector.kind === 'object' && isCDEnum(selector.decl) ? selector.decl : undefined;
+        for (const arm of e.arms) {
+            for (const v of arm.label?.values ?? []) {
+                if (en && isNameExpression(v) && !v.ref.ref) unresolved(p, v, notAConstantMessage(v, en));
+                else this.value(v, p);
+            }
+        }
+        const arms: Array<{ node: AstNode; t: SymType }> = [];
+        for (const arm of e.arms) {
+            if (arm.value) arms.push({ node: arm.value, t: this.value(arm.value, p) });
+            else if (arm.body) for (const y of yieldsOf(arm.body)) arms.push({ node: y.value, t: this.value(y.value, []) });
+        }
+        let result: SymType | undefined;
+        for (const { node, t } of arms) {
+            if (isErroneous(t)) continue;
+            if (!result) result = t;
+            else if (this.rel.isNumeric(result) && this.rel.isNumeric(t)) result = this.rel.promote(result, t);
+            else if (this.rel.isAssignable(t, result)) result = t;
+            else if (!this.rel.isAssignable(result, t)) {
+                return fail(p, node, `the arms of a switch expression have incompatible types ${printType(result)} and ${printType(t)}`);
+            }
+        }
+        return result ?? ERROR_TYPE;
+    }
+
     private value(e: Expression | undefined, p: TypeProblem[]): SymType {
         const t = this.type(e, p);
         if (t.kind === 'qualifier' && e) {

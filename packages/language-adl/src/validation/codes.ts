@@ -69,6 +69,10 @@ export const Codes = {
     MixedSwitchLabels: 'expr/mixed-switch-labels',
     BreakOutsideLoop: 'expr/break-outside-loop',
     ContinueOutsideLoop: 'expr/continue-outside-loop',
+    SwitchNotExhaustive: 'statement/switch-not-exhaustive',
+    MissingYield: 'statement/missing-yield',
+    YieldOutsideSwitchExpression: 'statement/yield-outside-switch-expression',
+    JumpOutOfSwitchExpression: 'statement/jump-out-of-switch-expression',
 
     CdDuplicateName: 'cd/duplicate-name',
     CdFileNameMismatch: 'cd/file-name-mismatch',
