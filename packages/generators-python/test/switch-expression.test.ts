@@ -1,4 +1,4 @@
-import { mkdirSync, mkdtempSync, readdirSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -132,6 +132,8 @@ describe('switch expressions in generated Python', () => {
         expect(g.status, g.stdout + g.stderr).toBe(0);
         const behavior = findFile(out, 'calc_behavior.py');
         expect(behavior, 'calc_behavior.py generated').toBeDefined();
+        // Block arms are annotated local functions (ruff's ANN rules of the generated-code settings).
+        expect(readFileSync(behavior!, 'utf8')).toMatch(/^ {8}def _maa_arm\d+\(\) -> object:$/m);
         const pkgRoot = path.resolve(path.dirname(behavior!), '..', '..', '..');
         const r = await run(venvPython, ['-c', STEP_ROS2, pkgRoot], root);
         expect(r.status, r.stdout + r.stderr).toBe(0);

@@ -89,4 +89,18 @@ describe('bare enum constants as case labels in the editor', () => {
         expect(labels).not.toContain('color');
         expect(labels).not.toContain('START');
     });
+
+    test('in a switch expression too: completion after case offers the constants, definition reaches them', async () => {
+        const expr = TOASTER.replace(/    switch \(color\) \{[\s\S]*?\n    \}\n/, '    level = switch (color) { case WHITE -> 1; case <|> };\n');
+        const ws = await workspace({ 'toast/types/Types.cd': TYPES_CD, 'toast/Toaster.arc': expr });
+        const doc = ws.doc('toast/Toaster.arc');
+        const list = await lspServices().Arc.lsp.CompletionProvider.getCompletion(doc, { textDocument: { uri: doc.uri.toString() }, position: ws.position('toast/Toaster.arc') });
+        expect((list?.items ?? []).map((i) => i.label)).toEqual(expect.arrayContaining(['WHITE', 'GOLDEN', 'BURNT']));
+        const ok = await workspace({ 'toast/types/Types.cd': TYPES_CD, 'toast/Toaster.arc': expr.replace('case <|> }', 'case GOLDEN, BURNT -> 2; }') });
+        const d = ok.doc('toast/Toaster.arc');
+        expect(d.diagnostics ?? []).toEqual([]);
+        const { uri, position } = positionOf(ok, 'toast/Toaster.arc', 'BURNT ->');
+        const links = await servicesOf(d).lsp.DefinitionProvider!.getDefinition(d, { textDocument: { uri }, position }) ?? [];
+        expect(links.map((l) => textAt(ok.doc('toast/types/Types.cd'), l.targetSelectionRange))).toEqual(['BURNT']);
+    });
 });

@@ -114,7 +114,7 @@ export class ControlFlow {
      * A switch expression as one conditional chain that evaluates the selector once, first (a
      * walrus in the first test), then the matching arm only: `(10 if (_maa_sw1 := s) == 1 or
      * _maa_sw1 == 2 else 0)`. A block arm becomes a local function `_maa_armN` that `hoist`
-     * places right before the statement using the expression (its `yield`s return; outer locals
+     * places right before the statement using the expression (`-> object`; its `yield`s return; outer locals
      * it assigns are `nonlocal`); the chain calls it. Without a `default` (an enum switch naming
      * every constant) the last arm is the chain's `else`.
      */
@@ -151,7 +151,7 @@ export class ControlFlow {
         const fn = this.fresh('arm');
         const lines = this.host.stmt(body);
         const nonlocals = assignedOuterLocals(body).map((n) => this.host.pyName(n));
-        hoist([`def ${fn}():`, ...(nonlocals.length > 0 ? [`    nonlocal ${nonlocals.join(', ')}`] : []), ...indent(lines)]);
+        hoist([`def ${fn}() -> object:`, ...(nonlocals.length > 0 ? [`    nonlocal ${nonlocals.join(', ')}`] : []), ...indent(lines)]);
         return `${fn}()`;
     }
 
