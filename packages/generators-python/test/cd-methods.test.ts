@@ -2,6 +2,7 @@ import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'nod
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, describe, expect, it } from 'vitest';
+import { maaGen } from './maa-gen.js';
 import { ensureVenv, lintPython, packageDir, repoDir, run, venvPython } from './python-env.js';
 
 // Methods declared in class diagrams (classes, enums; static and instance) become methods of the
@@ -76,7 +77,7 @@ describe('class-diagram methods in the Python data types', () => {
     const out = path.join(work, 'out');
 
     async function generateAndRun(platform: keyof typeof PLATFORMS): Promise<{ ok?: Record<string, unknown>; not_implemented?: string }> {
-        const gen = await run(process.execPath, [path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', path.join(root, 'CalcApp.arcapp'), '--platform', platform, '--out', out], repoDir);
+        const gen = await run(process.execPath, [maaGen, 'generate', path.join(root, 'CalcApp.arcapp'), '--platform', platform, '--out', out], repoDir);
         expect(gen.status, `${gen.stdout}\n${gen.stderr}`).toBe(0);
         const py = await run(venvPython, ['-c', HARNESS, path.join(out, ...PLATFORMS[platform].dir), PLATFORMS[platform].behavior], packageDir);
         expect(py.status, py.stderr).toBe(0);
@@ -118,7 +119,7 @@ describe('class-diagram methods in the Python data types', () => {
         writeFileSync(path.join(dir, 'probe', 'Shapes.cd'), TYPES.replace('double area();', 'double area();\n    double area(double scale);'));
         writeFileSync(path.join(dir, 'probe', 'Calc.arc'), CALC);
         writeFileSync(path.join(dir, 'CalcApp.arcapp'), APP);
-        const gen = await run(process.execPath, [path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', path.join(dir, 'CalcApp.arcapp'), '--platform', 'timesync', '--out', path.join(dir, 'out')], repoDir);
+        const gen = await run(process.execPath, [maaGen, 'generate', path.join(dir, 'CalcApp.arcapp'), '--platform', 'timesync', '--out', path.join(dir, 'out')], repoDir);
         expect(gen.status).not.toBe(0);
         expect(`${gen.stdout}${gen.stderr}`).toContain("probe.Shapes.Rect declares the method 'area' twice");
     }, 120_000);

@@ -1,8 +1,8 @@
-import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
+import { describe, expect, it } from 'vitest';
+import { bothPlatformsApp, generate, streamTests, tempModelRoot } from './maa-gen.js';
+import { ensureVenv, filesUnder, run, venvPython } from './python-env.js';
 
 /**
  * `char` and `Character` kept apart from numbers end to end on python-timesync: Character ports
@@ -46,18 +46,6 @@ component Chars {
 }
 `;
 
-const APP = `application A for p.Chars {
-  platform timesync {
-    timesync.Components;
-    timesync.DataTypes;
-  }
-  platform rospython {
-    ros2.Components;
-    ros2.DataTypes;
-  }
-}
-`;
-
 const STREAM = `component p.Chars;
 
 test "characters in, characters and numbers out" {
@@ -71,50 +59,28 @@ test "characters in, characters and numbers out" {
 }
 `;
 
-interface StreamResult { file: string; test: string | null; passed: boolean; problems: string[] }
-
-let root = '';
-beforeAll(() => {
-    root = mkdtempSync(path.join(tmpdir(), 'maa-chars-'));
-    mkdirSync(path.join(root, 'p'));
-    writeFileSync(path.join(root, 'p', 'Chars.arc'), MODEL);
-    writeFileSync(path.join(root, 'p', 'Chars.stream'), STREAM);
-    writeFileSync(path.join(root, 'A.arcapp'), APP);
-});
-afterAll(() => {
-    if (root) rmSync(root, { recursive: true, force: true });
-});
+const model = tempModelRoot('chars', { 'p/Chars.arc': MODEL, 'p/Chars.stream': STREAM, 'A.arcapp': bothPlatformsApp('p.Chars') });
 
 describe('char and Character in generated Python', () => {
     it('python-timesync: the stream test passes', async () => {
         await ensureVenv();
-        const maaGen = path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js');
-        const r = await run(process.execPath, [maaGen, 'test', path.join(root, 'A.arcapp'), '--format', 'json', '--python', venvPython], root);
-        const out = JSON.parse(r.stdout || '{}') as { results?: StreamResult[] };
-        expect(out.results, r.stdout + r.stderr).toHaveLength(1);
-        expect(out.results!.filter((x) => !x.passed), r.stdout + r.stderr).toEqual([]);
+        const { report, run: r } = await streamTests(path.join(model.dir, 'A.arcapp'), model.dir);
+        expect(report?.results, r.stdout + r.stderr).toHaveLength(1);
+        expect(report!.results.filter((x) => !x.passed), r.stdout + r.stderr).toEqual([]);
         expect(r.status).toBe(0);
     }, 240_000);
 
     it('rospython: char and Character ports use the character codec (one-character std_msgs/String), the build compiles', async () => {
         await ensureVenv();
-        const maaGen = path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js');
-        const out = path.join(root, 'gen-ros2');
-        const g = await run(process.execPath, [maaGen, 'generate', path.join(root, 'A.arcapp'), '--platform', 'rospython', '--out', out], root);
+        const out = path.join(model.dir, 'gen-ros2');
+        const g = await generate(path.join(model.dir, 'A.arcapp'), 'rospython', out, model.dir);
         expect(g.status, g.stdout + g.stderr).toBe(0);
-        const c = await run(venvPython, ['-m', 'compileall', '-q', out], root);
+        const c = await run(venvPython, ['-m', 'compileall', '-q', out], model.dir);
         expect(c.status, c.stdout + c.stderr).toBe(0);
-        const node = files(out).find((f) => f.endsWith(path.join('nodes', 'chars.py')));
+        const node = filesUnder(out).find((f) => f.endsWith(path.join('nodes', 'chars.py')));
         const text = node ? readFileSync(node, 'utf8') : '';
         // in port c (Character), out ports next (Character) and upper (char); text and text2 are Strings
         expect(text.match(/char_port\(String\)/g), text).toHaveLength(3);
         expect(text.match(/std_port\(String, str\)/g), text).toHaveLength(2);
     }, 240_000);
 });
-
-function files(dir: string): string[] {
-    return readdirSync(dir).flatMap((name) => {
-        const p = path.join(dir, name);
-        return statSync(p).isDirectory() ? files(p) : [p];
-    });
-}

@@ -1,8 +1,8 @@
-import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
+import { describe, expect, it } from 'vitest';
+import { bothPlatformsApp, generate, streamTests, tempModelRoot } from './maa-gen.js';
+import { ensureVenv, filesUnder, pythonFiles, run, venvPython } from './python-env.js';
 
 /**
  * Java's switch (fall-through, default in the middle, arrow rules), do-while, break and continue
@@ -79,20 +79,6 @@ component Root {
 }
 `;
 
-const APP = `application A for p.Root {
-  platform timesync {
-    timesync.Components;
-    timesync.AutomataBehavior;
-    timesync.DataTypes;
-  }
-  platform rospython {
-    ros2.Components;
-    ros2.AutomataBehavior;
-    ros2.DataTypes;
-  }
-}
-`;
-
 // i = 1: 100 + 10 (falls into case 2/3) = 110; i = 5 and i = 0: default -1 falls into case 9: 8.
 // odds: the odd k in 1..max(i, 1) (continue jumps to the do-while's condition).
 // sum: j = 1, 4, 7 add themselves; j = 2, 5, 8 add 100 unless j > i (break leaves the switch
@@ -108,60 +94,39 @@ test "switch, do-while, break and continue" {
 }
 `;
 
-interface StreamResult { file: string; test: string | null; passed: boolean; problems: string[] }
-
-let root = '';
-beforeAll(() => {
-    root = mkdtempSync(path.join(tmpdir(), 'maa-control-flow-'));
-    mkdirSync(path.join(root, 'p'));
-    writeFileSync(path.join(root, 'p', 'Calc.arc'), MODEL);
-    writeFileSync(path.join(root, 'p', 'Root.arc'), ROOT);
-    writeFileSync(path.join(root, 'p', 'Calc.stream'), STREAMS('p.Calc'));
-    writeFileSync(path.join(root, 'p', 'Root.stream'), STREAMS('p.Root'));
-    writeFileSync(path.join(root, 'A.arcapp'), APP);
+const model = tempModelRoot('control-flow', {
+    'p/Calc.arc': MODEL,
+    'p/Root.arc': ROOT,
+    'p/Calc.stream': STREAMS('p.Calc'),
+    'p/Root.stream': STREAMS('p.Root'),
+    'A.arcapp': bothPlatformsApp('p.Root'),
 });
-afterAll(() => {
-    if (root) rmSync(root, { recursive: true, force: true });
-});
-
-const maaGen = path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js');
 
 describe('switch, do-while, break, continue and autoconnect in generated Python', () => {
     it('python-timesync: the stream tests of the component and of the autoconnected root pass', async () => {
         await ensureVenv();
-        const r = await run(process.execPath, [maaGen, 'test', path.join(root, 'A.arcapp'), '--format', 'json', '--python', venvPython], root);
-        const out = JSON.parse(r.stdout || '{}') as { results?: StreamResult[] };
-        expect(out.results, r.stdout + r.stderr).toBeDefined();
-        expect(out.results!.filter((x) => !x.passed), r.stdout + r.stderr).toEqual([]);
-        expect(out.results!.map((x) => path.basename(x.file)).sort()).toEqual(['Calc.stream', 'Root.stream']);
+        const { report, run: r } = await streamTests(path.join(model.dir, 'A.arcapp'), model.dir);
+        expect(report?.results, r.stdout + r.stderr).toBeDefined();
+        expect(report!.results.filter((x) => !x.passed), r.stdout + r.stderr).toEqual([]);
+        expect(report!.results.map((x) => path.basename(x.file)).sort()).toEqual(['Calc.stream', 'Root.stream']);
         expect(r.status).toBe(0);
     }, 240_000);
 
     it('rospython: the same model generates and compiles; the switch is translated, the implied connectors are wired', async () => {
         await ensureVenv();
-        const out = path.join(root, 'gen-ros2');
-        const g = await run(process.execPath, [maaGen, 'generate', path.join(root, 'A.arcapp'), '--platform', 'rospython', '--out', out], root);
+        const out = path.join(model.dir, 'gen-ros2');
+        const g = await generate(path.join(model.dir, 'A.arcapp'), 'rospython', out, model.dir);
         expect(g.status, g.stdout + g.stderr).toBe(0);
-        const c = await run(venvPython, ['-m', 'compileall', '-q', out], root);
+        const c = await run(venvPython, ['-m', 'compileall', '-q', out], model.dir);
         expect(c.status, c.stdout + c.stderr).toBe(0);
         const text = pythonFiles(out).map((f) => readFileSync(f, 'utf8')).join('\n');
         expect(text).toContain('_maa_sw');
         expect(text).toContain('_maa_first');
         // The subcomponent reads the root's in port only through the implied connector i -> calc.i.
-        const deployment = pythonFiles(out, 'deployment.json').map((f) => JSON.parse(readFileSync(f, 'utf8')) as Deployment)[0];
+        const deployment = filesUnder(out, 'deployment.json').map((f) => JSON.parse(readFileSync(f, 'utf8')) as Deployment)[0];
         const calc = deployment?.nodes.find((n) => n.instance === 'root.calc');
         expect(calc?.subscribes, JSON.stringify(deployment)).toEqual([expect.objectContaining({ port: 'i', topic: '/root/i' })]);
     }, 240_000);
 });
 
 interface Deployment { nodes: Array<{ instance: string; subscribes: Array<{ port: string; topic: string }> }> }
-
-function pythonFiles(dir: string, suffix = '.py'): string[] {
-    const result: string[] = [];
-    for (const name of readdirSync(dir)) {
-        const p = path.join(dir, name);
-        if (statSync(p).isDirectory()) result.push(...pythonFiles(p, suffix));
-        else if (name.endsWith(suffix)) result.push(p);
-    }
-    return result;
-}

@@ -2,9 +2,8 @@ import { existsSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { describe, expect, it } from 'vitest';
+import { maaGen, type StreamResult } from './maa-gen.js';
 import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
-
-interface StreamResult { file: string; test: string | null; passed: boolean; problems: string[] }
 
 // The stream tests next to the example's models (examples/toast-service/toast/*.stream), run on
 // the timesync build of its application configuration by `maa-gen test`.
@@ -12,7 +11,7 @@ describe('stream tests of the example (maa-gen test)', () => {
     it('every stream test of examples/toast-service passes', async () => {
         await ensureVenv();
         const r = await run(process.execPath, [
-            path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'test', 'examples/toast-service/TR.arcapp', '--format', 'json', '--python', venvPython
+            maaGen, 'test', 'examples/toast-service/TR.arcapp', '--format', 'json', '--python', venvPython
         ], repoDir);
         const out = JSON.parse(r.stdout) as { results: StreamResult[]; summary: { passed: number; failed: number } };
         expect(out.results.filter((x) => !x.passed)).toEqual([]);
@@ -26,7 +25,7 @@ describe('stream tests of the example (maa-gen test)', () => {
     it('a failing stream test fails the command with a readable difference', async () => {
         await ensureVenv();
         const r = await run(process.execPath, [
-            path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'test', 'examples/toast-service/TR.arcapp',
+            maaGen, 'test', 'examples/toast-service/TR.arcapp',
             'packages/generators-python/test/fixtures/failing/Controller.stream', '--python', venvPython
         ], repoDir);
         expect(r.status).toBe(1);
@@ -39,7 +38,7 @@ describe('stream tests of the example (maa-gen test)', () => {
         try {
             writeFileSync(path.join(out, 'timesync'), 'a file where the platform folder belongs\n');
             const r = await run(process.execPath, [
-                path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'test', 'examples/toast-service/TR.arcapp', '--out', out, '--python', venvPython
+                maaGen, 'test', 'examples/toast-service/TR.arcapp', '--out', out, '--python', venvPython
             ], repoDir);
             expect(r.stdout).toContain('gen/write-failed');
             expect(r.stderr).toContain('no stream test was run');
@@ -58,7 +57,7 @@ describe.skipIf(!existsSync(maaSim))('the example on the simulator (lock-step, t
         const out = mkdtempSync(path.join(tmpdir(), 'maa-timesync-sim-'));
         try {
             const gen = await run(process.execPath, [
-                path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', 'examples/toast-service/TR.arcapp', '--platform', 'timesync', '--out', out
+                maaGen, 'generate', 'examples/toast-service/TR.arcapp', '--platform', 'timesync', '--out', out
             ], repoDir);
             expect(gen.status, gen.stderr).toBe(0);
             const sim = await run(maaSim, ['run', '--package', path.join(out, 'timesync'), '--mode', 'lockstep', '--until-goal', '--viser-port', 'off', '--rosbridge-port', 'off', '--max-time', '60'], repoDir);

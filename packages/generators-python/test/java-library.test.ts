@@ -4,6 +4,7 @@ import path from 'node:path';
 import { EmptyFileSystem } from 'langium';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { builtinDocuments, createAdlServices, type ast } from '@maa/language-adl';
+import { maaGen } from './maa-gen.js';
 import { ensureVenv, packageDir, repoDir, run, venvPython } from './python-env.js';
 
 /**
@@ -363,7 +364,7 @@ describe('the JDK library in generated Python', () => {
         writeFileSync(path.join(root, 'RosProbe.arcapp'), 'application RosProbe for probe.RosProbe {\n  platform rospython {\n    ros2.Components;\n    ros2.DataTypes;\n  }\n}\n');
         const out = path.join(work, 'out');
         const generate = async (app: string, platform: string): Promise<void> => {
-            const gen = await run(process.execPath, [path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', path.join(root, app), '--platform', platform, '--out', out], repoDir);
+            const gen = await run(process.execPath, [maaGen, 'generate', path.join(root, app), '--platform', platform, '--out', out], repoDir);
             if (gen.status !== 0) throw new Error(`maa-gen generate ${app} failed:\n${gen.stdout}\n${gen.stderr}`);
         };
         const runBehavior = async (dir: string, module: string, cls: string, wanted: ReadonlyArray<readonly [number, string]>): Promise<string[]> => {

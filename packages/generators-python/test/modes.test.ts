@@ -2,9 +2,8 @@ import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { describe, expect, it } from 'vitest';
+import { maaGen, type StreamResult } from './maa-gen.js';
 import { ensureVenv, lintPython, repoDir, run, venvPython } from './python-env.js';
-
-interface StreamResult { file: string; test: string | null; passed: boolean; problems: string[] }
 
 // Mode automata on python-timesync, end to end: the fixture's mode component (test/fixtures/modes,
 // also a golden case) is generated and its stream tests run on the build by `maa-gen test`:
@@ -14,7 +13,7 @@ describe('mode automata on python-timesync (maa-gen test)', () => {
     it('every stream test of the modes fixture passes', async () => {
         await ensureVenv();
         const r = await run(process.execPath, [
-            path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'test', 'packages/generators-python/test/fixtures/modes/Modes.arcapp', '--format', 'json', '--python', venvPython
+            maaGen, 'test', 'packages/generators-python/test/fixtures/modes/Modes.arcapp', '--format', 'json', '--python', venvPython
         ], repoDir);
         const out = JSON.parse(r.stdout) as { results: StreamResult[]; summary: { passed: number; failed: number } };
         expect(out.results.filter((x) => !x.passed)).toEqual([]);
@@ -25,7 +24,7 @@ describe('mode automata on python-timesync (maa-gen test)', () => {
     it('a guard over an enum parameter switches only the instance whose parameter allows it (mode-params fixture)', async () => {
         await ensureVenv();
         const r = await run(process.execPath, [
-            path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'test', 'packages/generators-python/test/fixtures/mode-params/SelectorPair.arcapp', '--format', 'json', '--python', venvPython
+            maaGen, 'test', 'packages/generators-python/test/fixtures/mode-params/SelectorPair.arcapp', '--format', 'json', '--python', venvPython
         ], repoDir);
         const out = JSON.parse(r.stdout) as { results: StreamResult[]; summary: { passed: number; failed: number } };
         expect(out.results.filter((x) => !x.passed)).toEqual([]);
@@ -39,7 +38,7 @@ describe('mode automata on ROS 2', () => {
         const out = mkdtempSync(path.join(tmpdir(), 'maa-modes-ros2-'));
         try {
             const r = await run(process.execPath, [
-                path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', 'packages/generators-python/test/fixtures/modes/Modes.arcapp',
+                maaGen, 'generate', 'packages/generators-python/test/fixtures/modes/Modes.arcapp',
                 '--platform', 'rospython', '--out', out
             ], repoDir);
             expect(r.stdout + r.stderr).not.toContain('components.NoModes');
@@ -61,7 +60,7 @@ describe('mode automata on ROS 2', () => {
         const out = mkdtempSync(path.join(tmpdir(), 'maa-mode-params-ros2-'));
         try {
             const r = await run(process.execPath, [
-                path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', 'packages/generators-python/test/fixtures/mode-params/SelectorPair.arcapp',
+                maaGen, 'generate', 'packages/generators-python/test/fixtures/mode-params/SelectorPair.arcapp',
                 '--platform', 'rospython', '--out', out
             ], repoDir);
             expect(r.stdout + r.stderr).not.toContain('primitive types only');
@@ -104,7 +103,7 @@ describe('event-based mode automata on python-timesync', () => {
         const out = mkdtempSync(path.join(tmpdir(), 'maa-modes-event-'));
         try {
             const gen = await run(process.execPath, [
-                path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js'), 'generate', 'packages/generators-python/test/fixtures/modes/Shifter.arcapp',
+                maaGen, 'generate', 'packages/generators-python/test/fixtures/modes/Shifter.arcapp',
                 '--platform', 'timesync', '--out', out
             ], repoDir);
             expect(gen.status, gen.stdout + gen.stderr).toBe(0);

@@ -45,19 +45,24 @@ export function run(command: string, args: string[], cwd: string, input?: string
     });
 }
 
-/** Every .py file below a folder. */
-export function pythonFiles(dir: string): string[] {
+/** Every file below a folder whose name ends with `suffix` (not in __pycache__), sorted. */
+export function filesUnder(dir: string, suffix = ''): string[] {
     const out: string[] = [];
     const visit = (d: string): void => {
         for (const e of readdirSync(d, { withFileTypes: true })) {
             if (e.name === '__pycache__') continue;
             const full = path.join(d, e.name);
             if (e.isDirectory()) visit(full);
-            else if (e.name.endsWith('.py')) out.push(full);
+            else if (e.name.endsWith(suffix)) out.push(full);
         }
     };
     visit(dir);
     return out.sort();
+}
+
+/** Every .py file below a folder. */
+export function pythonFiles(dir: string): string[] {
+    return filesUnder(dir, '.py');
 }
 
 /** `ruff check` (inside the folder, with the package's settings) and `py_compile` of every file. */

@@ -1,8 +1,7 @@
-import { mkdirSync, mkdtempSync, readdirSync, rmSync, statSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
+import { describe, expect, it } from 'vitest';
+import { bothPlatformsApp, generate, streamTests, tempModelRoot } from './maa-gen.js';
+import { ensureVenv, filesUnder, run, venvPython } from './python-env.js';
 
 /**
  * A switch over an enum in port whose case labels are bare constants (`case RED:`, `case GREEN,
@@ -60,20 +59,6 @@ test "a switch over an enum in port with bare constant labels" {
 }
 `;
 
-const APP = `application A for p.Paint {
-  platform timesync {
-    timesync.Components;
-    timesync.AutomataBehavior;
-    timesync.DataTypes;
-  }
-  platform rospython {
-    ros2.Components;
-    ros2.AutomataBehavior;
-    ros2.DataTypes;
-  }
-}
-`;
-
 /** Steps the generated ROS 2 behavior class once per constant and prints what it emitted. */
 const STEP_ROS2 = `import json, sys
 sys.path.insert(0, sys.argv[1])
@@ -88,54 +73,33 @@ for color in (Color.RED, Color.GREEN, Color.BLUE, Color.BLACK):
 print(json.dumps(out))
 `;
 
-interface StreamResult { file: string; test: string | null; passed: boolean; problems: string[] }
-
-const maaGen = path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js');
-let root = '';
-beforeAll(() => {
-    root = mkdtempSync(path.join(tmpdir(), 'maa-switch-enum-'));
-    mkdirSync(path.join(root, 'p'));
-    writeFileSync(path.join(root, 'p', 'Types.cd'), TYPES);
-    writeFileSync(path.join(root, 'p', 'Paint.arc'), PAINT);
-    writeFileSync(path.join(root, 'p', 'Paint.stream'), STREAM);
-    writeFileSync(path.join(root, 'A.arcapp'), APP);
-});
-afterAll(() => {
-    if (root) rmSync(root, { recursive: true, force: true });
+const model = tempModelRoot('switch-enum', {
+    'p/Types.cd': TYPES,
+    'p/Paint.arc': PAINT,
+    'p/Paint.stream': STREAM,
+    'A.arcapp': bothPlatformsApp('p.Paint'),
 });
 
 describe('a switch over an enum with bare constant labels in generated Python', () => {
     it('python-timesync: the stream test passes', async () => {
         await ensureVenv();
-        const r = await run(process.execPath, [maaGen, 'test', path.join(root, 'A.arcapp'), '--format', 'json', '--python', venvPython], root);
-        const out = JSON.parse(r.stdout || '{}') as { results?: StreamResult[] };
-        expect(out.results, r.stdout + r.stderr).toBeDefined();
-        expect(out.results!.map((x) => [x.test, x.passed, x.problems])).toEqual([['a switch over an enum in port with bare constant labels', true, []]]);
+        const { report, run: r } = await streamTests(path.join(model.dir, 'A.arcapp'), model.dir);
+        expect(report?.results, r.stdout + r.stderr).toBeDefined();
+        expect(report!.results.map((x) => [x.test, x.passed, x.problems])).toEqual([['a switch over an enum in port with bare constant labels', true, []]]);
         expect(r.status).toBe(0);
     }, 240_000);
 
     it('rospython: the generated behavior computes the same outputs', async () => {
         await ensureVenv();
-        const out = path.join(root, 'gen-ros2');
-        const g = await run(process.execPath, [maaGen, 'generate', path.join(root, 'A.arcapp'), '--platform', 'rospython', '--out', out], root);
+        const out = path.join(model.dir, 'gen-ros2');
+        const g = await generate(path.join(model.dir, 'A.arcapp'), 'rospython', out, model.dir);
         expect(g.status, g.stdout + g.stderr).toBe(0);
-        const behavior = findFile(out, 'paint_behavior.py');
+        const behavior = filesUnder(out).find((f) => path.basename(f) === 'paint_behavior.py');
         expect(behavior, 'paint_behavior.py generated').toBeDefined();
         // .../<pkg root>/paint/model/p/paint_behavior.py: the package root holds paint/ and maa_behavior/.
         const pkgRoot = path.resolve(path.dirname(behavior!), '..', '..', '..');
-        const r = await run(venvPython, ['-c', STEP_ROS2, pkgRoot], root);
+        const r = await run(venvPython, ['-c', STEP_ROS2, pkgRoot], model.dir);
         expect(r.status, r.stdout + r.stderr).toBe(0);
         expect(JSON.parse(r.stdout)).toEqual([[11, 'GREEN'], [10, 'BLUE'], [10, 'RED'], [-1, 'BLACK']]);
     }, 240_000);
 });
-
-function findFile(dir: string, name: string): string | undefined {
-    for (const entry of readdirSync(dir)) {
-        const p = path.join(dir, entry);
-        if (statSync(p).isDirectory()) {
-            const found = findFile(p, name);
-            if (found) return found;
-        } else if (entry === name) return p;
-    }
-    return undefined;
-}

@@ -1,8 +1,8 @@
-import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
+import { describe, expect, it } from 'vitest';
+import { bothPlatformsApp, generate, streamTests, tempModelRoot } from './maa-gen.js';
+import { ensureVenv, filesUnder, run, venvPython } from './python-env.js';
 
 /**
  * Switch expressions (expression arms, block arms with `yield`, a block arm with a loop and
@@ -71,20 +71,6 @@ test "switch expressions: expression arms, block arms, nested, over an enum" {
 }
 `;
 
-const APP = `application A for p.Calc {
-  platform timesync {
-    timesync.Components;
-    timesync.AutomataBehavior;
-    timesync.DataTypes;
-  }
-  platform rospython {
-    ros2.Components;
-    ros2.AutomataBehavior;
-    ros2.DataTypes;
-  }
-}
-`;
-
 /** Steps the generated ROS 2 behavior class once per input pair and prints what it emitted. */
 const STEP_ROS2 = `import json, sys
 sys.path.insert(0, sys.argv[1])
@@ -99,55 +85,34 @@ for i, color in ((1, Color.RED), (2, Color.GREEN), (3, Color.BLUE), (9, Color.BL
 print(json.dumps(out))
 `;
 
-interface StreamResult { file: string; test: string | null; passed: boolean; problems: string[] }
-
-const maaGen = path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js');
-let root = '';
-beforeAll(() => {
-    root = mkdtempSync(path.join(tmpdir(), 'maa-switch-expression-'));
-    mkdirSync(path.join(root, 'p'));
-    writeFileSync(path.join(root, 'p', 'Types.cd'), TYPES);
-    writeFileSync(path.join(root, 'p', 'Calc.arc'), CALC);
-    writeFileSync(path.join(root, 'p', 'Calc.stream'), STREAM);
-    writeFileSync(path.join(root, 'A.arcapp'), APP);
-});
-afterAll(() => {
-    if (root) rmSync(root, { recursive: true, force: true });
+const model = tempModelRoot('switch-expression', {
+    'p/Types.cd': TYPES,
+    'p/Calc.arc': CALC,
+    'p/Calc.stream': STREAM,
+    'A.arcapp': bothPlatformsApp('p.Calc'),
 });
 
 describe('switch expressions in generated Python', () => {
     it('python-timesync: the stream test passes', async () => {
         await ensureVenv();
-        const r = await run(process.execPath, [maaGen, 'test', path.join(root, 'A.arcapp'), '--format', 'json', '--python', venvPython], root);
-        const out = JSON.parse(r.stdout || '{}') as { results?: StreamResult[] };
-        expect(out.results, r.stdout + r.stderr).toBeDefined();
-        expect(out.results!.map((x) => [x.passed, x.problems])).toEqual([[true, []]]);
+        const { report, run: r } = await streamTests(path.join(model.dir, 'A.arcapp'), model.dir);
+        expect(report?.results, r.stdout + r.stderr).toBeDefined();
+        expect(report!.results.map((x) => [x.passed, x.problems])).toEqual([[true, []]]);
         expect(r.status).toBe(0);
     }, 240_000);
 
     it('rospython: the generated behavior computes the same outputs; block arms are local functions', async () => {
         await ensureVenv();
-        const out = path.join(root, 'gen-ros2');
-        const g = await run(process.execPath, [maaGen, 'generate', path.join(root, 'A.arcapp'), '--platform', 'rospython', '--out', out], root);
+        const out = path.join(model.dir, 'gen-ros2');
+        const g = await generate(path.join(model.dir, 'A.arcapp'), 'rospython', out, model.dir);
         expect(g.status, g.stdout + g.stderr).toBe(0);
-        const behavior = findFile(out, 'calc_behavior.py');
+        const behavior = filesUnder(out).find((f) => path.basename(f) === 'calc_behavior.py');
         expect(behavior, 'calc_behavior.py generated').toBeDefined();
         // Block arms are annotated local functions (ruff's ANN rules of the generated-code settings).
         expect(readFileSync(behavior!, 'utf8')).toMatch(/^ {8}def _maa_arm\d+\(\) -> object:$/m);
         const pkgRoot = path.resolve(path.dirname(behavior!), '..', '..', '..');
-        const r = await run(venvPython, ['-c', STEP_ROS2, pkgRoot], root);
+        const r = await run(venvPython, ['-c', STEP_ROS2, pkgRoot], model.dir);
         expect(r.status, r.stdout + r.stderr).toBe(0);
         expect(JSON.parse(r.stdout)).toEqual([[10, 108, 1005, 'r'], [10, -2, 1000, 'gb'], [8, 8, 1000, 'gb'], [0, 7, 1000, 'k'], [0, 8, 1000, 'r']]);
     }, 240_000);
 });
-
-function findFile(dir: string, name: string): string | undefined {
-    for (const entry of readdirSync(dir)) {
-        const p = path.join(dir, entry);
-        if (statSync(p).isDirectory()) {
-            const found = findFile(p, name);
-            if (found) return found;
-        } else if (entry === name) return p;
-    }
-    return undefined;
-}
