@@ -1,12 +1,11 @@
 import { describe, expect, test } from 'vitest';
-import { validate } from './helpers.js';
+import { errorsOf } from './helpers.js';
 
 /** Errors of a compute block over `in char c, in Character k, in int i, in boolean b`. */
 async function errors(body: string, outs = 'out int o'): Promise<string[]> {
-    const found = await validate({
+    return errorsOf({
         'Foo.arc': `component Foo {\n  port in char c, in Character k, in int i, in boolean b, ${outs};\n  compute {\n${body}\n  }\n}`
     });
-    return found.filter((f) => f.severity === 'error').map((f) => `${f.code}@${f.text}`);
 }
 
 describe('char and Character', () => {

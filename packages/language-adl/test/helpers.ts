@@ -10,3 +10,9 @@ const bench = new ModelTestBench(() => createAdlServices(EmptyFileSystem), 'adl'
 export function validate(files: Readonly<Record<string, string>>): Promise<Finding[]> {
     return bench.validate(files);
 }
+
+/** The errors of a model root as `code@text` (the text the diagnostic marks). */
+export async function errorsOf(files: Readonly<Record<string, string>>): Promise<string[]> {
+    const found = await validate(files);
+    return found.filter((f) => f.severity === 'error').map((f) => `${f.code}@${f.text}`);
+}

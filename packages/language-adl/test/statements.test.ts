@@ -1,6 +1,6 @@
 import { describe, expect, test } from 'vitest';
 import { hits } from '../src/testing/index.js';
-import { validate } from './helpers.js';
+import { errorsOf, validate } from './helpers.js';
 
 /** A component whose compute block is `body` (ports: in int i, in String s, out int o). */
 function model(body: string, extra = ''): Record<string, string> {
@@ -19,8 +19,7 @@ ${body}
 }
 
 async function errors(body: string): Promise<string[]> {
-    const found = await validate(model(body));
-    return found.filter((f) => f.severity === 'error').map((f) => `${f.code}@${f.text}`);
+    return errorsOf(model(body));
 }
 
 describe('switch, do-while, break and continue: valid', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { validate } from './helpers.js';
+import { errorsOf, validate } from './helpers.js';
 
 const types = `package t;
 classdiagram Types {
@@ -9,7 +9,7 @@ classdiagram Types {
 
 /** A component switching over an in port of enum type `Color` (its compute block is `body`). */
 async function errors(body: string, extra = ''): Promise<string[]> {
-    const found = await validate({
+    return errorsOf({
         'Foo.arc': `import t.Types.*;
 component Foo {
   port in Color color;
@@ -22,7 +22,6 @@ ${body}
 }`,
         't/Types.cd': types
     });
-    return found.filter((f) => f.severity === 'error').map((f) => `${f.code}@${f.text}`);
 }
 
 describe('switch over an enum: bare constants as case labels (valid)', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { validate } from './helpers.js';
+import { errorsOf, validate } from './helpers.js';
 
 const types = `package t;
 classdiagram Types {
@@ -8,7 +8,7 @@ classdiagram Types {
 
 /** A component with ports `in int i`, `in String s`, `in Color color`, `out int o`, `out String t` whose compute block is `body`. */
 async function errors(body: string, extra = ''): Promise<string[]> {
-    const found = await validate({
+    return errorsOf({
         'Foo.arc': `import t.Types.*;
 component Foo {
   port in int i;
@@ -23,7 +23,6 @@ ${body}
 }`,
         't/Types.cd': types
     });
-    return found.filter((f) => f.severity === 'error').map((f) => `${f.code}@${f.text}`);
 }
 
 describe('switch expressions (valid)', () => {
