@@ -16,7 +16,7 @@ export type { CliIo } from './io.js';
 
 export function createProgram(io: CliIo, setExitCode: (code: ExitCode) => void): Command {
   const program = new Command('maa-gen')
-    .description('MontiArcAutomaton for the web: check component models (more commands will follow)')
+    .description('MontiArcAutomaton for the web: check models, generate code for a platform, list generators, run stream tests')
     .version(cliVersion(), '-V, --version', 'print the version')
     .helpOption('-h, --help', 'show help')
     .helpCommand('help [command]', 'show help for a command')
