@@ -1,7 +1,8 @@
-import { accessSync, constants, readFileSync, statSync, type Stats } from 'node:fs';
+import { accessSync, constants, existsSync, readFileSync, statSync, type Stats } from 'node:fs';
 import path from 'node:path';
 import type { RootSpec } from '@maa/language-server';
 import { LANGUAGE_FACTS } from '@maa/language-server/language-facts';
+import { declaredPackage, MODEL_ROOT_MARKER, resolveModelRoot } from '@maa/language-server/model-root';
 import { CliError } from './errors.js';
 
 /**
@@ -9,9 +10,8 @@ import { CliError } from './errors.js';
  * facts the grammar composer writes (so a new language is discovered without a change here). The
  * checker's own discovery (`checkRoots`) reads the same extensions from the family's service
  * registry, so `.arcapp` application configurations have always been checked with their folder;
- * as file arguments they are checked within the root of modelRootOfFile (for a configuration
- * without a package declaration, its own folder, which is also the default `--root` of
- * `maa-gen generate`).
+ * as file arguments they are checked within the root of modelRootOfFile, the same root that is
+ * the default `--root` of `maa-gen generate` and `maa-gen test` and the one the IDE generates in.
  */
 export const MODEL_FILE_EXTENSIONS: readonly string[] = [
   ...new Set(LANGUAGE_FACTS.languages.flatMap((l) => l.fileExtensions)),
@@ -102,25 +102,30 @@ function describe(e: unknown): string {
   return code ?? (e instanceof Error ? e.message : String(e));
 }
 
-/** `package a.b;` at the start of a model file (after comments), if any. */
-const PACKAGE_DECLARATION = /^\uFEFF?(?:\s|\/\/[^\n]*|\/\*[\s\S]*?\*\/)*package\s+([\p{L}_$][\p{L}\p{N}_$]*(?:\s*\.\s*[\p{L}_$][\p{L}\p{N}_$]*)*)\s*;/u;
-
 /**
- * The model root of a single file: the folder that holds its package folders. For
- * `models/toast/ctrl/Controller.arc` declaring `package toast.ctrl;` that is `models/`; for a
- * file without a package declaration, or whose folders do not match its package, the file's
- * own folder.
+ * The model root of a single file, by the one rule of `resolveModelRoot` (docs/user-guide.md,
+ * "Model roots"): the nearest folder from the file's upwards with a `maa.json`; else the folder
+ * that holds its package folders (`models/` for `models/toast/ctrl/Controller.arc` declaring
+ * `package toast.ctrl;`); else the file's own folder.
  */
-export function modelRootOfFile(file: string, text: string): string {
-  const folder = path.dirname(file);
-  const declared = PACKAGE_DECLARATION.exec(text)?.[1];
-  if (!declared) return folder;
-  const segments = declared.split('.').map((s) => s.trim());
-  const folders = folder.split(path.sep);
-  if (segments.length >= folders.length) return folder;
-  const tail = folders.slice(folders.length - segments.length);
-  if (tail.some((f, i) => f !== segments[i])) return folder;
-  return folders.slice(0, folders.length - segments.length).join(path.sep) || path.sep;
+export function modelRootOfFile(file: string, text: string | undefined): string {
+  const posix = (p: string): string => p.split(path.sep).join('/');
+  const root = resolveModelRoot(posix(path.resolve(file)), {
+    hasMarker: (folder) => existsSync(path.join(folder, MODEL_ROOT_MARKER)),
+    packageName: text === undefined ? undefined : declaredPackage(text),
+  });
+  return path.resolve(root.split('/').join(path.sep) || path.sep);
+}
+
+/** The model root of a file read from disk (its package declaration read too, if readable). */
+export function modelRootOfPath(file: string): string {
+  let text: string | undefined;
+  try {
+    text = readFileSync(file, 'utf8');
+  } catch {
+    text = undefined;
+  }
+  return modelRootOfFile(file, text);
 }
 
 function readable(abs: string, mode: number): boolean {

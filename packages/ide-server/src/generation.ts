@@ -1,7 +1,8 @@
-import { existsSync, statSync } from 'node:fs';
+import { existsSync, readFileSync, statSync } from 'node:fs';
 import { stat } from 'node:fs/promises';
 import path from 'node:path';
 import type { CheckDiagnostic } from '@maa/language-server';
+import { declaredPackage, MODEL_ROOT_MARKER, resolveModelRoot } from '@maa/language-server/model-root';
 import { ConfinedRoot, checkRelativePath } from './confinement.js';
 import { HttpError } from './http-util.js';
 import type { Workspace } from './workspace.js';
@@ -93,14 +94,21 @@ export class GenerationService {
     return { ok: result.ok, platform, files, diagnostics: result.diagnostics.map((d) => this.toIde(d)), platformDir };
   }
 
-  /** The nearest folder from the app's upwards (inside the workspace) with a `maa.json`, else the app's folder. */
+  /** The model root of the app by the one rule of `resolveModelRoot` (docs/user-guide.md, "Model roots"), inside the workspace. */
   private modelRootOf(appFile: string): string {
-    const root = path.resolve(this.workspace.root);
-    for (let dir = path.dirname(appFile); dir.startsWith(root); dir = path.dirname(dir)) {
-      if (existsSync(path.join(dir, 'maa.json'))) return dir;
-      if (dir === root) break;
+    const posix = (p: string): string => p.split(path.sep).join('/');
+    let text: string | undefined;
+    try {
+      text = readFileSync(appFile, 'utf8');
+    } catch {
+      text = undefined;
     }
-    return path.dirname(appFile);
+    const root = resolveModelRoot(posix(appFile), {
+      hasMarker: (folder) => existsSync(path.join(folder, MODEL_ROOT_MARKER)),
+      stopAt: posix(path.resolve(this.workspace.root)),
+      packageName: text === undefined ? undefined : declaredPackage(text),
+    });
+    return path.resolve(root.split('/').join(path.sep) || path.sep);
   }
 
   private toIde(d: CheckDiagnostic): IdeDiagnostic {

@@ -5,6 +5,7 @@
 export * from './adl-module.js';
 export * from './behavior-language.js';
 export * from './model-roots.js';
+export * from './workspace/model-root.js';
 export * from './services.js';
 export * from './components/component-model.js';
 export * from './components/features.js';

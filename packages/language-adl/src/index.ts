@@ -2,3 +2,4 @@
 // the checker of model roots on disk, which needs Node.
 export * from './browser.js';
 export * from './workspace/root-checker.js';
+export * from './workspace/model-root.js';

@@ -1,4 +1,5 @@
 import { URI } from 'langium';
+import { resolveModelRoot } from './workspace/model-root.js';
 
 /**
  * The model roots of a workspace. Every model file belongs to exactly one root (the longest
@@ -26,14 +27,19 @@ export class ModelRoots {
         return (typeof uri === 'string' ? URI.parse(uri) : uri).scheme === ModelRoots.BUILTIN_SCHEME;
     }
 
-    /** The root a document belongs to; a document outside every root is its own folder's root. */
+    /**
+     * The root a document belongs to. A document outside every root gets its root by the one rule
+     * of `resolveModelRoot` (docs/user-guide.md, "Model roots"): the configured roots are the
+     * folders with a `maa.json` the workspace manager found, and a document outside all of them
+     * has none above it that is known, so its root is its own folder.
+     */
     rootOf(uri: URI | string): string {
         const s = typeof uri === 'string' ? uri : uri.toString();
         if (this.isBuiltin(s)) return `${ModelRoots.BUILTIN_SCHEME}:/`;
         for (const root of this.roots) {
             if (s.startsWith(root)) return root;
         }
-        return withSlash(s.substring(0, s.lastIndexOf('/')));
+        return withSlash(resolveModelRoot(s, { hasMarker: () => false }));
     }
 
     /** The package a document's folder denotes (`a.b` for `<root>/a/b/X.arc`). */

@@ -4,6 +4,7 @@ import { fileURLToPath } from 'node:url';
 import { Command, Option } from 'commander';
 import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
+import { modelRootOfPath } from '../roots.js';
 import { displayPath, formatDiagnosticsText } from '../format/text.js';
 import type { CliIo } from '../io.js';
 import { createProgress } from '../progress.js';
@@ -41,7 +42,7 @@ export async function runGenerate(appArg: string, options: GenerateCommandOption
   }
   if (!isFile) throw new CliError(`not a file: ${appArg}`);
   if (path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
-  const root = options.root ? path.resolve(io.cwd, options.root) : path.dirname(appFile);
+  const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfPath(appFile);
   if (options.root) {
     let dir = false;
     try {
@@ -158,7 +159,7 @@ export function generateCommand(io: CliIo, setExitCode: (code: ExitCode) => void
       ),
     )
     .option('-o, --out <dir>', 'output folder; platform P is written to DIR/P (default: "generated" next to the .arcapp)')
-    .option('-r, --root <dir>', 'model root the names of the configuration resolve in (default: the folder of the .arcapp)')
+    .option('-r, --root <dir>', 'model root the names of the configuration resolve in (default: the nearest folder above the .arcapp with a maa.json, else its folder)')
     .addOption(new Option('-f, --format <format>', 'output format').choices(['text', 'json']).default('text'))
     .addHelpText(
       'after',

@@ -6,6 +6,7 @@ import { fileURLToPath } from 'node:url';
 import { Command, Option } from 'commander';
 import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
+import { modelRootOfPath } from '../roots.js';
 import { displayPath, formatDiagnosticsText } from '../format/text.js';
 import type { CliIo } from '../io.js';
 import { exitCodeOf } from './generate.js';
@@ -58,7 +59,7 @@ export async function runTest(appArg: string, files: string[], options: TestComm
     throw new CliError(`path not found: ${appArg}`);
   }
   if (!isFile || path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
-  const root = options.root ? path.resolve(io.cwd, options.root) : path.dirname(appFile);
+  const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfPath(appFile);
   const streamFiles = files.length > 0 ? files.map((f) => path.resolve(io.cwd, f)) : findStreamFiles(root);
   for (const f of streamFiles) {
     try {
@@ -139,7 +140,7 @@ export function testCommand(io: CliIo, setExitCode: (code: ExitCode) => void): C
     .argument('[files...]', 'stream test files (default: every *.stream file of the model root)')
     .option('-p, --platform <name>', 'the platform to test (a python-timesync platform)', 'timesync')
     .option('-o, --out <dir>', 'keep the generated build in DIR/<platform> (default: a temporary folder)')
-    .option('-r, --root <dir>', 'model root (default: the folder of the .arcapp)')
+    .option('-r, --root <dir>', 'model root (default: the nearest folder above the .arcapp with a maa.json, else its folder)')
     .option('--python <interpreter>', 'Python 3.11+ to run the build (default: $MAA_PYTHON or python3)')
     .addOption(new Option('-f, --format <format>', 'output format').choices(['text', 'json']).default('text'))
     .addHelpText(

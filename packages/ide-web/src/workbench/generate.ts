@@ -4,6 +4,7 @@
  * between model and generated code through the trace file.
  */
 import * as monaco from '@codingame/monaco-vscode-editor-api';
+import { MODEL_ROOT_MARKER, resolveModelRoot } from '@maa/language-server/model-root';
 import { api, type GenerateDiagnostic, type TraceElement, type TraceFile } from '../api.js';
 import type { AppInfo, TextRange } from '../contracts.js';
 import { languageOf } from '../languages.js';
@@ -128,16 +129,17 @@ export class GeneratePanel {
         }
     }
 
+    /**
+     * The model root of an application (workspace-relative, `''` for the workspace folder), by the
+     * one rule the backend generates with (`resolveModelRoot`, docs/user-guide.md "Model roots").
+     * An `.arcapp` declares no package, so only the `maa.json` rule and the app's folder apply.
+     */
     private modelRootOf(app: AppInfo): string {
-        // The model root: the nearest folder above the app with a maa.json (else the app's folder).
         const paths = new Set(this.host.workspacePaths());
-        let folder = app.path.includes('/') ? app.path.slice(0, app.path.lastIndexOf('/')) : '';
-        const appFolder = folder;
-        for (;;) {
-            if (paths.has(folder ? `${folder}/maa.json` : 'maa.json')) return folder;
-            if (!folder) return appFolder;
-            folder = folder.includes('/') ? folder.slice(0, folder.lastIndexOf('/')) : '';
-        }
+        return resolveModelRoot(app.path, {
+            hasMarker: (folder) => paths.has(folder ? `${folder}/${MODEL_ROOT_MARKER}` : MODEL_ROOT_MARKER),
+            stopAt: '',
+        });
     }
 
     private workspacePathOf(element: TraceElement): string {
