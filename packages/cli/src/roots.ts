@@ -117,15 +117,12 @@ export function modelRootOfFile(file: string, text: string | undefined): string 
   return path.resolve(root.split('/').join(path.sep) || path.sep);
 }
 
-/** The model root of a file read from disk (its package declaration read too, if readable). */
-export function modelRootOfPath(file: string): string {
-  let text: string | undefined;
-  try {
-    text = readFileSync(file, 'utf8');
-  } catch {
-    text = undefined;
-  }
-  return modelRootOfFile(file, text);
+/**
+ * The default model root of an application configuration: an `.arcapp` declares no package (its
+ * grammar has none), so only the `maa.json` rule and its own folder apply; nothing is read.
+ */
+export function modelRootOfApp(appFile: string): string {
+  return modelRootOfFile(appFile, undefined);
 }
 
 function readable(abs: string, mode: number): boolean {

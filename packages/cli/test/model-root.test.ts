@@ -4,7 +4,7 @@
 import { existsSync } from 'node:fs';
 import path from 'node:path';
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
-import { modelRootOfFile, modelRootOfPath } from '../src/roots.js';
+import { modelRootOfFile, modelRootOfApp } from '../src/roots.js';
 import { ModelDir, requireBuiltCli, runCli } from './helpers.js';
 
 const APP = 'application A for robot.Ctrl {\n  platform timesync {\n    timesync.Components;\n    timesync.DataTypes;\n  }\n}\n';
@@ -30,7 +30,7 @@ describe('model roots of maa-gen', () => {
 
   it('takes the maa.json folder above an app (and above a file of a package) as its root', () => {
     const m = project();
-    expect(modelRootOfPath(m.path('proj/apps/A.arcapp'))).toBe(m.path('proj'));
+    expect(modelRootOfApp(m.path('proj/apps/A.arcapp'))).toBe(m.path('proj'));
     expect(modelRootOfFile(m.path('proj/robot/Ctrl.arc'), CTRL)).toBe(m.path('proj'));
     // A maa.json wins over the package rule: proj/models/robot/Ctrl.arc declaring `package robot;`.
     expect(modelRootOfFile(m.path('proj/models/robot/Ctrl.arc'), CTRL)).toBe(m.path('proj'));

@@ -1,8 +1,8 @@
-import { existsSync, readFileSync, statSync } from 'node:fs';
+import { existsSync, statSync } from 'node:fs';
 import { stat } from 'node:fs/promises';
 import path from 'node:path';
 import type { CheckDiagnostic } from '@maa/language-server';
-import { declaredPackage, MODEL_ROOT_MARKER, resolveModelRoot } from '@maa/language-server/model-root';
+import { MODEL_ROOT_MARKER, resolveModelRoot } from '@maa/language-server/model-root';
 import { ConfinedRoot, checkRelativePath } from './confinement.js';
 import { HttpError } from './http-util.js';
 import type { Workspace } from './workspace.js';
@@ -94,19 +94,15 @@ export class GenerationService {
     return { ok: result.ok, platform, files, diagnostics: result.diagnostics.map((d) => this.toIde(d)), platformDir };
   }
 
-  /** The model root of the app by the one rule of `resolveModelRoot` (docs/user-guide.md, "Model roots"), inside the workspace. */
+  /**
+   * The model root of the app by the one rule of `resolveModelRoot` (docs/user-guide.md, "Model
+   * roots"), inside the workspace; an `.arcapp` declares no package, so nothing is read.
+   */
   private modelRootOf(appFile: string): string {
     const posix = (p: string): string => p.split(path.sep).join('/');
-    let text: string | undefined;
-    try {
-      text = readFileSync(appFile, 'utf8');
-    } catch {
-      text = undefined;
-    }
     const root = resolveModelRoot(posix(appFile), {
       hasMarker: (folder) => existsSync(path.join(folder, MODEL_ROOT_MARKER)),
       stopAt: posix(path.resolve(this.workspace.root)),
-      packageName: text === undefined ? undefined : declaredPackage(text),
     });
     return path.resolve(root.split('/').join(path.sep) || path.sep);
   }

@@ -4,7 +4,7 @@ import { fileURLToPath } from 'node:url';
 import { Command, Option } from 'commander';
 import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
-import { modelRootOfPath } from '../roots.js';
+import { modelRootOfApp } from '../roots.js';
 import { displayPath, formatDiagnosticsText } from '../format/text.js';
 import type { CliIo } from '../io.js';
 import { createProgress } from '../progress.js';
@@ -42,7 +42,7 @@ export async function runGenerate(appArg: string, options: GenerateCommandOption
   }
   if (!isFile) throw new CliError(`not a file: ${appArg}`);
   if (path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
-  const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfPath(appFile);
+  const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
   if (options.root) {
     let dir = false;
     try {

@@ -6,7 +6,7 @@ import { fileURLToPath } from 'node:url';
 import { Command, Option } from 'commander';
 import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
-import { modelRootOfPath } from '../roots.js';
+import { modelRootOfApp } from '../roots.js';
 import { displayPath, formatDiagnosticsText } from '../format/text.js';
 import type { CliIo } from '../io.js';
 import { exitCodeOf } from './generate.js';
@@ -59,7 +59,7 @@ export async function runTest(appArg: string, files: string[], options: TestComm
     throw new CliError(`path not found: ${appArg}`);
   }
   if (!isFile || path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
-  const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfPath(appFile);
+  const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
   const streamFiles = files.length > 0 ? files.map((f) => path.resolve(io.cwd, f)) : findStreamFiles(root);
   for (const f of streamFiles) {
     try {
