@@ -93,7 +93,7 @@ def test_crashed_and_hung_nodes_are_reported(faulty_app_dir: Path) -> None:
             speed=1.0,
             rosbridge_port=0,
             viser_port=None,
-            hang_timeout=2.0,
+            hang_timeout=5.0,
             startup_timeout=20.0,
         )
     )
@@ -105,10 +105,17 @@ def test_crashed_and_hung_nodes_are_reported(faulty_app_dir: Path) -> None:
         states: dict[str, str] = {}
         while time.monotonic() < deadline:
             states = {n["name"]: n["state"] for n in app.supervisor.statuses()}
-            if states.get("/faulty/crasher") == "crashed" and states.get("/faulty/hanger") == "hung":
+            settled = states.get("/faulty/forgetful") not in (None, "starting")
+            if states.get("/faulty/crasher") == "crashed" and states.get("/faulty/hanger") == "hung" and settled:
                 break
             time.sleep(0.2)
-        assert states == {"/faulty/echo": "running", "/faulty/crasher": "crashed", "/faulty/hanger": "hung"}
+        assert states == {
+            "/faulty/echo": "running",
+            "/faulty/crasher": "crashed",
+            "/faulty/hanger": "hung",
+            # lost the answer to its first probe: the next probe finds it alive
+            "/faulty/forgetful": "running",
+        }
         events = [e for e in app.session.events if e.level == "error"] if app.session else []
         crash = next(e for e in events if e.source == "/faulty/crasher")
         assert "simulated failure in the crasher node" in crash.details["stderr_tail"]
@@ -116,6 +123,8 @@ def test_crashed_and_hung_nodes_are_reported(faulty_app_dir: Path) -> None:
         hang = next(e for e in events if e.source == "/faulty/hanger")
         assert "hangs" in hang.message or "did not come up" in hang.message
         assert "blocking in a timer callback" in hang.details["stderr_tail"]
+        forgetful = next(p for p in app.supervisor.processes if p.spec.fqn == "/faulty/forgetful")
+        assert "leaving probe 1 unanswered" in forgetful.tail()
         # the simulation keeps serving: time advances, the healthy node still echoes
         status = client.call("/sim/get_status")["values"]
         time.sleep(0.5)

@@ -229,18 +229,28 @@ class RosTransport:
         """Starts a liveness probe of a node (its list_parameters service); returns a future."""
         from rcl_interfaces.srv import ListParameters
 
-        with self._lock:
-            clients: dict[str, Any] = self.__dict__.setdefault("_probe_clients", {})
-            client = clients.get(fqn)
-            if client is None:
-                client = self.node.create_client(ListParameters, f"{fqn}/list_parameters")
-                clients[fqn] = client
+        client = self._probe_client(fqn)
         if not client.service_is_ready():
             return None
         request = ListParameters.Request()
         request.depth = 1
         request.prefixes = ["use_sim_time"]
         return client.call_async(request)
+
+    def forget_probe(self, fqn: str, future: Any) -> None:
+        """Stops waiting for the answer to a probe (the node lost it, or a newer probe answered)."""
+        self._probe_client(fqn).remove_pending_request(future)
+
+    def _probe_client(self, fqn: str) -> Any:
+        from rcl_interfaces.srv import ListParameters
+
+        with self._lock:
+            clients: dict[str, Any] = self.__dict__.setdefault("_probe_clients", {})
+            client = clients.get(fqn)
+            if client is None:
+                client = self.node.create_client(ListParameters, f"{fqn}/list_parameters")
+                clients[fqn] = client
+            return client
 
 
 @dataclass
@@ -252,7 +262,11 @@ class NodeProcess:
     returncode: int | None = None
     started: float = field(default_factory=time.monotonic)
     last_alive: float | None = None
-    probe: Any = None
+    #: the probes sent since the last answer (futures), oldest first
+    probes: list[Any] = field(default_factory=list)
+    #: when the oldest of them was sent
+    unanswered_since: float = 0.0
+    #: when the newest of them was sent
     probe_sent: float = 0.0
     output: deque[str] = field(default_factory=lambda: deque(maxlen=40))
     readers: list[threading.Thread] = field(default_factory=list)
@@ -425,29 +439,42 @@ class NodeSupervisor:
                 self._check_alive(node, now)
 
     def _check_alive(self, node: NodeProcess, now: float) -> None:
-        if node.probe is not None:
-            if node.probe.done():
-                node.probe = None
-                node.last_alive = now
-                if node.state == "starting":
-                    node.state = "running"
-                    self.report("info", node.spec.fqn, "running", {})
-            elif now - node.probe_sent > self.hang_timeout:
-                self._hung(
-                    node, f"node {node.spec.fqn} hangs: no answer to a liveness probe for {self.hang_timeout:g} s"
-                )
+        """Probes a node every ``probe_interval`` s; it hangs when no probe is answered for ``hang_timeout`` s.
+
+        A probe unanswered after ``probe_interval`` is followed by another one rather than waited
+        for: a node can lose a response for good. Fast DDS gives a service 100 ms to match a new
+        client's response reader and rclpy then drops the response with a RuntimeWarning ("client
+        will not receive response"); on a loaded machine that happens to the first probe of a
+        healthy node. Any answer counts, also a late one to an earlier probe.
+        """
+        if any(probe.done() for probe in node.probes):
+            for probe in node.probes:
+                if not probe.done():
+                    self.transport.forget_probe(node.spec.fqn, probe)
+            node.probes.clear()
+            node.last_alive = now
+            if node.state == "starting":
+                node.state = "running"
+                self.report("info", node.spec.fqn, "running", {})
+        elif node.probes and now - node.unanswered_since > self.hang_timeout:
+            self._hung(node, f"node {node.spec.fqn} hangs: no answer to a liveness probe for {self.hang_timeout:g} s")
             return
         if node.state == "starting" and now - node.started > self.startup_timeout:
             self._hung(node, f"node {node.spec.fqn} did not come up within {self.startup_timeout:g} s")
             return
-        last = node.last_alive or 0.0
-        if now - last >= self.probe_interval:
+        since = node.probe_sent if node.probes else (node.last_alive or 0.0)
+        if now - since >= self.probe_interval:
             future = self.transport.probe(node.spec.fqn)
             if future is not None:
-                node.probe, node.probe_sent = future, now
+                if not node.probes:
+                    node.unanswered_since = now
+                node.probes.append(future)
+                node.probe_sent = now
 
     def _hung(self, node: NodeProcess, message: str) -> None:
-        node.probe = None
+        for probe in node.probes:
+            self.transport.forget_probe(node.spec.fqn, probe)
+        node.probes.clear()
         _kill_group(node.process, signal.SIGKILL)
         with contextlib.suppress(subprocess.TimeoutExpired):
             node.process.wait(timeout=2)
