@@ -1,0 +1,9 @@
+/**
+ * @maa/protocol: the wire contracts between the workbench's parts, one folder per contract
+ * (README.md). Each exports TypeBox schemas (JSON Schema objects), their static types and a
+ * {@link Contract} that validates at run time.
+ */
+export * from './contract.js';
+export * from './position.js';
+export * from './trace/index.js';
+export * from './deployment/index.js';

@@ -1,0 +1,10 @@
+import { contract } from '../contract.js';
+import { TraceFile } from './schema.js';
+
+export * from './schema.js';
+
+/** The name of the trace file in a generated platform folder. */
+export const TRACE_FILE_NAME = '.maa-trace.json';
+
+/** Checks a parsed `.maa-trace.json`. */
+export const traceFileContract = contract('trace file', TraceFile);
