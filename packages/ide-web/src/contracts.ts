@@ -42,20 +42,32 @@ export interface DiagramTarget {
     diagramType: 'maa-cc' | 'maa-automaton';
 }
 
-/** The mounted diagram, as the shell and the simulate panel drive it. */
-export interface DiagramView extends Disposable {
+/**
+ * The diagram's extension point for a simulation run (what the simulate panel uses): live values
+ * on ports and connectors, the active automaton state or mode of each instance, the paths the
+ * shown diagrams know (for the spelling of topic and node names), and the user's selection.
+ */
+export interface DiagramLiveLayer {
+    /** Live values by port path (`"ctrl.arm"`); shown on connectors and ports. Empty map clears. */
+    setLiveValues(values: ReadonlyMap<string, string>): void;
+    /** Active automaton state or mode by instance path (`"ctrl"` → `"Toasting"`). Empty map clears. */
+    setActiveStates(states: ReadonlyMap<string, string>): void;
+    /** Port paths of every C&C diagram shown so far (`"ctrl.arm"`). */
+    knownPortPaths(): string[];
+    /** Instance paths of every C&C diagram shown so far (`""` the root, `"ctrl"`). */
+    knownInstancePaths(): string[];
+    /** Called when the user selects diagram elements (their traces). */
+    onSelect(handler: (traces: string[]) => void): Disposable;
+}
+
+/** The mounted diagram, as the shell drives it (the simulate panel only through {@link DiagramLiveLayer}). */
+export interface DiagramView extends Disposable, DiagramLiveLayer {
     /** Shows (or switches to) a diagram; later edits of the model update it. */
     show(target: DiagramTarget): void;
     /** Selects the innermost element whose trace contains the position (editor → diagram). */
     revealPosition(uri: string, position: TextPosition): void;
     /** The current diagram as a standalone SVG document. */
     exportSvg(): Promise<string>;
-    /** Live values by port path (`"ctrl.arm"`); shown on connectors and ports. Empty map clears. */
-    setLiveValues(values: ReadonlyMap<string, string>): void;
-    /** Active automaton state by instance path (`"ctrl"` → `"Toasting"`). Empty map clears. */
-    setActiveStates(states: ReadonlyMap<string, string>): void;
-    /** Called when the user selects diagram elements (their traces). */
-    onSelect(handler: (traces: string[]) => void): Disposable;
 }
 
 /** One application configuration of the workspace (`GET /api/apps`). */
@@ -68,8 +80,8 @@ export interface AppInfo {
 
 /** What the shell gives the simulate panel. */
 export interface SimulateHost {
-    /** The diagram, for live values and active states during a run. */
-    diagram: DiagramView;
+    /** The diagram's live layer, for live values and active states during a run. */
+    diagram: DiagramLiveLayer;
     /** The application configurations of the workspace (fresh from the backend). */
     apps(): Promise<AppInfo[]>;
     /** Reports a message in the shell's status line / notifications. */

@@ -1,0 +1,186 @@
+/**
+ * The panel's connection to a running simulator: rosbridge (retried while the proxied endpoint
+ * comes up), the clock, the active automaton states and modes, the simulator's status, the
+ * topic list for the inspector, and the 10 Hz hand-over of values and states to the diagram.
+ * One instance per attached run; `dispose` ends it and clears what it showed.
+ */
+import type { DiagramLiveLayer, Disposable } from '../contracts.js';
+import { RosConnection, rosbridgeUrl, type SimServiceResponse, type TopicInfo } from '../ros/index.js';
+import { errorText } from './dom.js';
+import { clockSeconds } from './format.js';
+import type { Inspector } from './inspector.js';
+import { statusLine, unwrapStatus, type SimStatus } from './logic.js';
+import { parseAutomatonStates } from './states.js';
+import type { StatusView } from './status-view.js';
+import { topicIndex, topicToPort } from './topics.js';
+
+const AUTOMATON_STATES = '/maa/automaton_states';
+const DIAGRAM_PERIOD_MS = 100; // 10 Hz
+const STATUS_PERIOD_MS = 1000;
+const TOPICS_PERIOD_MS = 3000;
+const CONNECT_ATTEMPTS = 4;
+
+export interface LiveRunHost {
+    /** The qualified name of the application's root component (the topics' namespace). */
+    rootComponent: string;
+    diagram: DiagramLiveLayer;
+    inspector: Inspector;
+    status: StatusView;
+    /** The session still runs (the status line then follows the simulator). */
+    running(): boolean;
+    /** The connection or the simulator's status changed: the controls render again. */
+    changed(): void;
+    notify(severity: 'info' | 'warning' | 'error', message: string): void;
+}
+
+export class LiveRun implements Disposable {
+    private ros: RosConnection | undefined;
+    private clock: number | undefined;
+    private simStatus: SimStatus = {};
+    private activeStates = new Map<string, string>();
+    private statesDirty = false;
+    private disposed = false;
+    private readonly subs: Disposable[] = [];
+    private readonly timers: ReturnType<typeof setInterval>[] = [];
+
+    constructor(private readonly host: LiveRunHost) {
+        const url = rosbridgeUrl(window.location);
+        this.connect(url, 1).catch((e: unknown) => {
+            if (!this.disposed) host.status.showError(`Could not connect to the simulator's rosbridge at ${url}: ${errorText(e)}`);
+        });
+        this.timers.push(setInterval(() => void this.pollStatus(), STATUS_PERIOD_MS));
+        this.timers.push(setInterval(() => void this.refreshTopics(), TOPICS_PERIOD_MS));
+        this.timers.push(setInterval(() => this.tick(), DIAGRAM_PERIOD_MS));
+    }
+
+    /** A rosbridge connection exists (the run controls work). */
+    get connected(): boolean {
+        return this.ros !== undefined;
+    }
+
+    /** The simulation time from `/clock`, `undefined` before the first message. */
+    get clockSeconds(): number | undefined {
+        return this.clock;
+    }
+
+    get paused(): boolean {
+        return !!this.simStatus.paused;
+    }
+
+    /** Calls a simulator service (`/sim/pause`, `/sim/step`, …, docs/simulation.md) and shows the new status. */
+    async control(service: string, args: Record<string, unknown> = {}): Promise<void> {
+        const conn = this.ros;
+        if (!conn) return;
+        try {
+            const res = await conn.callService<SimServiceResponse>(service, args, service === '/sim/reset' ? 60_000 : 10_000);
+            if (res && res.success === false) this.host.notify('warning', `${service}: ${res.message ?? 'failed'}`);
+            const st = res?.status;
+            if (st && typeof st === 'object') this.simStatus = unwrapStatus(st);
+            await this.pollStatus();
+        } catch (e) {
+            this.host.notify('error', errorText(e));
+        }
+    }
+
+    /** Shows new inspector values and hands values and states to the diagram (`force`: values even when unchanged). */
+    tick(force = false): void {
+        const { inspector, diagram } = this.host;
+        const valuesChanged = inspector.flush() || force;
+        if (valuesChanged) diagram.setLiveValues(inspector.diagramValues());
+        if (this.statesDirty) {
+            this.statesDirty = false;
+            diagram.setActiveStates(this.activeStates);
+        }
+        if (this.clock !== undefined && this.host.running() && this.ros?.connectionState === 'connected') this.host.status.set(statusLine(this.simStatus, this.clock));
+    }
+
+    /** Disconnects and clears the inspector and the diagram's live decorations. */
+    dispose(): void {
+        if (this.disposed) return;
+        this.disposed = true;
+        for (const t of this.timers.splice(0)) clearInterval(t);
+        for (const s of this.subs.splice(0)) s.dispose();
+        this.host.inspector.clear();
+        this.ros?.dispose();
+        this.ros = undefined;
+        try {
+            this.host.diagram.setLiveValues(new Map());
+            this.host.diagram.setActiveStates(new Map());
+        } catch {
+            /* the diagram may be gone */
+        }
+    }
+
+    /** Connects, retrying a few times: the proxied endpoint may need a moment after a start. */
+    private async connect(url: string, attempt: number): Promise<void> {
+        const conn = new RosConnection(url);
+        this.ros = conn;
+        this.host.changed();
+        try {
+            await conn.whenConnected(10_000);
+        } catch (e) {
+            conn.dispose();
+            if (this.ros === conn) this.ros = undefined;
+            if (this.disposed) return;
+            if (attempt >= CONNECT_ATTEMPTS) throw e;
+            this.host.status.set(`Connecting to the simulator (attempt ${attempt + 1})…`);
+            await new Promise((r) => setTimeout(r, 1000 * attempt));
+            if (!this.disposed) await this.connect(url, attempt + 1);
+            return;
+        }
+        if (this.disposed) {
+            conn.dispose();
+            return;
+        }
+        this.host.status.set('Connected');
+        this.host.inspector.connect(conn);
+        this.host.changed();
+        this.subscribe(conn);
+        void this.refreshTopics();
+        void this.pollStatus();
+    }
+
+    private subscribe(conn: RosConnection): void {
+        this.subs.push(
+            conn.onState((s, detail) => {
+                if ((s === 'error' || s === 'closed') && this.host.running() && !this.disposed) this.host.status.set(`rosbridge ${s}${detail ? `: ${detail}` : ''}`);
+            }),
+            conn.subscribe('/clock', 'rosgraph_msgs/msg/Clock', (m) => {
+                const t = clockSeconds(m);
+                if (t !== undefined) this.clock = t;
+            }, 100),
+            conn.subscribe(AUTOMATON_STATES, 'std_msgs/msg/String', (m) => {
+                this.activeStates = parseAutomatonStates(m, this.host.rootComponent, this.host.diagram.knownInstancePaths());
+                this.statesDirty = true;
+            }, DIAGRAM_PERIOD_MS),
+        );
+    }
+
+    private async pollStatus(): Promise<void> {
+        const conn = this.ros;
+        if (!conn || conn.connectionState !== 'connected') return;
+        try {
+            this.simStatus = unwrapStatus(await conn.callService('/sim/get_status', {}, 5000));
+            if (this.disposed) return;
+            this.host.status.set(statusLine(this.simStatus, this.clock));
+            this.host.changed();
+        } catch {
+            if (this.clock !== undefined && !this.disposed) this.host.status.set(statusLine(this.simStatus, this.clock));
+        }
+    }
+
+    private async refreshTopics(): Promise<void> {
+        const conn = this.ros;
+        if (!conn || conn.connectionState !== 'connected') return;
+        let list: TopicInfo[];
+        try {
+            list = await conn.listTopics();
+        } catch {
+            return;
+        }
+        if (conn !== this.ros) return;
+        const root = this.host.rootComponent;
+        const known = topicIndex(root, this.host.diagram.knownPortPaths());
+        this.host.inspector.update(list, (topic) => topicToPort(root, topic, known));
+    }
+}
