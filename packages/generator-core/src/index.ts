@@ -4,6 +4,8 @@
 // helpers. The orchestrator, the Nunjucks environment and the writer need Node:
 // `@maa/generator-core/node`.
 export * from './app/arcapp-language.js';
+export * from './app/arcapp-module.js';
+export * from './app/app-analysis.js';
 export * from './app/app-checks.js';
 export * from './app/app-diagnostics.js';
 export * from './app/codes.js';
@@ -17,6 +19,7 @@ export * from './output/file-builder.js';
 export * from './output/protected-regions.js';
 export * from './registry/discovery.js';
 export * from './registry/registry.js';
+export * from './registry/registry-service.js';
 export * from './rules/standard-rules.js';
 export * from './templates/naming.js';
 export * as appAst from './generated/ast.js';

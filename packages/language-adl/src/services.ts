@@ -32,6 +32,11 @@ export interface LanguageRegistration {
      * language servers, after `register`); see `BehaviorLanguage.registerLsp` for the registries.
      */
     registerLsp?(services: AdlLspServices): void;
+    /**
+     * Further services of the language's own service container (a Langium module, injected after
+     * the host's modules; only for languages with their own files, see FamilyLanguage).
+     */
+    readonly module?: Module<AdlServices, object>;
 }
 
 export interface FamilyLanguage extends LanguageRegistration {
@@ -82,7 +87,7 @@ export function createHostServices(
     for (const b of behaviors) b.register(Arc);
     const others = new Map<string, AdlServices>();
     for (const l of languages) {
-        const services = inject(defaults.language({ shared }) as Module<AdlServices, object>, l.generated, AdlModule, ...languageExtra) as AdlServices;
+        const services = inject(defaults.language({ shared }) as Module<AdlServices, object>, l.generated, AdlModule, ...languageExtra, ...(l.module ? [l.module] : [])) as AdlServices;
         shared.ServiceRegistry.register(services);
         l.register(services);
         others.set(l.languageId, services);

@@ -7,7 +7,7 @@ import { buildArchitecture, type ArchitectureModel, type BehaviorView } from '..
 import type { GeneratorRegistry, RegisteredGenerator } from '../registry/registry.js';
 import { standardRule } from '../rules/standard-rules.js';
 import { AppCodes, type AppCode } from './codes.js';
-import { applicationVariant } from './app-variant.js';
+import { applicationVariant, type ApplicationVariant } from './app-variant.js';
 import { withVariant } from '@maa/language-adl';
 
 /**
@@ -45,6 +45,8 @@ export interface AppCheckOptions {
     readonly onUnknownRule?: (generator: RegisteredGenerator, rule: string, ref: AppGeneratorRef) => void;
     /** The architecture, when the caller has built it already. */
     readonly architecture?: ArchitectureModel;
+    /** The application's feature configuration, when the caller has computed it already (applicationVariant). */
+    readonly variant?: ApplicationVariant;
 }
 
 /** The generators a platform names, resolved against the registry (unknown names are skipped). */
@@ -75,10 +77,10 @@ export function generatorForLanguage(selection: PlatformSelection, language: str
 }
 
 /** The architecture of an application, or undefined while its component does not resolve. */
-export function applicationArchitecture(app: Application): ArchitectureModel | undefined {
+export function applicationArchitecture(app: Application, variant: ApplicationVariant = applicationVariant(app)): ArchitectureModel | undefined {
     const root = app.component?.ref as unknown as ast.ComponentType | undefined;
     // In the feature configuration the application selects (app-variant.ts).
-    return root ? withVariant(applicationVariant(app).env, () => buildArchitecture(root)) : undefined;
+    return root ? withVariant(variant.env, () => buildArchitecture(root)) : undefined;
 }
 
 /**
@@ -91,13 +93,14 @@ export function checkApplication(app: Application, registry: GeneratorRegistry, 
     const findings: AppFinding[] = [];
     const seenPlatforms = new Set<string>();
     let architecture: ArchitectureModel | undefined | null = options.architecture ?? null;
+    let variant = options.variant;
     const arch = (): ArchitectureModel | undefined => {
-        if (architecture === null) architecture = applicationArchitecture(app);
+        if (architecture === null) architecture = applicationArchitecture(app, (variant ??= applicationVariant(app)));
         return architecture;
     };
-    // The feature configuration concerns every platform: reported once, in the editor's check of
-    // the whole configuration (generate() reports it itself before checking each platform).
-    if (options.platform === undefined) findings.push(...applicationVariant(app).findings);
+    // The feature configuration concerns every platform: reported once, in the check of the
+    // whole configuration (generation reports it before the platforms' findings).
+    if (options.platform === undefined) findings.push(...(variant ??= applicationVariant(app)).findings);
     for (const platform of app.platforms) {
         if (seenPlatforms.has(platform.name)) {
             findings.push({
@@ -229,8 +232,35 @@ function checkPlatform(
     }
 
     // The generators' own well-formedness rules, on the models each will translate.
-    for (const { ref, generator } of distinct) {
+    findings.push(...checkGeneratorRules(selection, architecture, {
+        rule: (generator, name) => standardRule(name) ?? options.rules?.(generator, name),
+        onUnknownRule: options.onUnknownRule
+    }));
+    return findings;
+}
+
+export interface GeneratorRuleOptions {
+    /** The rule a generator's manifest names in its `checks` (undefined: unknown). */
+    readonly rule: (generator: string, rule: string) => WellFormednessRule | undefined;
+    /** Which of the named checks to run (default: all). */
+    readonly only?: (rule: string) => boolean;
+    /** Called for a check name that `rule` does not define. */
+    readonly onUnknownRule?: (generator: RegisteredGenerator, rule: string, ref: AppGeneratorRef) => void;
+}
+
+/**
+ * The well-formedness rules the generators of a platform name in their manifests (`checks`), on
+ * the models each will translate: the data types for the data type generator, the components and
+ * the behaviors it translates itself for the component generator, the behaviors of its language
+ * for a behavior generator. A generator listed twice is checked once.
+ */
+export function checkGeneratorRules(selection: PlatformSelection, architecture: ArchitectureModel, options: GeneratorRuleOptions): AppFinding[] {
+    const findings: AppFinding[] = [];
+    const seen = new Set<string>();
+    for (const { ref, generator } of selection.references) {
         const m = generator.manifest;
+        if (seen.has(m.name)) continue;
+        seen.add(m.name);
         const behaviors: BehaviorView[] = m.kind === 'behavior'
             ? architecture.behaviors.filter((b) => b.language === m.language)
             : m.kind === 'component'
@@ -243,14 +273,15 @@ function checkPlatform(
             dataTypes: m.kind === 'datatype' ? architecture.dataTypes : []
         };
         for (const name of m.checks) {
-            const rule = standardRule(name) ?? options.rules?.(m.name, name);
+            if (options.only && !options.only(name)) continue;
+            const rule = options.rule(m.name, name);
             if (!rule) {
                 options.onUnknownRule?.(generator, name, ref);
                 continue;
             }
             for (const v of rule.check(scope)) {
-                add({
-                    code: AppCodes.GeneratorRuleViolated, node: ref, property: 'generator', modelNode: v.node, generator: m.name, rule: name,
+                findings.push({
+                    code: AppCodes.GeneratorRuleViolated, severity: 'error', node: ref, property: 'generator', modelNode: v.node, generator: m.name, rule: name,
                     message: `Generator '${m.name}' requires ${name} (${lowerFirst(rule.description)}), but ${v.message}.`
                 });
             }

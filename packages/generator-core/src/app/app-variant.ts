@@ -3,6 +3,12 @@ import type { Application } from '../generated/ast.js';
 import type { AppFinding } from './app-checks.js';
 import { AppCodes } from './codes.js';
 
+/** The feature configuration an application selects, and what is wrong with it. */
+export interface ApplicationVariant {
+    readonly env?: VariantEnv;
+    readonly findings: AppFinding[];
+}
+
 /**
  * The feature configuration an application generates (`application A for C(f = true) { ... }`):
  * the configuration of the root component's constraints that binds the listed features as
@@ -12,7 +18,7 @@ import { AppCodes } from './codes.js';
  * true); Lamp b(dimmable = false);`), and generation then emits one variant of the type per
  * configuration (model/architecture.ts, `variantName`).
  */
-export function applicationVariant(app: Application): { env?: VariantEnv; findings: AppFinding[] } {
+export function applicationVariant(app: Application): ApplicationVariant {
     const root = app.component?.ref as unknown as ast.ComponentType | undefined;
     const findings: AppFinding[] = [];
     if (!root) return { findings };

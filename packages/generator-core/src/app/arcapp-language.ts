@@ -1,38 +1,20 @@
-import { AstUtils, URI, type AstNode, type AstNodeDescription, type LangiumSharedCoreServices, type ReferenceInfo, type Scope, type ValidationAcceptor } from 'langium';
+import { AstUtils, URI, type AstNode, type AstNodeDescription, type Module, type ReferenceInfo, type Scope, type ValidationAcceptor } from 'langium';
 import type { Range } from 'vscode-languageserver-types';
 import {
     LookupScope, type AdlDocumentValidator, type AdlLspServices, type AdlScopeProvider, type AdlServices, type DiagnosticCatalog, type LanguageRegistration
 } from '@maa/language-adl';
 import type { Application } from '../generated/ast.js';
 import type { RegisteredGenerator } from '../registry/registry.js';
-import { checkApplication, type AppFinding } from './app-checks.js';
+import type { GeneratorDeclarationNode, GeneratorRegistryService } from '../registry/registry-service.js';
+import type { AppFinding } from './app-checks.js';
 import { APP_DIAGNOSTICS } from './app-diagnostics.js';
+import { ArcAppModule, type ArcAppServices } from './arcapp-module.js';
 import { AppCodes } from './codes.js';
-import { generatorRegistryFor } from './registry-provider.js';
 
-/**
- * What a generator reference (`ros2.Components;`) resolves to: a node standing for the
- * registry entry (generators are described by manifests, not by model files). Its description
- * points at the manifest's file (`documentUri`) and JSON field (`path`), so references,
- * completion and hover work like for model elements; go-to-definition can use
- * `generatorDefinition` to jump into the manifest.
- */
-export interface GeneratorDeclarationNode extends AstNode {
-    readonly $type: 'GeneratorDeclaration';
-    readonly name: string;
-    readonly generator: RegisteredGenerator;
-}
-
-const declarations = new WeakMap<RegisteredGenerator, GeneratorDeclarationNode>();
-
+/** A new declaration node for a registered generator (GeneratorRegistryService.declaration keeps one per generator). */
 export function generatorDeclaration(g: RegisteredGenerator): GeneratorDeclarationNode {
-    let node = declarations.get(g);
-    if (!node) {
-        // `$comment` is what Langium's documentation provider shows in completion and hover.
-        node = { $type: 'GeneratorDeclaration', name: g.manifest.name, generator: g, $comment: generatorComment(g) } as GeneratorDeclarationNode;
-        declarations.set(g, node);
-    }
-    return node;
+    // `$comment` is what Langium's documentation provider shows in completion and hover.
+    return { $type: 'GeneratorDeclaration', name: g.manifest.name, generator: g, $comment: generatorComment(g) } as GeneratorDeclarationNode;
 }
 
 /** A short JSDoc-style description of a registered generator. */
@@ -60,13 +42,13 @@ export function manifestUri(g: RegisteredGenerator): URI {
     return f.startsWith('/') || /^[A-Za-z]:[\\/]/.test(f) ? URI.file(f) : URI.from({ scheme: 'maa-generator', path: `/${g.manifest.name}` });
 }
 
-function describe(g: RegisteredGenerator): AstNodeDescription {
+function describe(registry: GeneratorRegistryService, g: RegisteredGenerator): AstNodeDescription {
     return {
         name: g.manifest.name,
         type: 'GeneratorDeclaration',
         documentUri: manifestUri(g),
         path: g.source.field,
-        node: generatorDeclaration(g)
+        node: registry.declaration(g, generatorDeclaration)
     };
 }
 
@@ -86,30 +68,33 @@ export function generatorDefinition(node: GeneratorDeclarationNode, manifestText
     return { uri: manifestUri(g).toString(), range: { start: { line, character }, end: { line, character: character + length } } };
 }
 
-function generatorScope(shared: LangiumSharedCoreServices, context: ReferenceInfo): Scope {
-    const registry = generatorRegistryFor(shared, AstUtils.getDocument(context.container).uri);
+function generatorScope(service: GeneratorRegistryService, context: ReferenceInfo): Scope {
+    const registry = service.registryFor(AstUtils.getDocument(context.container).uri);
     return new LookupScope((name) => {
         const g = registry.get(name);
-        return g ? describe(g) : undefined;
-    }, () => registry.all().map(describe));
+        return g ? describe(service, g) : undefined;
+    }, () => registry.all().map((g) => describe(service, g)));
 }
 
 /**
  * The application configuration language as registered in a language family (package.json
  * `maa.language.languages`, export `ArcAppLanguage`): `.arcapp` documents get the host's
  * scoping for the component name, the generator registry for generator names, codes for
- * unresolved names, and the `app/*` checks.
+ * unresolved names, and the `app/*` checks. Its container has the services of ArcAppModule
+ * (the generator registry, the analysis of applications).
  */
-export const ArcAppLanguage: LanguageRegistration & { readonly diagnostics: DiagnosticCatalog } = {
+export const ArcAppLanguage: LanguageRegistration & { readonly diagnostics: DiagnosticCatalog; readonly module: Module<AdlServices, object> } = {
     languageId: 'arcapp',
     diagnostics: APP_DIAGNOSTICS,
-    register(services: AdlServices): void {
+    module: ArcAppModule as unknown as Module<AdlServices, object>, // the family injects it into the .arcapp container (typed for every language)
+    register(adl: AdlServices): void {
+        const services = adl as ArcAppServices;
         const scopes = services.references.ScopeProvider as AdlScopeProvider;
         const resolver = services.maa.NameResolver;
         scopes.contributions.set('Application.component', (ctx) => new LookupScope(
             (name) => resolver.resolveComponent(ctx.container, name),
             () => resolver.visible(ctx.container, 'component')));
-        scopes.contributions.set('AppGeneratorRef.generator', (ctx) => generatorScope(services.shared, ctx));
+        scopes.contributions.set('AppGeneratorRef.generator', (ctx) => generatorScope(services.generators.Registry, ctx));
 
         const validator = services.validation.DocumentValidator as AdlDocumentValidator;
         validator.linkCodes.set('Application.component', {
@@ -123,9 +108,7 @@ export const ArcAppLanguage: LanguageRegistration & { readonly diagnostics: Diag
 
         services.validation.ValidationRegistry.register({
             Application: (app: AstNode, accept: ValidationAcceptor) => {
-                const application = app as Application;
-                const registry = generatorRegistryFor(services.shared, AstUtils.getDocument(app).uri);
-                for (const f of checkApplication(application, registry)) report(f, accept);
+                for (const f of services.generators.Applications.analyze(app as Application).findings) report(f, accept);
             }
         });
     },

@@ -1,0 +1,137 @@
+import path from 'node:path';
+import { AstUtils, type AstNode, type LangiumDocument } from 'langium';
+import type { HostLanguageServices } from '@maa/language-adl';
+import type { PlatformSelection } from '../../app/app-checks.js';
+import type { PlatformInfo } from '../../generators/types.js';
+import type { FinishedFile } from '../../output/file-builder.js';
+import { OutputWriteError } from '../../output/layout.js';
+import { OutputTransaction } from '../../output/transaction.js';
+import { planOutput, sha256, TRACE_FILE, type WritePlan } from '../../output/writer.js';
+import { at } from '../diagnostics.js';
+import { GenCodes } from '../gen-codes.js';
+import { failure, hasErrors, outcome, timed, type GeneratorInstance, type GenerationRun, type PlatformOutput, type StageResult } from '../run.js';
+import type { GenerationDiagnostic, PlatformResult } from '../types.js';
+import type { Checked } from './check.js';
+import type { Configured } from './configure.js';
+import { platformInfo, type Generated } from './generate.js';
+import type { Loaded } from './load.js';
+import type { Selected } from './select.js';
+
+/**
+ * Write: the trace file of every platform, then one transaction over all output folders
+ * (output/transaction.ts: staged beside the current output, then each platform folder switched
+ * in one rename; a run killed at any point leaves the old output whole). The output root is
+ * locked and cleaned up after killed runs before anything of it is read. Nothing is written
+ * when a regenerated file would drop user content of a protected region.
+ */
+export function write(run: GenerationRun, loaded: Loaded, checked: Checked, selected: Selected, configured: Configured, generated: Generated): StageResult<PlatformResult[]> {
+    const { modelRoot, appFile, shown } = run;
+    const diagnostics: GenerationDiagnostic[] = [];
+    const writeFailed = (e: unknown): StageResult<never> => {
+        const problem = e instanceof OutputWriteError ? `${shown(e.path)}: ${e.reason}` : (e as Error).message;
+        return failure([...diagnostics, at(modelRoot, appFile, undefined, 'error', GenCodes.WriteFailed, `Cannot write the output: ${problem}. Nothing was changed.`)]);
+    };
+    let tx: OutputTransaction;
+    try {
+        tx = timed(run, 'write', () => OutputTransaction.open(run.outRoot));
+    } catch (e) {
+        return writeFailed(e);
+    }
+    try {
+        const written: Array<{ plan: WritePlan; output: PlatformOutput }> = [];
+        for (const output of generated.outputs) {
+            const trace = timed(run, 'trace', () => traceFile(run.options.services, modelRoot, output.outDir, platformInfo(loaded, checked, output.platform),
+                output.files, selected.selections.get(output.platform)!, configured.instances));
+            written.push({ plan: timed(run, 'write', () => planOutput(output.outDir, output.files, trace)), output });
+        }
+        for (const { plan, output } of written) {
+            const platform = output.platform;
+            for (const d of plan.droppedRegions) {
+                diagnostics.push(at(modelRoot, appFile, platform.$cstNode?.range, 'error', GenCodes.ProtectedRegionDropped,
+                    `Platform '${platform.name}': ${shown(path.join(output.outDir, d.path))} has user content in protected region${d.regions.length > 1 ? 's' : ''} ${d.regions.map((r) => `'${r}'`).join(', ')}, which the regenerated file no longer has; move that content and run again (nothing was written).`));
+            }
+            for (const stale of plan.keptStale) {
+                diagnostics.push(at(modelRoot, appFile, platform.$cstNode?.range, 'warning', GenCodes.StaleFileKept,
+                    `Platform '${platform.name}': ${shown(path.join(output.outDir, stale))} is no longer generated but holds user content in protected regions; it was kept (delete it when done).`));
+            }
+        }
+        if (hasErrors(diagnostics)) return failure(diagnostics);
+        try {
+            timed(run, 'write', () => {
+                run.progress({ phase: 'write', message: `writing ${written.reduce((n, w) => n + w.plan.write.length, 0)} files` });
+                for (const w of written) tx.stage(w.plan);
+                tx.commit();
+            });
+        } catch (e) {
+            return writeFailed(e);
+        }
+        return outcome(written.map(({ plan, output }) => platformResult(plan, output)), diagnostics);
+    } finally {
+        tx.close();
+    }
+}
+
+function platformResult(plan: WritePlan, output: PlatformOutput): PlatformResult {
+    return {
+        platform: output.platform.name,
+        outDir: output.outDir,
+        files: output.files.map((f) => f.path),
+        generators: output.generators,
+        // The trace file is written with every generation; the lists name the generated files.
+        written: plan.write.map((f) => f.path).filter((p) => p !== TRACE_FILE),
+        unchanged: plan.unchanged.filter((p) => p !== TRACE_FILE),
+        kept: plan.kept,
+        removed: plan.remove,
+        preservedRegions: plan.preservedRegions,
+        keptStale: plan.keptStale
+    };
+}
+
+/** The trace file: generated line ranges -> model elements (file relative to the model root, range, AST path). */
+export function traceFile(
+    services: HostLanguageServices, modelRoot: string, outDir: string, platform: PlatformInfo, files: readonly FinishedFile[],
+    selection: PlatformSelection, instances: ReadonlyMap<string, GeneratorInstance>
+): string {
+    const locator = services.Arc.workspace.AstNodeLocator;
+    const relRoot = path.relative(outDir, modelRoot).split(path.sep).join('/') || '.';
+    const docs = new Map<AstNode, LangiumDocument>();
+    const element = (node: AstNode) => {
+        const root = AstUtils.findRootNode(node);
+        let doc = docs.get(root);
+        if (!doc) docs.set(root, (doc = AstUtils.getDocument(node)));
+        const r = node.$cstNode?.range;
+        const name = (node as { name?: unknown }).name;
+        return {
+            file: doc.uri.scheme === 'file' ? path.relative(modelRoot, doc.uri.fsPath).split(path.sep).join('/') : doc.uri.toString(),
+            range: r ? [r.start.line + 1, r.start.character + 1, r.end.line + 1, r.end.character + 1] : null,
+            path: locator.getAstNodePath(node),
+            type: node.$type,
+            ...(typeof name === 'string' ? { name } : {})
+        };
+    };
+    const generators = selection.references
+        .filter((r, i, all) => all.findIndex((q) => q.generator === r.generator) === i && instances.has(r.generator.manifest.name))
+        .map((r) => ({
+            name: r.generator.manifest.name,
+            kind: r.generator.manifest.kind,
+            package: r.generator.source.packageName,
+            version: r.generator.source.packageVersion
+        }));
+    const trace = {
+        version: 1,
+        application: platform.application,
+        platform: platform.platform,
+        rootComponent: platform.rootComponent,
+        modelRoot: relRoot,
+        generators,
+        files: files.map((f) => ({
+            path: f.path,
+            generator: f.generator,
+            userFile: f.userFile,
+            sha256: sha256(f.content),
+            lines: f.content.length === 0 ? 0 : f.content.split('\n').length - (f.content.endsWith('\n') ? 1 : 0),
+            traces: f.traces.map((t) => ({ lines: [t.startLine, t.endLine], generator: t.generator, element: element(t.element) }))
+        }))
+    };
+    return `${JSON.stringify(trace, null, 1)}\n`;
+}
