@@ -1,5 +1,5 @@
 import type { AdlServices } from './adl-module.js';
-import type { DiagnosticCatalog } from './docs/diagnostic-catalog.js';
+import type { DiagnosticCatalog } from './diagnostic-catalog/catalog.js';
 import type { AdlLspServices } from './lsp/lsp-module.js';
 
 /**

@@ -3,12 +3,12 @@ import {
     type LangiumCoreServices, type LangiumGeneratedCoreServices, type LangiumGeneratedSharedCoreServices,
     type LangiumSharedCoreServices, type Module
 } from 'langium';
+import { registerCdChecks } from '@maa/language-cd';
 import { AdlGeneratedSharedModule, ArcGeneratedModule, CdGeneratedModule } from './generated/module.js';
 import { AdlModule, AdlSharedModule, type AdlServices, type AdlSharedServices } from './adl-module.js';
 import type { BehaviorLanguage } from './behavior-language.js';
 import type { AdlLspServices } from './lsp/lsp-module.js';
 import { registerAdlChecks } from './validation/adl-validator.js';
-import { registerCdChecks } from './validation/cd-validator.js';
 
 export interface HostLanguageServices {
     shared: AdlSharedServices;
@@ -26,7 +26,7 @@ export interface LanguageRegistration {
     readonly languageId: string;
     register(services: AdlServices): void;
     /** The language's diagnostics with tested examples (rendered into docs/diagnostics.md). */
-    readonly diagnostics?: import('./docs/diagnostic-catalog.js').DiagnosticCatalog;
+    readonly diagnostics?: import('./diagnostic-catalog/catalog.js').DiagnosticCatalog;
     /**
      * Installs the language's LSP contributions into its own service container (called only by
      * language servers, after `register`); see `BehaviorLanguage.registerLsp` for the registries.
@@ -83,7 +83,7 @@ export function createHostServices(
     shared.ServiceRegistry.register(Arc);
     shared.ServiceRegistry.register(Cd);
     registerAdlChecks(Arc);
-    registerCdChecks(Cd);
+    registerCdChecks(Cd.validation.ValidationRegistry, shared.maa.ModelRoots);
     for (const b of behaviors) b.register(Arc);
     const others = new Map<string, AdlServices>();
     for (const l of languages) {

@@ -7,7 +7,7 @@ import { AutomatonChecks } from './automaton-checks.js';
 import { registerModes } from './modes/mode-language.js';
 import { registerModeLsp } from './modes/mode-lsp.js';
 import { AutomatonCodes } from './codes.js';
-import { AUTOMATON_DIAGNOSTICS } from './docs/automaton-diagnostics.js';
+import { AUTOMATON_DIAGNOSTICS } from './diagnostic-catalog/automaton-diagnostics.js';
 import { registerAutomatonLsp } from './lsp/automaton-lsp.js';
 
 /**

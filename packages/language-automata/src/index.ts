@@ -27,4 +27,4 @@ export const AutomataGeneratedModules: GeneratedModules = {
 export function createAutomataServices(context: DefaultSharedCoreModuleContext = EmptyFileSystem): HostLanguageServices {
     return createHostServices(context, AutomataGeneratedModules, [AutomataLanguage]);
 }
-export * from './docs/automaton-diagnostics.js';
+export * from './diagnostic-catalog/automaton-diagnostics.js';

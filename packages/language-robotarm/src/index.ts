@@ -7,7 +7,7 @@ export * from './robotarm-language.js';
 export * from './robotarm-checks.js';
 export * from './robotarm-model.js';
 export * from './codes.js';
-export * from './docs/robotarm-diagnostics.js';
+export * from './diagnostic-catalog/robotarm-diagnostics.js';
 export * as ast from './generated/ast.js';
 
 /** The Langium modules of this package's grammar build: the host languages plus `robotarm { }`. */

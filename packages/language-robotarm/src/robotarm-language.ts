@@ -2,7 +2,7 @@ import type { ReferenceInfo, Scope } from 'langium';
 import type {
     AdlDocumentValidator, AdlScopeProvider, AdlServices, BehaviorLanguage, LanguageRegistration
 } from '@maa/language-adl';
-import { ROBOTARM_DIAGNOSTICS } from './docs/robotarm-diagnostics.js';
+import { ROBOTARM_DIAGNOSTICS } from './diagnostic-catalog/robotarm-diagnostics.js';
 import { RobotArmChecks } from './robotarm-checks.js';
 import { enclosingRobotArm, moveTargetsOf } from './robotarm-model.js';
 import { RobotArmCodes } from './codes.js';

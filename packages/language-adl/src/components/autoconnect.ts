@@ -1,6 +1,5 @@
-import { AstUtils } from 'langium';
+import { cdPackageOf } from '@maa/language-cd';
 import type { AutoConnect, CDType, ComponentType, Connector, PortAccess, Subcomponent } from '../generated/ast.js';
-import { isCDModel } from '../generated/ast.js';
 import { allPorts, elementsOf, findPort, subcomponentType, subcomponentsOf, type PortInfo } from './component-model.js';
 import { UNBOX_OF } from '../types/builtin-library.js';
 import type { SymType } from '../types/sym-type.js';
@@ -131,5 +130,5 @@ function primitiveName(t: SymType): string | undefined {
 }
 
 function isJavaLang(decl: CDType): boolean {
-    return AstUtils.getContainerOfType(decl, isCDModel)?.package === 'java.lang';
+    return cdPackageOf(decl) === 'java.lang';
 }

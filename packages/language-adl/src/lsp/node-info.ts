@@ -1,8 +1,9 @@
 import {
     AstUtils, CstUtils, GrammarUtils, isCompositeCstNode, type AstNode, type CstNode, type LangiumDocument, type LangiumSharedCoreServices
 } from 'langium';
+import { cdExportedNamesOf } from '@maa/language-cd';
 import type { CDEnum, CDType, FieldAccessExpression } from '../generated/ast.js';
-import { isArcModel, isCDModel, isClassDiagram, isComponentType } from '../generated/ast.js';
+import { isArcModel, isComponentType } from '../generated/ast.js';
 import type { AdlSharedServices } from '../adl-module.js';
 import type { ExpressionTyper } from '../types/expression-typer.js';
 import type { TypeRelations } from '../types/type-relations.js';
@@ -148,12 +149,7 @@ export function documentation(node: AstNode): string | undefined {
 export function exportedNames(node: AstNode): string[] {
     const container = node.$container;
     if (isComponentType(node) && isArcModel(container)) return [qualify(container.package, node.name)];
-    if (isClassDiagram(container) && isCDModel(container.$container) && (node.$type === 'CDClass' || node.$type === 'CDEnum')) {
-        const pkg = container.$container.package;
-        const name = (node as CDType).name;
-        return [qualify(qualify(pkg, container.name), name), qualify(pkg, name)];
-    }
-    return [];
+    return cdExportedNamesOf(node);
 }
 
 /** The shortest qualified name of an exported element (the one to import). */

@@ -1,24 +1,23 @@
 import { DefaultScopeComputation, type AstNodeDescription, type LangiumDocument, type LocalSymbols, MultiMap } from 'langium';
-import { isArcModel, isCDModel } from '../generated/ast.js';
+import { cdExportedNames, cdModelOf, cdTypesOf } from '@maa/language-cd';
+import { isArcModel } from '../generated/ast.js';
 
 /**
  * Exports of a model file: its top-level component as `package.Name`, and every class-diagram
- * type both as `package.Diagram.Type` and `package.Type` (MontiArc accepts both import forms).
+ * type under the names @maa/language-cd gives it (`package.Diagram.Type` and `package.Type`).
  * Everything below the top level is resolved by the scope provider directly from the AST.
  */
 export class AdlScopeComputation extends DefaultScopeComputation {
     override async collectExportedSymbols(document: LangiumDocument): Promise<AstNodeDescription[]> {
         const root = document.parseResult.value;
         const out: AstNodeDescription[] = [];
+        const cd = cdModelOf(root);
         if (isArcModel(root) && root.component?.name) {
             const name = qualify(root.package, root.component.name);
             out.push(this.descriptions.createDescription(root.component, name, document));
-        } else if (isCDModel(root) && root.diagram) {
-            for (const element of root.diagram.elements) {
-                if (element.$type === 'CDAssociation' || !element.name) continue;
-                const diagramQualified = qualify(qualify(root.package, root.diagram.name), element.name);
-                out.push(this.descriptions.createDescription(element, diagramQualified, document));
-                out.push(this.descriptions.createDescription(element, qualify(root.package, element.name), document));
+        } else if (cd) {
+            for (const type of cdTypesOf(cd)) {
+                for (const name of cdExportedNames(cd, type)) out.push(this.descriptions.createDescription(type, name, document));
             }
         }
         return out;

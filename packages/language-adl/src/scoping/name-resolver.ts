@@ -1,3 +1,4 @@
+import { cdTypeNamed } from '@maa/language-cd';
 import { AstUtils, type AstNode, type AstNodeDescription, type AstNodeDescriptionProvider, type LangiumDocument } from 'langium';
 import type { ArcModel, CDModel, ComponentType, TypeParameter } from '../generated/ast.js';
 import { isArcModel, isCDClass, isCDMethod, isCDModel, isComponentType } from '../generated/ast.js';
@@ -70,9 +71,7 @@ export class NameResolver {
     }
 
     private sameDiagramType(context: AstNode, name: string): AstNodeDescription | undefined {
-        const top = AstUtils.getDocument(context).parseResult.value;
-        if (!isCDModel(top) || !top.diagram) return undefined;
-        const t = top.diagram.elements.find((e) => e.$type !== 'CDAssociation' && e.name === name);
+        const t = cdTypeNamed(AstUtils.getDocument(context).parseResult.value, name);
         return t ? this.descriptions.createDescription(t, name) : undefined;
     }
 

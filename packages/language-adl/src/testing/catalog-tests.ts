@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import type { DiagnosticCatalog } from '../docs/diagnostic-catalog.js';
+import type { DiagnosticCatalog } from '../diagnostic-catalog/catalog.js';
 import { dump, type Finding } from './model-validation.js';
 
 /**

@@ -1,6 +1,5 @@
-import { AstUtils } from 'langium';
+import { cdPackageOf } from '@maa/language-cd';
 import type { CDClass, CDType, TypeParameter } from '../generated/ast.js';
-import { isCDModel } from '../generated/ast.js';
 import type { RootIndex } from '../scoping/root-index.js';
 import { BOX_OF, UNBOX_OF } from './builtin-library.js';
 import { typeOfMCType, bind } from './type-resolver.js';
@@ -183,6 +182,5 @@ function widens(from: string, to: string): boolean {
 }
 
 function isJavaLang(decl: CDType): boolean {
-    const model = AstUtils.getContainerOfType(decl, isCDModel);
-    return model?.package === 'java.lang';
+    return cdPackageOf(decl) === 'java.lang';
 }

@@ -1,3 +1,5 @@
+import { CdCodes } from '@maa/language-cd';
+
 /**
  * The stable diagnostic codes of the host language (ARCHITECTURE.md section 5). Codes are
  * released API: never rename one. docs/diagnostics.md documents each with examples.
@@ -74,9 +76,10 @@ export const Codes = {
     YieldOutsideSwitchExpression: 'statement/yield-outside-switch-expression',
     JumpOutOfSwitchExpression: 'statement/jump-out-of-switch-expression',
 
-    CdDuplicateName: 'cd/duplicate-name',
-    CdFileNameMismatch: 'cd/file-name-mismatch',
-    CdPackageMismatch: 'cd/package-mismatch'
+    // Class diagrams: the codes are defined with their checks in @maa/language-cd.
+    CdDuplicateName: CdCodes.DuplicateName,
+    CdFileNameMismatch: CdCodes.FileNameMismatch,
+    CdPackageMismatch: CdCodes.PackageMismatch
 } as const;
 
 export type Code = (typeof Codes)[keyof typeof Codes];

@@ -1,4 +1,4 @@
-import type { DiagnosticCatalog } from './diagnostic-catalog.js';
+import type { DiagnosticCatalog } from './catalog.js';
 import { NESTING_LIMIT } from '../parser/nesting-limit.js';
 import { SIZE_LIMIT } from '../parser/guarded-lexer.js';
 
