@@ -1,0 +1,74 @@
+/**
+ * What a simulation run shows on the diagram (the data behind contracts.ts `DiagramLiveLayer`):
+ * live values by port path and active states or modes by instance path, and the instance and port
+ * tables of every C&C diagram seen so far. Those tables give the spellings of the paths (topic and
+ * node names are snake case) and place a subcomponent's diagram shown on its own inside the
+ * application (its paths are then relative to its instance path). Pure: no Sprotty, no DOM.
+ */
+import {
+    activeStateForType,
+    instancePrefix,
+    instanceTypesOf,
+    lookupLiveValue,
+    portPathsOf,
+    snakePath,
+    type SchemaElement,
+} from './schema.js';
+
+export class LiveLayer {
+    private values: ReadonlyMap<string, string> = new Map();
+    private valuesBySnake: ReadonlyMap<string, string> = new Map();
+    private states: ReadonlyMap<string, string> = new Map();
+    /** Instance types of every C&C diagram seen, by shown component. */
+    private readonly typeMaps = new Map<string, Map<string, string>>();
+    /** Port paths of every C&C diagram seen, by shown component. */
+    private readonly portPathMaps = new Map<string, string[]>();
+    /** The instance path of the shown component in another known diagram (see `instancePrefix`). */
+    private prefix: string | undefined;
+
+    /** A new model of `shown` arrived; only C&C diagrams (not `maa-automaton`) have tables. */
+    recordModel(root: SchemaElement, diagramType: string | undefined, shown: string): void {
+        if (diagramType === 'maa-automaton') return;
+        this.typeMaps.set(shown, instanceTypesOf(root));
+        this.portPathMaps.set(shown, portPathsOf(root));
+        this.prefix = instancePrefix(this.typeMaps, shown);
+    }
+
+    setLiveValues(values: ReadonlyMap<string, string>): void {
+        this.values = new Map(values);
+        this.valuesBySnake = new Map([...values].map(([k, v]) => [snakePath(k), v]));
+    }
+
+    setActiveStates(states: ReadonlyMap<string, string>): void {
+        this.states = new Map(states);
+    }
+
+    /** The live value of a port path of the shown diagram (any spelling; relative to the prefix too). */
+    liveValue(portPath: string | undefined): string | undefined {
+        if (!portPath || this.values.size === 0) return undefined;
+        return (
+            lookupLiveValue(this.values, this.valuesBySnake, portPath) ??
+            (this.prefix ? lookupLiveValue(this.values, this.valuesBySnake, `${this.prefix}.${portPath}`) : undefined)
+        );
+    }
+
+    /** The active state or mode of an instance of the shown diagram (`""`: the shown component). */
+    activeStateOf(instancePath: string | undefined): string | undefined {
+        if (instancePath === undefined || this.states.size === 0) return undefined;
+        return this.states.get(instancePath) ?? (this.prefix ? this.states.get(instancePath ? `${this.prefix}.${instancePath}` : this.prefix) : undefined);
+    }
+
+    /** The active state of the automaton of `componentType` (an instance of the type that has one). */
+    activeStateForType(componentType: string | undefined): string | undefined {
+        if (this.states.size === 0) return undefined;
+        return activeStateForType(this.typeMaps, this.states, componentType);
+    }
+
+    knownPortPaths(): string[] {
+        return [...new Set([...this.portPathMaps.values()].flat())];
+    }
+
+    knownInstancePaths(): string[] {
+        return [...new Set([...this.typeMaps.values()].flatMap((m) => [...m.keys()]))];
+    }
+}
