@@ -9,7 +9,7 @@ from typing import Any
 
 import pytest
 
-from maa_sim.deployment import Deployment, DeploymentError
+from maa_sim.deployment import Deployment, DeploymentError, check_deployment
 
 
 def test_fixture_deployment_loads(toast_app_dir: Path) -> None:
@@ -70,3 +70,37 @@ def test_invalid_json(tmp_path: Path) -> None:
     (tmp_path / "deployment.json").write_text("{")
     with pytest.raises(DeploymentError, match="invalid JSON"):
         Deployment.load(tmp_path)
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        (lambda d: d["nodes"][0].update(name="a-b"), r"deployment\.json: /nodes/0/name: name must be a ROS node name"),
+        (lambda d: d["nodes"][0].pop("module"), r"\.json: /nodes/0: give exactly one of module and executable"),
+        (lambda d: d["nodes"][0]["publishes"][0].update(topic="t"), r": /nodes/0/publishes/0/topic: topic must be"),
+        (lambda d: d.update(python_path=[1]), r": /python_path/0: python_path must be a list of strings"),
+        (lambda d: d["nodes"][0].update(parameters={"p": float("nan")}), r": /nodes/0/parameters/p: .* finite"),
+    ],
+)
+def test_errors_name_file_and_json_pointer(tmp_path: Path, change: Any, message: str) -> None:
+    path = tmp_path / "deployment.json"
+    path.write_text(json.dumps(mutate(change)))
+    with pytest.raises(DeploymentError, match=message):
+        Deployment.load(tmp_path)
+
+
+GENERATOR_TESTS = Path(__file__).resolve().parents[2] / "packages" / "generators-python" / "test"
+GENERATED = sorted(GENERATOR_TESTS.glob("golden*/**/deployment.json"))
+
+
+@pytest.mark.parametrize("path", GENERATED, ids=lambda p: str(p.parent.name))
+def test_generated_deployments_keep_the_contract(path: Path) -> None:
+    """What the ros2-python generator really writes (its golden files) passes the schema and the reader."""
+    data = json.loads(path.read_text(encoding="utf-8"))
+    assert check_deployment(data, str(path)) == data
+    deployment = Deployment.load(path)
+    assert [n.name for n in deployment.nodes] == [n["name"] for n in data["nodes"]]
+
+
+def test_generated_deployments_exist() -> None:
+    assert GENERATED, "no generated deployment.json found under packages/generators-python/test"

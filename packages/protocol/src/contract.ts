@@ -27,6 +27,17 @@ export function formatIssues(issues: readonly ContractIssue[], max = 3): string 
     return shown.join('; ');
 }
 
+/**
+ * The message of a schema's `errorMessage` keyword (`{key}` = the last segment of the pointer),
+ * else the validator's own. Readers in other languages (maa_sim/deployment.py) do the same.
+ */
+function messageOf(schema: TSchema, pointer: string, fallback: string): string {
+    const custom = (schema as { errorMessage?: unknown }).errorMessage;
+    if (typeof custom !== 'string') return fallback;
+    const key = pointer.slice(pointer.lastIndexOf('/') + 1).replace(/~1/g, '/').replace(/~0/g, '~');
+    return custom.replace(/\{key\}/g, key);
+}
+
 export interface Contract<T extends TSchema> {
     /** What the contract is, for messages (`trace file`, `POST /api/generate request`). */
     readonly name: string;
@@ -42,7 +53,7 @@ export interface Contract<T extends TSchema> {
 export function contract<T extends TSchema>(name: string, schema: T): Contract<T> {
     const issues = (value: unknown): ContractIssue[] => {
         const out: ContractIssue[] = [];
-        for (const e of Value.Errors(schema, value)) out.push({ pointer: e.path, message: e.message });
+        for (const e of Value.Errors(schema, value)) out.push({ pointer: e.path, message: messageOf(e.schema, e.path, e.message) });
         return out;
     };
     return {

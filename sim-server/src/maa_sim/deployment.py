@@ -1,25 +1,29 @@
 """`deployment.json`: how to start a generated ROS 2 application without `launch`.
 
 The ros2-python generator writes it next to the launch file; docs/simulation.md specifies the
-format. Everything is checked when it is loaded, with messages that name the offending entry.
+format, @maa/protocol (packages/protocol/src/deployment) defines it: its JSON Schema, emitted
+into `protocol.py`, is checked when the file is loaded, then the rules across nodes. Messages
+name the file and the JSON pointer of the offending entry.
 """
 
 from __future__ import annotations
 
 import json
 import math
-import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
+
+from jsonschema import Draft202012Validator, ValidationError
+from jsonschema.exceptions import best_match
 
 from .messages import MessageError, normalize_type
+from .protocol import DEPLOYMENT_SCHEMA
+from .protocol import Deployment as DeploymentDict
+from .protocol import DeploymentNode as DeploymentNodeDict
+from .protocol import PortTopic as PortTopicDict
 
 DEPLOYMENT_FORMAT = "maa-deployment/1"
-_NAME_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
-_NAMESPACE_RE = re.compile(r"^/([A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*)?$")
-_TOPIC_RE = re.compile(r"^/[A-Za-z][A-Za-z0-9_]*(/[A-Za-z][A-Za-z0-9_]*)*$")
-_RESERVED_ENV = ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", "ROS_STATIC_PEERS", "ROS_LOCALHOST_ONLY")
 
 ParameterValue = bool | int | float | str | list[bool] | list[int] | list[float] | list[str]
 
@@ -91,14 +95,8 @@ class Deployment:
     @classmethod
     def parse(cls, data: Any, path: Path) -> Deployment:
         where = str(path)
-        if not isinstance(data, dict):
-            raise DeploymentError(f"{where}: expected an object")
-        if data.get("format") != DEPLOYMENT_FORMAT:
-            raise DeploymentError(f"{where}: format must be {DEPLOYMENT_FORMAT!r}")
-        nodes_data = data.get("nodes")
-        if not isinstance(nodes_data, list) or not nodes_data:
-            raise DeploymentError(f"{where}: nodes must be a non-empty list")
-        nodes = [_parse_node(n, f"{where}: nodes[{i}]") for i, n in enumerate(nodes_data)]
+        checked = check_deployment(data, where)
+        nodes = [_node(n, f"{where}: /nodes/{i}") for i, n in enumerate(checked["nodes"])]
         seen: set[str] = set()
         for node in nodes:
             if node.fqn in seen:
@@ -116,99 +114,77 @@ class Deployment:
                         f"{where}: topic {t.topic} has two publishers, {publishers[t.topic]} and {node.fqn}"
                     )
                 publishers[t.topic] = node.fqn
-        python_path = data.get("python_path", [])
-        if not isinstance(python_path, list) or not all(isinstance(p, str) for p in python_path):
-            raise DeploymentError(f"{where}: python_path must be a list of strings")
-        env = data.get("env", {})
-        if not isinstance(env, dict) or not all(isinstance(k, str) and isinstance(v, str) for k, v in env.items()):
-            raise DeploymentError(f"{where}: env must map names to strings")
-        for key in env:
-            if key in _RESERVED_ENV:
-                raise DeploymentError(f"{where}: env must not set {key} (the simulator sets it)")
         return cls(
             path=path,
             nodes=nodes,
-            python_path=[(path.parent / p).resolve() for p in python_path],
-            env=dict(env),
-            application=str(data.get("application", "")),
-            package=str(data.get("package", "")),
+            python_path=[(path.parent / p).resolve() for p in checked.get("python_path", [])],
+            env=dict(checked.get("env", {})),
+            application=checked.get("application", ""),
+            package=checked.get("package", ""),
         )
 
 
-def _parse_topics(data: Any, where: str) -> list[PortTopic]:
-    if data is None:
-        return []
-    if not isinstance(data, list):
-        raise DeploymentError(f"{where}: expected a list of {{topic, type, port}}")
+_VALIDATOR = Draft202012Validator(DEPLOYMENT_SCHEMA)
+
+
+def _pointer(error: ValidationError) -> str:
+    return "".join(f"/{str(p).replace('~', '~0').replace('/', '~1')}" for p in error.absolute_path)
+
+
+def _message(error: ValidationError) -> str:
+    """The schema's `errorMessage` (`{key}`: the field's name), else the most specific inner message."""
+    custom = error.schema.get("errorMessage") if isinstance(error.schema, dict) else None
+    if isinstance(custom, str):
+        key = str(error.absolute_path[-1]) if error.absolute_path else ""
+        return custom.replace("{key}", key)
+    if error.context:
+        return _message(best_match(error.context))
+    return str(error.message)
+
+
+def check_deployment(data: Any, where: str) -> DeploymentDict:
+    """Checks `data` against the deployment contract (@maa/protocol, emitted into protocol.py).
+
+    The error names the file and the JSON pointer of the first bad field:
+    `app/deployment.json: /nodes/0/name: name must be a ROS node name (letters, digits, _)`.
+    """
+    errors = sorted(_VALIDATOR.iter_errors(data), key=lambda e: [str(p) for p in e.absolute_path])
+    if errors:
+        first = errors[0]
+        raise DeploymentError(f"{where}: {_pointer(first) or '/'}: {_message(first)}")
+    return cast(DeploymentDict, data)
+
+
+def _topics(data: list[PortTopicDict], where: str) -> list[PortTopic]:
     result: list[PortTopic] = []
     for i, entry in enumerate(data):
-        here = f"{where}[{i}]"
-        if not isinstance(entry, dict):
-            raise DeploymentError(f"{here}: expected an object")
-        topic, type_name, port = entry.get("topic"), entry.get("type"), entry.get("port", "")
-        if not isinstance(topic, str) or not _TOPIC_RE.match(topic):
-            raise DeploymentError(f"{here}: topic must be an absolute ROS name like /a/b")
-        if not isinstance(type_name, str):
-            raise DeploymentError(f"{here}: type must be a string like std_msgs/msg/Int32")
         try:
-            normalized = normalize_type(type_name)
+            normalized = normalize_type(entry["type"])
         except MessageError as exc:
-            raise DeploymentError(f"{here}: {exc}") from None
-        if not isinstance(port, str):
-            raise DeploymentError(f"{here}: port must be a string")
-        result.append(PortTopic(topic, normalized, port))
+            raise DeploymentError(f"{where}/{i}/type: {exc}") from None
+        result.append(PortTopic(entry["topic"], normalized, entry.get("port", "")))
     return result
 
 
-def _check_parameter(name: str, value: Any, where: str) -> ParameterValue:
-    def scalar(v: Any) -> bool:
-        return isinstance(v, bool | int | str) or (isinstance(v, float) and math.isfinite(v))
-
-    if scalar(value):
-        return value  # type: ignore[no-any-return]
-    if isinstance(value, list) and value and all(scalar(v) for v in value):
-        kinds = {type(v) for v in value}
-        if len(kinds) == 1 or kinds == {int, float}:
-            return value
-    raise DeploymentError(
-        f"{where}: parameter {name} must be a boolean, number, string or a non-empty list of one of them"
-    )
+def _finite(value: ParameterValue) -> bool:
+    """JSON has no NaN or infinity, but Python's json module reads them: refused as parameters."""
+    values = value if isinstance(value, list) else [value]
+    return all(not isinstance(v, float) or math.isfinite(v) for v in values)
 
 
-def _parse_node(data: Any, where: str) -> NodeSpec:
-    if not isinstance(data, dict):
-        raise DeploymentError(f"{where}: expected an object")
-    name = data.get("name")
-    if not isinstance(name, str) or not _NAME_RE.match(name):
-        raise DeploymentError(f"{where}: name must be a ROS node name (letters, digits, _)")
-    namespace = data.get("namespace", "/")
-    if not isinstance(namespace, str) or not _NAMESPACE_RE.match(namespace):
-        raise DeploymentError(f"{where}: namespace must be absolute, like / or /toast")
-    module, executable = data.get("module"), data.get("executable")
-    if (module is None) == (executable is None):
-        raise DeploymentError(f"{where}: give exactly one of module and executable")
-    if module is not None and (not isinstance(module, str) or not re.match(r"^[A-Za-z_][\w.]*$", module)):
-        raise DeploymentError(f"{where}: module must be a dotted Python module name")
-    if executable is not None and (not isinstance(executable, str) or not executable):
-        raise DeploymentError(f"{where}: executable must be a non-empty string")
-    args = data.get("args", [])
-    if not isinstance(args, list) or not all(isinstance(a, str) for a in args):
-        raise DeploymentError(f"{where}: args must be a list of strings")
-    parameters = data.get("parameters", {})
-    if not isinstance(parameters, dict):
-        raise DeploymentError(f"{where}: parameters must be an object")
-    checked = {str(k): _check_parameter(str(k), v, where) for k, v in parameters.items()}
-    if "use_sim_time" in checked:
-        raise DeploymentError(f"{where}: use_sim_time is set by the simulator")
+def _node(data: DeploymentNodeDict, where: str) -> NodeSpec:
+    for name, value in data.get("parameters", {}).items():
+        if not _finite(value):
+            raise DeploymentError(f"{where}/parameters/{name}: parameter {name} must be a finite number")
     return NodeSpec(
-        name=name,
-        namespace=namespace,
-        module=module,
-        executable=executable,
-        args=list(args),
-        parameters=checked,
-        publishes=_parse_topics(data.get("publishes"), f"{where}.publishes"),
-        subscribes=_parse_topics(data.get("subscribes"), f"{where}.subscribes"),
-        component=str(data.get("component", "")),
-        instance=str(data.get("instance", "")),
+        name=data["name"],
+        namespace=data.get("namespace", "/"),
+        module=data.get("module"),
+        executable=data.get("executable"),
+        args=list(data.get("args", [])),
+        parameters=dict(data.get("parameters", {})),
+        publishes=_topics(data.get("publishes", []), f"{where}/publishes"),
+        subscribes=_topics(data.get("subscribes", []), f"{where}/subscribes"),
+        component=data.get("component", ""),
+        instance=data.get("instance", ""),
     )
