@@ -2,6 +2,7 @@ import type { BehaviorGenerationContext, ComponentView, DataTypeResult, FieldVie
 import { dataTypeQualifiedName } from '@maa/generator-core';
 import { GenerationError } from '@maa/generator-core/node';
 import { PythonTranslator, isInPort, isOutPort, pyName, type NameContext, type Node } from '../python/expressions.js';
+import type { AttributeView, PrologueView } from './views.js';
 
 /** Names of the base class a generated attribute must not shadow. */
 const RESERVED = new Set([
@@ -74,13 +75,17 @@ const PRIMITIVE_PY: Record<string, string> = {
 
 /** Resolves class-diagram types through the data type generator's result. */
 export function typeRef(datatypes: DataTypeResult | undefined, imports: Imports, decl: Node): string {
-    const qualified = dataTypeQualifiedName(decl as never);
-    const mapping = datatypes?.types?.[qualified];
+    const mapping = isNamed(decl) ? datatypes?.types?.[dataTypeQualifiedName(decl)] : undefined;
     if (mapping?.module && mapping.name) {
         imports.add(mapping.module, mapping.name);
         return mapping.name;
     }
     return pyName(String(decl.name));
+}
+
+/** Whether a node has a name (declarations do; the translators' nodes are loosely typed). */
+function isNamed(n: Node): n is Node & { name: string } {
+    return typeof n.name === 'string';
 }
 
 /** A data type by its simple name (for qualified references such as `pkg.Types.Color.RED`). */
@@ -97,7 +102,7 @@ export function pyType(t: TypeView, datatypes: DataTypeResult | undefined, impor
     const prim = PRIMITIVE_PY[t.typeName];
     if (prim) return prim;
     if (t.type.kind === 'object' && t.type.args.length === 0) {
-        const decl = t.type.decl as unknown as Node;
+        const decl = t.type.decl;
         if (AstBuiltin(decl)) return 'object';
         return typeRef(datatypes, imports, decl);
     }
@@ -163,51 +168,34 @@ export function behaviorTranslator(spec: ClassSpec, imports: Imports): PythonTra
     return new PythonTranslator(names);
 }
 
-/** The class header, class variables and `__init__` of a behavior class. */
-export function classPrologue(spec: ClassSpec, imports: Imports, doc: string, extraInit: string[] = []): string[] {
+/** The class header, class variables and `__init__` of a behavior class (templates/behavior/prologue.njk). */
+export function prologueView(spec: ClassSpec, imports: Imports, doc: string, extraInit: readonly string[] = []): PrologueView {
     const tr = behaviorTranslator(spec, imports);
     imports.add('maa_behavior', 'Behavior');
     imports.add('maa_behavior', 'Emit');
     imports.add('collections.abc', 'Mapping');
     const ins = spec.ports.filter((p) => p.direction === 'in');
     const outs = spec.ports.filter((p) => p.direction === 'out');
-    const delayed = outs.filter((p) => p.delayed);
-    const tuple = (xs: readonly PortView[]): string => (xs.length === 0 ? '()' : `(${xs.map((p) => JSON.stringify(p.name)).join(', ')}${xs.length === 1 ? ',' : ''})`);
-    const lines = [
-        `class ${spec.className}(Behavior):`,
-        `    """${doc}"""`,
-        '',
-        `    TIMING = ${JSON.stringify(spec.timing)}`,
-        `    IN_PORTS = ${tuple(ins)}`,
-        `    OUT_PORTS = ${tuple(outs)}`,
-        `    DELAYED = ${delayed.length ? `frozenset({${delayed.map((p) => JSON.stringify(p.name)).join(', ')}})` : 'frozenset()'}`,
-        '',
-        '    def __init__(self, emit: Emit, params: Mapping[str, object] | None = None) -> None:',
-        '        super().__init__(emit, params)',
-        '        self._last: dict[str, object] = {}'
+    const attributes: AttributeView[] = [
+        ...spec.parameters.map((p) => ({
+            name: attr(p.name),
+            type: pyType(p, spec.datatypes, imports),
+            value: `self._params.get(${JSON.stringify(p.name)}, ${p.default ? tr.expr(p.default as Node) : 'None'})`,
+            ignoreType: true
+        })),
+        ...spec.fields.map((f) => ({ name: attr(f.name), type: pyType(f, spec.datatypes, imports), value: tr.expr(f.init as Node), ignoreType: false })),
+        ...ins.map((p) => ({ name: attr(p.name), type: `${pyType(p, spec.datatypes, imports)} | None`, value: 'None', ignoreType: false }))
     ];
-    for (const p of spec.parameters) {
-        const t = pyType(p, spec.datatypes, imports);
-        const def = p.default ? tr.expr(p.default as Node) : 'None';
-        lines.push(`        self.${attr(p.name)}: ${t} = self._params.get(${JSON.stringify(p.name)}, ${def})  # type: ignore[assignment]`);
-    }
-    for (const f of spec.fields) {
-        const t = pyType(f, spec.datatypes, imports);
-        lines.push(`        self.${attr(f.name)}: ${t} = ${tr.expr(f.init as Node)}`);
-    }
-    for (const p of ins) {
-        const t = pyType(p, spec.datatypes, imports);
-        lines.push(`        self.${attr(p.name)}: ${t} | None = None`);
-    }
-    lines.push(...extraInit.map((l) => `        ${l}`));
-    lines.push(
-        '',
-        '    def _emit(self, port: str, value: object) -> None:',
-        '        if value is not None:',
-        '            self._last[port] = value',
-        '        super()._emit(port, value)'
-    );
-    return lines;
+    return {
+        className: spec.className,
+        doc,
+        timing: spec.timing,
+        inPorts: ins.map((p) => p.name),
+        outPorts: outs.map((p) => p.name),
+        delayed: outs.filter((p) => p.delayed).map((p) => p.name),
+        attributes,
+        extraInit
+    };
 }
 
 /** Statements that copy a sync slice's inputs to the in-port attributes. */

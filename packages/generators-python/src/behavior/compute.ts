@@ -1,9 +1,11 @@
 import type { ComponentView, DataTypeResult } from '@maa/generator-core';
 import type { Node } from '../python/expressions.js';
-import { Imports, behaviorTranslator, classPrologue, indent, readInputs, type ClassSpec } from './common.js';
+import { renderLines } from '../python/templates.js';
+import { Imports, behaviorTranslator, prologueView, readInputs, type ClassSpec } from './common.js';
+import type { ComputeClassView } from './views.js';
 
-/** The behavior class of a component with `compute`/`init` blocks (the host's `compute` language). */
-export function computeClass(component: ComponentView, datatypes: DataTypeResult | undefined, imports: Imports, className = `${component.name}Behavior`): string[] {
+/** The view of the behavior class of a component with `compute`/`init` blocks (the host's `compute` language). */
+export function computeClassView(component: ComponentView, datatypes: DataTypeResult | undefined, imports: Imports, className = `${component.name}Behavior`): ComputeClassView {
     const spec: ClassSpec = {
         className,
         timing: 'sync',
@@ -13,13 +15,17 @@ export function computeClass(component: ComponentView, datatypes: DataTypeResult
         datatypes
     };
     const tr = behaviorTranslator(spec, imports);
-    const lines = classPrologue(spec, imports, `Behavior of ${component.qualifiedName}: its compute block (generated).`);
+    const prologue = prologueView(spec, imports, `Behavior of ${component.qualifiedName}: its compute block (generated).`);
     const init = component.init as Node | undefined;
-    if (init) {
-        lines.push('', '    def init(self) -> None:', ...indent(tr.block(init.body), 8));
-    }
     const compute = component.behavior?.language === 'compute' ? component.behavior.node as Node : undefined;
-    const step = [...readInputs(spec), ...(compute ? tr.stmt(compute.body) : [])];
-    lines.push('', '    def step(self, inputs: Mapping[str, object]) -> None:', ...indent(step.length ? step : ['del inputs'], 8));
-    return lines;
+    return {
+        prologue,
+        init: init ? tr.block(init.body) : undefined,
+        step: [...readInputs(spec), ...(compute ? tr.stmt(compute.body) : [])]
+    };
+}
+
+/** The behavior class of a component with `compute`/`init` blocks, as lines (templates/behavior/compute.njk). */
+export function computeClass(component: ComponentView, datatypes: DataTypeResult | undefined, imports: Imports, className = `${component.name}Behavior`): string[] {
+    return renderLines('behavior/compute.njk', computeClassView(component, datatypes, imports, className));
 }

@@ -1,8 +1,8 @@
 import type { BehaviorGeneratorFactory, BehaviorView, RuleViolation, WellFormednessRule } from '@maa/generator-core';
 import { GenerationError } from '@maa/generator-core/node';
-import { commandTable, isEmbedded, programSteps, programsOf, protocolPorts, type JointSource } from '@maa/language-robotarm';
-import type { Node } from '../python/expressions.js';
-import { Imports, indent, typeRef, specFrom } from './common.js';
+import { commandTable, isEmbedded, isRobotArmBody, programSteps, programsOf, protocolPorts, type JointSource } from '@maa/language-robotarm';
+import { renderLines } from '../python/templates.js';
+import { Imports, typeRef, specFrom } from './common.js';
 import { behaviorModule, moduleText } from './automata.js';
 
 const str = (s: string): string => JSON.stringify(s);
@@ -27,8 +27,8 @@ export const robotArmRule: WellFormednessRule = {
     *check(scope): Iterable<RuleViolation> {
         for (const b of scope.behaviors) {
             if (b.language !== 'robotarm') continue;
-            const body = b.node as never;
-            if (!isEmbedded(body)) {
+            const body = b.node;
+            if (!isRobotArmBody(body) || !isEmbedded(body)) {
                 yield { node: b.node, message: 'the Python generators translate only robot arms embedded in a component' };
                 continue;
             }
@@ -44,53 +44,45 @@ const create: BehaviorGeneratorFactory = () => ({
     generate(behavior: BehaviorView, ctx) {
         const component = ctx.component;
         if (!component) throw new GenerationError('the RobotArm generator needs the component (requires: component)', behavior.node);
-        const body = behavior.node as never;
-        if (!isEmbedded(body)) throw new GenerationError('only embedded robot arms can be translated', behavior.node);
+        const body = behavior.node;
+        if (!isRobotArmBody(body) || !isEmbedded(body)) throw new GenerationError('only embedded robot arms can be translated', behavior.node);
         const spec = specFrom(ctx, component, 'sync');
         const imports = new Imports();
         imports.add('maa_behavior.robotarm', 'RobotArmExecutor');
         imports.add('typing', 'ClassVar');
         imports.add('collections.abc', 'Mapping');
         const statusPort = spec.ports.find((p) => p.name === 'status');
-        const statusDecl = statusPort?.type.kind === 'object' ? statusPort.type.decl as unknown as Node : undefined;
+        const statusDecl = statusPort?.type.kind === 'object' ? statusPort.type.decl : undefined;
         const statusType = statusDecl ? typeRef(ctx.datatypes, imports, statusDecl) : 'None';
-        const programs: string[] = [];
+        const programs: Array<{ name: string; steps: string[] }> = [];
         let stepKinds = new Set<string>();
-        for (const p of programsOf(body) as unknown as Node[]) {
-            const steps = programSteps(p as never).map((s) => {
+        for (const p of programsOf(body)) {
+            const steps = programSteps(p).map((s) => {
                 if (s.kind !== 'move') {
                     stepKinds.add('Gripper');
-                    return `Gripper(close=${s.kind === 'close' ? 'True' : 'False'}),`;
+                    return `Gripper(close=${s.kind === 'close' ? 'True' : 'False'})`;
                 }
                 stepKinds.add('Move');
                 for (const j of [s.angle, s.height]) stepKinds.add(j.kind === 'fixed' ? 'Fixed' : j.kind === 'keep' ? 'Keep' : 'FromPort');
-                return `Move(${joint(s.angle)}, ${joint(s.height)}${s.target ? `, ${str(s.target.name)}` : ''}),`;
+                return `Move(${joint(s.angle)}, ${joint(s.height)}${s.target ? `, ${str(s.target.name)}` : ''})`;
             });
-            programs.push(`${str(p.name)}: (`, ...indent(steps, 4), '),');
+            programs.push({ name: p.name, steps });
         }
         stepKinds = new Set([...stepKinds].sort());
         for (const k of stepKinds) imports.add('maa_behavior.robotarm', k);
         imports.add('maa_behavior.robotarm', 'Step');
-        const commands = commandTable(body).filter((c) => c.program).map((c) => `${str(c.constant)}: ${str((c.program as unknown as Node).name)},`);
-        const ins = spec.ports.filter((p) => p.direction === 'in');
+        const commands = commandTable(body).flatMap((c) => (c.program ? [{ constant: c.constant, program: c.program.name }] : []));
         const outs = spec.ports.filter((p) => p.direction === 'out');
-        const tuple = (xs: string[]): string => (xs.length === 0 ? '()' : `(${xs.join(', ')}${xs.length === 1 ? ',' : ''})`);
-        const cls = [
-            `class ${spec.className}(RobotArmExecutor):`,
-            `    """Behavior of ${component.qualifiedName}: its RobotArm programs (generated)."""`,
-            '',
-            '    TIMING = "sync"',
-            `    IN_PORTS = ${tuple(ins.map((p) => str(p.name)))}`,
-            `    OUT_PORTS = ${tuple(outs.map((p) => str(p.name)))}`,
-            `    DELAYED = ${outs.some((p) => p.delayed) ? `frozenset({${outs.filter((p) => p.delayed).map((p) => str(p.name)).join(', ')}})` : 'frozenset()'}`,
-            `    STATUS = ${statusType}`,
-            '    PROGRAMS: ClassVar[Mapping[str, tuple[Step, ...]]] = {',
-            ...indent(programs, 8),
-            '    }',
-            '    COMMANDS: ClassVar[Mapping[str, str]] = {',
-            ...indent(commands, 8),
-            '    }'
-        ];
+        const cls = renderLines('behavior/robotarm.njk', {
+            className: spec.className,
+            qualifiedName: component.qualifiedName,
+            inPorts: spec.ports.filter((p) => p.direction === 'in').map((p) => p.name),
+            outPorts: outs.map((p) => p.name),
+            delayed: outs.filter((p) => p.delayed).map((p) => p.name),
+            statusType,
+            programs,
+            commands
+        });
         const { module, file } = behaviorModule(component.packageName, component.name);
         const out = ctx.out.file(file);
         out.traced(behavior.node, () => out.write(moduleText(`Behavior of ${component.qualifiedName}: its robot arm (generated by the Python RobotArm generator).`, imports, cls)));

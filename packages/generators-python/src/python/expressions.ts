@@ -1,6 +1,6 @@
 import type { AstNode } from 'langium';
 import { GenerationError } from '@maa/generator-core/node';
-import { portHeader, printType, typeOfMCType } from '@maa/language-adl';
+import { ast as adlAst, portHeader, printType, typeOfMCType } from '@maa/language-adl';
 import { JAVA_LIBRARY } from './java-library.js';
 import { ControlFlow } from './control-flow.js';
 
@@ -42,11 +42,11 @@ export function pyName(name: string): string {
 }
 
 export function isOutPort(n: Node | undefined): boolean {
-    return !!n && n.$type === 'Port' && portHeader(n as never).direction === 'out';
+    return adlAst.isPort(n) && portHeader(n).direction === 'out';
 }
 
 export function isInPort(n: Node | undefined): boolean {
-    return !!n && n.$type === 'Port' && portHeader(n as never).direction === 'in';
+    return adlAst.isPort(n) && portHeader(n).direction === 'in';
 }
 
 const BINARY: Record<string, string> = {
@@ -319,10 +319,10 @@ function declaredType(e: Node): string | undefined {
         case 'NameExpression': {
             const t = e.ref?.ref as Node | undefined;
             if (!t) return undefined;
-            const mcType = t.$type === 'Port' ? portHeader(t as never).type
+            const mcType = adlAst.isPort(t) ? portHeader(t).type
                 : t.$type === 'Field' || t.$type === 'LocalVariable' ? (t.$container as Node).type
                     : t.$type === 'Parameter' ? t.type : undefined;
-            return mcType ? printType(typeOfMCType(mcType as never)) : undefined;
+            return mcType ? printType(typeOfMCType(mcType)) : undefined;
         }
         default:
             return undefined;

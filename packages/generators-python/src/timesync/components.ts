@@ -3,12 +3,19 @@ import { AstUtils } from 'langium';
 import path from 'node:path';
 import type { ComponentGeneratorFactory, ComponentView, DataTypeResult, PortView } from '@maa/generator-core';
 import { GenerationError } from '@maa/generator-core/node';
-import { Imports, indent, modulePath, pyType, snake, typeBySimpleName, typeRef } from '../behavior/common.js';
-import { computeClass } from '../behavior/compute.js';
-import { moduleText } from '../behavior/automata.js';
+import { Imports, modulePath, pyType, snake, typeBySimpleName, typeRef } from '../behavior/common.js';
+import { computeClassView } from '../behavior/compute.js';
+import { moduleTextOf } from '../behavior/automata.js';
 import { PythonTranslator, isTypeDecl, pyName, type Node } from '../python/expressions.js';
+import { renderPython, type PythonTemplates } from '../python/templates.js';
 import { primitiveOf, rosName } from '../ros2/naming.js';
-import { modeClassLines } from './modes.js';
+import { connectorTuple, modesView } from './modes.js';
+import type { AppModuleView, ComponentClassesView, SubcomponentView } from './views.js';
+
+/** A rendered class template without its final newline (the module template places it). */
+function renderClass<T extends 'behavior/compute.njk' | 'timesync/component.njk'>(template: T, view: PythonTemplates[T]): string {
+    return renderPython(template, view).replace(/\n$/, '');
+}
 
 const str = (s: string): string => JSON.stringify(s);
 
@@ -39,37 +46,30 @@ function configTranslator(datatypes: DataTypeResult, imports: Imports): PythonTr
     });
 }
 
-function tuple(xs: readonly string[]): string {
-    return xs.length === 0 ? '()' : `(${xs.join(', ')}${xs.length === 1 ? ',' : ''})`;
-}
-
-/** The class-level declarations every component type has. */
-function typeHeader(c: ComponentView, datatypes: DataTypeResult, imports: Imports, extra: readonly string[] = []): string[] {
-    const ins = c.ports.filter((p) => p.direction === 'in');
-    const outs = c.ports.filter((p) => p.direction === 'out');
-    const tr = configTranslator(datatypes, imports);
-    const lines = [
-        `    NAME = ${str(c.qualifiedName)}`,
-        `    IN_PORTS = ${tuple(ins.map((p) => str(p.name)))}`,
-        `    OUT_PORTS = ${tuple(outs.map((p) => str(p.name)))}`,
-        `    PORT_TYPES: ClassVar[Mapping[str, object]] = {${c.ports.map((p) => `${str(p.name)}: ${portType(p, datatypes, imports)}`).join(', ')}}`,
-        `    PARAMETERS = ${tuple(c.parameters.map((p) => str(p.name)))}`,
+/** The class-level declarations every component type has (templates/timesync/component.njk). */
+function typeHeader(c: ComponentView, datatypes: DataTypeResult, imports: Imports): Pick<ComponentClassesView,
+    'className' | 'qualifiedName' | 'inPorts' | 'outPorts' | 'portTypes' | 'parameters' | 'typeParameters' | 'features'> {
+    const header = {
+        className: pyName(c.name),
+        qualifiedName: c.qualifiedName,
+        inPorts: c.ports.filter((p) => p.direction === 'in').map((p) => p.name),
+        outPorts: c.ports.filter((p) => p.direction === 'out').map((p) => p.name),
+        portTypes: c.ports.map((p) => ({ key: str(p.name), value: portType(p, datatypes, imports) })),
+        parameters: c.parameters.map((p) => p.name),
         // Generic components name their type parameters: stream tests bind them (`type_args`).
-        ...(c.typeParameters.length > 0 ? [`    TYPE_PARAMETERS = ${tuple(c.typeParameters.map(str))}`] : []),
+        typeParameters: c.typeParameters,
         // A variable component records the feature configuration it was generated in (stream tests check it).
-        ...(c.features ? [`    FEATURES: ClassVar[Mapping[str, bool]] = {${Object.entries(c.features).map(([k, v]) => `${str(k)}: ${v ? 'True' : 'False'}`).join(', ')}}`] : []),
-        ...extra
-    ];
+        features: c.features ? Object.entries(c.features).map(([k, v]) => ({ key: str(k), value: v ? 'True' : 'False' })) : undefined
+    };
     imports.add('typing', 'ClassVar');
     imports.add('collections.abc', 'Mapping');
-    if (c.parameters.some((p) => p.default)) {
-        lines.push('', '    @classmethod', '    def defaults(cls, params: Mapping[str, object]) -> dict[str, object]:', '        params = dict(params)');
-        for (const p of c.parameters) {
-            if (p.default) lines.push(`        params.setdefault(${str(p.name)}, ${tr.expr(p.default as Node)})`);
-        }
-        lines.push('        return params');
-    }
-    return lines;
+    return header;
+}
+
+/** The `defaults` classmethod's entries: parameters with a default value. */
+function parameterDefaults(c: ComponentView, datatypes: DataTypeResult, imports: Imports): ComponentClassesView['defaults'] {
+    const tr = configTranslator(datatypes, imports);
+    return c.parameters.flatMap((p) => (p.default ? [{ name: p.name, value: tr.expr(p.default as Node) }] : []));
 }
 
 /**
@@ -100,73 +100,50 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
         for (const c of ctx.architecture.components) {
             const { file } = componentModule(c);
             const imports = new Imports();
-            const classLines: string[] = [];
+            let view: ComponentClassesView;
             if (c.atomic) {
                 imports.add('maa_timesync', 'AtomicComponent');
                 const delegated = await ctx.behavior(c);
-                let behaviorClass: string;
+                let behaviorClass: string | undefined;
+                let handwritten: ComponentClassesView['handwritten'];
+                let behavior: string;
                 if (delegated?.handledBy === 'behavior-generator') {
                     const module = String(delegated.result.module);
-                    behaviorClass = String(delegated.result.class);
-                    imports.add(module, behaviorClass);
+                    behavior = String(delegated.result.class);
+                    imports.add(module, behavior);
                 } else if (c.handwritten && !delegated) {
                     // A generated base class plus a user file created once.
-                    const base = computeClass(c, datatypes, imports, `${c.name}BehaviorBase`);
-                    classLines.push(...base, '', '');
+                    const base = `${c.name}BehaviorBase`;
+                    behaviorClass = renderClass('behavior/compute.njk', computeClassView(c, datatypes, imports, base));
                     const impl = modulePath(c.packageName, `${snake(c.name)}_impl`);
-                    behaviorClass = `${c.name}Behavior`;
-                    const own = componentModule(c);
+                    handwritten = { base, module: impl.module, cls: `${c.name}Behavior` };
                     const source = handwrittenSource(c);
                     if (source !== undefined) ctx.out.file(impl.file).write(source, c.node);
-                    else ctx.out.file(impl.file, { userFile: true }).write([
-                        `"""Handwritten behavior of ${c.qualifiedName} for the python-timesync platform (written once, never overwritten)."""`,
-                        '',
-                        'from __future__ import annotations',
-                        '',
-                        'from collections.abc import Mapping',
-                        '',
-                        `from ${own.module} import ${c.name}BehaviorBase`,
-                        '',
-                        '',
-                        `class ${behaviorClass}(${c.name}BehaviorBase):`,
-                        `    """Implement the component here: \`step\` is called once per time slice (see docs/runtime.md)."""`,
-                        '',
-                        '    def step(self, inputs: Mapping[str, object]) -> None:',
-                        '        super().step(inputs)',
-                        ''
-                    ].join('\n'), c.node);
-                    classLines.push(
-                        `def _behavior() -> type[${c.name}BehaviorBase]:`,
-                        `    from ${impl.module} import ${behaviorClass}`,
-                        '',
-                        `    return ${behaviorClass}`,
-                        '',
-                        ''
-                    );
-                    behaviorClass = '_behavior()';
+                    else ctx.out.file(impl.file, { userFile: true }).write(renderPython('timesync/handwritten.py.njk', {
+                        qualifiedName: c.qualifiedName, module: componentModule(c).module, base, className: handwritten.cls
+                    }), c.node);
+                    behavior = '_behavior()';
                 } else {
-                    behaviorClass = `${c.name}Behavior`;
-                    classLines.push(...computeClass(c, datatypes, imports), '', '');
+                    behavior = `${c.name}Behavior`;
+                    behaviorClass = renderClass('behavior/compute.njk', computeClassView(c, datatypes, imports));
                 }
-                const header = typeHeader(c, datatypes, imports, [`    BEHAVIOR = ${behaviorClass}`]);
-                classLines.push(
-                    `class ${pyName(c.name)}(AtomicComponent):`,
-                    `    """Component type ${c.qualifiedName} (generated)."""`,
-                    '',
-                    ...header
-                );
+                const header = typeHeader(c, datatypes, imports);
+                view = {
+                    ...header, behaviorClass, handwritten, base: 'AtomicComponent', atomic: { behavior }, composed: undefined,
+                    defaults: parameterDefaults(c, datatypes, imports)
+                };
             } else {
                 // A mode automaton makes it a ModeComponent (modes.ts).
-                const modeLines = modeClassLines(c, datatypes, imports);
-                if (!modeLines) imports.add('maa_timesync', 'ComposedComponent');
+                const modes = modesView(c, datatypes, imports);
+                if (!modes) imports.add('maa_timesync', 'ComposedComponent');
                 imports.add('maa_timesync', 'ComponentType');
                 const tr = configTranslator(datatypes, imports);
-                const subs: string[] = [];
+                const subcomponents: SubcomponentView[] = [];
                 for (const s of c.subcomponents) {
                     const sub = ctx.architecture.component(s.type);
                     if (!sub) throw new GenerationError(`unknown component type ${s.type}`, s.node);
                     const subModule = componentModule(sub);
-                    const alias = sub.qualifiedName === c.qualifiedName ? pyName(sub.name) : `${pyName(sub.name)}`;
+                    const alias = pyName(sub.name);
                     if (subModule.module !== componentModule(c).module) imports.add(subModule.module, alias);
                     const args = s.args.map((a, i) => {
                         const arg = a as Node;
@@ -174,36 +151,25 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                         if (arg.$type === 'AssignmentExpression' && arg.op === '=' && (arg.left as Node).$type === 'NameExpression') {
                             const name = String((arg.left as Node).ref?.$refText);
                             if (!sub.parameters.some((p) => p.name === name)) throw new GenerationError(`${sub.qualifiedName} has no parameter '${name}'`, arg);
-                            return `${str(name)}: ${tr.expr(arg.right as Node)}`;
+                            return { key: str(name), value: tr.expr(arg.right as Node) };
                         }
                         const param = sub.parameters[i];
                         if (!param) throw new GenerationError(`too many arguments for ${sub.qualifiedName}`, a);
-                        return `${str(param.name)}: ${tr.expr(arg)}`;
+                        return { key: str(param.name), value: tr.expr(arg) };
                     });
-                    subs.push(`(${str(s.name)}, ${alias}, {${args.join(', ')}}),`);
+                    subcomponents.push({ name: s.name, alias, args });
                 }
-                const conns = c.connectors.map((k) => {
-                    const targets = k.targets.map((t) => `(${str(t.subcomponent ?? '')}, ${str(t.port)})`);
-                    return `(${str(k.source.subcomponent ?? '')}, ${str(k.source.port)}, ${tuple(targets)}),`;
-                });
-                const usesParams = subs.some((l) => l.includes('params['));
-                const header = typeHeader(c, datatypes, imports, ['    CONNECTORS = (', ...indent(conns, 8), '    )', ...(modeLines ?? [])]);
-                classLines.push(
-                    `class ${pyName(c.name)}(${modeLines ? 'ModeComponent' : 'ComposedComponent'}):`,
-                    `    """Component type ${c.qualifiedName} (generated)."""`,
-                    '',
-                    ...header,
-                    '',
-                    '    @classmethod',
-                    `    def subcomponents(cls, params: Mapping[str, object]) -> list[tuple[str, type[ComponentType], dict[str, object]]]:`,
-                    ...(usesParams ? [] : ['        del params']),
-                    '        return [',
-                    ...indent(subs, 12),
-                    '        ]'
-                );
+                const usesParams = subcomponents.some((x) => x.args.some((a) => a.value.includes('params[')));
+                const header = typeHeader(c, datatypes, imports);
+                view = {
+                    ...header, behaviorClass: undefined, handwritten: undefined, base: modes ? 'ModeComponent' : 'ComposedComponent', atomic: undefined,
+                    composed: { connectors: c.connectors.map(connectorTuple), modes, usesParams, subcomponents },
+                    defaults: parameterDefaults(c, datatypes, imports)
+                };
             }
             const out = ctx.out.file(file);
-            out.traced(c.node, () => out.write(moduleText(`Component ${c.qualifiedName} for the python-timesync platform (generated).`, imports, classLines)));
+            const classes = renderClass('timesync/component.njk', view);
+            out.traced(c.node, () => out.write(moduleTextOf(`Component ${c.qualifiedName} for the python-timesync platform (generated).`, imports, classes)));
         }
 
         // The run-time environments, copied so that the build runs with Python alone.
@@ -215,7 +181,7 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
         const root = ctx.architecture.root;
         const rootModule = componentModule(root);
         const imports = new Imports();
-                imports.add('maa_timesync.lockstep', 'LockstepApp');
+        imports.add('maa_timesync.lockstep', 'LockstepApp');
         imports.add('maa_timesync', 'ComponentType');
         imports.add('enum', 'Enum');
         imports.add('collections.abc', 'Mapping');
@@ -223,60 +189,38 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             const m = componentModule(c);
             const alias = `_${m.module.replace(/\./g, '_')}`;
             imports.add(m.module, `${pyName(c.name)} as ${alias}`);
-            return `${str(c.qualifiedName)}: ${alias},`;
+            return { name: c.qualifiedName, alias };
         });
-        const enums = ctx.architecture.dataTypes.filter((t) => t.kind === 'enum').map((t) => `${str(t.name)}: ${typeRef(datatypes, imports, t.node as unknown as Node)},`);
+        const enums = ctx.architecture.dataTypes.filter((t) => t.kind === 'enum').map((t) => ({ name: t.name, type: typeRef(datatypes, imports, t.node) }));
         // Live values in the simulator's lock-step mode: every port value under its ROS 2 topic name
         // (the ros2 generator's rule), so the IDE sees the same topics in both modes. Primitives travel
         // as their std_msgs type; enums as their constant name and classes as JSON, both in std_msgs/String.
         const rootNs = `/${rosName(root.name)}`;
         const topicType = (p: PortView): string => `std_msgs/msg/${primitiveOf(p.type)?.std ?? 'String'}`;
-        const portTopics: string[] = [];
-        const nodeNames: string[] = [];
+        const portTopics: AppModuleView['portTopics'][number][] = [];
+        const nodeNames: AppModuleView['nodeNames'][number][] = [];
         for (const p of root.ports.filter((x) => x.direction === 'in')) {
-            portTopics.push(`${str(p.name)}: (${str(`${rootNs}/${rosName(p.name)}`)}, ${str(topicType(p))}),`);
+            portTopics.push({ key: p.name, topic: `${rootNs}/${rosName(p.name)}`, type: topicType(p) });
         }
         // Mode components have a live state too, their mode (under their instance's node path, as on ROS 2).
         for (const inst of ctx.architecture.instances.filter((i) => i.component.atomic || i.component.modes)) {
             const node = [rootNs, ...inst.path.map(rosName)].join('/');
-            nodeNames.push(`${str(inst.path.join('.'))}: ${str(node)},`);
+            nodeNames.push({ path: inst.path.join('.'), node });
             if (!inst.component.atomic) continue;
             for (const p of inst.component.ports.filter((x) => x.direction === 'out')) {
-                portTopics.push(`${str(`${inst.path.join('.')}.${p.name}`)}: (${str(`${node}/${rosName(p.name)}`)}, ${str(topicType(p))}),`);
+                portTopics.push({ key: `${inst.path.join('.')}.${p.name}`, topic: `${node}/${rosName(p.name)}`, type: topicType(p) });
             }
         }
-        const app = ctx.out.file('maa_app.py');
-        app.write([
-            `"""The application ${ctx.platform.application} (${root.qualifiedName}) on the python-timesync platform (generated)."""`,
-            '',
-            'from __future__ import annotations',
-            '',
-            ...imports.lines(),
-            '',
-            `APPLICATION = ${str(ctx.platform.application)}`,
-            `ROOT = _${rootModule.module.replace(/\./g, '_')}`,
-            'COMPONENTS: dict[str, type[ComponentType]] = {',
-            ...indent(components, 4),
-            '}',
-            'ENUMS: dict[str, type[Enum]] = {',
-            ...indent(enums, 4),
-            '}',
-            '#: Port topics of the lock-step mode (ROS 2 names): "<instance path>.<out port>" of atomic instances',
-            '#: and "<in port>" of the root -> (topic, ROS 2 message type).',
-            'PORT_TOPICS: dict[str, tuple[str, str]] = {',
-            ...indent(portTopics, 4),
-            '}',
-            '#: ROS 2 node names of the atomic instances and mode components (keys of /maa/automaton_states).',
-            'NODE_NAMES: dict[str, str] = {',
-            ...indent(nodeNames, 4),
-            '}',
-            '',
-            '',
-            'def create_controller(parameters: Mapping[str, object]) -> LockstepApp:',
-            '    """The simulator\'s lock-step factory (lockstep.json)."""',
-            '    return LockstepApp(ROOT, parameters, PORT_TOPICS, NODE_NAMES)',
-            ''
-        ].join('\n'), root.node);
+        ctx.out.file('maa_app.py').write(renderPython('timesync/app.py.njk', {
+            application: ctx.platform.application,
+            rootQualifiedName: root.qualifiedName,
+            imports: imports.lines(),
+            rootAlias: `_${rootModule.module.replace(/\./g, '_')}`,
+            components,
+            enums,
+            portTopics,
+            nodeNames
+        }), root.node);
         ctx.out.file('lockstep.json').write(`${JSON.stringify({
             format: 'maa-lockstep/1', factory: 'maa_app:create_controller', python_path: ['.'], period: 0.02, parameters: {}
         }, null, 2)}\n`);

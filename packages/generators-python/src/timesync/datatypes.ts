@@ -1,7 +1,9 @@
 import type { DataTypeGeneratorFactory, DataTypeView, TypeMapping } from '@maa/generator-core';
 import { Imports, modulePath, snake } from '../behavior/common.js';
 import { pyName } from '../python/expressions.js';
-import { methodStubs } from '../python/cd-methods.js';
+import { methodViews } from '../python/cd-methods.js';
+import { renderPython } from '../python/templates.js';
+import type { DataTypeView as DataTypeChunkView } from './views.js';
 
 const PRIMITIVES: Record<string, string> = {
     int: 'int', Integer: 'int', long: 'int', Long: 'int', short: 'int', Short: 'int', byte: 'int', Byte: 'int', char: 'int',
@@ -68,51 +70,48 @@ const create: DataTypeGeneratorFactory = () => ({
             for (const t of ctx.dataTypes) {
                 if (!local.has(t.name) && diagramModule(t).module !== module) local.set(t.name, pyName(t.name));
             }
-            const chunks: Array<{ t: DataTypeView; lines: string[] }> = [];
+            const chunks: Array<{ t: DataTypeView; view: DataTypeChunkView }> = [];
             const order = [...list.filter((t) => t.kind === 'enum'), ...list.filter((t) => t.kind !== 'enum')];
             for (const t of order) {
-                const lines: string[] = [];
                 if (t.kind === 'enum') {
                     imports.add('enum', 'Enum');
-                    lines.push(`class ${pyName(t.name)}(Enum):`, `    """Enumeration ${t.qualifiedName} (generated)."""`, '');
-                    t.constants.forEach((c, i) => lines.push(`    ${pyName(c)} = ${i}`));
-                    const methods = methodStubs(t, (n) => annotation(n, local, []));
-                    if (t.constants.length === 0 && methods.length === 0) lines.push('    pass');
-                    lines.push(...methods);
-                } else {
-                    imports.add('dataclasses', 'dataclass');
-                    const bases: string[] = [];
-                    if (t.typeParameters.length) {
-                        imports.add('typing', 'Generic');
-                        imports.add('typing', 'TypeVar');
-                        for (const p of t.typeParameters) lines.push(`${p} = TypeVar(${JSON.stringify(p)})`);
-                        lines.push('', '');
-                        bases.push(`Generic[${t.typeParameters.join(', ')}]`);
-                    }
-                    for (const s of t.superTypes) {
-                        const simple = s.split('.').pop()!.replace(/<.*$/, '');
-                        if (local.has(simple)) bases.unshift(local.get(simple)!);
-                    }
-                    lines.push('@dataclass', `class ${pyName(t.name)}${bases.length ? `(${bases.join(', ')})` : ''}:`, `    """${t.kind === 'interface' ? 'Interface' : 'Class'} ${t.qualifiedName} (generated)."""`, '');
-                    for (const a of t.attributes) {
-                        const ann = annotation(a.typeName, local, t.typeParameters);
-                        const enumType = ctx.dataTypes.find((d) => d.name === a.typeName && d.kind === 'enum');
-                        const value = DEFAULTS[ann] ?? (enumType && enumType.constants.length ? `${pyName(enumType.name)}.${pyName(enumType.constants[0])}` : undefined);
-                        if (value === undefined) lines.push(`    ${pyName(a.name)}: ${ann.endsWith('| None') ? ann : `${ann} | None`} = None`);
-                        else lines.push(`    ${pyName(a.name)}: ${ann} = ${value}`);
-                    }
-                    const methods = methodStubs(t, (n) => annotation(n, local, t.typeParameters));
-                    if (t.attributes.length === 0 && methods.length === 0) lines.push('    pass');
-                    lines.push(...methods);
+                    const methods = methodViews(t, (n) => annotation(n, local, []));
+                    chunks.push({ t, view: {
+                        name: pyName(t.name), qualifiedName: t.qualifiedName, enum: { constants: t.constants.map(pyName) }, data: undefined,
+                        empty: t.constants.length === 0 && methods.length === 0, methods
+                    } });
+                    continue;
                 }
-                chunks.push({ t, lines });
+                imports.add('dataclasses', 'dataclass');
+                const bases: string[] = [];
+                if (t.typeParameters.length) {
+                    imports.add('typing', 'Generic');
+                    imports.add('typing', 'TypeVar');
+                    bases.push(`Generic[${t.typeParameters.join(', ')}]`);
+                }
+                for (const s of t.superTypes) {
+                    const simple = s.split('.').pop()!.replace(/<.*$/, '');
+                    if (local.has(simple)) bases.unshift(local.get(simple)!);
+                }
+                const attributes = t.attributes.map((a) => {
+                    const ann = annotation(a.typeName, local, t.typeParameters);
+                    const enumType = ctx.dataTypes.find((d) => d.name === a.typeName && d.kind === 'enum');
+                    const value = DEFAULTS[ann] ?? (enumType && enumType.constants.length ? `${pyName(enumType.name)}.${pyName(enumType.constants[0])}` : undefined);
+                    if (value === undefined) return { name: pyName(a.name), annotation: ann.endsWith('| None') ? ann : `${ann} | None`, value: 'None' };
+                    return { name: pyName(a.name), annotation: ann, value };
+                });
+                const methods = methodViews(t, (n) => annotation(n, local, t.typeParameters));
+                chunks.push({ t, view: {
+                    name: pyName(t.name), qualifiedName: t.qualifiedName, enum: undefined,
+                    data: { kind: t.kind === 'interface' ? 'Interface' : 'Class', typeParameters: t.typeParameters, bases, attributes },
+                    empty: t.attributes.length === 0 && methods.length === 0, methods
+                } });
             }
-            const names = [...new Set(list.map((t) => `${t.packageName ? `${t.packageName}.` : ''}${t.diagram}`))].join(', ');
-            const header = [`"""Data types of the class diagram ${names} (generated)."""`, '', 'from __future__ import annotations', '', ...imports.lines()];
-            out.write(header.join('\n') + '\n');
-            for (const { t, lines } of chunks) {
+            const diagrams = [...new Set(list.map((t) => `${t.packageName ? `${t.packageName}.` : ''}${t.diagram}`))].join(', ');
+            out.write(renderPython('timesync/datatypes-module.njk', { diagrams, imports: imports.lines() }));
+            for (const { t, view } of chunks) {
                 out.write('\n\n');
-                out.write(lines.join('\n') + '\n', t.node);
+                out.write(renderPython('timesync/datatype.njk', view), t.node);
             }
         }
         return { types };

@@ -1,6 +1,8 @@
 import type { ComponentView, ConnectorView, DataTypeResult } from '@maa/generator-core';
 import { GenerationError } from '@maa/generator-core/node';
-import { Imports, indent, primitiveDefault, typeBySimpleName, typeRef } from '../behavior/common.js';
+import { Imports, primitiveDefault, typeBySimpleName, typeRef } from '../behavior/common.js';
+import { renderLines } from '../python/templates.js';
+import type { ModeTransitionView, ModesView } from './views.js';
 import { PythonTranslator, isTypeDecl, pyName, type Node } from '../python/expressions.js';
 
 const str = (s: string): string => JSON.stringify(s);
@@ -52,33 +54,19 @@ function guardTranslator(c: ComponentView, datatypes: DataTypeResult, imports: I
     });
 }
 
-/**
- * The class body of a mode component (maa_timesync.ModeComponent): its modes, the
- * subcomponents and connectors of each, and `mode_transition`, the transitions in declaration
- * order. Undefined for components without a mode automaton.
- */
-export function modeClassLines(c: ComponentView, datatypes: DataTypeResult, imports: Imports): string[] | undefined {
+/** The view of a mode component's mode automaton (templates/timesync/modes.njk); undefined for components without one. */
+export function modesView(c: ComponentView, datatypes: DataTypeResult, imports: Imports): ModesView | undefined {
     const m = c.modes;
     if (!m) return undefined;
     imports.add('maa_timesync.modes', 'ModeComponent');
-    const lines = [
-        `    MODES = ${tuple(m.modes.map((x) => str(x.name)))}`,
-        `    INITIAL_MODE = ${str(m.initial)}`,
-        `    MODE_TIMING = ${str(m.timing)}`,
-        '    MODE_SUBCOMPONENTS: ClassVar[Mapping[str, tuple[str, ...]]] = {',
-        ...indent(m.modes.map((x) => `${str(x.name)}: ${tuple(x.subcomponents.map(str))},`), 8),
-        '    }',
-        '    MODE_CONNECTORS: ClassVar[Mapping[str, tuple[Connector, ...]]] = {',
-        ...indent(m.modes.map((x) => `${str(x.name)}: ${tuple(x.connectors.map(connectorTuple))},`), 8),
-        '    }',
-        '',
-        '    @classmethod',
-        '    def mode_transition(cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]) -> str | None:'
-    ];
     imports.add('maa_timesync.runtime', 'Connector');
-    const body = modeTransitionBody(c, datatypes, imports, 'maa_timesync.modes');
-    lines.push(...indent(body, 8));
-    return lines;
+    return {
+        modes: m.modes.map((x) => x.name),
+        initial: m.initial,
+        timing: m.timing,
+        perMode: m.modes.map((x) => ({ name: x.name, subcomponents: x.subcomponents, connectors: x.connectors.map(connectorTuple) })),
+        body: modeTransitionBody(c, datatypes, imports, 'maa_timesync.modes')
+    };
 }
 
 /**
@@ -87,22 +75,25 @@ export function modeClassLines(c: ComponentView, datatypes: DataTypeResult, impo
  * `port_value` (maa_timesync.modes, maa_ros2.modes).
  */
 export function modeTransitionBody(c: ComponentView, datatypes: DataTypeResult, imports: Imports, rte: string): string[] {
+    return renderLines('timesync/mode-transition.njk', modeTransitionView(c, datatypes, imports, rte));
+}
+
+/** The view of `mode_transition`'s body (templates/timesync/mode-transition.njk). */
+export function modeTransitionView(c: ComponentView, datatypes: DataTypeResult, imports: Imports, rte: string): ModeTransitionView {
     const m = c.modes;
-    if (!m) return ['del mode, trigger, inputs, params', 'return None'];
+    if (!m) return { unused: ['mode', 'trigger', 'inputs', 'params'], transitions: [] };
     const tr = guardTranslator(c, datatypes, imports, rte);
-    const body: string[] = [];
-    for (const t of m.transitions) {
-        const conds = [`mode == ${str(t.source)}`];
+    const transitions = m.transitions.map((t) => {
+        const conditions = [`mode == ${str(t.source)}`];
         if (m.timing !== 'sync') {
             // Event-based: a message triggers the transitions of its port; a tick those with `Tick` or no event.
-            conds.push(t.trigger.kind === 'port' ? `trigger == ${str(t.trigger.port)}` : 'trigger == ""');
+            conditions.push(t.trigger.kind === 'port' ? `trigger == ${str(t.trigger.port)}` : 'trigger == ""');
         }
-        if (t.guard) conds.push(parenthesized(tr.expr(t.guard as Node)));
-        body.push(`if ${conds.join(' and ')}:`, `    return ${str(t.target)}`);
-    }
-    const used = body.join('\n');
+        if (t.guard) conditions.push(parenthesized(tr.expr(t.guard as Node)));
+        return { conditions, target: t.target };
+    });
+    // (the names in the statements as written, `return "<target>"` included)
+    const used = transitions.map((t) => `if ${t.conditions.join(' and ')}:\n    return ${str(t.target)}`).join('\n');
     const unused = ['mode', 'trigger', 'inputs', 'params'].filter((v) => !new RegExp(`\\b${v}\\b`).test(used));
-    if (unused.length > 0) body.unshift(`del ${unused.join(', ')}`);
-    body.push('return None');
-    return body;
+    return { unused, transitions };
 }
