@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { modeActivity, parseAutomatonStates } from '../src/simulate/states.js';
+import { modeActivity } from '../src/diagram/schema.js';
+import { parseAutomatonStates } from '../src/simulate/states.js';
 
 // The modes of mode components arrive like automaton states (both platforms publish them on
 // /maa/automaton_states under the node path of the component's instance).

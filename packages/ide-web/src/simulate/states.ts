@@ -29,18 +29,3 @@ export function parseAutomatonStates(
     }
     return result;
 }
-
-/**
- * The live state of a decomposed component with a mode automaton is its current mode: both
- * platforms publish it on `/maa/automaton_states` like an automaton's state, under the node path
- * of the component's instance (`/gearbox` for the root `gear.Gearbox`, `/selector_pair/b` for
- * instance `b`), so {@link parseAutomatonStates} maps it to that instance path.
- *
- * How an element of the C&C diagram declared in a mode (a subcomponent or connector with
- * `mode`) relates to the current mode of the component that declares it: `active` in that mode,
- * `inactive` in another one, `none` for elements outside modes or without a live mode.
- */
-export function modeActivity(elementMode: string | undefined, currentMode: string | undefined): 'active' | 'inactive' | 'none' {
-    if (!elementMode || !currentMode) return 'none';
-    return elementMode === currentMode ? 'active' : 'inactive';
-}
