@@ -166,12 +166,13 @@ describe('maa-gen generate', () => {
     expect(readFileSync(w.path('out/alpha/components/Ctrl.py'), 'utf8')).toBe(
       'class Ctrl:\n    distance = None  # in int\n    mode = None  # out Mode\n# behavior: behavior-generator automaton\n',
     );
-    const trace = JSON.parse(readFileSync(w.path('out/alpha/.maa-trace.json'), 'utf8')) as { files: Array<{ path: string; traces: Array<{ lines: number[]; element: { file: string; type: string } }> }> };
+    // The trace file's format is @maa/protocol's TraceFile: generated lines 0-based, both ends inclusive.
+    const trace = JSON.parse(readFileSync(w.path('out/alpha/.maa-trace.json'), 'utf8')) as { files: Array<{ path: string; traces: Array<{ lines: { first: number; last: number }; element: { file: string; type: string } }> }> };
     const ctrl = trace.files.find((f) => f.path === 'components/Ctrl.py')!;
-    expect(ctrl.traces.map((t) => `${t.lines.join('-')} ${t.element.type} ${t.element.file}`)).toEqual([
-      '1-3 ComponentType robot/Ctrl.arc',
+    expect(ctrl.traces.map((t) => `${t.lines.first}-${t.lines.last} ${t.element.type} ${t.element.file}`)).toEqual([
+      '0-2 ComponentType robot/Ctrl.arc',
+      '1-1 Port robot/Ctrl.arc',
       '2-2 Port robot/Ctrl.arc',
-      '3-3 Port robot/Ctrl.arc',
     ]);
     // Again: nothing changes, the user file is kept.
     const again = await runCli(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out'], w.dir);

@@ -1,5 +1,6 @@
 import { existsSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
+import { traceFileContract } from '@maa/protocol';
 import { afterEach, describe, expect, test } from 'vitest';
 import { GenerateInputError, TRACE_FILE, type GenerateResult } from '../src/node.js';
 import { MANIFESTS, MODELS, snapshot, Workspace } from './test-generators.js';
@@ -85,33 +86,30 @@ describe('the generation pipeline', () => {
 });
 
 describe('the trace file', () => {
-    test('maps generated line ranges to model elements (file, range, AST path)', async () => {
+    test('maps generated line ranges to model elements (file, range, AST path), in @maa/protocol\'s format (0-based)', async () => {
         const w = workspace();
         await w.generate({ platforms: ['alpha'] });
-        const trace = JSON.parse(readFileSync(w.out(`alpha/${TRACE_FILE}`), 'utf8')) as {
-            version: number; application: string; platform: string; rootComponent: string; modelRoot: string;
-            generators: Array<{ name: string }>;
-            files: Array<{ path: string; generator: string; userFile: boolean; sha256: string; lines: number;
-                traces: Array<{ lines: [number, number]; generator: string; element: { file: string; range: number[]; path: string; type: string; name?: string } }> }>;
-        };
-        expect(trace).toMatchObject({ version: 1, application: 'Demo', platform: 'alpha', rootComponent: 'robot.Robot', modelRoot: '../../models' });
+        const trace = traceFileContract.parse(JSON.parse(readFileSync(w.out(`alpha/${TRACE_FILE}`), 'utf8')), TRACE_FILE);
+        expect(trace).toMatchObject({ version: 2, application: 'Demo', platform: 'alpha', rootComponent: 'robot.Robot', modelRoot: '../../models' });
         expect(trace.generators.map((g) => g.name)).toEqual(['t.Components', 't.Automata', 't.DataTypes']);
         const ctrl = trace.files.find((f) => f.path === 'components/ctrl.py')!;
         expect(ctrl.generator).toBe('t.Components');
         expect(ctrl.lines).toBe(8);
-        const short = ctrl.traces.map((t) => `${t.lines[0]}-${t.lines[1]} ${t.element.type} ${t.element.name ?? ''} ${t.element.file}:${t.element.range[0]}`);
+        // Generated lines and model positions are 0-based; a range's end is exclusive.
+        const short = ctrl.traces.map((t) => `${t.lines.first}-${t.lines.last} ${t.element.type} ${t.element.name ?? ''} ${t.element.file}:${t.element.range!.start.line}`);
         expect(short).toEqual([
-            '1-4 ComponentType Ctrl robot/Ctrl.arc:5',
-            '3-3 Port distance robot/Ctrl.arc:6',
-            '4-4 Port mode robot/Ctrl.arc:7'
+            '0-3 ComponentType Ctrl robot/Ctrl.arc:4',
+            '2-2 Port distance robot/Ctrl.arc:5',
+            '3-3 Port mode robot/Ctrl.arc:6'
         ]);
+        expect(ctrl.traces[1]!.element.range).toEqual({ start: { line: 5, character: 7 }, end: { line: 5, character: 22 } });
         expect(ctrl.traces[1]!.element.path).toMatch(/^\/component\/body\/elements@\d+\/ports@0$/);
         const automaton = trace.files.find((f) => f.path === 'behaviors/ctrl_automaton.py')!;
-        expect(automaton.traces.map((t) => `${t.lines[0]} ${t.element.name} ${t.generator}`)).toEqual(['3 Idle t.Automata', '4 Busy t.Automata']);
+        expect(automaton.traces.map((t) => `${t.lines.first} ${t.element.name} ${t.generator}`)).toEqual(['2 Idle t.Automata', '3 Busy t.Automata']);
         const filter = trace.files.find((f) => f.path === 'components/filter.py')!;
         expect(filter.traces.some((t) => t.element.type === 'ComputeBlock')).toBe(true);
         const types = trace.files.find((f) => f.path === 'types.py')!;
-        expect(types.traces.map((t) => `${t.lines.join('-')} ${t.element.type} ${t.element.file}`)).toEqual(['2-4 CDEnum robot/types/Types.cd']);
+        expect(types.traces.map((t) => `${t.lines.first}-${t.lines.last} ${t.element.type} ${t.element.file}`)).toEqual(['1-3 CDEnum robot/types/Types.cd']);
         expect(trace.files.find((f) => f.path === 'user/sensor_impl.py')!.userFile).toBe(true);
     });
 });

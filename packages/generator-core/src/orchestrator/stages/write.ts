@@ -1,6 +1,7 @@
 import path from 'node:path';
 import { AstUtils, type AstNode, type LangiumDocument } from 'langium';
 import type { HostLanguageServices } from '@maa/language-adl';
+import { TRACE_FORMAT_VERSION, type Trace, type TraceElement, type TraceFile } from '@maa/protocol';
 import type { PlatformSelection } from '../../app/app-checks.js';
 import type { PlatformInfo } from '../../generators/types.js';
 import type { FinishedFile } from '../../output/file-builder.js';
@@ -87,7 +88,12 @@ function platformResult(plan: WritePlan, output: PlatformOutput): PlatformResult
     };
 }
 
-/** The trace file: generated line ranges -> model elements (file relative to the model root, range, AST path). */
+/**
+ * The trace file (`@maa/protocol`'s TraceFile, format version 2): generated lines -> model
+ * elements (file relative to the model root, range, AST path). Positions follow the protocol's
+ * one convention, LSP's: lines and characters 0-based, a range's end exclusive (Langium's CST
+ * range as it is), generated line spans 0-based with both ends inclusive.
+ */
 export function traceFile(
     services: HostLanguageServices, modelRoot: string, outDir: string, platform: PlatformInfo, files: readonly FinishedFile[],
     selection: PlatformSelection, instances: ReadonlyMap<string, GeneratorInstance>
@@ -95,7 +101,7 @@ export function traceFile(
     const locator = services.Arc.workspace.AstNodeLocator;
     const relRoot = path.relative(outDir, modelRoot).split(path.sep).join('/') || '.';
     const docs = new Map<AstNode, LangiumDocument>();
-    const element = (node: AstNode) => {
+    const element = (node: AstNode): TraceElement => {
         const root = AstUtils.findRootNode(node);
         let doc = docs.get(root);
         if (!doc) docs.set(root, (doc = AstUtils.getDocument(node)));
@@ -103,13 +109,13 @@ export function traceFile(
         const name = (node as { name?: unknown }).name;
         return {
             file: doc.uri.scheme === 'file' ? path.relative(modelRoot, doc.uri.fsPath).split(path.sep).join('/') : doc.uri.toString(),
-            range: r ? [r.start.line + 1, r.start.character + 1, r.end.line + 1, r.end.character + 1] : null,
+            range: r ? { start: { line: r.start.line, character: r.start.character }, end: { line: r.end.line, character: r.end.character } } : null,
             path: locator.getAstNodePath(node),
             type: node.$type,
             ...(typeof name === 'string' ? { name } : {})
         };
     };
-    const generators = selection.references
+    const generators: TraceFile['generators'] = selection.references
         .filter((r, i, all) => all.findIndex((q) => q.generator === r.generator) === i && instances.has(r.generator.manifest.name))
         .map((r) => ({
             name: r.generator.manifest.name,
@@ -117,8 +123,8 @@ export function traceFile(
             package: r.generator.source.packageName,
             version: r.generator.source.packageVersion
         }));
-    const trace = {
-        version: 1,
+    const trace: TraceFile = {
+        version: TRACE_FORMAT_VERSION,
         application: platform.application,
         platform: platform.platform,
         rootComponent: platform.rootComponent,
@@ -130,7 +136,8 @@ export function traceFile(
             userFile: f.userFile,
             sha256: sha256(f.content),
             lines: f.content.length === 0 ? 0 : f.content.split('\n').length - (f.content.endsWith('\n') ? 1 : 0),
-            traces: f.traces.map((t) => ({ lines: [t.startLine, t.endLine], generator: t.generator, element: element(t.element) }))
+            // FileBuilder counts lines from 1.
+            traces: f.traces.map((t): Trace => ({ lines: { first: t.startLine - 1, last: t.endLine - 1 }, generator: t.generator, element: element(t.element) }))
         }))
     };
     return `${JSON.stringify(trace, null, 1)}\n`;
