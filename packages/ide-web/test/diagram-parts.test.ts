@@ -13,14 +13,24 @@ const URI = 'file:///workspace/toast/ToastServiceRobot.arc';
 /** A C&C diagram of `component` with instance `ctrl` (a `toast.Controller`) and port paths. */
 function cc(component: string, ctrlType = 'toast.Controller'): SchemaElement {
     return {
-        type: 'graph', id: 'g', component,
+        type: 'graph',
+        id: 'g',
+        component,
         children: [
             {
-                type: 'node:component', id: 'root', instancePath: '', componentType: component, trace: `${URI}?0:0-20:0`,
+                type: 'node:component',
+                id: 'root',
+                instancePath: '',
+                componentType: component,
+                trace: `${URI}?0:0-20:0`,
                 children: [
                     { type: 'port', id: 'root.p.distance', portPath: 'distance', trace: `${URI}?2:4-2:20` },
                     {
-                        type: 'node:component', id: 'ctrl', instancePath: 'ctrl', componentType: ctrlType, trace: `${URI}?5:4-5:30`,
+                        type: 'node:component',
+                        id: 'ctrl',
+                        instancePath: 'ctrl',
+                        componentType: ctrlType,
+                        trace: `${URI}?5:4-5:30`,
                         children: [
                             { type: 'port', id: 'ctrl.p.armCmd', portPath: 'ctrl.armCmd', trace: `${URI}?5:10-5:16` },
                             { type: 'label:text', id: 'ctrl.label', trace: `${URI}?5:4-5:30` },
@@ -35,8 +45,18 @@ function cc(component: string, ctrlType = 'toast.Controller'): SchemaElement {
 /** The C&C diagram of `toast.Controller` shown on its own (no instances of its own). */
 function controllerAlone(): SchemaElement {
     return {
-        type: 'graph', id: 'g2', component: 'toast.Controller',
-        children: [{ type: 'node:component', id: 'c', instancePath: '', componentType: 'toast.Controller', children: [{ type: 'port', id: 'c.p', portPath: 'armCmd' }] }],
+        type: 'graph',
+        id: 'g2',
+        component: 'toast.Controller',
+        children: [
+            {
+                type: 'node:component',
+                id: 'c',
+                instancePath: '',
+                componentType: 'toast.Controller',
+                children: [{ type: 'port', id: 'c.p', portPath: 'armCmd' }],
+            },
+        ],
     };
 }
 
@@ -45,7 +65,11 @@ describe('diagram live layer', () => {
         const live = new LiveLayer();
         expect(live.knownPortPaths()).toEqual([]);
         live.recordModel(cc('toast.ToastServiceRobot'), 'maa-cc', 'toast.ToastServiceRobot');
-        live.recordModel({ type: 'graph', id: 'a', children: [{ type: 'port', id: 'x', portPath: 'ignored' }] }, 'maa-automaton', 'toast.Controller');
+        live.recordModel(
+            { type: 'graph', id: 'a', children: [{ type: 'port', id: 'x', portPath: 'ignored' }] },
+            'maa-automaton',
+            'toast.Controller',
+        );
         expect(live.knownPortPaths()).toEqual(['distance', 'ctrl.armCmd']);
         expect(live.knownInstancePaths()).toEqual(['', 'ctrl']);
         live.recordModel(controllerAlone(), 'maa-cc', 'toast.Controller');
@@ -56,7 +80,12 @@ describe('diagram live layer', () => {
         const live = new LiveLayer();
         live.recordModel(cc('toast.ToastServiceRobot'), 'maa-cc', 'toast.ToastServiceRobot');
         expect(live.liveValue('ctrl.armCmd')).toBeUndefined();
-        live.setLiveValues(new Map([['ctrl.arm_cmd', '0.5'], ['distance', '3']]));
+        live.setLiveValues(
+            new Map([
+                ['ctrl.arm_cmd', '0.5'],
+                ['distance', '3'],
+            ]),
+        );
         expect(live.liveValue('ctrl.armCmd')).toBe('0.5');
         expect(live.liveValue('distance')).toBe('3');
         expect(live.liveValue('armCmd')).toBeUndefined();
@@ -71,7 +100,12 @@ describe('diagram live layer', () => {
         const live = new LiveLayer();
         live.recordModel(cc('toast.ToastServiceRobot'), 'maa-cc', 'toast.ToastServiceRobot');
         expect(live.activeStateOf('ctrl')).toBeUndefined();
-        live.setActiveStates(new Map([['ctrl', 'Toasting'], ['', 'Normal']]));
+        live.setActiveStates(
+            new Map([
+                ['ctrl', 'Toasting'],
+                ['', 'Normal'],
+            ]),
+        );
         expect(live.activeStateOf('ctrl')).toBe('Toasting');
         expect(live.activeStateOf('')).toBe('Normal');
         expect(live.activeStateOf(undefined)).toBeUndefined();
@@ -128,7 +162,11 @@ describe('diagram selection', () => {
         const got: string[][] = [];
         const own = new WeakSet<Action>();
         let schema: SchemaElement | undefined;
-        const handler = selectionHandler(() => schema, (act) => own.has(act), (t) => got.push(t));
+        const handler = selectionHandler(
+            () => schema,
+            (act) => own.has(act),
+            (t) => got.push(t),
+        );
         handler.handle(SelectAction.create({ selectedElementsIDs: ['ctrl'] }));
         expect(got).toEqual([]); // no model yet
         schema = cc('toast.ToastServiceRobot');
@@ -145,7 +183,9 @@ describe('diagram selection', () => {
 
 describe('diagram SVG export', () => {
     it('makes a standalone document', () => {
-        expect(standaloneSvg('<svg width="1"></svg>')).toBe('<?xml version="1.0" encoding="UTF-8" standalone="no"?>\n<svg xmlns="http://www.w3.org/2000/svg" width="1"></svg>');
+        expect(standaloneSvg('<svg width="1"></svg>')).toBe(
+            '<?xml version="1.0" encoding="UTF-8" standalone="no"?>\n<svg xmlns="http://www.w3.org/2000/svg" width="1"></svg>',
+        );
         const done = '<?xml version="1.0"?><svg xmlns="http://www.w3.org/2000/svg"/>';
         expect(standaloneSvg(done)).toBe(done);
     });

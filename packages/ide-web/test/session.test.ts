@@ -112,7 +112,13 @@ describe('simulation session state machine', () => {
     });
 
     it('is busy exactly while a request is open', () => {
-        expect(STATES.filter(([, s]) => isBusy(s)).map(([n]) => n)).toEqual(['starting', 'adopted starting', 'cancelling (stop open)', 'cancelling (stop answered)', 'stopping']);
+        expect(STATES.filter(([, s]) => isBusy(s)).map(([n]) => n)).toEqual([
+            'starting',
+            'adopted starting',
+            'cancelling (stop open)',
+            'cancelling (stop answered)',
+            'stopping',
+        ]);
     });
 
     it('says why it is idle', () => {

@@ -7,9 +7,14 @@ import { parseAutomatonStates } from '../src/simulate/states.js';
 describe('modes as live states', () => {
     it('map the mode of the root and of a nested mode component to their instance paths', () => {
         const gearbox = parseAutomatonStates({ data: JSON.stringify({ '/gearbox': 'Second', '/gearbox/s10': 'Idle' }) }, 'gear.Gearbox');
-        expect([...gearbox]).toEqual([['', 'Second'], ['s10', 'Idle']]);
+        expect([...gearbox]).toEqual([
+            ['', 'Second'],
+            ['s10', 'Idle'],
+        ]);
         const pair = parseAutomatonStates(
-            { data: JSON.stringify({ '/selector_pair/a': 'Slow', '/selector_pair/b': 'Fast' }) }, 'pick.SelectorPair', ['a', 'b', 'a.g1', 'b.g10']
+            { data: JSON.stringify({ '/selector_pair/a': 'Slow', '/selector_pair/b': 'Fast' }) },
+            'pick.SelectorPair',
+            ['a', 'b', 'a.g1', 'b.g10'],
         );
         expect(pair.get('a')).toBe('Slow');
         expect(pair.get('b')).toBe('Fast');

@@ -2,7 +2,17 @@
 import { ShapeView, svg, type RenderingContext } from 'sprotty';
 import type { ComponentNode } from './model.js';
 import { modeActivity } from './schema.js';
-import { BADGE_TEXT, boxedText, declaringMode, hasBadgeLabel, hasOwnLabels, severityClasses, textWidth, type VNode, type ViewState } from './view-parts.js';
+import {
+    BADGE_TEXT,
+    boxedText,
+    declaringMode,
+    hasBadgeLabel,
+    hasOwnLabels,
+    severityClasses,
+    textWidth,
+    type VNode,
+    type ViewState,
+} from './view-parts.js';
 
 type Handlers = Record<string, (e: Event) => void>;
 
@@ -14,12 +24,17 @@ function kindOf(node: Readonly<ComponentNode>): string {
 /** Title, body and, when the server sent no labels, name and type. */
 function bodyParts(node: Readonly<ComponentNode>, w: number, h: number): VNode[] {
     const parts: VNode[] = [
-        svg('title', {}, `${node.name ?? node.id}: ${node.componentType ?? ''}${node.variationPoint ? ` (variation point: varif (${node.variationPoint}))` : ''}`),
+        svg(
+            'title',
+            {},
+            `${node.name ?? node.id}: ${node.componentType ?? ''}${node.variationPoint ? ` (variation point: varif (${node.variationPoint}))` : ''}`,
+        ),
         svg('rect', { class: { 'maa-component-body': true }, x: 0, y: 0, width: w, height: h, rx: 6, ry: 6 }),
     ];
     if (!hasOwnLabels(node)) {
         parts.push(svg('text', { class: { 'maa-component-name': true }, x: 8, y: 16 }, node.name ?? ''));
-        if (node.componentType) parts.push(svg('text', { class: { 'maa-component-type': true }, x: 8, y: 30 }, node.componentType.split('.').pop() ?? ''));
+        if (node.componentType)
+            parts.push(svg('text', { class: { 'maa-component-type': true }, x: 8, y: 30 }, node.componentType.split('.').pop() ?? ''));
     }
     return parts;
 }
@@ -88,7 +103,8 @@ export function componentView(state: ViewState): new () => ShapeView {
             if (active) parts.push(boxedText({ x: w / 2, y: h - 10 }, `▶ ${active}`, 'maa-current-state', 'maa-state-active'));
             // A decomposed component's live state is its current mode (mode automata).
             const currentMode = node.composed ? state.activeStateOf(node.instancePath) : undefined;
-            if (currentMode) parts.push(boxedText({ x: w / 2, y: h - 10 }, `▶ mode ${currentMode}`, 'maa-current-mode', 'maa-mode-current'));
+            if (currentMode)
+                parts.push(boxedText({ x: w / 2, y: h - 10 }, `▶ mode ${currentMode}`, 'maa-current-mode', 'maa-mode-current'));
             if (node.composed && !isRoot && node.instancePath) parts.push(expandToggle(node.instancePath, !!node.expanded, w, state));
             const inMode = modeActivity(node.mode, node.mode ? declaringMode(state, node.parent) : undefined);
             const vnode = svg(

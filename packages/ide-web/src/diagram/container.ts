@@ -36,7 +36,11 @@ export interface DiagramContainer {
 }
 
 /** A container rendering into the element with id `baseDiv` (hidden and popup divs next to it). */
-export function createDiagramContainer(baseDiv: string, views: ReturnType<typeof createViews>, selectionHandler: IActionHandler): DiagramContainer {
+export function createDiagramContainer(
+    baseDiv: string,
+    views: ReturnType<typeof createViews>,
+    selectionHandler: IActionHandler,
+): DiagramContainer {
     const diagramModule = new ContainerModule((bind, unbind, isBound, rebind) => {
         const context = { bind, unbind, isBound, rebind };
         bind(TYPES.ModelSource).to(MaaDiagramProxy).inSingletonScope();
@@ -50,7 +54,9 @@ export function createDiagramContainer(baseDiv: string, views: ReturnType<typeof
         configureModelElement(context, 'edge:transition', TransitionEdge, views.TransitionView, fixedEdge);
         // Labels stand where the server's layout put them: without the edge-layout feature, Sprotty
         // would re-place the transition labels (ELK edge labels) at the middle of their edges.
-        configureModelElement(context, 'label:text', SLabelImpl, views.LabelView, { disable: [moveFeature, popupFeature, edgeLayoutFeature] });
+        configureModelElement(context, 'label:text', SLabelImpl, views.LabelView, {
+            disable: [moveFeature, popupFeature, edgeLayoutFeature],
+        });
         configureModelElement(context, 'comp:default', SCompartmentImpl, views.CompartmentView, fixed);
         configureModelElement(context, 'node:generic', SNodeImpl, views.GenericNodeView, fixed);
         configureModelElement(context, 'edge:generic', SEdgeImpl, views.GenericEdgeView, fixedEdge);

@@ -2,7 +2,18 @@
 import { PolylineEdgeView, setClass, svg, type IViewArgs, type RenderingContext, type SEdgeImpl } from 'sprotty';
 import type { ConnectorEdge, TransitionEdge } from './model.js';
 import { modeActivity } from './schema.js';
-import { arrowHead, connectorPortPath, declaringMode, hasOwnLabels, polylineMidpoint, severityClasses, textWidth, type Point, type VNode, type ViewState } from './view-parts.js';
+import {
+    arrowHead,
+    connectorPortPath,
+    declaringMode,
+    hasOwnLabels,
+    polylineMidpoint,
+    severityClasses,
+    textWidth,
+    type Point,
+    type VNode,
+    type ViewState,
+} from './view-parts.js';
 
 export function connectorView(state: ViewState): new () => PolylineEdgeView {
     return class ConnectorView extends PolylineEdgeView {
@@ -29,7 +40,14 @@ export function connectorView(state: ViewState): new () => PolylineEdgeView {
                         svg(
                             'g',
                             { class: { 'maa-value-label': true }, transform: `translate(${mid.p.x},${mid.p.y - 9})` },
-                            svg('rect', { x: -(textWidth(value, 6.2) + 8) / 2, y: -7, width: textWidth(value, 6.2) + 8, height: 14, rx: 3, ry: 3 }),
+                            svg('rect', {
+                                x: -(textWidth(value, 6.2) + 8) / 2,
+                                y: -7,
+                                width: textWidth(value, 6.2) + 8,
+                                height: 14,
+                                rx: 3,
+                                ry: 3,
+                            }),
                             svg('text', { class: { 'maa-value': true }, x: 0, y: 4, 'text-anchor': 'middle' }, value),
                         ),
                     );
@@ -56,7 +74,14 @@ export function transitionView(): new () => PolylineEdgeView {
             const t = edge as TransitionEdge;
             if (t.label && !hasOwnLabels(edge)) {
                 const mid = polylineMidpoint(segments);
-                if (mid) out.push(svg('text', { class: { 'maa-transition-label': true }, x: mid.p.x, y: mid.p.y - 5, 'text-anchor': 'middle' }, t.label));
+                if (mid)
+                    out.push(
+                        svg(
+                            'text',
+                            { class: { 'maa-transition-label': true }, x: mid.p.x, y: mid.p.y - 5, 'text-anchor': 'middle' },
+                            t.label,
+                        ),
+                    );
             }
             return out;
         }

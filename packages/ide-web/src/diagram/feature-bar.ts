@@ -2,7 +2,14 @@
  * The feature bar above the C&C diagram of a variable component (configuration.ts): "All
  * variation points" and a checkbox per feature; hidden for every other diagram.
  */
-import { chooseFeature, configurationStatus, featureChecked, showAll, type FeatureSelection, type GraphFeatureInfo } from './configuration.js';
+import {
+    chooseFeature,
+    configurationStatus,
+    featureChecked,
+    showAll,
+    type FeatureSelection,
+    type GraphFeatureInfo,
+} from './configuration.js';
 
 function checkbox(text: string, testid: string, checked: boolean, title: string, onChange: (checked: boolean) => void): HTMLLabelElement {
     const label = document.createElement('label');
@@ -35,13 +42,21 @@ export class FeatureBar {
             return;
         }
         const items: HTMLElement[] = [
-            checkbox('All variation points', 'diagram-features-all', selection.all, 'Show every variation point (varif) with its condition', (all) =>
-                this.select(showAll(selection, all)),
+            checkbox(
+                'All variation points',
+                'diagram-features-all',
+                selection.all,
+                'Show every variation point (varif) with its condition',
+                (all) => this.select(showAll(selection, all)),
             ),
         ];
         for (const f of info.features) {
-            const box = checkbox(f, `diagram-feature-${f}`, featureChecked(info, selection, f), `Feature ${f}: checked shows a configuration with it, unchecked one without`, (value) =>
-                this.select(chooseFeature(selection, f, value)),
+            const box = checkbox(
+                f,
+                `diagram-feature-${f}`,
+                featureChecked(info, selection, f),
+                `Feature ${f}: checked shows a configuration with it, unchecked one without`,
+                (value) => this.select(chooseFeature(selection, f, value)),
             );
             if (selection.all) box.classList.add('maa-diagram-feature-inactive');
             items.push(box);

@@ -28,7 +28,16 @@ export function labelView(): new () => SLabelView {
             const fullText = (label as unknown as { fullText?: unknown }).fullText;
             const full = typeof fullText === 'string' && fullText !== label.text ? fullText : undefined;
             if (full === undefined) return svg('text', { class: { 'sprotty-label': true, 'maa-label': true, [cls]: true }, y }, label.text);
-            return svg('text', { class: { 'sprotty-label': true, 'maa-label': true, 'maa-label-shortened': true, [cls]: true }, y, 'data-full-text': full }, svg('title', {}, full), label.text);
+            return svg(
+                'text',
+                {
+                    class: { 'sprotty-label': true, 'maa-label': true, 'maa-label-shortened': true, [cls]: true },
+                    y,
+                    'data-full-text': full,
+                },
+                svg('title', {}, full),
+                label.text,
+            );
         }
     };
 }

@@ -55,7 +55,10 @@ export class LiveLayer {
     /** The active state or mode of an instance of the shown diagram (`""`: the shown component). */
     activeStateOf(instancePath: string | undefined): string | undefined {
         if (instancePath === undefined || this.states.size === 0) return undefined;
-        return this.states.get(instancePath) ?? (this.prefix ? this.states.get(instancePath ? `${this.prefix}.${instancePath}` : this.prefix) : undefined);
+        return (
+            this.states.get(instancePath) ??
+            (this.prefix ? this.states.get(instancePath ? `${this.prefix}.${instancePath}` : this.prefix) : undefined)
+        );
     }
 
     /** The active state of the automaton of `componentType` (an instance of the type that has one). */

@@ -3,7 +3,14 @@
  * feature bars, the requests for models and what arrives, and the view the shell and the
  * simulate panel drive (contracts.ts `DiagramView`, its live layer `DiagramLiveLayer`).
  */
-import { RequestExportSvgAction, RequestModelAction, SelectAction, SelectAllAction, type Action, type ExportSvgAction } from 'sprotty-protocol';
+import {
+    RequestExportSvgAction,
+    RequestModelAction,
+    SelectAction,
+    SelectAllAction,
+    type Action,
+    type ExportSvgAction,
+} from 'sprotty-protocol';
 import type { IActionDispatcher } from 'sprotty';
 import type { DiagramHost, DiagramTarget, DiagramView, Disposable, TextPosition } from '../contracts.js';
 import { Camera } from './camera.js';
@@ -51,10 +58,17 @@ export class MountedDiagram implements MaaDiagramView {
     private redrawScheduled = false;
     private disposed = false;
 
-    constructor(private readonly container: HTMLElement, private readonly host: DiagramHost) {
+    constructor(
+        private readonly container: HTMLElement,
+        private readonly host: DiagramHost,
+    ) {
         container.dataset['testid'] = 'diagram';
         container.classList.add('maa-diagram');
-        const handler = selectionHandler(() => this.schema, (a) => this.programmatic.has(a), (traces) => this.userSelected(traces));
+        const handler = selectionHandler(
+            () => this.schema,
+            (a) => this.programmatic.has(a),
+            (traces) => this.userSelected(traces),
+        );
         ({ proxy: this.proxy, dispatcher: this.dispatcher } = createDiagramContainer(this.baseDiv, createViews(this.viewState()), handler));
         this.camera = new Camera(this.dispatcher, (action) => this.dispatch(action));
         this.toolbar = new Toolbar({
@@ -154,7 +168,9 @@ export class MountedDiagram implements MaaDiagramView {
             liveValue: (p) => this.live.liveValue(p),
             activeStateOf: (p) => this.live.activeStateOf(p),
             automatonActiveState: () =>
-                this.current?.diagramType === 'maa-automaton' ? this.live.activeStateForType((this.schema?.['component'] as string | undefined) ?? this.current.component) : undefined,
+                this.current?.diagramType === 'maa-automaton'
+                    ? this.live.activeStateForType((this.schema?.['component'] as string | undefined) ?? this.current.component)
+                    : undefined,
             toggleExpanded: (path) => {
                 if (!this.current) return;
                 this.memory.toggleExpanded(this.current, path);
@@ -184,14 +200,18 @@ export class MountedDiagram implements MaaDiagramView {
 
     /** The shell reveals the trace in its onSelect handler; without one, the diagram does. */
     private userSelected(traces: string[]): void {
+        const first = traces[0];
         if (this.selectHandlers.size > 0) for (const h of [...this.selectHandlers]) h(traces);
-        else this.host.revealTrace(traces[0]!);
+        else if (first !== undefined) this.host.revealTrace(first);
     }
 
     private updateBars(): void {
         this.toolbar.update(this.schema, this.current);
         const isCc = this.current?.diagramType === 'maa-cc';
-        this.featureBar.update(graphFeatureInfo(isCc ? this.schema : undefined), this.current ? this.memory.selectionOf(this.current) : undefined);
+        this.featureBar.update(
+            graphFeatureInfo(isCc ? this.schema : undefined),
+            this.current ? this.memory.selectionOf(this.current) : undefined,
+        );
     }
 
     private switchView(): void {
@@ -233,7 +253,11 @@ export class MountedDiagram implements MaaDiagramView {
     private modelArrived(root: SchemaElement, kind: string): void {
         this.schema = root;
         this.empty.hidden = true;
-        this.live.recordModel(root, (root['diagramType'] as string | undefined) ?? this.current?.diagramType, shownComponent(root, this.current));
+        this.live.recordModel(
+            root,
+            (root['diagramType'] as string | undefined) ?? this.current?.diagramType,
+            shownComponent(root, this.current),
+        );
         this.updateBars();
         if (kind === 'setModel') {
             if (this.fitPending) {

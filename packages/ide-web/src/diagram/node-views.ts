@@ -27,7 +27,14 @@ export function portView(state: ViewState): new () => ShapeView {
             const vnode = svg(
                 'g',
                 {
-                    class: { 'maa-port': true, [`maa-port-${dir}`]: true, 'maa-port-live': value !== undefined, 'maa-variable': !!port.variationPoint, selected: port.selected, mouseover: port.hoverFeedback },
+                    class: {
+                        'maa-port': true,
+                        [`maa-port-${dir}`]: true,
+                        'maa-port-live': value !== undefined,
+                        'maa-variable': !!port.variationPoint,
+                        selected: port.selected,
+                        mouseover: port.hoverFeedback,
+                    },
                     'data-port-path': port.portPath ?? '',
                 },
                 svg('title', {}, title),
@@ -51,7 +58,8 @@ export function stateView(state: ViewState): new () => ShapeView {
                 svg('title', {}, node.statePath ?? node.name ?? ''),
                 svg('rect', { class: { 'maa-state-body': true }, x: 0, y: 0, width: w, height: h, rx: 10, ry: 10 }),
             ];
-            if (!hasOwnLabels(node)) parts.push(svg('text', { class: { 'maa-state-name': true }, x: w / 2, y: 16, 'text-anchor': 'middle' }, node.name ?? ''));
+            if (!hasOwnLabels(node))
+                parts.push(svg('text', { class: { 'maa-state-name': true }, x: w / 2, y: 16, 'text-anchor': 'middle' }, node.name ?? ''));
             if (node.initial) {
                 parts.push(
                     svg(

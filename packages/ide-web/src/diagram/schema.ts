@@ -110,18 +110,27 @@ export function absoluteBounds(root: SchemaElement, id: string): Bounds | undefi
 
 /** Whether `inner` lies completely within `outer`. */
 export function boundsInside(inner: Bounds, outer: Bounds): boolean {
-    return inner.x >= outer.x && inner.y >= outer.y && inner.x + inner.width <= outer.x + outer.width && inner.y + inner.height <= outer.y + outer.height;
+    return (
+        inner.x >= outer.x &&
+        inner.y >= outer.y &&
+        inner.x + inner.width <= outer.x + outer.width &&
+        inner.y + inner.height <= outer.y + outer.height
+    );
 }
 
 /** The visible diagram area of a viewport (scroll in diagram coordinates, canvas in pixels). */
-export function visibleArea(viewport: { scroll: { x: number; y: number }; zoom: number }, canvas: { width: number; height: number }): Bounds {
+export function visibleArea(
+    viewport: { scroll: { x: number; y: number }; zoom: number },
+    canvas: { width: number; height: number },
+): Bounds {
     return { x: viewport.scroll.x, y: viewport.scroll.y, width: canvas.width / viewport.zoom, height: canvas.height / viewport.zoom };
 }
 
 /** Port paths of every `port` element. */
 export function portPathsOf(root: SchemaElement): string[] {
     const out: string[] = [];
-    for (const { el } of walkSchema(root)) if (el.type === 'port' && typeof el['portPath'] === 'string' && el['portPath']) out.push(el['portPath'] as string);
+    for (const { el } of walkSchema(root))
+        if (el.type === 'port' && typeof el['portPath'] === 'string' && el['portPath']) out.push(el['portPath'] as string);
     return out;
 }
 
@@ -138,7 +147,8 @@ export function instanceTypesOf(root: SchemaElement): Map<string, string> {
 
 /** The node of the shown component (instance path `""`), if any. */
 export function shownComponentNode(root: SchemaElement): SchemaElement | undefined {
-    for (const { el } of walkSchema(root)) if (el.type === 'node:component' && (el['instancePath'] === '' || el['instancePath'] === undefined)) return el;
+    for (const { el } of walkSchema(root))
+        if (el.type === 'node:component' && (el['instancePath'] === '' || el['instancePath'] === undefined)) return el;
     return undefined;
 }
 
@@ -162,7 +172,11 @@ export function stateActivity(statePath: string | undefined, active: string | un
 }
 
 /** The live value of a port path: exact key first, then by snake-case spelling (`ctrl.armCmd` ~ `ctrl.arm_cmd`). */
-export function lookupLiveValue(values: ReadonlyMap<string, string>, bySnake: ReadonlyMap<string, string>, portPath: string | undefined): string | undefined {
+export function lookupLiveValue(
+    values: ReadonlyMap<string, string>,
+    bySnake: ReadonlyMap<string, string>,
+    portPath: string | undefined,
+): string | undefined {
     if (!portPath) return undefined;
     return values.get(portPath) ?? bySnake.get(snakePath(portPath));
 }
@@ -186,7 +200,10 @@ export function snakePath(path: string): string {
  * and states are keyed by paths from the application's root; when the diagram shows a
  * subcomponent's type on its own, its paths are relative to this prefix.
  */
-export function instancePrefix(typeMaps: ReadonlyMap<string, ReadonlyMap<string, string>>, component: string | undefined): string | undefined {
+export function instancePrefix(
+    typeMaps: ReadonlyMap<string, ReadonlyMap<string, string>>,
+    component: string | undefined,
+): string | undefined {
     if (!component) return undefined;
     for (const [root, map] of typeMaps) {
         if (root === component) continue;

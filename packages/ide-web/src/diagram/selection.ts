@@ -10,7 +10,15 @@ import { walkSchema, type SchemaElement } from './schema.js';
 import { findInnermostElement, type TracedElement } from './trace.js';
 
 /** Element types that can be selected (labels and compartments select their parent). */
-const SELECTABLE_TYPES = new Set(['node:component', 'port', 'edge:connector', 'node:state', 'edge:transition', 'node:generic', 'edge:generic']);
+const SELECTABLE_TYPES = new Set([
+    'node:component',
+    'port',
+    'edge:connector',
+    'node:state',
+    'edge:transition',
+    'node:generic',
+    'edge:generic',
+]);
 
 /** The traces of the elements with these ids, in model order. */
 export function tracesOf(schema: SchemaElement, ids: ReadonlySet<string>): string[] {
@@ -23,7 +31,8 @@ export function tracesOf(schema: SchemaElement, ids: ReadonlySet<string>): strin
 export function elementAt(schema: SchemaElement, uri: string, position: TextPosition): string | undefined {
     const els: TracedElement[] = [];
     for (const { el, depth } of walkSchema(schema)) {
-        if (typeof el['trace'] === 'string' && el !== schema && SELECTABLE_TYPES.has(el.type)) els.push({ id: el.id, trace: el['trace'] as string, depth });
+        if (typeof el['trace'] === 'string' && el !== schema && SELECTABLE_TYPES.has(el.type))
+            els.push({ id: el.id, trace: el['trace'] as string, depth });
     }
     return findInnermostElement(els, uri, position)?.id;
 }
@@ -32,7 +41,11 @@ export function elementAt(schema: SchemaElement, uri: string, position: TextPosi
  * The handler of the user's `SelectAction`s: the traces of what was selected go to `onTraces`.
  * Selections the diagram made itself (`isOwn`) and empty ones are ignored.
  */
-export function selectionHandler(schema: () => SchemaElement | undefined, isOwn: (action: Action) => boolean, onTraces: (traces: string[]) => void): IActionHandler {
+export function selectionHandler(
+    schema: () => SchemaElement | undefined,
+    isOwn: (action: Action) => boolean,
+    onTraces: (traces: string[]) => void,
+): IActionHandler {
     return {
         handle: (action: Action): void => {
             const root = schema();

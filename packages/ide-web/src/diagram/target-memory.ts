@@ -17,7 +17,10 @@ export class TargetMemory {
     expandedOf(t: DiagramTarget): Set<string> {
         const k = targetKey(t);
         let s = this.expanded.get(k);
-        if (!s) this.expanded.set(k, (s = new Set()));
+        if (!s) {
+            s = new Set();
+            this.expanded.set(k, s);
+        }
         return s;
     }
 

@@ -81,7 +81,10 @@ export function rangeWithin(inner: TextRange, outer: TextRange): boolean {
 
 /** A size measure for choosing the innermost of several containing ranges. */
 function rangeSpan(r: TextRange): [number, number] {
-    return [r.end.line - r.start.line, r.end.line === r.start.line ? r.end.character - r.start.character : r.end.character + 1_000_000 - r.start.character];
+    return [
+        r.end.line - r.start.line,
+        r.end.line === r.start.line ? r.end.character - r.start.character : r.end.character + 1_000_000 - r.start.character,
+    ];
 }
 
 export interface TracedElement {

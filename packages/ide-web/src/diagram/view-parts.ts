@@ -93,7 +93,9 @@ export function arrowHead(segments: readonly Point[], cls: string): VNode[] {
     const p = segments[segments.length - 1]!;
     const q = segments[segments.length - 2]!;
     const angle = (Math.atan2(p.y - q.y, p.x - q.x) * 180) / Math.PI;
-    return [svg('path', { class: { [cls]: true }, d: 'M 0,0 L -9,-4.5 L -9,4.5 Z', transform: `translate(${p.x},${p.y}) rotate(${angle})` })];
+    return [
+        svg('path', { class: { [cls]: true }, d: 'M 0,0 L -9,-4.5 L -9,4.5 Z', transform: `translate(${p.x},${p.y}) rotate(${angle})` }),
+    ];
 }
 
 /** A text with a rounded background box, centred on a point. */

@@ -52,9 +52,7 @@ export function fitViewport(content: Bounds, canvas: { width: number; height: nu
     const fitting = Math.min(byWidth, (canvas.height - 2 * padding) / height);
     const clamp = (z: number): number => Math.min(maxZoom, Math.max(minZoom, Number.isFinite(z) && z > 0 ? z : minZoom));
     const readable = options.readableZoom;
-    const zoom = readable !== undefined && !(fitting >= readable) && canvas.width > 0
-        ? clamp(Math.max(readable, byWidth))
-        : clamp(fitting);
+    const zoom = readable !== undefined && !(fitting >= readable) && canvas.width > 0 ? clamp(Math.max(readable, byWidth)) : clamp(fitting);
     const axis = (start: number, size: number, canvasSize: number): number => {
         const visible = canvasSize / zoom;
         return size + (2 * padding) / zoom <= visible ? start + size / 2 - visible / 2 : start - padding / zoom;

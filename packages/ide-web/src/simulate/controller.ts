@@ -111,7 +111,12 @@ export class SimulationController implements Disposable {
     }
 
     private render(): void {
-        this.parts.controls.render({ session: this.session, connected: this.run?.connected ?? false, paused: this.run?.paused ?? false, viewShown: this.parts.viewer.shown });
+        this.parts.controls.render({
+            session: this.session,
+            connected: this.run?.connected ?? false,
+            paused: this.run?.paused ?? false,
+            viewShown: this.parts.viewer.shown,
+        });
     }
 
     private async start(): Promise<void> {
@@ -177,7 +182,8 @@ export class SimulationController implements Disposable {
             if (this.disposed) return;
             const cancelled = this.session.kind === 'cancelling';
             if (st.running) {
-                if (this.dispatch({ type: 'start-succeeded' }) && this.session.kind === 'running') this.attach(app?.component ?? this.parts.controls.selectedApp()?.component ?? '');
+                if (this.dispatch({ type: 'start-succeeded' }) && this.session.kind === 'running')
+                    this.attach(app?.component ?? this.parts.controls.selectedApp()?.component ?? '');
                 return;
             }
             this.dispatch({ type: 'start-failed' });

@@ -38,7 +38,15 @@ export class Controls {
     readonly pauseBtn = button('Pause', 'sim-pause', 'Pause the simulation (/sim/pause)');
     readonly resumeBtn = button('Resume', 'sim-resume', 'Resume the simulation (/sim/resume)');
     readonly stepBtn = button('Step', 'sim-step', 'Advance the simulation by the given number of periods (/sim/step)');
-    readonly stepsInput = el('input', { type: 'number', min: '1', max: '100000', value: '1', 'data-testid': 'sim-steps', class: 'maa-sim-steps', title: 'Periods per step' });
+    readonly stepsInput = el('input', {
+        type: 'number',
+        min: '1',
+        max: '100000',
+        value: '1',
+        'data-testid': 'sim-steps',
+        class: 'maa-sim-steps',
+        title: 'Periods per step',
+    });
     readonly resetBtn = button('Reset', 'sim-reset', 'Back to the initial scene (/sim/reset)');
     readonly reloadViewBtn = button('↻ 3D view', 'sim-reload-view', 'Reload the 3D view');
     readonly speedSelect = el('select', { 'data-testid': 'sim-speed', title: 'Simulation speed (×real time; max = as fast as possible)' });
@@ -130,7 +138,8 @@ export class Controls {
         const busy = isBusy(ctx.session);
         this.startBtn.disabled = !accepts(ctx.session, 'start') || !mode;
         this.stopBtn.disabled = !accepts(ctx.session, 'stop');
-        for (const b of [this.pauseBtn, this.resumeBtn, this.stepBtn, this.resetBtn]) b.disabled = ctx.session.kind !== 'running' || !ctx.connected;
+        for (const b of [this.pauseBtn, this.resumeBtn, this.stepBtn, this.resetBtn])
+            b.disabled = ctx.session.kind !== 'running' || !ctx.connected;
         this.reloadViewBtn.disabled = !ctx.viewShown;
         this.speedSelect.disabled = busy;
         this.appSelect.disabled = busy;

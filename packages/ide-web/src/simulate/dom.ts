@@ -1,7 +1,11 @@
 /** DOM helpers of the simulate panel. */
 
 /** An element with attributes (`class` sets the class name) and children. */
-export function el<K extends keyof HTMLElementTagNameMap>(tag: K, attrs: Record<string, string> = {}, ...children: (Node | string)[]): HTMLElementTagNameMap[K] {
+export function el<K extends keyof HTMLElementTagNameMap>(
+    tag: K,
+    attrs: Record<string, string> = {},
+    ...children: (Node | string)[]
+): HTMLElementTagNameMap[K] {
     const e = document.createElement(tag);
     for (const [k, v] of Object.entries(attrs)) {
         if (k === 'class') e.className = v;

@@ -57,7 +57,9 @@ export function formatEnumOrdinal(ordinal: number, literals?: readonly string[])
  * (`constnames`/`constvalues` of the message's typedef): the constants ordered by value, if the
  * message has just the `value` field and the constants are the ordinals 0..n-1; else `undefined`.
  */
-export function enumLiteralsOf(typedef: { fieldnames?: unknown; constnames?: unknown; constvalues?: unknown } | undefined): string[] | undefined {
+export function enumLiteralsOf(
+    typedef: { fieldnames?: unknown; constnames?: unknown; constvalues?: unknown } | undefined,
+): string[] | undefined {
     if (!typedef) return undefined;
     const fields = Array.isArray(typedef.fieldnames) ? typedef.fieldnames : [];
     const names = Array.isArray(typedef.constnames) ? typedef.constnames.map(String) : [];
@@ -92,7 +94,12 @@ function formatInner(v: unknown, depth: number, options?: FormatOptions): string
         // std_msgs wrappers: {data: x}
         if (keys.length === 1 && keys[0] === 'data') return formatInner(r['data'], depth);
         // JointState-like: name[] with position[]
-        if (Array.isArray(r['name']) && Array.isArray(r['position']) && (r['name'] as unknown[]).length === (r['position'] as unknown[]).length && (r['name'] as unknown[]).length > 0) {
+        if (
+            Array.isArray(r['name']) &&
+            Array.isArray(r['position']) &&
+            (r['name'] as unknown[]).length === (r['position'] as unknown[]).length &&
+            (r['name'] as unknown[]).length > 0
+        ) {
             const names = r['name'] as unknown[];
             const pos = r['position'] as unknown[];
             return names.map((nm, i) => `${String(nm)}=${formatInner(pos[i], depth + 1)}`).join(' ');

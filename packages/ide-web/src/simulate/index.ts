@@ -32,7 +32,13 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
         valuesChanged: () => controller?.pushValues(),
         notify: (severity, message) => host.notify(severity, message),
     });
-    container.replaceChildren(controls.element, status.bar, status.errorBox, status.progressBox, el('div', { class: 'maa-sim-body' }, viewer.element, inspector.element));
+    container.replaceChildren(
+        controls.element,
+        status.bar,
+        status.errorBox,
+        status.progressBox,
+        el('div', { class: 'maa-sim-body' }, viewer.element, inspector.element),
+    );
     controller = new SimulationController({ host, controls, status, inspector, viewer });
     void controller.mount();
     return {

@@ -18,7 +18,13 @@ export interface InjectionTarget {
 
 /** The inject cell's field and button; `send` gets the text. */
 export function injectControls(topic: string, type: string, send: (text: string) => void): HTMLElement[] {
-    const input = el('input', { type: 'text', placeholder: type.startsWith('std_msgs/') ? 'value' : 'JSON message', class: 'maa-inject-input', 'data-testid': 'inject-input', 'data-topic': topic });
+    const input = el('input', {
+        type: 'text',
+        placeholder: type.startsWith('std_msgs/') ? 'value' : 'JSON message',
+        class: 'maa-inject-input',
+        'data-testid': 'inject-input',
+        'data-topic': topic,
+    });
     const button = el('button', { type: 'button', class: 'maa-sim-button', 'data-testid': 'inject-send', 'data-topic': topic }, 'Send');
     button.addEventListener('click', () => send(input.value));
     input.addEventListener('keydown', (e) => {

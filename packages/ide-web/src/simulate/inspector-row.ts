@@ -25,10 +25,19 @@ export class InspectorRow {
      * `onWatch` runs when the watch box changes; `onInject` gets the text of a root port's inject
      * field (only root ports, fed from outside, offer one).
      */
-    constructor(public info: TopicInfo, public port: PortTopic | undefined, onWatch: (row: InspectorRow) => void, onInject: (row: InspectorRow, text: string) => void) {
+    constructor(
+        public info: TopicInfo,
+        public port: PortTopic | undefined,
+        onWatch: (row: InspectorRow) => void,
+        onInject: (row: InspectorRow, text: string) => void,
+    ) {
         this.watch = el('input', { type: 'checkbox', title: 'Watch this port (plot)', 'data-topic': info.topic, class: 'maa-watch' });
         const valueCell = el('td', { class: 'maa-port-value', 'data-testid': 'port-value' }, this.valueText, this.plot.element);
-        const nameCell = el('td', { class: 'maa-port-name', title: `${info.topic}  (${info.type || 'type unknown'})` }, port ? port.portPath : info.topic);
+        const nameCell = el(
+            'td',
+            { class: 'maa-port-name', title: `${info.topic}  (${info.type || 'type unknown'})` },
+            port ? port.portPath : info.topic,
+        );
         const injectCell = el('td', { class: 'maa-port-inject' });
         if (port?.rootPort) injectCell.append(...injectControls(info.topic, info.type, (text) => onInject(this, text)));
         this.tr = el(

@@ -26,7 +26,12 @@ export interface InspectorHost {
 
 export class Inspector {
     readonly element: HTMLElement;
-    private readonly filterInput = el('input', { type: 'search', placeholder: 'Filter ports…', class: 'maa-inspector-filter', 'data-testid': 'port-filter' });
+    private readonly filterInput = el('input', {
+        type: 'search',
+        placeholder: 'Filter ports…',
+        class: 'maa-inspector-filter',
+        'data-testid': 'port-filter',
+    });
     private readonly allOnDiagram = el('input', { type: 'checkbox', 'data-testid': 'values-all' });
     private readonly showPlatform = el('input', { type: 'checkbox', 'data-testid': 'show-platform-topics' });
     private readonly tbody = el('tbody');
@@ -40,7 +45,18 @@ export class Inspector {
         const table = el(
             'table',
             { class: 'maa-inspector-table' },
-            el('thead', {}, el('tr', {}, el('th', { title: 'Watch: plot the value' }, 'Watch'), el('th', {}, 'Port'), el('th', {}, 'Value'), el('th', {}, 'Inject'))),
+            el(
+                'thead',
+                {},
+                el(
+                    'tr',
+                    {},
+                    el('th', { title: 'Watch: plot the value' }, 'Watch'),
+                    el('th', {}, 'Port'),
+                    el('th', {}, 'Value'),
+                    el('th', {}, 'Inject'),
+                ),
+            ),
             this.tbody,
         );
         this.element = el(
@@ -50,8 +66,18 @@ export class Inspector {
                 'div',
                 { class: 'maa-inspector-header' },
                 this.filterInput,
-                el('label', { title: 'Show every port value on the diagram (otherwise only watched ones)' }, this.allOnDiagram, ' all values on diagram'),
-                el('label', { title: 'Also list the simulator topics (/clock, /joint_states, sensors, actuators)' }, this.showPlatform, ' platform topics'),
+                el(
+                    'label',
+                    { title: 'Show every port value on the diagram (otherwise only watched ones)' },
+                    this.allOnDiagram,
+                    ' all values on diagram',
+                ),
+                el(
+                    'label',
+                    { title: 'Also list the simulator topics (/clock, /joint_states, sensors, actuators)' },
+                    this.showPlatform,
+                    ' platform topics',
+                ),
             ),
             this.empty,
             table,
@@ -85,7 +111,15 @@ export class Inspector {
                 if (port) existing.port = port;
                 continue;
             }
-            this.rows.set(info.topic, new InspectorRow(info, port, (row) => this.watchChanged(row), (row, text) => this.inject(row, text)));
+            this.rows.set(
+                info.topic,
+                new InspectorRow(
+                    info,
+                    port,
+                    (row) => this.watchChanged(row),
+                    (row, text) => this.inject(row, text),
+                ),
+            );
         }
         for (const [topic, r] of this.rows) {
             if (!seen.has(topic)) {
@@ -141,7 +175,9 @@ export class Inspector {
     private inject(row: InspectorRow, text: string): void {
         const conn = this.conn;
         if (!conn || this.rows.get(row.info.topic) !== row) return;
-        void inject(conn, { topic: row.info.topic, type: row.info.type, label: row.label }, text, this.enums, (severity, message) => this.host.notify(severity, message));
+        void inject(conn, { topic: row.info.topic, type: row.info.type, label: row.label }, text, this.enums, (severity, message) =>
+            this.host.notify(severity, message),
+        );
     }
 
     private visible(r: InspectorRow): boolean {
@@ -163,7 +199,11 @@ export class Inspector {
         const conn = this.conn;
         if (!conn) return;
         for (const r of this.rows.values()) {
-            const want = r.watched || (!!r.port && this.allOnDiagram.checked) || (!r.port && this.showPlatform.checked) || (!!r.port && this.visible(r));
+            const want =
+                r.watched ||
+                (!!r.port && this.allOnDiagram.checked) ||
+                (!r.port && this.showPlatform.checked) ||
+                (!!r.port && this.visible(r));
             if (want && !r.sub) {
                 r.sub = conn.subscribe(r.info.topic, r.info.type || undefined, (m) => this.receive(r, m), r.watched ? 0 : THROTTLE_MS);
             } else if (!want && r.sub) {

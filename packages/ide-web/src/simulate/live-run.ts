@@ -91,7 +91,8 @@ export class LiveRun implements Disposable {
             this.statesDirty = false;
             diagram.setActiveStates(this.activeStates);
         }
-        if (this.clock !== undefined && this.host.running() && this.ros?.connectionState === 'connected') this.host.status.set(statusLine(this.simStatus, this.clock));
+        if (this.clock !== undefined && this.host.running() && this.ros?.connectionState === 'connected')
+            this.host.status.set(statusLine(this.simStatus, this.clock));
     }
 
     /** Disconnects and clears the inspector and the diagram's live decorations. */
@@ -143,16 +144,27 @@ export class LiveRun implements Disposable {
     private subscribe(conn: RosConnection): void {
         this.subs.push(
             conn.onState((s, detail) => {
-                if ((s === 'error' || s === 'closed') && this.host.running() && !this.disposed) this.host.status.set(`rosbridge ${s}${detail ? `: ${detail}` : ''}`);
+                if ((s === 'error' || s === 'closed') && this.host.running() && !this.disposed)
+                    this.host.status.set(`rosbridge ${s}${detail ? `: ${detail}` : ''}`);
             }),
-            conn.subscribe('/clock', 'rosgraph_msgs/msg/Clock', (m) => {
-                const t = clockSeconds(m);
-                if (t !== undefined) this.clock = t;
-            }, 100),
-            conn.subscribe(AUTOMATON_STATES, 'std_msgs/msg/String', (m) => {
-                this.activeStates = parseAutomatonStates(m, this.host.rootComponent, this.host.diagram.knownInstancePaths());
-                this.statesDirty = true;
-            }, DIAGRAM_PERIOD_MS),
+            conn.subscribe(
+                '/clock',
+                'rosgraph_msgs/msg/Clock',
+                (m) => {
+                    const t = clockSeconds(m);
+                    if (t !== undefined) this.clock = t;
+                },
+                100,
+            ),
+            conn.subscribe(
+                AUTOMATON_STATES,
+                'std_msgs/msg/String',
+                (m) => {
+                    this.activeStates = parseAutomatonStates(m, this.host.rootComponent, this.host.diagram.knownInstancePaths());
+                    this.statesDirty = true;
+                },
+                DIAGRAM_PERIOD_MS,
+            ),
         );
     }
 

@@ -59,9 +59,11 @@ export function statusLine(status: SimStatus, clock?: number): string {
     parts.push(status.finished ? `finished (${status.finished})` : status.paused ? 'paused' : 'running');
     const t = clock ?? status.time;
     if (typeof t === 'number') parts.push(`t ${t.toFixed(2)} s`);
-    if (typeof status.real_time_factor === 'number' && Number.isFinite(status.real_time_factor)) parts.push(`RTF ${formatNumber(Number(status.real_time_factor.toFixed(2)))}`);
+    if (typeof status.real_time_factor === 'number' && Number.isFinite(status.real_time_factor))
+        parts.push(`RTF ${formatNumber(Number(status.real_time_factor.toFixed(2)))}`);
     if (typeof status.speed === 'number') parts.push(`speed ${status.speed === 0 ? 'max' : `${formatNumber(status.speed)}×`}`);
-    if (typeof status.toast_level === 'number') parts.push(`toast ${status.toast_level.toFixed(2)}${status.toast_on_plate ? ' on plate' : ''}`);
+    if (typeof status.toast_level === 'number')
+        parts.push(`toast ${status.toast_level.toFixed(2)}${status.toast_on_plate ? ' on plate' : ''}`);
     return parts.join(' · ');
 }
 

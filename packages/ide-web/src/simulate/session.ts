@@ -87,7 +87,14 @@ export function transition(state: SessionState, event: SessionEvent): SessionSta
 
 /** Every event type, for callers that ask what a state accepts. */
 export const SESSION_EVENT_TYPES: readonly SessionEventType[] = [
-    'start', 'adopt-preparing', 'adopt-running', 'start-succeeded', 'start-failed', 'stop', 'stop-finished', 'ended',
+    'start',
+    'adopt-preparing',
+    'adopt-running',
+    'start-succeeded',
+    'start-failed',
+    'stop',
+    'stop-finished',
+    'ended',
 ];
 
 /** Whether the state accepts an event of this type (its payload does not matter for any transition). */

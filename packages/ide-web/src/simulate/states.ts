@@ -5,11 +5,7 @@
 import { nodeToInstancePath } from './topics.js';
 
 /** Parses the message; node paths outside the root are dropped, malformed data gives an empty map. */
-export function parseAutomatonStates(
-    message: unknown,
-    rootComponent: string,
-    knownInstancePaths?: Iterable<string>,
-): Map<string, string> {
+export function parseAutomatonStates(message: unknown, rootComponent: string, knownInstancePaths?: Iterable<string>): Map<string, string> {
     const result = new Map<string, string>();
     let data: unknown = message;
     if (data && typeof data === 'object' && 'data' in data) data = (data as { data: unknown }).data;

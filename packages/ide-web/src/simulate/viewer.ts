@@ -19,7 +19,12 @@ export class Viewer {
     /** Shows the view, or loads it again. */
     show(): void {
         if (!this.iframe) {
-            this.iframe = el('iframe', { 'data-testid': 'viser-frame', class: 'maa-viser-frame', title: 'Simulation (viser)', src: VISER_URL });
+            this.iframe = el('iframe', {
+                'data-testid': 'viser-frame',
+                class: 'maa-viser-frame',
+                title: 'Simulation (viser)',
+                src: VISER_URL,
+            });
             this.element.replaceChildren(this.iframe);
         } else {
             this.iframe.src = VISER_URL;
