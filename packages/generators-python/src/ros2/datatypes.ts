@@ -130,7 +130,7 @@ const create: DataTypeGeneratorFactory = (instantiation) => ({
         // The behavior classes work with Python values (docs/runtime.md): the Python data types of
         // timesync.DataTypes, placed inside the ament_python package (`<pkg>.model.<diagram module>`).
         const ament = rosPackageName(ctx.platform);
-        const python = (await (await (createPythonTypes as DataTypeGeneratorFactory)(instantiation as never)).generate({
+        const python = (await (await createPythonTypes(instantiation)).generate({
             ...ctx,
             out: { file: (path, options) => ctx.out.file(`${ament}/${ament}/${MODEL_PACKAGE}/${path}`, options) }
         })) ?? {};

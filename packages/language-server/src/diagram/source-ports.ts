@@ -1,5 +1,5 @@
 import type { AstNode } from 'langium';
-import { ast, elementsOf, impliedConnectors, isComposed, subcomponentType, subcomponentsOf } from '@maa/language-adl';
+import { ast, chainSource, elementsOf, feedingSource, impliedConnectors, isComposed, subcomponentType, subcomponentsOf, type ChainGraph } from '@maa/language-adl';
 
 type ComponentType = ast.ComponentType;
 
@@ -36,54 +36,45 @@ export function connectorsOf(c: ComponentType): NamedConnector[] {
     return result;
 }
 
+/** A shown instance: its path from the shown component and its type (undefined when unresolved). */
+interface ShownScope {
+    readonly path: readonly string[];
+    readonly type: ComponentType | undefined;
+    /** The enclosing scope when the walk entered this one from it (instances inside a composed subcomponent are not shown). */
+    readonly up?: ShownScope;
+}
+
+/** The shown instances as the shared connector-chain walk sees them. */
+function shownGraph(typeAt: (path: readonly string[]) => ComponentType | undefined): ChainGraph<ShownScope, never> {
+    return {
+        child(scope, sub) {
+            const decl = scope.type ? subcomponentsOf(scope.type).find((s) => s.name === sub) : undefined;
+            const type = decl ? subcomponentType(decl).decl : undefined;
+            return type ? { path: [...scope.path, sub], type, up: scope } : undefined;
+        },
+        parent(scope) {
+            if (scope.type === undefined || scope.path.length === 0) return undefined;
+            const path = scope.path.slice(0, -1);
+            return { scope: scope.up ?? { path, type: typeAt(path) }, name: scope.path[scope.path.length - 1]! };
+        },
+        isAtomic: (scope) => scope.type !== undefined && !isComposed(scope.type),
+        feeder(scope, target) {
+            const source = scope.type ? feedingSource(connectorsOf(scope.type), target) : undefined;
+            return source ? { source } : undefined;
+        }
+    };
+}
+
 /**
  * The out port of an atomic instance whose values reach `access` of the component at `path`
  * (instance path from the shown component, whose type `typeAt` knows for every shown
  * instance): connectors are followed into composed subcomponents (to the connector that feeds
- * their out port) and out of the component (to the connector that feeds its in port). Returns
- * the port path (`unit.sensor.value`), or `""` when the value comes from outside the shown
- * component or no connector feeds it.
+ * their out port) and out of the component (to the connector that feeds its in port), by the
+ * shared walk of `@maa/language-adl` (`chainSource`). Returns the port path
+ * (`unit.sensor.value`), or `""` when the value comes from outside the shown component or no
+ * connector feeds it.
  */
 export function atomicSourcePath(typeAt: (path: readonly string[]) => ComponentType | undefined, path: readonly string[], access: PortName): string {
-    let scope = [...path];
-    let current: PortName = access;
-    // Each step moves one level in or out; a bound guards against cyclic or broken models.
-    for (let step = 0; step < 256; step++) {
-        const type = typeAt(scope);
-        if (!type) return '';
-        if (current.sub !== undefined) {
-            const sub = subcomponentsOf(type).find((s) => s.name === current.sub);
-            const subType = sub ? subcomponentType(sub).decl : undefined;
-            if (!subType) return '';
-            if (!isComposed(subType)) return [...scope, current.sub, current.port].join('.');
-            // Into the composed subcomponent: who feeds its out port inside?
-            const feeding = feeder(subType, { port: current.port });
-            if (!feeding) return '';
-            const inner = [...scope, current.sub];
-            const innerType = subType;
-            const outerTypeAt = typeAt;
-            typeAt = (p) => (p.join('.') === inner.join('.') ? innerType : outerTypeAt(p));
-            scope = inner;
-            current = feeding;
-        } else {
-            // Out of the component: who feeds this in port in the parent?
-            if (scope.length === 0) return '';
-            const name = scope[scope.length - 1]!;
-            const parentPath = scope.slice(0, -1);
-            const parent = typeAt(parentPath);
-            const feeding = parent ? feeder(parent, { sub: name, port: current.port }) : undefined;
-            if (!feeding) return '';
-            scope = parentPath;
-            current = feeding;
-        }
-    }
-    return '';
-}
-
-/** The source of the connector in `c` whose targets include `target`. */
-function feeder(c: ComponentType, target: PortName): PortName | undefined {
-    for (const e of connectorsOf(c)) {
-        if (e.targets.some((t) => t.port === target.port && t.sub === target.sub)) return e.source;
-    }
-    return undefined;
+    const end = chainSource(shownGraph(typeAt), { path, type: typeAt(path) }, access);
+    return end?.kind === 'atomic' ? [...end.scope.path, end.port].join('.') : '';
 }

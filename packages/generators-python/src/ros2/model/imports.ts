@@ -1,0 +1,53 @@
+import { Imports } from '../../behavior/common.js';
+
+function compare(a: string, b: string): number {
+    return a < b ? -1 : a > b ? 1 : 0;
+}
+
+/**
+ * The Python imports of one generated file: module -> names, where the name '' stands for
+ * `import module`. The one builder of ros2.Components; the node files render it in isort order
+ * (`lines`), the mode managers hand it to the behavior generators' `Imports` (`into`), which
+ * their transition code adds to and which renders their sections.
+ */
+export class PyImports {
+    private readonly modules = new Map<string, Set<string>>();
+
+    add(module: string, name: string): this {
+        let names = this.modules.get(module);
+        if (!names) this.modules.set(module, (names = new Set()));
+        names.add(name);
+        return this;
+    }
+
+    addAll(module: string, names: Iterable<string>): this {
+        for (const name of names) this.add(module, name);
+        return this;
+    }
+
+    /** The import lines in isort order (ruff `I`), see importLines. */
+    lines(): string[] {
+        return importLines(this.modules);
+    }
+
+    /** Adds every import to the behavior generators' builder. */
+    into(target: Imports): Imports {
+        for (const [module, names] of this.modules) for (const name of names) target.add(module, name);
+        return target;
+    }
+}
+
+/**
+ * One import block in isort order (ruff `I`): `import m` lines, then `from m import ...` lines, each
+ * sorted by module; names: constants, classes, then functions. The name '' stands for `import m`.
+ */
+export function importLines(imports: ReadonlyMap<string, ReadonlySet<string>>): string[] {
+    const modules = [...imports.keys()].sort((a, b) => compare(a.toLowerCase(), b.toLowerCase()));
+    const plain = modules.filter((m) => imports.get(m)!.has('')).map((m) => `import ${m}`);
+    const rank = (n: string): number => (/^[A-Z0-9_]+$/.test(n) && n.length > 1 ? 0 : /^[A-Z]/.test(n) ? 1 : 2);
+    const from = modules
+        .map((m) => [m, [...imports.get(m)!].filter((n) => n !== '')] as const)
+        .filter(([, names]) => names.length > 0)
+        .map(([m, names]) => `from ${m} import ${names.sort((a, b) => rank(a) - rank(b) || compare(a.toLowerCase(), b.toLowerCase()) || compare(a, b)).join(', ')}`);
+    return [...plain, ...from];
+}
