@@ -34,7 +34,7 @@ export function wrapBehaviorGenerator(inner: BehaviorGenerator): BehaviorGenerat
 }
 
 export const automataBehavior: BehaviorGeneratorFactory = async (i: GeneratorInstantiation<BehaviorGeneratorManifest>) =>
-    wrapBehaviorGenerator(await (createAutomata as BehaviorGeneratorFactory)(i));
+    wrapBehaviorGenerator(await createAutomata(i));
 
 export const robotArmBehavior: BehaviorGeneratorFactory = async (i: GeneratorInstantiation<BehaviorGeneratorManifest>) =>
-    wrapBehaviorGenerator(await (createRobotArm as BehaviorGeneratorFactory)(i));
+    wrapBehaviorGenerator(await createRobotArm(i));

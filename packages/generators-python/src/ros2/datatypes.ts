@@ -1,7 +1,9 @@
 import type { SymType } from '@maa/language-adl';
 import type { AstNode } from 'langium';
 import { GenerationError } from '@maa/generator-core/node';
-import { type DataTypeGenerationContext, type DataTypeGeneratorFactory, type DataTypeView, type TypeMapping } from '@maa/generator-core';
+import {
+    type DataTypeGenerationContext, type DataTypeGeneratorFactory, type DataTypeGeneratorManifest, type DataTypeView, type GeneratorInstantiation, type TypeMapping
+} from '@maa/generator-core';
 import {
     MODEL_PACKAGE, constantName, describe, fieldName, interfacePackageName, isBuiltinDecl, messageNameOf, primitiveOf, rosPackageName, typeKey,
     type RosDataTypeResult, type RosMessage
@@ -33,114 +35,136 @@ const create: DataTypeGeneratorFactory = (instantiation) => ({
     kind: 'datatype',
     async generate(ctx: DataTypeGenerationContext): Promise<RosDataTypeResult> {
         const pkg = interfacePackageName(ctx.platform);
-        const defs = new Map<string, MessageDef>();
-        const byName = new Map<string, string>();
-        const pending: Array<{ t: SymType; where: AstNode }> = [];
-
-        const fieldType = (t: SymType, where: AstNode, subst: ReadonlyMap<string, SymType>): string => {
-            if (t.kind === 'typevar') {
-                const bound = subst.get(t.decl.name);
-                if (!bound) throw new GenerationError(`type parameter ${t.decl.name} is not bound here`, where);
-                return fieldType(bound, where, new Map());
-            }
-            const prim = primitiveOf(t);
-            if (prim) return prim.field;
-            if (t.kind === 'array') return `${fieldType(t.component, where, subst)}[]`;
-            if (t.kind === 'object' && !isBuiltinDecl(t.decl)) {
-                const concrete: SymType = { kind: 'object', decl: t.decl, args: t.args.map((a) => resolve(a, subst, where)) };
-                pending.push({ t: concrete, where });
-                return `${pkg}/${messageNameOf(concrete, where)}`;
-            }
-            throw new GenerationError(`type ${describe(t)} cannot be translated to a ROS 2 message field`, where);
-        };
-
-        const resolve = (t: SymType, subst: ReadonlyMap<string, SymType>, where: AstNode): SymType => {
-            if (t.kind === 'typevar') {
-                const bound = subst.get(t.decl.name);
-                if (!bound) throw new GenerationError(`type parameter ${t.decl.name} is not bound here`, where);
-                return bound;
-            }
-            if (t.kind === 'object') return { kind: 'object', decl: t.decl, args: t.args.map((a) => resolve(a, subst, where)) };
-            if (t.kind === 'array') return { kind: 'array', component: resolve(t.component, subst, where) };
-            return t;
-        };
-
-        const define = (t: SymType, where: AstNode): void => {
-            if (t.kind === 'array') return define(t.component, where);
-            if (t.kind !== 'object' || isBuiltinDecl(t.decl)) return;
-            const key = typeKey(t);
-            if (defs.has(key)) return;
-            const view = ctx.architecture.dataType(typeKey({ kind: 'object', decl: t.decl, args: [] }));
-            if (!view) throw new GenerationError(`type ${describe(t)} is not part of the architecture's data types`, where);
-            if (view.typeParameters.length !== t.args.length) {
-                throw new GenerationError(`type ${describe(t)} is used without its type arguments; a ROS 2 message needs concrete types`, where);
-            }
-            const name = messageNameOf(t, where);
-            const clash = byName.get(name);
-            if (clash && clash !== key) throw new GenerationError(`types ${clash} and ${key} both map to the message name ${name}`, view.node);
-            byName.set(name, key);
-            const lines: string[] = [`# ${key}${view.kind === 'enum' ? ' (enum: the constants are the literals\' ordinals, `value` holds one of them)' : ''}`];
-            const def: MessageDef = { name, key, view, kind: view.kind === 'enum' ? 'enum' : 'class', lines };
-            defs.set(key, def);
-            if (view.kind === 'enum') {
-                if (view.constants.length > 256) throw new GenerationError(`enum ${view.qualifiedName} has more than 256 literals`, view.node);
-                view.constants.forEach((c, i) => lines.push(`uint8 ${constantName(c)}=${i}`));
-                lines.push('', 'uint8 value');
-                return;
-            }
-            if (view.superTypes.length > 0) {
-                throw new GenerationError(`type ${view.qualifiedName} extends ${view.superTypes.join(', ')}: ROS 2 messages have no inheritance`, view.node);
-            }
-            const subst = new Map(view.typeParameters.map((p, i) => [p, t.args[i]!] as const));
-            const seen = new Set<string>();
-            for (const a of view.attributes) {
-                const f = fieldName(a.name);
-                if (seen.has(f)) throw new GenerationError(`attributes of ${view.qualifiedName} clash as message field ${f}`, a.node);
-                seen.add(f);
-                lines.push(`${fieldType(a.type, a.node, subst)} ${f}`);
-            }
-            if (view.attributes.length === 0) lines.push('# (no attributes)');
-        };
-
-        // Every non-generic type used, and every concrete use of a generic type by ports, parameters and fields.
-        for (const v of ctx.dataTypes) {
-            if (v.typeParameters.length === 0) pending.push({ t: { kind: 'object', decl: v.node, args: [] }, where: v.node });
-        }
-        for (const c of ctx.architecture.components) {
-            for (const p of [...c.ports, ...c.parameters, ...c.fields]) {
-                if (!hasTypeVar(p.type)) pending.push({ t: p.type, where: p.node });
-            }
-        }
-        while (pending.length > 0) {
-            const { t, where } = pending.shift()!;
-            collectUses(t).forEach((u) => define(u, where));
-        }
-
-        const sorted = [...defs.values()].sort((a, b) => (a.name < b.name ? -1 : a.name > b.name ? 1 : 0));
-        const root = `${pkg}`;
+        const catalog = new MessageCatalog(pkg, ctx);
+        catalog.collect();
+        const sorted = catalog.sorted();
         for (const d of sorted) {
-            ctx.out.file(`${root}/msg/${d.name}.msg`).write(`${d.lines.join('\n')}\n`, d.view.node);
+            ctx.out.file(`${pkg}/msg/${d.name}.msg`).write(`${d.lines.join('\n')}\n`, d.view.node);
         }
-        ctx.out.file(`${root}/CMakeLists.txt`).render('interfaces/CMakeLists.txt.njk', { pkg, messages: sorted.map((d) => d.name) });
-        ctx.out.file(`${root}/package.xml`).render('interfaces/package.xml.njk', { pkg, app: ctx.platform.application, root: ctx.platform.rootComponent, ament: rosPackageName(ctx.platform) });
-
+        ctx.out.file(`${pkg}/CMakeLists.txt`).render('interfaces/CMakeLists.txt.njk', { pkg, messages: sorted.map((d) => d.name) });
+        ctx.out.file(`${pkg}/package.xml`).render('interfaces/package.xml.njk', { pkg, app: ctx.platform.application, root: ctx.platform.rootComponent, ament: rosPackageName(ctx.platform) });
         const messages: Record<string, RosMessage> = {};
         for (const d of sorted) messages[d.key] = { type: `${pkg}/msg/${d.name}`, module: `${pkg}.msg`, name: d.name, kind: d.kind };
-
-        // The behavior classes work with Python values (docs/runtime.md): the Python data types of
-        // timesync.DataTypes, placed inside the ament_python package (`<pkg>.model.<diagram module>`).
-        const ament = rosPackageName(ctx.platform);
-        const python = (await (await createPythonTypes(instantiation)).generate({
-            ...ctx,
-            out: { file: (path, options) => ctx.out.file(`${ament}/${ament}/${MODEL_PACKAGE}/${path}`, options) }
-        })) ?? {};
-        const types: Record<string, TypeMapping> = {};
-        for (const [name, mapping] of Object.entries(python.types ?? {})) {
-            types[name] = { ...mapping, module: `${ament}.${MODEL_PACKAGE}.${mapping.module}` };
-        }
-        return { interfacePackage: pkg, messages, types };
+        return { interfacePackage: pkg, messages, types: await pythonTypes(instantiation, ctx) };
     }
 });
+
+/**
+ * The behavior classes work with Python values (docs/runtime.md): the Python data types of
+ * timesync.DataTypes, placed inside the ament_python package (`<pkg>.model.<diagram module>`).
+ */
+async function pythonTypes(instantiation: GeneratorInstantiation<DataTypeGeneratorManifest>, ctx: DataTypeGenerationContext): Promise<Record<string, TypeMapping>> {
+    const ament = rosPackageName(ctx.platform);
+    const python = (await (await createPythonTypes(instantiation)).generate({
+        ...ctx,
+        out: { file: (path, options) => ctx.out.file(`${ament}/${ament}/${MODEL_PACKAGE}/${path}`, options) }
+    })) ?? {};
+    const types: Record<string, TypeMapping> = {};
+    for (const [name, mapping] of Object.entries(python.types ?? {})) {
+        types[name] = { ...mapping, module: `${ament}.${MODEL_PACKAGE}.${mapping.module}` };
+    }
+    return types;
+}
+
+/** The messages of the types used: every non-generic type and every concrete use of a generic one, transitively through fields. */
+class MessageCatalog {
+    private readonly defs = new Map<string, MessageDef>();
+    private readonly byName = new Map<string, string>();
+    private readonly pending: Array<{ t: SymType; where: AstNode }> = [];
+
+    constructor(private readonly pkg: string, private readonly ctx: DataTypeGenerationContext) {}
+
+    /** Every non-generic type used, and every concrete use of a generic type by ports, parameters and fields. */
+    collect(): void {
+        for (const v of this.ctx.dataTypes) {
+            if (v.typeParameters.length === 0) this.pending.push({ t: { kind: 'object', decl: v.node, args: [] }, where: v.node });
+        }
+        for (const c of this.ctx.architecture.components) {
+            for (const p of [...c.ports, ...c.parameters, ...c.fields]) {
+                if (!hasTypeVar(p.type)) this.pending.push({ t: p.type, where: p.node });
+            }
+        }
+        while (this.pending.length > 0) {
+            const { t, where } = this.pending.shift()!;
+            collectUses(t).forEach((u) => this.define(u, where));
+        }
+    }
+
+    sorted(): MessageDef[] {
+        return [...this.defs.values()].sort((a, b) => (a.name < b.name ? -1 : a.name > b.name ? 1 : 0));
+    }
+
+    private define(t: SymType, where: AstNode): void {
+        if (t.kind === 'array') return this.define(t.component, where);
+        if (t.kind !== 'object' || isBuiltinDecl(t.decl)) return;
+        const key = typeKey(t);
+        if (this.defs.has(key)) return;
+        const view = this.ctx.architecture.dataType(typeKey({ kind: 'object', decl: t.decl, args: [] }));
+        if (!view) throw new GenerationError(`type ${describe(t)} is not part of the architecture's data types`, where);
+        if (view.typeParameters.length !== t.args.length) {
+            throw new GenerationError(`type ${describe(t)} is used without its type arguments; a ROS 2 message needs concrete types`, where);
+        }
+        const name = messageNameOf(t, where);
+        const clash = this.byName.get(name);
+        if (clash && clash !== key) throw new GenerationError(`types ${clash} and ${key} both map to the message name ${name}`, view.node);
+        this.byName.set(name, key);
+        const lines: string[] = [`# ${key}${view.kind === 'enum' ? ' (enum: the constants are the literals\' ordinals, `value` holds one of them)' : ''}`];
+        this.defs.set(key, { name, key, view, kind: view.kind === 'enum' ? 'enum' : 'class', lines });
+        lines.push(...(view.kind === 'enum' ? enumFields(view) : this.classFields(view, t)));
+    }
+
+    /** One field per attribute, type arguments substituted. */
+    private classFields(view: DataTypeView, t: SymType & { kind: 'object' }): string[] {
+        if (view.superTypes.length > 0) {
+            throw new GenerationError(`type ${view.qualifiedName} extends ${view.superTypes.join(', ')}: ROS 2 messages have no inheritance`, view.node);
+        }
+        const subst = new Map(view.typeParameters.map((p, i) => [p, t.args[i]!] as const));
+        const seen = new Set<string>();
+        const lines: string[] = [];
+        for (const a of view.attributes) {
+            const f = fieldName(a.name);
+            if (seen.has(f)) throw new GenerationError(`attributes of ${view.qualifiedName} clash as message field ${f}`, a.node);
+            seen.add(f);
+            lines.push(`${this.fieldType(a.type, a.node, subst)} ${f}`);
+        }
+        if (view.attributes.length === 0) lines.push('# (no attributes)');
+        return lines;
+    }
+
+    /** The rosidl type of a field (a message type used here is defined too). */
+    private fieldType(t: SymType, where: AstNode, subst: ReadonlyMap<string, SymType>): string {
+        if (t.kind === 'typevar') return this.fieldType(bound(t.decl.name, subst, where), where, new Map());
+        const prim = primitiveOf(t);
+        if (prim) return prim.field;
+        if (t.kind === 'array') return `${this.fieldType(t.component, where, subst)}[]`;
+        if (t.kind === 'object' && !isBuiltinDecl(t.decl)) {
+            const concrete: SymType = { kind: 'object', decl: t.decl, args: t.args.map((a) => resolve(a, subst, where)) };
+            this.pending.push({ t: concrete, where });
+            return `${this.pkg}/${messageNameOf(concrete, where)}`;
+        }
+        throw new GenerationError(`type ${describe(t)} cannot be translated to a ROS 2 message field`, where);
+    }
+}
+
+/** An enum: one `uint8` constant per literal (its ordinal) and the `value` field. */
+function enumFields(view: DataTypeView): string[] {
+    if (view.constants.length > 256) throw new GenerationError(`enum ${view.qualifiedName} has more than 256 literals`, view.node);
+    return [...view.constants.map((c, i) => `uint8 ${constantName(c)}=${i}`), '', 'uint8 value'];
+}
+
+function bound(name: string, subst: ReadonlyMap<string, SymType>, where: AstNode): SymType {
+    const t = subst.get(name);
+    if (!t) throw new GenerationError(`type parameter ${name} is not bound here`, where);
+    return t;
+}
+
+/** A type with the type parameters bound by `subst` substituted. */
+function resolve(t: SymType, subst: ReadonlyMap<string, SymType>, where: AstNode): SymType {
+    if (t.kind === 'typevar') return bound(t.decl.name, subst, where);
+    if (t.kind === 'object') return { kind: 'object', decl: t.decl, args: t.args.map((a) => resolve(a, subst, where)) };
+    if (t.kind === 'array') return { kind: 'array', component: resolve(t.component, subst, where) };
+    return t;
+}
 
 function hasTypeVar(t: SymType): boolean {
     if (t.kind === 'typevar') return true;
