@@ -180,10 +180,10 @@ export function prologueView(spec: ClassSpec, imports: Imports, doc: string, ext
         ...spec.parameters.map((p) => ({
             name: attr(p.name),
             type: pyType(p, spec.datatypes, imports),
-            value: `self._params.get(${JSON.stringify(p.name)}, ${p.default ? tr.expr(p.default as Node) : 'None'})`,
+            value: `self._params.get(${JSON.stringify(p.name)}, ${p.default ? tr.expr(p.default) : 'None'})`,
             ignoreType: true
         })),
-        ...spec.fields.map((f) => ({ name: attr(f.name), type: pyType(f, spec.datatypes, imports), value: tr.expr(f.init as Node), ignoreType: false })),
+        ...spec.fields.map((f) => ({ name: attr(f.name), type: pyType(f, spec.datatypes, imports), value: tr.expr(f.init), ignoreType: false })),
         ...ins.map((p) => ({ name: attr(p.name), type: `${pyType(p, spec.datatypes, imports)} | None`, value: 'None', ignoreType: false }))
     ];
     return {

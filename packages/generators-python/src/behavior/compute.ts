@@ -16,8 +16,8 @@ export function computeClassView(component: ComponentView, datatypes: DataTypeRe
     };
     const tr = behaviorTranslator(spec, imports);
     const prologue = prologueView(spec, imports, `Behavior of ${component.qualifiedName}: its compute block (generated).`);
-    const init = component.init as Node | undefined;
-    const compute = component.behavior?.language === 'compute' ? component.behavior.node as Node : undefined;
+    const init: Node | undefined = component.init;
+    const compute: Node | undefined = component.behavior?.language === 'compute' ? component.behavior.node : undefined;
     return {
         prologue,
         init: init ? tr.block(init.body) : undefined,

@@ -336,6 +336,6 @@ function isChar(e: Node): boolean {
 }
 
 /** Whether a node declares a class-diagram type (class, interface, enum). */
-export function isTypeDecl(n: Node | undefined): n is Node {
+export function isTypeDecl(n: Node | undefined): n is Node & { readonly $type: 'CDType' | 'CDClass' | 'CDInterface' | 'CDEnum' } {
     return !!n && ['CDType', 'CDClass', 'CDInterface', 'CDEnum'].includes(n.$type);
 }

@@ -38,7 +38,7 @@ function configTranslator(datatypes: DataTypeResult, imports: Imports): PythonTr
         name(target, ref) {
             if (target.$type === 'Parameter') return `params[${str(target.name)}]`;
             if (target.$type === 'CDEnumConstant') return `${typeRef(datatypes, imports, target.$container as Node)}.${pyName(target.name)}`;
-            if (isTypeDecl(target as Node)) return typeRef(datatypes, imports, target as Node);
+            if (isTypeDecl(target)) return typeRef(datatypes, imports, target);
             throw new GenerationError(`'${target.name}' cannot be used in a configuration argument`, ref);
         },
         type: (decl) => typeRef(datatypes, imports, decl),
@@ -69,7 +69,7 @@ function typeHeader(c: ComponentView, datatypes: DataTypeResult, imports: Import
 /** The `defaults` classmethod's entries: parameters with a default value. */
 function parameterDefaults(c: ComponentView, datatypes: DataTypeResult, imports: Imports): ComponentClassesView['defaults'] {
     const tr = configTranslator(datatypes, imports);
-    return c.parameters.flatMap((p) => (p.default ? [{ name: p.name, value: tr.expr(p.default as Node) }] : []));
+    return c.parameters.flatMap((p) => (p.default ? [{ name: p.name, value: tr.expr(p.default) }] : []));
 }
 
 /**
@@ -146,12 +146,12 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                     const alias = pyName(sub.name);
                     if (subModule.module !== componentModule(c).module) imports.add(subModule.module, alias);
                     const args = s.args.map((a, i) => {
-                        const arg = a as Node;
+                        const arg: Node = a;
                         // A named argument `p = value` (MontiArc's keyword arguments).
-                        if (arg.$type === 'AssignmentExpression' && arg.op === '=' && (arg.left as Node).$type === 'NameExpression') {
-                            const name = String((arg.left as Node).ref?.$refText);
+                        if (arg.$type === 'AssignmentExpression' && arg.op === '=' && arg.left.$type === 'NameExpression') {
+                            const name = String(arg.left.ref?.$refText);
                             if (!sub.parameters.some((p) => p.name === name)) throw new GenerationError(`${sub.qualifiedName} has no parameter '${name}'`, arg);
-                            return { key: str(name), value: tr.expr(arg.right as Node) };
+                            return { key: str(name), value: tr.expr(arg.right) };
                         }
                         const param = sub.parameters[i];
                         if (!param) throw new GenerationError(`too many arguments for ${sub.qualifiedName}`, a);

@@ -46,7 +46,7 @@ function guardTranslator(c: ComponentView, datatypes: DataTypeResult, imports: I
             }
             if (target.$type === 'Parameter') return `params[${str(target.name)}]`;
             if (target.$type === 'CDEnumConstant') return `${typeRef(datatypes, imports, target.$container as Node)}.${pyName(target.name)}`;
-            if (isTypeDecl(target as Node)) return typeRef(datatypes, imports, target as Node);
+            if (isTypeDecl(target)) return typeRef(datatypes, imports, target);
             throw new GenerationError(`'${target.name}' cannot be used in the guard of a mode transition (only in ports, parameters and constants)`, ref);
         },
         type: (decl) => typeRef(datatypes, imports, decl),
@@ -89,7 +89,7 @@ export function modeTransitionView(c: ComponentView, datatypes: DataTypeResult, 
             // Event-based: a message triggers the transitions of its port; a tick those with `Tick` or no event.
             conditions.push(t.trigger.kind === 'port' ? `trigger == ${str(t.trigger.port)}` : 'trigger == ""');
         }
-        if (t.guard) conditions.push(parenthesized(tr.expr(t.guard as Node)));
+        if (t.guard) conditions.push(parenthesized(tr.expr(t.guard)));
         return { conditions, target: t.target };
     });
     // (the names in the statements as written, `return "<target>"` included)
