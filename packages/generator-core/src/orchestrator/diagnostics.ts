@@ -56,7 +56,9 @@ export function sortDiagnostics(ds: readonly GenerationDiagnostic[]): Generation
     return [...ds]
         .filter((d) => {
             const k = `${d.file}:${d.line}:${d.column}:${d.code}:${d.message}`;
-            return seen.has(k) ? false : (seen.add(k), true);
+            if (seen.has(k)) return false;
+            seen.add(k);
+            return true;
         })
         .sort((a, b) => (a.file < b.file ? -1 : a.file > b.file ? 1 : 0) || a.line - b.line || a.column - b.column || (a.code < b.code ? -1 : a.code > b.code ? 1 : 0));
 }

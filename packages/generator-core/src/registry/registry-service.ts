@@ -63,8 +63,10 @@ export class GeneratorRegistryService {
 
     /** The one declaration node of a registered generator (references to it resolve to the same node). */
     declaration(g: RegisteredGenerator, create: (g: RegisteredGenerator) => GeneratorDeclarationNode): GeneratorDeclarationNode {
-        let node = this.declarations.get(g);
-        if (!node) this.declarations.set(g, (node = create(g)));
+        const known = this.declarations.get(g);
+        if (known) return known;
+        const node = create(g);
+        this.declarations.set(g, node);
         return node;
     }
 }

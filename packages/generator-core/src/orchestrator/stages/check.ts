@@ -66,7 +66,11 @@ export function selectPlatforms(app: Application, names: readonly string[] | und
     if (!names || names.length === 0) {
         if (app.platforms.length === 0) throw new GenerateInputError(`application '${app.name}' configures no platform`);
         const seen = new Set<string>();
-        return app.platforms.filter((p) => (seen.has(p.name) ? false : (seen.add(p.name), true)));
+        return app.platforms.filter((p) => {
+            if (seen.has(p.name)) return false;
+            seen.add(p.name);
+            return true;
+        });
     }
     return names.map((n) => {
         const p = app.platforms.find((q) => q.name === n);

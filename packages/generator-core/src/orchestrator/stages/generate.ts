@@ -2,7 +2,7 @@ import path from 'node:path';
 import { generatorForLanguage, type PlatformSelection } from '../../app/app-checks.js';
 import type { AppPlatform } from '../../generated/ast.js';
 import type {
-    BehaviorGenerationContext, BehaviorGenerator, ComponentGenerator, DataTypeGenerator, DataTypeResult, DelegatedBehavior, PlatformInfo
+    BehaviorGenerationContext, BehaviorGenerator, BehaviorResult, ComponentGenerator, DataTypeGenerator, DataTypeResult, DelegatedBehavior, PlatformInfo
 } from '../../generators/types.js';
 import type { BehaviorView, ComponentView } from '../../model/architecture.js';
 import { OutputCollector, OutputError, type FinishedFile } from '../../output/file-builder.js';
@@ -126,7 +126,7 @@ async function delegateBehavior(
         ...(requires.has('platform') ? { platform } : {}),
         ...(requires.has('datatypes') ? { datatypes } : {})
     };
-    let result;
+    let result: BehaviorResult;
     try {
         result = (await (inst.generator as BehaviorGenerator).generate(behavior, ctx)) ?? {};
     } catch (e) {

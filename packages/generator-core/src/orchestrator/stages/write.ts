@@ -104,7 +104,10 @@ export function traceFile(
     const element = (node: AstNode): TraceElement => {
         const root = AstUtils.findRootNode(node);
         let doc = docs.get(root);
-        if (!doc) docs.set(root, (doc = AstUtils.getDocument(node)));
+        if (!doc) {
+            doc = AstUtils.getDocument(node);
+            docs.set(root, doc);
+        }
         const r = node.$cstNode?.range;
         const name = (node as { name?: unknown }).name;
         return {
