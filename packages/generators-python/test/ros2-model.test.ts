@@ -25,7 +25,7 @@ function component(qualifiedName: string): ComponentView {
 }
 
 function port(name: string, topic: string, rosType = 'std_msgs/msg/Int32'): NodePort {
-    return { port: name, topic, rosType, codec: 'std_port(Int32, int)', sampled: true, delayed: false, node: AST };
+    return { port: name, topic, rosType, helper: 'std_port', codec: 'std_port(Int32, int)', sampled: true, delayed: false, node: AST };
 }
 
 function node(fqn: string, options: { inputs?: NodePort[]; outputs?: NodePort[]; parameters?: Parameter[]; publishes?: Array<{ topic: string; type: string }> } = {}): ComponentNode {
@@ -47,7 +47,7 @@ function manager(fqn: string, relayTarget: string): ModeManagerNode {
         kind: 'manager', instance: { path: ['m'], component: c, args: [] }, name: 'maa_modes', namespace: fqn.replace(/\/maa_modes$/, ''), fqn,
         module: 'app.nodes.m__maa_modes', moduleName: 'm__maa_modes', file: 'app/app/nodes/m__maa_modes.py', instancePath: 'robot.m',
         parameters: [], imports: new PyImports(), modeTopic: `${fqn}/mode`, inputs: [],
-        relays: [{ source: '/robot/a/o', target: relayTarget, rosType: 'std_msgs/msg/Int32', codec: 'std_port(Int32, int)', sampled: true, modes: ['On'], port: 'o' }]
+        relays: [{ source: '/robot/a/o', target: relayTarget, rosType: 'std_msgs/msg/Int32', helper: 'std_port', codec: 'std_port(Int32, int)', sampled: true, modes: ['On'], port: 'o' }]
     };
 }
 

@@ -20,6 +20,8 @@ export interface TopicRef {
 /** How a port's values travel: the ROS type and the `maa_ros2` codec that converts them. */
 export interface PortCodec {
     readonly rosType: string;
+    /** The `maa_ros2` function that makes the codec. */
+    readonly helper: 'std_port' | 'char_port' | 'enum_port' | 'class_port';
     /** A Python expression: `std_port(Int32, int)`, `enum_port(pkg.msg.Color, Color)`. */
     readonly codec: string;
     /** Sampled (primitive) in ports keep their last value between messages. */

@@ -15,7 +15,8 @@ export function portCodec(p: PortView, dt: RosDataTypeResult, imports: PyImports
         imports.add('std_msgs.msg', prim.std);
         // A char is its code inside the behavior and a one-character string on the topic.
         const isChar = p.typeName === 'char' || p.typeName === 'Character';
-        return { rosType: `std_msgs/msg/${prim.std}`, codec: isChar ? `char_port(${prim.std})` : `std_port(${prim.std}, ${prim.py})`, sampled: true };
+        const helper = isChar ? 'char_port' : 'std_port';
+        return { rosType: `std_msgs/msg/${prim.std}`, helper, codec: isChar ? `${helper}(${prim.std})` : `${helper}(${prim.std}, ${prim.py})`, sampled: true };
     }
     if (p.type.kind === 'object') {
         const msg = dt.messages[typeKey(p.type)];
@@ -23,8 +24,8 @@ export function portCodec(p: PortView, dt: RosDataTypeResult, imports: PyImports
         if (msg && py?.module && py.name) {
             imports.add(msg.module, '').add(py.module, py.name);
             const qualified = `${msg.module}.${msg.name}`;
-            const codec = msg.kind === 'enum' ? `enum_port(${qualified}, ${py.name})` : `class_port(${qualified}, ${py.name})`;
-            return { rosType: msg.type, codec, sampled: false };
+            const helper = msg.kind === 'enum' ? 'enum_port' : 'class_port';
+            return { rosType: msg.type, helper, codec: `${helper}(${qualified}, ${py.name})`, sampled: false };
         }
     }
     throw new GenerationError(`ros2.Components cannot carry port '${p.name}' of type ${p.typeName} on a ROS 2 topic (primitives, enums and non-generic classes can)`, p.node);
@@ -32,5 +33,5 @@ export function portCodec(p: PortView, dt: RosDataTypeResult, imports: PyImports
 
 /** The `maa_ros2` names the codecs of some ports use (`std_port`, `enum_port`). */
 export function codecNames(ports: Iterable<PortCodec>): string[] {
-    return [...new Set([...ports].map((p) => p.codec.replace(/\(.*$/, '')))];
+    return [...new Set([...ports].map((p) => p.helper))];
 }
