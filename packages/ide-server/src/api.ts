@@ -1,9 +1,12 @@
 import { readFile, stat } from 'node:fs/promises';
+import path from 'node:path';
 import { listApps, readApp } from './apps.js';
 import type { GenerationService } from './generation.js';
-import { HttpError, type Redact, readBody, readJsonObject, requireQuery, requireString, sendJson, sendText } from './http-util.js';
+import { requests, type FilesAnswer, type GenerateAnswer, type OkAnswer, type SimStartAnswer, type TopicMapAnswer } from '@maa/protocol';
+import { HttpError, type Redact, readBody, readRequest, requireQuery, sendJson, sendText } from './http-util.js';
 import { ROSBRIDGE_PATH, VISER_PATH } from './proxy.js';
 import { Router } from './router.js';
+import { topicMap } from './topic-map.js';
 import type { SimMode, SimSessions } from './sim-session.js';
 import type { Workspace } from './workspace.js';
 
@@ -17,6 +20,8 @@ export interface ApiOptions {
   redact?: Redact;
 }
 
+const OK: OkAnswer = { ok: true };
+
 /** The generator family a simulation mode runs (docs/ide.md: lockstep = timesync, ros2 = ros2). */
 const MODE_KIND: Record<SimMode, string> = { lockstep: 'timesync', ros2: 'ros2' };
 
@@ -25,7 +30,7 @@ export function createApiRouter({ workspace, generation, sims, maxFileBytes, red
   const router = new Router(redact);
 
   router.on('GET', '/api/files', async ({ res }) => {
-    sendJson(res, 200, { root: workspace.name, entries: await workspace.list() });
+    sendJson(res, 200, { root: workspace.name, entries: await workspace.list() } satisfies FilesAnswer);
   });
 
   router.on('GET', '/api/file', async ({ res, query }) => {
@@ -34,11 +39,11 @@ export function createApiRouter({ workspace, generation, sims, maxFileBytes, red
   router.on('PUT', '/api/file', async ({ req, res, query }) => {
     const rel = requireQuery(query, 'path');
     await workspace.write(rel, await readBody(req, maxFileBytes));
-    sendJson(res, 200, { ok: true });
+    sendJson(res, 200, OK);
   });
   router.on('DELETE', '/api/file', async ({ res, query }) => {
     await workspace.delete(requireQuery(query, 'path'));
-    sendJson(res, 200, { ok: true });
+    sendJson(res, 200, OK);
   });
 
   router.on('GET', '/api/apps', async ({ res }) => {
@@ -46,10 +51,10 @@ export function createApiRouter({ workspace, generation, sims, maxFileBytes, red
   });
 
   router.on('POST', '/api/generate', async ({ req, res }) => {
-    const body = await readJsonObject(req);
-    const { platformDir: _dir, ...answer } = await generation.generate(requireString(body, 'app'), requireString(body, 'platform'));
+    const body = await readRequest(req, requests.generate);
+    const { platformDir: _dir, ...answer } = await generation.generate(body.app, body.platform);
     // Diagnostics of a failed write name the output folder: no absolute paths in answers.
-    sendJson(res, 200, redact ? { ...answer, diagnostics: redact.value(answer.diagnostics) } : answer);
+    sendJson(res, 200, (redact ? { ...answer, diagnostics: redact.value(answer.diagnostics) } : answer) satisfies GenerateAnswer);
   });
   router.on('GET', '/api/generated/file', async ({ res, query }) => {
     const root = generation.platformRoot(requireQuery(query, 'app'), requireQuery(query, 'platform'));
@@ -70,20 +75,13 @@ export function createApiRouter({ workspace, generation, sims, maxFileBytes, red
   });
 
   router.on('POST', '/api/sim/start', async ({ req, res }) => {
-    const body = await readJsonObject(req);
-    const appPath = requireString(body, 'app');
-    const platformName = requireString(body, 'platform');
+    const { app: appPath, platform: platformName, speed, ...body } = await readRequest(req, requests.simStart);
     const app = await readApp(workspace, appPath);
     const platform = app?.platforms.find((p) => p.name === platformName);
     if (!app || !platform) throw new HttpError(400, `${appPath} has no platform '${platformName}'`);
-    const mode = body['mode'] ?? (platform.kind === 'ros2' ? 'ros2' : 'lockstep');
-    if (mode !== 'lockstep' && mode !== 'ros2') throw new HttpError(400, `mode must be "lockstep" or "ros2", not ${JSON.stringify(mode)}`);
+    const mode = body.mode ?? (platform.kind === 'ros2' ? 'ros2' : 'lockstep');
     if (platform.kind !== MODE_KIND[mode]) {
       throw new HttpError(400, `${mode} mode needs a ${MODE_KIND[mode]} platform; '${platformName}' is a ${platform.kind || 'unknown'} platform`);
-    }
-    const speed = body['speed'];
-    if (speed !== undefined && (typeof speed !== 'number' || !Number.isFinite(speed) || speed < 0 || speed > 1000)) {
-      throw new HttpError(400, 'speed must be a number from 0 (as fast as possible) to 1000');
     }
     const generated = await generation.generate(appPath, platformName);
     if (!generated.ok) {
@@ -91,11 +89,24 @@ export function createApiRouter({ workspace, generation, sims, maxFileBytes, red
       throw new HttpError(409, `generating ${platformName} failed with ${errors} error${errors === 1 ? '' : 's'}`, { diagnostics: generated.diagnostics });
     }
     const { session } = await sims.start({ app: appPath, platform: platformName, mode, speed, platformDir: generated.platformDir });
-    sendJson(res, 200, { ok: true, session, mode, rosbridge: ROSBRIDGE_PATH, viser: `${VISER_PATH}/` });
+    sendJson(res, 200, { ok: true, session, mode, rosbridge: ROSBRIDGE_PATH, viser: `${VISER_PATH}/` } satisfies SimStartAnswer);
+  });
+  // The port topics of a generated platform (run /api/generate or /api/sim/start first).
+  router.on('GET', '/api/sim/topics', async ({ res, query }) => {
+    const appPath = requireQuery(query, 'app');
+    const platformName = requireQuery(query, 'platform');
+    const app = await readApp(workspace, appPath);
+    const platform = app?.platforms.find((p) => p.name === platformName);
+    if (!app || !platform) throw new HttpError(400, `${appPath} has no platform '${platformName}'`);
+    const mode = (Object.keys(MODE_KIND) as SimMode[]).find((m) => MODE_KIND[m] === platform.kind);
+    if (!mode) throw new HttpError(400, `'${platformName}' is a ${platform.kind || 'unknown'} platform, which does not run in the simulator`);
+    generation.platformRoot(appPath, platformName); // checks the app path and the platform name
+    const platformDir = path.join(generation.appOutDir(appPath), platformName);
+    sendJson(res, 200, (await topicMap(platformDir, appPath, platformName, mode)) satisfies TopicMapAnswer);
   });
   router.on('POST', '/api/sim/stop', async ({ res }) => {
     await sims.stop();
-    sendJson(res, 200, { ok: true });
+    sendJson(res, 200, OK);
   });
   router.on('GET', '/api/sim/status', ({ res }) => {
     const status = sims.status();

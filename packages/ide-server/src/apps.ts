@@ -1,22 +1,11 @@
 import { readFile } from 'node:fs/promises';
 import type { appAst } from '@maa/generator-core';
+import type { AppInfo } from '@maa/protocol';
 import { HttpError } from './http-util.js';
 import { walkTree } from './walk.js';
 import { isSkippedName, type Workspace } from './workspace.js';
 
-export interface AppPlatformInfo {
-  name: string;
-  /** The generator family (`ros2`, `timesync`): the first segment of its generators' names. */
-  kind: string;
-  generators: string[];
-}
-
-export interface AppInfo {
-  path: string;
-  name: string;
-  component: string;
-  platforms: AppPlatformInfo[];
-}
+export type { AppInfo, AppPlatformInfo } from '@maa/protocol';
 
 type Parse = (text: string, file: string) => appAst.ArcAppModel;
 

@@ -2,26 +2,13 @@ import { existsSync, statSync } from 'node:fs';
 import { stat } from 'node:fs/promises';
 import path from 'node:path';
 import type { CheckDiagnostic } from '@maa/language-server';
+import type { GenerateAnswer, IdeDiagnostic } from '@maa/protocol';
 import { MODEL_ROOT_MARKER, resolveModelRoot } from '@maa/language-server/model-root';
 import { ConfinedRoot, checkRelativePath } from './confinement.js';
 import { HttpError } from './http-util.js';
 import type { Workspace } from './workspace.js';
 
-/** A diagnostic in LSP form (0-based ranges), its file relative to the workspace. */
-export interface IdeDiagnostic {
-  file: string;
-  range: { start: { line: number; character: number }; end: { line: number; character: number } };
-  severity: string;
-  code: string;
-  message: string;
-}
-
-export interface GenerateAnswer {
-  ok: boolean;
-  platform: string;
-  files: Array<{ path: string; size: number }>;
-  diagnostics: IdeDiagnostic[];
-}
+export type { GenerateAnswer, IdeDiagnostic } from '@maa/protocol';
 
 /** The folder of a generated platform (absolute) next to what the answer reports. */
 export interface GenerationOutcome extends GenerateAnswer {

@@ -1,4 +1,5 @@
 import type { IncomingMessage, ServerResponse } from 'node:http';
+import { formatIssues, type Contract, type Static, type TSchema } from '@maa/protocol';
 
 /** An error answered as `{"error": message}` with its HTTP status. */
 export class HttpError extends Error {
@@ -79,6 +80,14 @@ export async function readJsonObject(req: IncomingMessage, limit = 1024 * 1024):
   }
   if (typeof value !== 'object' || value === null || Array.isArray(value)) throw new HttpError(400, 'the request body must be a JSON object');
   return value as Record<string, unknown>;
+}
+
+/** Reads a JSON body that must keep a request contract of @maa/protocol (400 naming the bad fields). */
+export async function readRequest<T extends TSchema>(req: IncomingMessage, request: Contract<T>): Promise<Static<T>> {
+  const body = await readJsonObject(req);
+  const issues = request.issues(body);
+  if (issues.length > 0) throw new HttpError(400, `invalid ${request.name}: ${formatIssues(issues)}`);
+  return body as Static<T>;
 }
 
 export function requireString(body: Record<string, unknown>, field: string): string {

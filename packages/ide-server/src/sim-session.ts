@@ -4,11 +4,12 @@ import { existsSync, readdirSync } from 'node:fs';
 import { connect } from 'node:net';
 import path from 'node:path';
 import { createInterface } from 'node:readline';
+import type { SimMode, SimStatusAnswer } from '@maa/protocol';
 import { HttpError } from './http-util.js';
 import { descendantGroups, groupAlive, signalGroup } from './process-group.js';
 import type { Ros2Environment } from './ros2-environment.js';
 
-export type SimMode = 'lockstep' | 'ros2';
+export type { SimMode } from '@maa/protocol';
 
 /** The file a generated package must hold for a mode (docs/simulation.md). */
 const PACKAGE_FILE: Record<SimMode, string> = { lockstep: 'lockstep.json', ros2: 'deployment.json' };
@@ -21,6 +22,7 @@ const STATUS_LOG_LINES = 60;
  */
 const ROS2_SUPERVISION = ['--startup-timeout', '60', '--hang-timeout', '15'];
 
+/** What a session starts (the validated request of `POST /api/sim/start` with the generated folder). */
 export interface SimStartRequest {
   app: string;
   platform: string;
@@ -68,17 +70,8 @@ interface Session {
   exited?: Promise<void>;
 }
 
-export interface SimStatus {
-  running: boolean;
-  /** A start is under way: the ROS 2 environment is being set up or the interface package built (log shows progress). */
-  preparing?: boolean;
-  session?: string;
-  mode?: SimMode;
-  app?: string;
-  platform?: string;
-  exitCode?: number | null;
-  log: string[];
-}
+/** `GET /api/sim/status` (@maa/protocol). */
+export type SimStatus = SimStatusAnswer;
 
 /**
  * One `maa-sim run` child at a time, in a process group of its own: a stop signals the group

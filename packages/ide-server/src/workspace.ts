@@ -2,16 +2,13 @@ import { existsSync } from 'node:fs';
 import { randomUUID } from 'node:crypto';
 import { chmod, lstat, mkdir, readdir, readFile, realpath, rename, rm, stat, writeFile } from 'node:fs/promises';
 import path from 'node:path';
+import type { WorkspaceEntry } from '@maa/protocol';
 import { ConfinedRoot } from './confinement.js';
 import { HttpError } from './http-util.js';
 import { processAlive } from './process-group.js';
 import { walkTree } from './walk.js';
 
-export interface WorkspaceEntry {
-  path: string;
-  type: 'file' | 'directory';
-  size?: number;
-}
+export type { WorkspaceEntry } from '@maa/protocol';
 
 /**
  * Modes of what the API creates, before the user's umask: never writable by others, whatever

@@ -1,42 +1,14 @@
-/** The `maa-ide` backend API (docs/ide.md, "Backend HTTP API"). */
-import type { AppInfo, TextRange } from './contracts.js';
+/** The `maa-ide` backend API (docs/ide.md, "Backend HTTP API"); its types and checks are @maa/protocol's. */
+import {
+    answers, traceFileContract,
+    type AppInfo, type Contract, type GenerateAnswer, type IdeDiagnostic, type TraceElement, type TraceFile, type TSchema,
+    type Static, type WorkspaceEntry,
+} from '@maa/protocol';
 
-export interface FileEntry {
-    path: string;
-    type: 'file' | 'directory';
-    size?: number;
-}
-
-export interface GenerateDiagnostic {
-    file?: string;
-    range?: TextRange;
-    severity: 'error' | 'warning' | 'info' | string;
-    code?: string;
-    message: string;
-}
-
-export interface GenerateResult {
-    ok: boolean;
-    platform: string;
-    files: { path: string; size: number }[];
-    diagnostics: GenerateDiagnostic[];
-    error?: string;
-}
-
-export interface TraceElement {
-    file: string;
-    /** 1-based [startLine, startColumn, endLine, endColumn]. */
-    range: [number, number, number, number];
-    path?: string;
-    type?: string;
-    name?: string;
-}
-
-export interface TraceFile {
-    version: number;
-    modelRoot?: string;
-    files: { path: string; traces: { lines: [number, number]; element: TraceElement }[] }[];
-}
+export type FileEntry = WorkspaceEntry;
+export type GenerateDiagnostic = IdeDiagnostic;
+export type GenerateResult = GenerateAnswer;
+export type { TraceElement, TraceFile };
 
 export const WORKSPACE_URI = 'file:///workspace/';
 
@@ -59,10 +31,11 @@ async function failure(response: Response, what: string): Promise<Error> {
     return new Error(`${what}: ${message}`);
 }
 
-async function json<T>(input: string, init: RequestInit | undefined, what: string): Promise<T> {
+/** A JSON answer, checked against its contract (a bad answer is an error naming the field, not a crash later). */
+async function json<T extends TSchema>(input: string, init: RequestInit | undefined, what: string, contract: Contract<T>): Promise<Static<T>> {
     const response = await fetch(input, init);
     if (!response.ok) throw await failure(response, what);
-    return await response.json() as T;
+    return contract.parse(await response.json(), `${what}: the backend's answer`);
 }
 
 async function text(input: string, what: string): Promise<string> {
@@ -74,17 +47,17 @@ async function text(input: string, what: string): Promise<string> {
 const q = encodeURIComponent;
 
 export const api = {
-    files: () => json<{ root: string; entries: FileEntry[] }>('api/files', undefined, 'listing the workspace'),
+    files: () => json('api/files', undefined, 'listing the workspace', answers.files),
     readFile: (path: string) => text(`api/file?path=${q(path)}`, `reading ${path}`),
-    writeFile: (path: string, content: string) => json<{ ok: boolean }>(`api/file?path=${q(path)}`, {
+    writeFile: (path: string, content: string) => json(`api/file?path=${q(path)}`, {
         method: 'PUT', body: content, headers: { 'Content-Type': 'text/plain; charset=utf-8' },
-    }, `saving ${path}`),
-    apps: async () => (await json<{ apps: AppInfo[] }>('api/apps', undefined, 'listing the applications')).apps,
-    generate: (app: string, platform: string) => json<GenerateResult>('api/generate', {
+    }, `saving ${path}`, answers.ok),
+    apps: async (): Promise<AppInfo[]> => (await json('api/apps', undefined, 'listing the applications', answers.apps)).apps,
+    generate: (app: string, platform: string) => json('api/generate', {
         method: 'POST', body: JSON.stringify({ app, platform }), headers: { 'Content-Type': 'application/json' },
-    }, `generating ${app} for ${platform}`),
+    }, `generating ${app} for ${platform}`, answers.generate),
     generatedFile: (app: string, platform: string, path: string) =>
         text(`api/generated/file?app=${q(app)}&platform=${q(platform)}&path=${q(path)}`, `reading generated ${path}`),
     trace: (app: string, platform: string) =>
-        json<TraceFile>(`api/generated/trace?app=${q(app)}&platform=${q(platform)}`, undefined, 'reading the trace'),
+        json(`api/generated/trace?app=${q(app)}&platform=${q(platform)}`, undefined, 'reading the trace', traceFileContract),
 };

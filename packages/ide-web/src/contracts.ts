@@ -3,6 +3,7 @@
  * problems, generate panel) owns the language client and the layout; the diagram and the
  * simulate panel are mounted into containers it hands out. Only these types cross the seams.
  */
+import type { AppInfo, Position, Range } from '@maa/protocol';
 import type { ActionMessage } from 'sprotty-protocol';
 
 /** Something that can be undone/removed. */
@@ -10,17 +11,11 @@ export interface Disposable {
     dispose(): void;
 }
 
-/** A position in a workspace file, 0-based like LSP. */
-export interface TextPosition {
-    line: number;
-    character: number;
-}
+/** A position in a workspace file, 0-based like LSP (@maa/protocol's one convention). */
+export type TextPosition = Position;
 
-/** A range in a workspace file, 0-based like LSP. */
-export interface TextRange {
-    start: TextPosition;
-    end: TextPosition;
-}
+/** A range in a workspace file, 0-based like LSP, end exclusive. */
+export type TextRange = Range;
 
 /** What the shell gives the diagram: the language server's diagram channel and the editor. */
 export interface DiagramHost {
@@ -70,13 +65,8 @@ export interface DiagramView extends Disposable, DiagramLiveLayer {
     exportSvg(): Promise<string>;
 }
 
-/** One application configuration of the workspace (`GET /api/apps`). */
-export interface AppInfo {
-    path: string;
-    name: string;
-    component: string;
-    platforms: { name: string; kind: 'ros2' | 'timesync' | string }[];
-}
+/** One application configuration of the workspace (`GET /api/apps`, @maa/protocol). */
+export type { AppInfo };
 
 /** What the shell gives the simulate panel. */
 export interface SimulateHost {

@@ -14,6 +14,7 @@ export const repoDir = path.resolve(packageDir, '../..');
 export const SCHEMA_FILES = {
     'trace-file': protocol.TraceFile,
     deployment: protocol.Deployment,
+    'topic-map': protocol.TopicMapAnswer,
 };
 
 /** The contracts maa-sim reads, by Python constant prefix. */

@@ -3,7 +3,10 @@
  * (README.md). Each exports TypeBox schemas (JSON Schema objects), their static types and a
  * {@link Contract} that validates at run time.
  */
+export type { Static, TSchema } from '@sinclair/typebox';
 export * from './contract.js';
 export * from './position.js';
 export * from './trace/index.js';
 export * from './deployment/index.js';
+export * from './http/index.js';
+export * from './topics/index.js';

@@ -11,6 +11,7 @@ describe('emitted artifacts (JSON Schema files, sim-server protocol.py)', () => 
         expect([...emitted.keys()]).toEqual(expect.arrayContaining([
             'packages/protocol/schema/trace-file.schema.json',
             'packages/protocol/schema/deployment.schema.json',
+            'packages/protocol/schema/topic-map.schema.json',
             'sim-server/src/maa_sim/protocol.py',
         ]));
     });

@@ -1,25 +1,11 @@
-/** The backend's simulation API (docs/ide.md "Backend HTTP API"). */
-import { backendError, type SimMode } from './logic.js';
+/** The backend's simulation API (docs/ide.md "Backend HTTP API"); types and checks from @maa/protocol. */
+import {
+    answers, formatIssues, topicMapContract,
+    type Contract, type OkAnswer, type PortTopicEntry, type SimMode, type SimStartAnswer, type SimStatusAnswer, type Static, type TopicMapAnswer, type TSchema,
+} from '@maa/protocol';
+import { backendError } from './logic.js';
 
-export interface SimStartAnswer {
-    ok: boolean;
-    session?: string;
-    mode?: SimMode;
-    rosbridge?: string;
-    viser?: string;
-}
-
-export interface SimStatusAnswer {
-    running: boolean;
-    /** A ROS 2 start prepares its environment (venv, interface packages); progress in `log`. */
-    preparing?: boolean;
-    session?: string;
-    mode?: SimMode;
-    app?: string;
-    platform?: string;
-    exitCode?: number | null;
-    log?: string[];
-}
+export type { PortTopicEntry, SimStartAnswer, SimStatusAnswer, TopicMapAnswer };
 
 export class BackendError extends Error {
     constructor(message: string, readonly log: string[]) {
@@ -27,7 +13,8 @@ export class BackendError extends Error {
     }
 }
 
-async function call<T>(method: 'GET' | 'POST', url: string, body?: unknown): Promise<T> {
+/** A call whose answer is checked against its contract (a bad answer is a BackendError naming the field). */
+async function call<T extends TSchema>(method: 'GET' | 'POST', url: string, contract: Contract<T>, body?: unknown): Promise<Static<T>> {
     const res = await fetch(url, {
         method,
         headers: body === undefined ? {} : { 'content-type': 'application/json' },
@@ -44,12 +31,36 @@ async function call<T>(method: 'GET' | 'POST', url: string, body?: unknown): Pro
         const { message, log } = backendError(res.status, json);
         throw new BackendError(message, log);
     }
-    return json as T;
+    const issues = contract.issues(json);
+    if (issues.length > 0) throw new BackendError(`${method} ${url}: unexpected answer: ${formatIssues(issues)}`, []);
+    return json as Static<T>;
 }
 
 export const simApi = {
     start: (app: string, platform: string, mode: SimMode, speed: number): Promise<SimStartAnswer> =>
-        call<SimStartAnswer>('POST', '/api/sim/start', { app, platform, mode, speed }),
-    stop: (): Promise<{ ok: boolean }> => call<{ ok: boolean }>('POST', '/api/sim/stop', {}),
-    status: (): Promise<SimStatusAnswer> => call<SimStatusAnswer>('GET', '/api/sim/status'),
+        call('POST', '/api/sim/start', answers.simStart, { app, platform, mode, speed }),
+    stop: (): Promise<OkAnswer> => call('POST', '/api/sim/stop', answers.ok, {}),
+    status: (): Promise<SimStatusAnswer> => call('GET', '/api/sim/status', answers.simStatus),
+    /** The port topics of a generated platform, as the generators wrote them (after a start, which generates). */
+    topics: (app: string, platform: string): Promise<TopicMapAnswer> =>
+        call('GET', `/api/sim/topics?app=${encodeURIComponent(app)}&platform=${encodeURIComponent(platform)}`, topicMapContract),
 };
+
+/**
+ * The topic map by topic: the port a topic carries (an out port's entry wins over the in ports
+ * that read the same topic), for live values and input injection.
+ */
+export function portsByTopic(map: TopicMapAnswer): Map<string, PortTopicEntry> {
+    const byTopic = new Map<string, PortTopicEntry>();
+    for (const p of map.ports) {
+        const known = byTopic.get(p.topic);
+        if (!known || (known.direction === 'in' && p.direction === 'out')) byTopic.set(p.topic, p);
+    }
+    return byTopic;
+}
+
+/** The instance path of a node of `/maa/automaton_states` (`/toast_service_robot/ctrl` → `ctrl`), undefined for other nodes. */
+export function instanceOfNode(map: TopicMapAnswer, node: string): string | undefined {
+    const trimmed = node.replace(/\/+$/, '');
+    return map.nodes.find((n) => n.node === trimmed)?.instancePath;
+}

@@ -1,8 +1,9 @@
 /** Small pure pieces of the simulate panel: modes, status text, backend answers. */
+import type { SimMode } from '@maa/protocol';
 import type { AppInfo } from '../contracts.js';
 import { formatNumber } from './format.js';
 
-export type SimMode = 'lockstep' | 'ros2';
+export type { SimMode };
 
 /** The simulator mode of a platform kind: `timesync` → lock-step, `ros2` → ROS 2; others cannot run. */
 export function platformMode(kind: string): SimMode | undefined {

@@ -5,8 +5,9 @@
  */
 import * as monaco from '@codingame/monaco-vscode-editor-api';
 import { MODEL_ROOT_MARKER, resolveModelRoot } from '@maa/language-server/model-root';
+import type { LineSpan, Trace } from '@maa/protocol';
 import { api, type GenerateDiagnostic, type TraceElement, type TraceFile } from '../api.js';
-import type { AppInfo, TextRange } from '../contracts.js';
+import type { AppInfo, TextPosition, TextRange } from '../contracts.js';
 import { languageOf } from '../languages.js';
 import { basename, h } from './dom.js';
 
@@ -105,18 +106,18 @@ export class GeneratePanel {
         const started = performance.now();
         try {
             const result = await api.generate(app.path, platform);
-            await this.showDiagnostics(app, result.diagnostics ?? []);
+            await this.showDiagnostics(app, result.diagnostics);
             const files = result.files.map((f) => f.path).sort();
             this.current = { app, platform, files };
             try {
                 this.current.trace = await api.trace(app.path, platform);
             } catch { /* no trace (failed generation) */ }
             this.renderTree();
-            const errors = (result.diagnostics ?? []).filter((d) => d.severity === 'error').length;
+            const errors = result.diagnostics.filter((d) => d.severity === 'error').length;
             this.status.className = `generate-status ${result.ok ? 'ok' : 'failed'}`;
             this.status.textContent = result.ok
                 ? `${files.length} files for ${platform} in ${Math.round(performance.now() - started)} ms`
-                : `Generation failed: ${errors} error(s), see Problems${result.error ? ` (${result.error})` : ''}`;
+                : `Generation failed: ${errors} error(s), see Problems`;
             if (!result.ok) this.host.notify('error', `Generation for ${platform} failed`);
             return result.ok;
         } catch (error) {
@@ -152,7 +153,7 @@ export class GeneratePanel {
         this.markedModels = [];
         const byFile = new Map<string, GenerateDiagnostic[]>();
         for (const d of diagnostics) {
-            const file = d.file ?? app.path;
+            const file = d.file || app.path;
             byFile.set(file, [...byFile.get(file) ?? [], d]);
         }
         for (const [file, list] of byFile) {
@@ -163,7 +164,7 @@ export class GeneratePanel {
                 continue;
             }
             monaco.editor.setModelMarkers(model, MARKER_OWNER, list.map((d) => {
-                const range = d.range ?? { start: { line: 0, character: 0 }, end: { line: 0, character: 1 } };
+                const range = d.range;
                 return {
                     severity: d.severity === 'error' ? monaco.MarkerSeverity.Error : d.severity === 'warning' ? monaco.MarkerSeverity.Warning : monaco.MarkerSeverity.Info,
                     message: d.message, code: d.code, source: 'generate',
@@ -207,8 +208,8 @@ export class GeneratePanel {
         this.tree.replaceChildren(root);
     }
 
-    /** Shows a generated file in the preview, optionally selecting 1-based lines. */
-    async showFile(file: string, lines?: [number, number]): Promise<void> {
+    /** Shows a generated file in the preview, optionally selecting lines (0-based, inclusive, as in the trace file). */
+    async showFile(file: string, lines?: LineSpan): Promise<void> {
         const generated = this.current;
         if (!generated) return;
         const text = await api.generatedFile(generated.app.path, generated.platform, file);
@@ -220,18 +221,21 @@ export class GeneratePanel {
         this.shownFile = file;
         for (const row of this.tree.querySelectorAll<HTMLElement>('.tree-row.file')) row.classList.toggle('selected', row.dataset.path === file);
         if (lines) {
-            const range = new monaco.Range(lines[0], 1, lines[1], model.getLineMaxColumn(lines[1]));
+            const range = new monaco.Range(lines.first + 1, 1, lines.last + 1, model.getLineMaxColumn(lines.last + 1));
             this.preview.setSelection(range);
             this.preview.revealRangeInCenter(range);
         }
-        this.showLocation(lines?.[0] ?? 1);
+        this.showLocation((lines?.first ?? 0) + 1);
     }
 
-    private innermostTrace(file: string, line: number): TraceElement | undefined {
+    /** The innermost traced element of a generated line (Monaco's 1-based line number). */
+    private innermostTrace(file: string, lineNumber: number): TraceElement | undefined {
+        const line = lineNumber - 1;
         const traces = this.current?.trace?.files.find((f) => f.path === file)?.traces ?? [];
-        let best: { lines: [number, number]; element: TraceElement } | undefined;
+        let best: Trace | undefined;
         for (const t of traces) {
-            if (t.lines[0] <= line && line <= t.lines[1] && (!best || t.lines[1] - t.lines[0] <= best.lines[1] - best.lines[0])) best = t;
+            const { first, last } = t.lines;
+            if (first <= line && line <= last && (!best || last - first <= best.lines.last - best.lines.first)) best = t;
         }
         return best?.element;
     }
@@ -243,8 +247,9 @@ export class GeneratePanel {
             this.location.replaceChildren(file ? h('span', { class: 'muted' }, `${file} — no model element at line ${line}`) : '');
             return;
         }
+        const at = element.range ? `:${element.range.start.line + 1}` : '';
         const link = h('a', { href: '#', class: 'trace-link', 'data-testid': 'trace-link', title: 'Go to the model element (F12)' },
-            `${element.type ?? 'element'} ${element.name ?? ''} — ${element.file}:${element.range[0]}`);
+            `${element.type} ${element.name ?? ''} — ${element.file}${at}`);
         link.addEventListener('click', (e) => { e.preventDefault(); this.goToModel(); });
         this.location.replaceChildren(h('span', { class: 'muted' }, `${file}  ↦  `), link);
     }
@@ -253,16 +258,15 @@ export class GeneratePanel {
         const file = this.shownFile;
         const line = this.preview.getPosition()?.lineNumber ?? 1;
         const element = file ? this.innermostTrace(file, line) : undefined;
-        if (!element) {
+        if (!element?.range) {
             this.host.notify('info', 'No model element is traced to this line.');
             return;
         }
-        const [sl, sc, el, ec] = element.range;
-        this.host.openModel(this.workspacePathOf(element), { start: { line: sl - 1, character: sc - 1 }, end: { line: el - 1, character: ec - 1 } });
+        this.host.openModel(this.workspacePathOf(element), element.range);
     }
 
-    /** "Show generated code": the innermost traced generated lines of a model position. */
-    async showGeneratedFor(path: string, position: { line: number; character: number }): Promise<void> {
+    /** "Show generated code": the innermost traced generated lines of a model position (0-based, LSP). */
+    async showGeneratedFor(path: string, position: TextPosition): Promise<void> {
         if (!this.current) {
             const ok = await this.generate();
             if (!ok && !this.current) return;
@@ -270,15 +274,17 @@ export class GeneratePanel {
         const generated = this.current!;
         const root = this.modelRootOf(generated.app);
         const rel = root && path.startsWith(`${root}/`) ? path.slice(root.length + 1) : path;
-        const line = position.line + 1, column = position.character + 1;
-        let best: { file: string; lines: [number, number]; size: number } | undefined;
+        const { line, character } = position;
+        let best: { file: string; lines: LineSpan; size: number } | undefined;
         for (const f of generated.trace?.files ?? []) {
             for (const t of f.traces) {
-                const [sl, sc, el, ec] = t.element.range;
-                if (t.element.file !== rel) continue;
-                const inside = (line > sl || (line === sl && column >= sc)) && (line < el || (line === el && column <= ec));
+                const range = t.element.range;
+                if (!range || t.element.file !== rel) continue;
+                const { start, end } = range;
+                const inside = (line > start.line || (line === start.line && character >= start.character))
+                    && (line < end.line || (line === end.line && character <= end.character));
                 if (!inside) continue;
-                const size = (el - sl) * 10000 + (ec - sc);
+                const size = (end.line - start.line) * 10000 + (end.character - start.character);
                 if (!best || size < best.size) best = { file: f.path, lines: t.lines, size };
             }
         }
