@@ -21,7 +21,7 @@ async function parameters(params: string): Promise<{ params: ast.Parameter[]; co
     return { params: foo.component!.params, color: { kind: 'object', decl, args: [] } };
 }
 
-async function valueOf(params: string, env = EMPTY_CONSTANT_ENV): Promise<ConstantValue> {
+async function evaluated(params: string, env = EMPTY_CONSTANT_ENV): Promise<ConstantValue> {
     const { params: ps, color } = await parameters(params);
     const last = ps[ps.length - 1]!;
     return evaluateConstant(last.default!, env, color);
@@ -46,19 +46,19 @@ describe('constant evaluation on the AST', () => {
         ['int a = 1 > 0 ? 4 : 5', 'int', 4],
         ['String a = "n" + 1 + 2.0', 'string', 'n12.0']
     ])('%s', async (params, kind, value) => {
-        const v = await valueOf(params);
+        const v = await evaluated(params);
         expect(v.kind).toBe(kind);
         expect(v.value).toEqual(value);
     });
 
     test('enum constants of the expected enum evaluate to their ordinal, written qualified or not', async () => {
-        expect(await valueOf('Color a = Color.BLUE')).toMatchObject({ kind: 'enum', value: 'BLUE', ordinal: 2 });
-        expect(await valueOf('Color a = GREEN')).toMatchObject({ kind: 'enum', value: 'GREEN', ordinal: 1 });
+        expect(await evaluated('Color a = Color.BLUE')).toMatchObject({ kind: 'enum', value: 'BLUE', ordinal: 2 });
+        expect(await evaluated('Color a = GREEN')).toMatchObject({ kind: 'enum', value: 'GREEN', ordinal: 1 });
     });
 
     test('names take the values of the environment (the enclosing instance\'s parameters)', async () => {
         const env = constantEnv(new Map<string, ConstantValue>([['speed', { kind: 'int', value: 4 }]]));
-        expect(await valueOf('int a = speed * 2 + 1', env)).toEqual({ kind: 'int', value: 9 });
+        expect(await evaluated('int a = speed * 2 + 1', env)).toEqual({ kind: 'int', value: 9 });
     });
 
     test.each([

@@ -1,8 +1,8 @@
 import type { SymType } from '@maa/language-adl';
 import type { AstNode } from 'langium';
 import { GenerationError } from '@maa/generator-core/node';
-import {
-    type DataTypeGenerationContext, type DataTypeGeneratorFactory, type DataTypeGeneratorManifest, type DataTypeView, type GeneratorInstantiation, type TypeMapping
+import type {
+    DataTypeGenerationContext, DataTypeGeneratorFactory, DataTypeGeneratorManifest, DataTypeView, GeneratorInstantiation, TypeMapping
 } from '@maa/generator-core';
 import {
     MODEL_PACKAGE, constantName, describe, fieldName, interfacePackageName, isBuiltinDecl, messageNameOf, primitiveOf, rosPackageName, typeKey,
@@ -86,7 +86,7 @@ class MessageCatalog {
         }
         while (this.pending.length > 0) {
             const { t, where } = this.pending.shift()!;
-            collectUses(t).forEach((u) => this.define(u, where));
+            for (const u of collectUses(t)) this.define(u, where);
         }
     }
 
@@ -95,7 +95,10 @@ class MessageCatalog {
     }
 
     private define(t: SymType, where: AstNode): void {
-        if (t.kind === 'array') return this.define(t.component, where);
+        if (t.kind === 'array') {
+            this.define(t.component, where);
+            return;
+        }
         if (t.kind !== 'object' || isBuiltinDecl(t.decl)) return;
         const key = typeKey(t);
         if (this.defs.has(key)) return;

@@ -1,5 +1,5 @@
 import type { AstNode } from 'langium';
-import { ast, chainSource, elementsOf, feedingSource, impliedConnectors, isComposed, subcomponentType, subcomponentsOf, type ChainGraph } from '@maa/language-adl';
+import { type ast, chainSource, elementsOf, feedingSource, impliedConnectors, isComposed, subcomponentType, subcomponentsOf, type ChainGraph } from '@maa/language-adl';
 
 type ComponentType = ast.ComponentType;
 

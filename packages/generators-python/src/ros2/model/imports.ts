@@ -1,4 +1,4 @@
-import { Imports } from '../../behavior/common.js';
+import type { Imports } from '../../behavior/common.js';
 
 function compare(a: string, b: string): number {
     return a < b ? -1 : a > b ? 1 : 0;
@@ -14,8 +14,8 @@ export class PyImports {
     private readonly modules = new Map<string, Set<string>>();
 
     add(module: string, name: string): this {
-        let names = this.modules.get(module);
-        if (!names) this.modules.set(module, (names = new Set()));
+        const names = this.modules.get(module) ?? new Set<string>();
+        this.modules.set(module, names);
         names.add(name);
         return this;
     }
