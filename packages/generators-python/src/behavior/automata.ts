@@ -34,7 +34,10 @@ export function automatonClassView(automaton: Automaton, spec: ClassSpec, import
     ClassVarImports(imports);
 
     const prologue = prologueView(spec, imports, 'Behavior of an automaton (generated).', [`self._state: str = ${str(top[top.length - 1].name)}`]);
-    const parents = states.map((s) => ({ key: str(s.name), value: parent(s) ? str(parent(s)!.name) : 'None' }));
+    const parents = states.map((s) => {
+        const p = parent(s);
+        return { key: str(s.name), value: p ? str(p.name) : 'None' };
+    });
     // Only the initial action of the top-level initial state runs (MontiArc's simulator).
     const initialAction = top[0].initialAction ? tr.stmt(top[0].initialAction) : [];
     const actionsByKind = (['entry', 'exit', 'do'] as const).map((kind) => ({
