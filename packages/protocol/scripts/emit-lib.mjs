@@ -15,11 +15,15 @@ export const SCHEMA_FILES = {
     'trace-file': protocol.TraceFile,
     deployment: protocol.Deployment,
     'topic-map': protocol.TopicMapAnswer,
+    lockstep: protocol.Lockstep,
+    'step-outputs': protocol.StepOutputs,
 };
 
 /** The contracts maa-sim reads, by Python constant prefix. */
 const PYTHON_SCHEMAS = {
     DEPLOYMENT: protocol.Deployment,
+    LOCKSTEP: protocol.Lockstep,
+    STEP_OUTPUTS: protocol.StepOutputs,
 };
 
 /** A schema as plain JSON (TypeBox's symbol keys dropped). */

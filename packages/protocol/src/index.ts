@@ -10,3 +10,4 @@ export * from './trace/index.js';
 export * from './deployment/index.js';
 export * from './http/index.js';
 export * from './topics/index.js';
+export * from './lockstep/index.js';

@@ -14,9 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, cast
 
-from jsonschema import Draft202012Validator, ValidationError
-from jsonschema.exceptions import best_match
-
+from .contracts import problem, validator
 from .messages import MessageError, normalize_type
 from .protocol import DEPLOYMENT_SCHEMA
 from .protocol import Deployment as DeploymentDict
@@ -124,22 +122,7 @@ class Deployment:
         )
 
 
-_VALIDATOR = Draft202012Validator(DEPLOYMENT_SCHEMA)
-
-
-def _pointer(error: ValidationError) -> str:
-    return "".join(f"/{str(p).replace('~', '~0').replace('/', '~1')}" for p in error.absolute_path)
-
-
-def _message(error: ValidationError) -> str:
-    """The schema's `errorMessage` (`{key}`: the field's name), else the most specific inner message."""
-    custom = error.schema.get("errorMessage") if isinstance(error.schema, dict) else None
-    if isinstance(custom, str):
-        key = str(error.absolute_path[-1]) if error.absolute_path else ""
-        return custom.replace("{key}", key)
-    if error.context:
-        return _message(best_match(error.context))
-    return str(error.message)
+_VALIDATOR = validator(DEPLOYMENT_SCHEMA)
 
 
 def check_deployment(data: Any, where: str) -> DeploymentDict:
@@ -148,10 +131,9 @@ def check_deployment(data: Any, where: str) -> DeploymentDict:
     The error names the file and the JSON pointer of the first bad field:
     `app/deployment.json: /nodes/0/name: name must be a ROS node name (letters, digits, _)`.
     """
-    errors = sorted(_VALIDATOR.iter_errors(data), key=lambda e: [str(p) for p in e.absolute_path])
-    if errors:
-        first = errors[0]
-        raise DeploymentError(f"{where}: {_pointer(first) or '/'}: {_message(first)}")
+    found = problem(_VALIDATOR, data)
+    if found:
+        raise DeploymentError(f"{where}: {found}")
     return cast(DeploymentDict, data)
 
 

@@ -3,7 +3,7 @@
 The python-timesync build of an application implements `LockstepController`; the simulator
 calls `step` once per control period with the messages of that instant and applies the
 actuator messages it returns before stepping the physics. A package directory for lock-step
-mode holds `lockstep.json`:
+mode holds `lockstep.json` (its contract: @maa/protocol's Lockstep, emitted into `protocol.py`):
 
     {
       "format": "maa-lockstep/1",
@@ -26,9 +26,12 @@ import sys
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Protocol, runtime_checkable
+from typing import Any, Protocol, cast, runtime_checkable
 
+from .contracts import problem, validator
 from .messages import JsonMessage
+from .protocol import LOCKSTEP_SCHEMA
+from .protocol import Lockstep as LockstepDict
 
 LOCKSTEP_FORMAT = "maa-lockstep/1"
 
@@ -73,6 +76,23 @@ def normalize_outputs(outputs: Mapping[str, OutputValue] | None) -> dict[str, li
     return result
 
 
+_LOCKSTEP = validator(LOCKSTEP_SCHEMA)
+
+
+def check_lockstep(data: Any, where: str) -> LockstepDict:
+    """Checks a parsed `lockstep.json` against its contract (@maa/protocol); the error names the
+    file and the JSON pointer of the bad field. JSON has no NaN or infinity (Python reads them):
+    a period must be finite."""
+    found = problem(_LOCKSTEP, data)
+    if found:
+        raise ValueError(f"{where}: {found}")
+    checked = cast(LockstepDict, data)
+    period = checked.get("period")
+    if period is not None and not math.isfinite(period):
+        raise ValueError(f"{where}: /period: period must be a positive number of seconds")
+    return checked
+
+
 @dataclass
 class LockstepPackage:
     """A lock-step build described by its `lockstep.json`."""
@@ -92,28 +112,14 @@ class LockstepPackage:
             raise ValueError(f"{path} does not exist (a lock-step package needs lockstep.json)") from None
         except json.JSONDecodeError as exc:
             raise ValueError(f"{path}: invalid JSON: {exc}") from None
-        if not isinstance(data, dict):
-            raise ValueError(f"{path}: expected an object")
-        if data.get("format") != LOCKSTEP_FORMAT:
-            raise ValueError(f"{path}: format must be {LOCKSTEP_FORMAT!r}")
-        factory = data.get("factory")
-        if not isinstance(factory, str) or ":" not in factory:
-            raise ValueError(f"{path}: factory must be 'module:callable'")
-        python_path = data.get("python_path", ["."])
-        if not isinstance(python_path, list) or not all(isinstance(p, str) for p in python_path):
-            raise ValueError(f"{path}: python_path must be a list of strings")
-        period = data.get("period")
-        if period is not None and (not isinstance(period, int | float) or not math.isfinite(period) or period <= 0):
-            raise ValueError(f"{path}: period must be a positive number of seconds")
-        parameters = data.get("parameters", {})
-        if not isinstance(parameters, dict):
-            raise ValueError(f"{path}: parameters must be an object")
+        checked = check_lockstep(data, str(path))
+        period = checked.get("period")
         return cls(
             directory=directory,
-            factory=factory,
-            python_path=[(directory / p).resolve() for p in python_path],
+            factory=checked["factory"],
+            python_path=[(directory / p).resolve() for p in checked.get("python_path", ["."])],
             period=float(period) if period is not None else None,
-            parameters=parameters,
+            parameters=dict(checked.get("parameters", {})),
         )
 
     def create(self) -> LockstepController:

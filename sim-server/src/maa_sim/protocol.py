@@ -284,6 +284,91 @@ DEPLOYMENT_SCHEMA: Final[dict[str, Any]] = json.loads(
 """
 )
 
+LOCKSTEP_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "$id": "urn:maa:protocol:lockstep",
+ "title": "Lockstep",
+ "description": "lockstep.json: how maa-sim loads a python-timesync build (docs/simulation.md)",
+ "errorMessage": "expected an object",
+ "type": "object",
+ "required": [
+  "format",
+  "factory"
+ ],
+ "properties": {
+  "format": {
+   "errorMessage": "format must be 'maa-lockstep/1'",
+   "const": "maa-lockstep/1",
+   "type": "string"
+  },
+  "factory": {
+   "pattern": "^[A-Za-z_][A-Za-z0-9_.]*:[A-Za-z_][A-Za-z0-9_]*$",
+   "errorMessage": "factory must be 'module:callable'",
+   "type": "string"
+  },
+  "python_path": {
+   "errorMessage": "python_path must be a list of strings",
+   "type": "array",
+   "items": {
+    "errorMessage": "python_path must be a list of strings",
+    "type": "string"
+   }
+  },
+  "period": {
+   "exclusiveMinimum": 0,
+   "errorMessage": "period must be a positive number of seconds",
+   "type": "number"
+  },
+  "parameters": {
+   "errorMessage": "parameters must be an object",
+   "type": "object",
+   "patternProperties": {
+    "^(.*)$": {}
+   }
+  }
+ }
+}
+"""
+)
+
+STEP_OUTPUTS_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "title": "StepOutputs",
+ "additionalProperties": false,
+ "description": "topic -> message, or list of messages, emitted in one time slice",
+ "type": "object",
+ "patternProperties": {
+  "^/": {
+   "anyOf": [
+    {
+     "description": "a ROS 2 message in JSON form",
+     "type": "object",
+     "patternProperties": {
+      "^(.*)$": {}
+     }
+    },
+    {
+     "type": "array",
+     "items": {
+      "description": "a ROS 2 message in JSON form",
+      "type": "object",
+      "patternProperties": {
+       "^(.*)$": {}
+      }
+     }
+    },
+    {
+     "type": "null"
+    }
+   ]
+  }
+ }
+}
+"""
+)
+
 
 class PortTopic(TypedDict):
     """A topic of a node with its ROS 2 type and port"""
@@ -315,3 +400,13 @@ class Deployment(TypedDict):
     python_path: NotRequired[list[str]]
     env: NotRequired[dict[str, str]]
     nodes: list[DeploymentNode]
+
+
+class Lockstep(TypedDict):
+    """lockstep.json: how maa-sim loads a python-timesync build (docs/simulation.md)"""
+
+    format: Literal["maa-lockstep/1"]
+    factory: str
+    python_path: NotRequired[list[str]]
+    period: NotRequired[float]
+    parameters: NotRequired[dict[str, Any]]
