@@ -39,18 +39,14 @@ export interface DiagramTarget {
 
 /**
  * The diagram's extension point for a simulation run (what the simulate panel uses): live values
- * on ports and connectors, the active automaton state or mode of each instance, the paths the
- * shown diagrams know (for the spelling of topic and node names), and the user's selection.
+ * on ports and connectors, the active automaton state or mode of each instance, and the user's
+ * selection.
  */
 export interface DiagramLiveLayer {
     /** Live values by port path (`"ctrl.arm"`); shown on connectors and ports. Empty map clears. */
     setLiveValues(values: ReadonlyMap<string, string>): void;
     /** Active automaton state or mode by instance path (`"ctrl"` → `"Toasting"`). Empty map clears. */
     setActiveStates(states: ReadonlyMap<string, string>): void;
-    /** Port paths of every C&C diagram shown so far (`"ctrl.arm"`). */
-    knownPortPaths(): string[];
-    /** Instance paths of every C&C diagram shown so far (`""` the root, `"ctrl"`). */
-    knownInstancePaths(): string[];
     /** Called when the user selects diagram elements (their traces). */
     onSelect(handler: (traces: string[]) => void): Disposable;
 }

@@ -173,8 +173,6 @@ class NoDiagram implements DiagramView {
     exportSvg(): Promise<string> { return Promise.resolve('<svg xmlns="http://www.w3.org/2000/svg"/>'); }
     setLiveValues(): void { /* nothing */ }
     setActiveStates(): void { /* nothing */ }
-    knownPortPaths(): string[] { return []; }
-    knownInstancePaths(): string[] { return []; }
     onSelect(): Disposable { return { dispose: () => undefined }; }
     dispose(): void { /* nothing */ }
 }

@@ -61,21 +61,6 @@ function controllerAlone(): SchemaElement {
 }
 
 describe('diagram live layer', () => {
-    it('knows the port and instance paths of every C&C diagram seen, not of automata', () => {
-        const live = new LiveLayer();
-        expect(live.knownPortPaths()).toEqual([]);
-        live.recordModel(cc('toast.ToastServiceRobot'), 'maa-cc', 'toast.ToastServiceRobot');
-        live.recordModel(
-            { type: 'graph', id: 'a', children: [{ type: 'port', id: 'x', portPath: 'ignored' }] },
-            'maa-automaton',
-            'toast.Controller',
-        );
-        expect(live.knownPortPaths()).toEqual(['distance', 'ctrl.armCmd']);
-        expect(live.knownInstancePaths()).toEqual(['', 'ctrl']);
-        live.recordModel(controllerAlone(), 'maa-cc', 'toast.Controller');
-        expect(new Set(live.knownPortPaths())).toEqual(new Set(['distance', 'ctrl.armCmd', 'armCmd']));
-    });
-
     it('finds live values by exact path, by snake-case spelling, and below the prefix of a subcomponent shown alone', () => {
         const live = new LiveLayer();
         live.recordModel(cc('toast.ToastServiceRobot'), 'maa-cc', 'toast.ToastServiceRobot');

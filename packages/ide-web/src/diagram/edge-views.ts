@@ -4,7 +4,7 @@ import type { ConnectorEdge, TransitionEdge } from './model.js';
 import { modeActivity } from './schema.js';
 import {
     arrowHead,
-    connectorPortPath,
+    connectorValue,
     declaringMode,
     hasOwnLabels,
     polylineMidpoint,
@@ -21,7 +21,7 @@ export function connectorView(state: ViewState): new () => PolylineEdgeView {
             const vnode = super.render(edge, context, args);
             if (vnode) {
                 setClass(vnode, 'maa-connector', true);
-                setClass(vnode, 'maa-connector-live', state.liveValue(connectorPortPath(edge)) !== undefined);
+                setClass(vnode, 'maa-connector-live', connectorValue(state, edge) !== undefined);
                 const inMode = modeActivity(edge.mode, edge.mode ? declaringMode(state, edge.parent) : undefined);
                 setClass(vnode, 'maa-mode-active', inMode === 'active');
                 setClass(vnode, 'maa-mode-inactive', inMode === 'inactive');
@@ -32,7 +32,7 @@ export function connectorView(state: ViewState): new () => PolylineEdgeView {
 
         protected override renderAdditionals(edge: SEdgeImpl, segments: Point[], _context: RenderingContext): VNode[] {
             const out = arrowHead(segments, 'maa-arrow');
-            const value = state.liveValue(connectorPortPath(edge as ConnectorEdge));
+            const value = connectorValue(state, edge as ConnectorEdge);
             if (value !== undefined) {
                 const mid = polylineMidpoint(segments);
                 if (mid) {

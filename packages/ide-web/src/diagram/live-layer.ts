@@ -1,19 +1,11 @@
 /**
  * What a simulation run shows on the diagram (the data behind contracts.ts `DiagramLiveLayer`):
- * live values by port path and active states or modes by instance path, and the instance and port
- * tables of every C&C diagram seen so far. Those tables give the spellings of the paths (topic and
- * node names are snake case) and place a subcomponent's diagram shown on its own inside the
- * application (its paths are then relative to its instance path). Pure: no Sprotty, no DOM.
+ * live values by port path and active states or modes by instance path. The instance tables of
+ * every C&C diagram seen so far place a subcomponent's diagram shown on its own inside the
+ * application (its paths are then relative to its instance path) and find the instance whose
+ * automaton an automaton view shows. Pure: no Sprotty, no DOM.
  */
-import {
-    activeStateForType,
-    instancePrefix,
-    instanceTypesOf,
-    lookupLiveValue,
-    portPathsOf,
-    snakePath,
-    type SchemaElement,
-} from './schema.js';
+import { activeStateForType, instancePrefix, instanceTypesOf, lookupLiveValue, snakePath, type SchemaElement } from './schema.js';
 
 export class LiveLayer {
     private values: ReadonlyMap<string, string> = new Map();
@@ -21,16 +13,13 @@ export class LiveLayer {
     private states: ReadonlyMap<string, string> = new Map();
     /** Instance types of every C&C diagram seen, by shown component. */
     private readonly typeMaps = new Map<string, Map<string, string>>();
-    /** Port paths of every C&C diagram seen, by shown component. */
-    private readonly portPathMaps = new Map<string, string[]>();
     /** The instance path of the shown component in another known diagram (see `instancePrefix`). */
     private prefix: string | undefined;
 
-    /** A new model of `shown` arrived; only C&C diagrams (not `maa-automaton`) have tables. */
+    /** A new model of `shown` arrived; only C&C diagrams (not `maa-automaton`) have instance tables. */
     recordModel(root: SchemaElement, diagramType: string | undefined, shown: string): void {
         if (diagramType === 'maa-automaton') return;
         this.typeMaps.set(shown, instanceTypesOf(root));
-        this.portPathMaps.set(shown, portPathsOf(root));
         this.prefix = instancePrefix(this.typeMaps, shown);
     }
 
@@ -65,13 +54,5 @@ export class LiveLayer {
     activeStateForType(componentType: string | undefined): string | undefined {
         if (this.states.size === 0) return undefined;
         return activeStateForType(this.typeMaps, this.states, componentType);
-    }
-
-    knownPortPaths(): string[] {
-        return [...new Set([...this.portPathMaps.values()].flat())];
-    }
-
-    knownInstancePaths(): string[] {
-        return [...new Set([...this.typeMaps.values()].flatMap((m) => [...m.keys()]))];
     }
 }

@@ -126,14 +126,6 @@ export class MountedDiagram implements MaaDiagramView {
         this.scheduleRedraw();
     }
 
-    knownPortPaths(): string[] {
-        return this.live.knownPortPaths();
-    }
-
-    knownInstancePaths(): string[] {
-        return this.live.knownInstancePaths();
-    }
-
     onSelect(handler: (traces: string[]) => void): Disposable {
         this.selectHandlers.add(handler);
         return { dispose: () => this.selectHandlers.delete(handler) };

@@ -56,13 +56,26 @@ export function hasOwnLabels(node: SParentElementImpl): boolean {
 
 /**
  * The port path whose value a connector carries: its `sourcePortPath`, or, when that is empty
- * (e.g. a connector from an in port of the shown component, whose topic is `/<root>/<port>`),
- * the path of its source port.
+ * (e.g. a connector from an in port of the shown component, fed from outside), the path of its
+ * source port.
  */
 export function connectorPortPath(edge: Readonly<ConnectorEdge>): string | undefined {
     if (edge.sourcePortPath) return edge.sourcePortPath;
     const source = edge.source as MaaPort | undefined;
     return source && source.type === 'port' && source.direction === 'in' ? source.portPath : undefined;
+}
+
+/**
+ * The live value a connector carries: that of {@link connectorPortPath}; for a connector from an
+ * in port of the shown component without a value of its own, that of its target port (the same
+ * topic: on ROS 2 the topic map names the in ports reading a topic fed from outside, not the
+ * root's port).
+ */
+export function connectorValue(state: ViewState, edge: Readonly<ConnectorEdge>): string | undefined {
+    const value = state.liveValue(connectorPortPath(edge));
+    if (value !== undefined || edge.sourcePortPath) return value;
+    const target = edge.target as MaaPort | undefined;
+    return target && target.type === 'port' ? state.liveValue(target.portPath) : undefined;
 }
 
 /** Whether the server sent a `label:badge` child (then the label view draws the badge). */

@@ -134,7 +134,7 @@ export class SimulationController implements Disposable {
             await simApi.start(app.path, platform, mode, controls.speed());
             stopPolling();
             host.notify('info', `Simulation of ${app.name} started (${mode === 'lockstep' ? 'lock-step' : 'ROS 2'})`);
-            if (this.dispatch({ type: 'start-succeeded' }) && this.session.kind === 'running') this.attach(app.component);
+            if (this.dispatch({ type: 'start-succeeded' }) && this.session.kind === 'running') this.attach(app.path, platform);
         } catch (e) {
             stopPolling();
             const cancelled = this.session.kind === 'cancelling';
@@ -182,8 +182,7 @@ export class SimulationController implements Disposable {
             if (this.disposed) return;
             const cancelled = this.session.kind === 'cancelling';
             if (st.running) {
-                if (this.dispatch({ type: 'start-succeeded' }) && this.session.kind === 'running')
-                    this.attach(app?.component ?? this.parts.controls.selectedApp()?.component ?? '');
+                if (this.dispatch({ type: 'start-succeeded' }) && this.session.kind === 'running') this.attachFound(st);
                 return;
             }
             this.dispatch({ type: 'start-failed' });
@@ -191,7 +190,7 @@ export class SimulationController implements Disposable {
             return;
         }
         if (st.running && !this.disposed && this.dispatch({ type: 'adopt-running' })) {
-            this.attach(app?.component ?? this.parts.controls.selectedApp()?.component ?? '');
+            this.attachFound(st);
         }
     }
 
@@ -229,13 +228,20 @@ export class SimulationController implements Disposable {
         };
     }
 
+    /** Connects to a session found running: its app and platform as the backend reports them. */
+    private attachFound(st: SimStatusAnswer): void {
+        const { controls } = this.parts;
+        this.attach(st.app ?? controls.selectedApp()?.path ?? '', st.platform ?? controls.selectedPlatform());
+    }
+
     /** Connects to the running session: the 3D view, rosbridge, topics, status polling. */
-    private attach(rootComponent: string): void {
+    private attach(app: string, platform: string): void {
         const { host, inspector, status, viewer } = this.parts;
         this.detach();
         viewer.show();
         this.run = new LiveRun({
-            rootComponent,
+            app,
+            platform,
             diagram: host.diagram,
             inspector,
             status,

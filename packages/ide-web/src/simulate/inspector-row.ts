@@ -6,7 +6,7 @@ import type { EnumLiterals } from './enums.js';
 import { formatRosValue, numericValue } from './format.js';
 import { injectControls } from './injection.js';
 import { Sparkline } from './plots.js';
-import type { PortTopic } from './topics.js';
+import type { PortTopicEntry } from './backend.js';
 
 export class InspectorRow {
     readonly tr: HTMLTableRowElement;
@@ -22,12 +22,12 @@ export class InspectorRow {
     private numeric = false;
 
     /**
-     * `onWatch` runs when the watch box changes; `onInject` gets the text of a root port's inject
-     * field (only root ports, fed from outside, offer one).
+     * `onWatch` runs when the watch box changes; `onInject` gets the text of the inject field, which
+     * only ports fed from outside offer (no port of the application publishes their topic).
      */
     constructor(
         public info: TopicInfo,
-        public port: PortTopic | undefined,
+        public port: PortTopicEntry | undefined,
         onWatch: (row: InspectorRow) => void,
         onInject: (row: InspectorRow, text: string) => void,
     ) {
@@ -39,7 +39,7 @@ export class InspectorRow {
             port ? port.portPath : info.topic,
         );
         const injectCell = el('td', { class: 'maa-port-inject' });
-        if (port?.rootPort) injectCell.append(...injectControls(info.topic, info.type, (text) => onInject(this, text)));
+        if (port?.external) injectCell.append(...injectControls(info.topic, info.type, (text) => onInject(this, text)));
         this.tr = el(
             'tr',
             { class: port ? 'maa-port-row' : 'maa-platform-row', 'data-topic': info.topic, 'data-port-path': port?.portPath ?? '' },

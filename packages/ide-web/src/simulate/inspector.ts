@@ -9,7 +9,7 @@ import { EnumLiterals } from './enums.js';
 import { formatRosValue, isEnumMessage } from './format.js';
 import { inject } from './injection.js';
 import { InspectorRow } from './inspector-row.js';
-import type { PortTopic } from './topics.js';
+import type { PortMap } from './port-map.js';
 
 /** Unwatched topics arrive at most this often (the diagram's rate, 10 Hz). */
 export const THROTTLE_MS = 100;
@@ -39,6 +39,7 @@ export class Inspector {
     private readonly rows = new Map<string, InspectorRow>();
     private readonly enums = new EnumLiterals();
     private conn: RosConnection | undefined;
+    private ports: PortMap | undefined;
 
     constructor(private readonly host: InspectorHost) {
         this.allOnDiagram.checked = true;
@@ -98,13 +99,14 @@ export class Inspector {
         this.conn = conn;
     }
 
-    /** The run's topics: new rows for new topics, gone ones removed; `portOf` maps a topic to its port. */
-    update(list: readonly TopicInfo[], portOf: (topic: string) => PortTopic | undefined): void {
+    /** The run's topics: new rows for new topics, gone ones removed; `ports` says which topic carries which port. */
+    update(list: readonly TopicInfo[], ports: PortMap): void {
+        this.ports = ports;
         const seen = new Set<string>();
         for (const info of list) {
             if (HIDDEN_TOPICS.some((re) => re.test(info.topic))) continue;
             seen.add(info.topic);
-            const port = portOf(info.topic);
+            const port = ports.portOf(info.topic);
             const existing = this.rows.get(info.topic);
             if (existing) {
                 existing.info = info;
@@ -145,7 +147,8 @@ export class Inspector {
         for (const r of this.rows.values()) {
             if (!r.port || r.lastText === undefined) continue;
             if (!this.allOnDiagram.checked && !r.watched) continue;
-            values.set(r.port.portPath, formatRosValue(r.last, 28, this.enums.formatOptions(r.info.type)));
+            const text = formatRosValue(r.last, 28, this.enums.formatOptions(r.info.type));
+            for (const path of this.ports?.diagramPaths(r.info.topic) ?? [r.port.portPath]) values.set(path, text);
         }
         return values;
     }
@@ -162,6 +165,7 @@ export class Inspector {
         this.tbody.replaceChildren();
         this.empty.hidden = false;
         this.conn = undefined;
+        this.ports = undefined;
     }
 
     private watchChanged(row: InspectorRow): void {

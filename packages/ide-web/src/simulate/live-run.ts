@@ -10,9 +10,10 @@ import { errorText } from './dom.js';
 import { clockSeconds } from './format.js';
 import type { Inspector } from './inspector.js';
 import { statusLine, unwrapStatus, type SimStatus } from './logic.js';
+import { simApi } from './backend.js';
+import { PortMap } from './port-map.js';
 import { parseAutomatonStates } from './states.js';
 import type { StatusView } from './status-view.js';
-import { topicIndex, topicToPort } from './topics.js';
 
 const AUTOMATON_STATES = '/maa/automaton_states';
 const DIAGRAM_PERIOD_MS = 100; // 10 Hz
@@ -21,8 +22,9 @@ const TOPICS_PERIOD_MS = 3000;
 const CONNECT_ATTEMPTS = 4;
 
 export interface LiveRunHost {
-    /** The qualified name of the application's root component (the topics' namespace). */
-    rootComponent: string;
+    /** The running application (`.arcapp` path) and platform: the backend serves their port topics. */
+    app: string;
+    platform: string;
     diagram: DiagramLiveLayer;
     inspector: Inspector;
     status: StatusView;
@@ -36,6 +38,9 @@ export interface LiveRunHost {
 export class LiveRun implements Disposable {
     private ros: RosConnection | undefined;
     private clock: number | undefined;
+    /** The port topics, once the backend served them. */
+    private ports: PortMap | undefined;
+    private portsLoading = false;
     private simStatus: SimStatus = {};
     private activeStates = new Map<string, string>();
     private statesDirty = false;
@@ -160,7 +165,9 @@ export class LiveRun implements Disposable {
                 AUTOMATON_STATES,
                 'std_msgs/msg/String',
                 (m) => {
-                    this.activeStates = parseAutomatonStates(m, this.host.rootComponent, this.host.diagram.knownInstancePaths());
+                    const ports = this.ports;
+                    if (!ports) return;
+                    this.activeStates = parseAutomatonStates(m, (node) => ports.instanceOf(node));
                     this.statesDirty = true;
                 },
                 DIAGRAM_PERIOD_MS,
@@ -190,9 +197,23 @@ export class LiveRun implements Disposable {
         } catch {
             return;
         }
-        if (conn !== this.ros) return;
-        const root = this.host.rootComponent;
-        const known = topicIndex(root, this.host.diagram.knownPortPaths());
-        this.host.inspector.update(list, (topic) => topicToPort(root, topic, known));
+        const ports = this.ports ?? (await this.loadPorts());
+        if (conn !== this.ros || !ports) return;
+        this.host.inspector.update(list, ports);
+    }
+
+    /** Asks the backend for the port topics (once they arrived, they stay for the run); `undefined` until then. */
+    private async loadPorts(): Promise<PortMap | undefined> {
+        if (this.portsLoading) return undefined;
+        this.portsLoading = true;
+        try {
+            this.ports = new PortMap(await simApi.topics(this.host.app, this.host.platform));
+        } catch (e) {
+            // asked again at the next topic refresh
+            console.warn(`port topics of ${this.host.app} on ${this.host.platform}: ${errorText(e)}`);
+        } finally {
+            this.portsLoading = false;
+        }
+        return this.disposed ? undefined : this.ports;
     }
 }

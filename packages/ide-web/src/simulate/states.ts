@@ -1,11 +1,13 @@
 /**
  * `/maa/automaton_states` (`std_msgs/msg/String`, `data` = JSON `{"<node path>": "<state path>"}`)
- * → active state by instance path. Pure.
+ * → active state (or current mode) by instance path. Pure.
  */
-import { nodeToInstancePath } from './topics.js';
 
-/** Parses the message; node paths outside the root are dropped, malformed data gives an empty map. */
-export function parseAutomatonStates(message: unknown, rootComponent: string, knownInstancePaths?: Iterable<string>): Map<string, string> {
+/**
+ * Parses the message; `instanceOf` maps a node path to its instance path (port-map.ts, from the
+ * backend's topic map): nodes it does not know are dropped, malformed data gives an empty map.
+ */
+export function parseAutomatonStates(message: unknown, instanceOf: (node: string) => string | undefined): Map<string, string> {
     const result = new Map<string, string>();
     let data: unknown = message;
     if (data && typeof data === 'object' && 'data' in data) data = (data as { data: unknown }).data;
@@ -17,10 +19,9 @@ export function parseAutomatonStates(message: unknown, rootComponent: string, kn
         return result;
     }
     if (!parsed || typeof parsed !== 'object' || Array.isArray(parsed)) return result;
-    const known = knownInstancePaths ? [...knownInstancePaths] : undefined;
     for (const [node, state] of Object.entries(parsed as Record<string, unknown>)) {
         if (typeof state !== 'string' || state.length === 0) continue;
-        const inst = nodeToInstancePath(rootComponent, node, known);
+        const inst = instanceOf(node);
         if (inst !== undefined) result.set(inst, state);
     }
     return result;
