@@ -41,6 +41,8 @@ export class LiveRun implements Disposable {
     /** The port topics, once the backend served them. */
     private ports: PortMap | undefined;
     private portsLoading = false;
+    /** The last message of `/maa/automaton_states` (states publish at a switch only on ROS 2). */
+    private statesMessage: unknown;
     private simStatus: SimStatus = {};
     private activeStates = new Map<string, string>();
     private statesDirty = false;
@@ -165,10 +167,8 @@ export class LiveRun implements Disposable {
                 AUTOMATON_STATES,
                 'std_msgs/msg/String',
                 (m) => {
-                    const ports = this.ports;
-                    if (!ports) return;
-                    this.activeStates = parseAutomatonStates(m, (node) => ports.instanceOf(node));
-                    this.statesDirty = true;
+                    this.statesMessage = m;
+                    this.mapStates();
                 },
                 DIAGRAM_PERIOD_MS,
             ),
@@ -202,12 +202,21 @@ export class LiveRun implements Disposable {
         this.host.inspector.update(list, ports);
     }
 
+    /** The last `/maa/automaton_states` message by instance path, once the port map is there. */
+    private mapStates(): void {
+        const ports = this.ports;
+        if (!ports || this.statesMessage === undefined || this.disposed) return;
+        this.activeStates = parseAutomatonStates(this.statesMessage, (node) => ports.instanceOf(node));
+        this.statesDirty = true;
+    }
+
     /** Asks the backend for the port topics (once they arrived, they stay for the run); `undefined` until then. */
     private async loadPorts(): Promise<PortMap | undefined> {
         if (this.portsLoading) return undefined;
         this.portsLoading = true;
         try {
             this.ports = new PortMap(await simApi.topics(this.host.app, this.host.platform));
+            this.mapStates(); // states that arrived before the map
         } catch (e) {
             // asked again at the next topic refresh
             console.warn(`port topics of ${this.host.app} on ${this.host.platform}: ${errorText(e)}`);
