@@ -10,18 +10,25 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from test_generated_lockstep import TOAST_APP, generate
+from test_generated_lockstep import TOAST_APP, generate, lockstep_app
 
+from maa_sim import interface
 from maa_sim.contracts import problem, validator
 from maa_sim.lockstep import LockstepPackage, check_lockstep, normalize_outputs
-from maa_sim.protocol import DEPLOYMENT_SCHEMA, LOCKSTEP_SCHEMA, STEP_OUTPUTS_SCHEMA
+from maa_sim.protocol import (
+    DEPLOYMENT_SCHEMA,
+    LOCKSTEP_SCHEMA,
+    SIMULATOR_STATUS_SCHEMA,
+    SIMULATOR_TOPICS,
+    STEP_OUTPUTS_SCHEMA,
+)
 
 GENERATOR_TESTS = Path(__file__).resolve().parents[2] / "packages" / "generators-python" / "test"
 GOLDEN_LOCKSTEP = sorted(GENERATOR_TESTS.glob("golden*/**/lockstep.json"))
 
 
 def test_emitted_schemas_are_json_schemas() -> None:
-    for schema in (DEPLOYMENT_SCHEMA, LOCKSTEP_SCHEMA, STEP_OUTPUTS_SCHEMA):
+    for schema in (DEPLOYMENT_SCHEMA, LOCKSTEP_SCHEMA, STEP_OUTPUTS_SCHEMA, SIMULATOR_STATUS_SCHEMA):
         validator(schema)  # raises SchemaError for an invalid schema
 
 
@@ -73,6 +80,28 @@ def test_a_generated_controller_keeps_the_step_contract(tmp_path: Path) -> None:
         assert problem(checker, dict(outputs)) is None, outputs
         seen.update(normalize_outputs(outputs))
     assert "/toast_service_robot/ctrl/arm" in seen
+
+    # The simulator running this build answers /sim/get_status as the IDE's contract says.
+    app = lockstep_app(build, max_sim_time=1.0, speed=0.0)
+    app.start()
+    try:
+        status_checker = validator(SIMULATOR_STATUS_SCHEMA)
+        assert problem(status_checker, app.status()) is None, app.status()
+        assert app.runner is not None
+        app.runner.resume()
+        assert app.wait(timeout=120)
+        final = app.status()
+        assert problem(status_checker, final) is None, final
+        assert final["finished"] is not None
+    finally:
+        app.stop()
+
+
+def test_the_platform_topics_are_the_protocols() -> None:
+    assert [(t.name, t.type, t.publisher, t.description) for t in interface.ALL_TOPICS.values()] == sorted(
+        ((t["name"], t["type"], t["publisher"], t["description"]) for t in SIMULATOR_TOPICS),
+        key=lambda t: list(interface.ALL_TOPICS).index(t[0]),
+    )
 
 
 def test_the_step_contract_wants_absolute_topics_and_message_objects() -> None:

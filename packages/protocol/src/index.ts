@@ -11,3 +11,4 @@ export * from './deployment/index.js';
 export * from './http/index.js';
 export * from './topics/index.js';
 export * from './lockstep/index.js';
+export * from './simulator/index.js';

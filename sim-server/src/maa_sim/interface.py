@@ -8,9 +8,10 @@ application; docs/simulation.md documents it for users. Messages are in JSON for
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Any, Literal, cast
 
 from .messages import JsonMessage, MessageError
+from .protocol import SIMULATOR_TOPICS
 from .world import ARM_JOINTS, JOINT_NAMES, TOAST_COLORS, ToastKitchen
 
 Direction = Literal["sim", "controller"]
@@ -25,43 +26,18 @@ class TopicSpec:
     description: str
 
 
-CLOCK = TopicSpec("/clock", "rosgraph_msgs/msg/Clock", "sim", "simulation time")
-JOINT_STATES = TopicSpec(
-    "/joint_states",
-    "sensor_msgs/msg/JointState",
-    "sim",
-    "base_yaw (rad), lift (m, gripper height), finger_inner and finger_outer (m, half opening)",
-)
-JOINT_COMMAND = TopicSpec(
-    "/arm/joint_command",
-    "sensor_msgs/msg/JointState",
-    "controller",
-    "position targets by name: base_yaw (rad), lift (m); other fields ignored",
-)
-GRIPPER_COMMAND = TopicSpec(
-    "/arm/gripper_command",
-    "std_msgs/msg/Float64",
-    "controller",
-    "target opening between the finger pads (m, 0 .. 0.08; 0 closes with limited force)",
-)
-TOASTER_COMMAND = TopicSpec(
-    "/toaster/command",
-    "std_msgs/msg/String",
-    "controller",
-    "ToasterCmd by constant name: START (lever down, heater on) or STOP (lever up)",
-)
-DISTANCE = TopicSpec(
-    "/sensors/distance",
-    "std_msgs/msg/Int32",
-    "sim",
-    "distance sensor at the bread holder (mm, 2000 when nothing is in range)",
-)
-COLOR = TopicSpec(
-    "/sensors/color",
-    "std_msgs/msg/String",
-    "sim",
-    "ToastColor by constant name (WHITE, GOLDEN, BURNT) of what the slot sensor sees",
-)
+#: The platform topics, from @maa/protocol's SIMULATOR_TOPICS (the one definition; the IDE reads it too).
+_TOPICS: dict[str, TopicSpec] = {
+    t["name"]: TopicSpec(t["name"], t["type"], cast(Direction, t["publisher"]), t["description"])
+    for t in SIMULATOR_TOPICS
+}
+CLOCK = _TOPICS["/clock"]
+JOINT_STATES = _TOPICS["/joint_states"]
+JOINT_COMMAND = _TOPICS["/arm/joint_command"]
+GRIPPER_COMMAND = _TOPICS["/arm/gripper_command"]
+TOASTER_COMMAND = _TOPICS["/toaster/command"]
+DISTANCE = _TOPICS["/sensors/distance"]
+COLOR = _TOPICS["/sensors/color"]
 
 SIM_OUTPUTS: tuple[TopicSpec, ...] = (CLOCK, JOINT_STATES, DISTANCE, COLOR)
 SIM_INPUTS: tuple[TopicSpec, ...] = (JOINT_COMMAND, GRIPPER_COMMAND, TOASTER_COMMAND)

@@ -369,6 +369,202 @@ STEP_OUTPUTS_SCHEMA: Final[dict[str, Any]] = json.loads(
 """
 )
 
+SIMULATOR_STATUS_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "$id": "urn:maa:protocol:simulator-status",
+ "title": "SimulatorStatus",
+ "description": "the answer of /sim/get_status",
+ "type": "object",
+ "required": [
+  "mode",
+  "time",
+  "world_time",
+  "paused",
+  "speed",
+  "real_time_factor",
+  "periods",
+  "period",
+  "toast_level",
+  "toast_on_plate",
+  "finished",
+  "stepping",
+  "domain_id",
+  "nodes",
+  "automaton_states",
+  "events",
+  "rosbridge",
+  "viser"
+ ],
+ "properties": {
+  "mode": {
+   "type": "string"
+  },
+  "time": {
+   "type": "number"
+  },
+  "world_time": {
+   "type": "number"
+  },
+  "paused": {
+   "type": "boolean"
+  },
+  "speed": {
+   "minimum": 0,
+   "type": "number"
+  },
+  "real_time_factor": {
+   "type": "number"
+  },
+  "periods": {
+   "minimum": 0,
+   "type": "integer"
+  },
+  "period": {
+   "type": "number"
+  },
+  "toast_level": {
+   "type": "number"
+  },
+  "toast_on_plate": {
+   "type": "boolean"
+  },
+  "finished": {
+   "anyOf": [
+    {
+     "type": "string"
+    },
+    {
+     "type": "null"
+    }
+   ]
+  },
+  "stepping": {
+   "anyOf": [
+    {
+     "type": "array",
+     "items": {
+      "type": "integer"
+     }
+    },
+    {
+     "type": "null"
+    }
+   ]
+  },
+  "domain_id": {
+   "anyOf": [
+    {
+     "type": "integer"
+    },
+    {
+     "type": "null"
+    }
+   ]
+  },
+  "nodes": {
+   "type": "array",
+   "items": {
+    "type": "object",
+    "patternProperties": {
+     "^(.*)$": {}
+    }
+   }
+  },
+  "automaton_states": {
+   "type": "object",
+   "patternProperties": {
+    "^(.*)$": {
+     "type": "string"
+    }
+   }
+  },
+  "events": {
+   "type": "array",
+   "items": {
+    "type": "object",
+    "patternProperties": {
+     "^(.*)$": {}
+    }
+   }
+  },
+  "rosbridge": {
+   "anyOf": [
+    {
+     "type": "string"
+    },
+    {
+     "type": "null"
+    }
+   ]
+  },
+  "viser": {
+   "anyOf": [
+    {
+     "type": "string"
+    },
+    {
+     "type": "null"
+    }
+   ]
+  }
+ }
+}
+"""
+)
+
+#: The simulator's platform topics (@maa/protocol SIMULATOR_TOPICS): name, type, publisher, description.
+SIMULATOR_TOPICS: Final[list[dict[str, str]]] = json.loads(
+    r"""
+[
+ {
+  "name": "/clock",
+  "type": "rosgraph_msgs/msg/Clock",
+  "publisher": "sim",
+  "description": "simulation time"
+ },
+ {
+  "name": "/joint_states",
+  "type": "sensor_msgs/msg/JointState",
+  "publisher": "sim",
+  "description": "base_yaw (rad), lift (m, gripper height), finger_inner and finger_outer (m, half opening)"
+ },
+ {
+  "name": "/sensors/distance",
+  "type": "std_msgs/msg/Int32",
+  "publisher": "sim",
+  "description": "distance sensor at the bread holder (mm, 2000 when nothing is in range)"
+ },
+ {
+  "name": "/sensors/color",
+  "type": "std_msgs/msg/String",
+  "publisher": "sim",
+  "description": "ToastColor by constant name (WHITE, GOLDEN, BURNT) of what the slot sensor sees"
+ },
+ {
+  "name": "/arm/joint_command",
+  "type": "sensor_msgs/msg/JointState",
+  "publisher": "controller",
+  "description": "position targets by name: base_yaw (rad), lift (m); other fields ignored"
+ },
+ {
+  "name": "/arm/gripper_command",
+  "type": "std_msgs/msg/Float64",
+  "publisher": "controller",
+  "description": "target opening between the finger pads (m, 0 .. 0.08; 0 closes with limited force)"
+ },
+ {
+  "name": "/toaster/command",
+  "type": "std_msgs/msg/String",
+  "publisher": "controller",
+  "description": "ToasterCmd by constant name: START (lever down, heater on) or STOP (lever up)"
+ }
+]
+"""
+)
+
+AUTOMATON_STATES_TOPIC: Final = "/maa/automaton_states"
+
 
 class PortTopic(TypedDict):
     """A topic of a node with its ROS 2 type and port"""
@@ -410,3 +606,26 @@ class Lockstep(TypedDict):
     python_path: NotRequired[list[str]]
     period: NotRequired[float]
     parameters: NotRequired[dict[str, Any]]
+
+
+class SimulatorStatus(TypedDict):
+    """the answer of /sim/get_status"""
+
+    mode: str
+    time: float
+    world_time: float
+    paused: bool
+    speed: float
+    real_time_factor: float
+    periods: int
+    period: float
+    toast_level: float
+    toast_on_plate: bool
+    finished: str | None
+    stepping: list[int] | None
+    domain_id: int | None
+    nodes: list[dict[str, Any]]
+    automaton_states: dict[str, str]
+    events: list[dict[str, Any]]
+    rosbridge: str | None
+    viser: str | None

@@ -1,5 +1,5 @@
 /** Small pure pieces of the simulate panel: modes, status text, backend answers. */
-import type { SimMode } from '@maa/protocol';
+import type { SimMode, SimulatorStatus } from '@maa/protocol';
 import type { AppInfo } from '../contracts.js';
 import { formatNumber } from './format.js';
 
@@ -35,17 +35,8 @@ export function defaultPlatform(app: AppInfo): string | undefined {
     return (app.platforms.find((p) => platformMode(p.kind) === 'lockstep') ?? app.platforms.find((p) => platformMode(p.kind)))?.name;
 }
 
-/** The simulator's `/sim/get_status` answer (docs/simulation.md), possibly wrapped in `{status}`. */
-export interface SimStatus {
-    time?: number;
-    paused?: boolean;
-    speed?: number;
-    real_time_factor?: number | null;
-    toast_level?: number;
-    toast_on_plate?: boolean;
-    finished?: string | null;
-    mode?: string;
-}
+/** The simulator's `/sim/get_status` answer (@maa/protocol's SimulatorStatus; docs/simulation.md), possibly wrapped in `{status}`: read field by field. */
+export type SimStatus = Partial<SimulatorStatus>;
 
 export function unwrapStatus(res: unknown): SimStatus {
     if (!res || typeof res !== 'object') return {};
