@@ -16,7 +16,7 @@ describe('emitted artifacts (JSON Schema files, sim-server protocol.py)', () => 
         ]));
     });
 
-    test.each([...emitted.keys()])('the committed %s is what the contracts emit (rebuild packages/protocol after changing one)', (rel) => {
+    test.each([...emitted.keys()])('the committed %s is what the contracts emit (after changing a contract: build packages/protocol, then npm run emit -w packages/protocol)', (rel) => {
         const committed = readFileSync(path.join(repoDir as string, rel), 'utf8');
         expect(committed).toBe(emitted.get(rel));
     });
