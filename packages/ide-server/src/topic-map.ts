@@ -91,7 +91,7 @@ export async function topicMap(platformDir: string, app: string, platform: strin
   const lockstep = (await readJson(path.join(dir, file))) as { factory?: unknown };
   const module = typeof lockstep.factory === 'string' ? lockstep.factory.split(':')[0] : undefined;
   if (!module || !/^[A-Za-z_][A-Za-z0-9_.]*$/.test(module)) throw new HttpError(409, `${platform}/lockstep.json names no factory module`);
-  const source = await readFile(path.join(dir, ...module.split('.')) + '.py', 'utf8').catch(() => {
+  const source = await readFile(`${path.join(dir, ...module.split('.'))}.py`, 'utf8').catch(() => {
     throw new HttpError(409, `the generated app module ${module} of ${platform} is missing`);
   });
   return { app, platform, mode, ...fromAppModule(source) };

@@ -6,7 +6,11 @@ import { artifacts, repoDir } from './emit-lib.mjs';
 for (const [rel, content] of artifacts()) {
     const abs = path.join(repoDir, rel);
     let old;
-    try { old = readFileSync(abs, 'utf8'); } catch { old = undefined; }
+    try {
+        old = readFileSync(abs, 'utf8');
+    } catch {
+        old = undefined;
+    }
     if (old === content) continue;
     mkdirSync(path.dirname(abs), { recursive: true });
     writeFileSync(abs, content);

@@ -14,7 +14,11 @@ export interface ContractIssue {
 
 /** A value that breaks a contract; its message names where it came from and the first issues. */
 export class ContractError extends Error {
-    constructor(readonly contract: string, readonly where: string, readonly issues: readonly ContractIssue[]) {
+    constructor(
+        readonly contract: string,
+        readonly where: string,
+        readonly issues: readonly ContractIssue[],
+    ) {
         super(`${where}: not a valid ${contract}: ${formatIssues(issues)}`);
         this.name = 'ContractError';
     }
@@ -34,7 +38,10 @@ export function formatIssues(issues: readonly ContractIssue[], max = 3): string 
 function messageOf(schema: TSchema, pointer: string, fallback: string): string {
     const custom = (schema as { errorMessage?: unknown }).errorMessage;
     if (typeof custom !== 'string') return fallback;
-    const key = pointer.slice(pointer.lastIndexOf('/') + 1).replace(/~1/g, '/').replace(/~0/g, '~');
+    const key = pointer
+        .slice(pointer.lastIndexOf('/') + 1)
+        .replace(/~1/g, '/')
+        .replace(/~0/g, '~');
     return custom.replace(/\{key\}/g, key);
 }
 

@@ -24,7 +24,10 @@ describe('deployment.json contract', () => {
         for (const f of generated) expect(deploymentContract.issues(JSON.parse(readFileSync(f, 'utf8'))), f).toEqual([]);
     });
 
-    const valid = { format: 'maa-deployment/1', nodes: [{ name: 'ctrl', namespace: '/toast', module: 'toast.ctrl', parameters: { threshold: 25, names: ['a'] } }] };
+    const valid = {
+        format: 'maa-deployment/1',
+        nodes: [{ name: 'ctrl', namespace: '/toast', module: 'toast.ctrl', parameters: { threshold: 25, names: ['a'] } }],
+    };
 
     test('a minimal deployment is valid', () => {
         expect(deploymentContract.check(valid)).toBe(true);
@@ -36,7 +39,11 @@ describe('deployment.json contract', () => {
         ['bad node name', { ...valid, nodes: [{ name: '1ctrl', module: 'm' }] }, '/nodes/0'],
         ['module and executable', { ...valid, nodes: [{ name: 'n', module: 'm', executable: 'x' }] }, '/nodes/0'],
         ['neither module nor executable', { ...valid, nodes: [{ name: 'n' }] }, '/nodes/0'],
-        ['relative topic', { ...valid, nodes: [{ name: 'n', module: 'm', publishes: [{ topic: 'a/b', type: 'std_msgs/msg/Int32' }] }] }, '/nodes/0'],
+        [
+            'relative topic',
+            { ...valid, nodes: [{ name: 'n', module: 'm', publishes: [{ topic: 'a/b', type: 'std_msgs/msg/Int32' }] }] },
+            '/nodes/0',
+        ],
         ['use_sim_time parameter', { ...valid, nodes: [{ name: 'n', module: 'm', parameters: { use_sim_time: true } }] }, '/nodes/0'],
         ['mixed parameter list', { ...valid, nodes: [{ name: 'n', module: 'm', parameters: { p: [1, 'a'] } }] }, '/nodes/0'],
         ['reserved env', { ...valid, env: { ROS_DOMAIN_ID: '3' } }, '/env'],

@@ -8,18 +8,23 @@ describe('emitted artifacts (JSON Schema files, sim-server protocol.py)', () => 
     const emitted = artifacts() as Map<string, string>;
 
     test('emits the schema files and the Python module', () => {
-        expect([...emitted.keys()]).toEqual(expect.arrayContaining([
-            'packages/protocol/schema/trace-file.schema.json',
-            'packages/protocol/schema/deployment.schema.json',
-            'packages/protocol/schema/topic-map.schema.json',
-            'sim-server/src/maa_sim/protocol.py',
-        ]));
+        expect([...emitted.keys()]).toEqual(
+            expect.arrayContaining([
+                'packages/protocol/schema/trace-file.schema.json',
+                'packages/protocol/schema/deployment.schema.json',
+                'packages/protocol/schema/topic-map.schema.json',
+                'sim-server/src/maa_sim/protocol.py',
+            ]),
+        );
     });
 
-    test.each([...emitted.keys()])('the committed %s is what the contracts emit (after changing a contract: build packages/protocol, then npm run emit -w packages/protocol)', (rel) => {
-        const committed = readFileSync(path.join(repoDir as string, rel), 'utf8');
-        expect(committed).toBe(emitted.get(rel));
-    });
+    test.each([...emitted.keys()])(
+        'the committed %s is what the contracts emit (after changing a contract: build packages/protocol, then npm run emit -w packages/protocol)',
+        (rel) => {
+            const committed = readFileSync(path.join(repoDir as string, rel), 'utf8');
+            expect(committed).toBe(emitted.get(rel));
+        },
+    );
 
     test('the Python module is marked generated and embeds the deployment schema', () => {
         const python = emitted.get('sim-server/src/maa_sim/protocol.py')!;

@@ -24,12 +24,21 @@ describe('maa-gen output keeps the contracts', () => {
     let out: string;
     beforeAll(async () => {
         out = mkdtempSync(path.join(tmpdir(), 'maa-protocol-'));
-        await run(process.execPath, [path.join(repo, 'packages/cli/bin/maa-gen.js'), 'generate', path.join(repo, 'examples/toast-service/TR.arcapp'), '--out', out]);
+        await run(process.execPath, [
+            path.join(repo, 'packages/cli/bin/maa-gen.js'),
+            'generate',
+            path.join(repo, 'examples/toast-service/TR.arcapp'),
+            '--out',
+            out,
+        ]);
     });
     afterAll(() => rmSync(out, { recursive: true, force: true }));
 
     test.each(['timesync', 'rospython'])('the trace file of %s', (platform) => {
-        const trace = traceFileContract.parse(JSON.parse(readFileSync(path.join(out, platform, TRACE_FILE_NAME), 'utf8')), `${platform}/${TRACE_FILE_NAME}`);
+        const trace = traceFileContract.parse(
+            JSON.parse(readFileSync(path.join(out, platform, TRACE_FILE_NAME), 'utf8')),
+            `${platform}/${TRACE_FILE_NAME}`,
+        );
         expect(trace.platform).toBe(platform);
         const ranges = trace.files.flatMap((f) => f.traces.map((t) => t.element.range)).filter((r) => r !== null);
         expect(ranges.length).toBeGreaterThan(0);

@@ -11,7 +11,9 @@ export const SimStartRequest = Type.Object({
     /** Default: the platform's kind decides. */
     mode: Type.Optional(Type.Union(SimMode.anyOf, { errorMessage: 'mode must be "lockstep" or "ros2"' })),
     /** Simulated seconds per real second; 0 = as fast as possible. */
-    speed: Type.Optional(Type.Number({ minimum: 0, maximum: 1000, errorMessage: 'speed must be a number from 0 (as fast as possible) to 1000' })),
+    speed: Type.Optional(
+        Type.Number({ minimum: 0, maximum: 1000, errorMessage: 'speed must be a number from 0 (as fast as possible) to 1000' }),
+    ),
 });
 export type SimStartRequest = Static<typeof SimStartRequest>;
 

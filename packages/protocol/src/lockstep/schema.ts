@@ -9,22 +9,32 @@ import { Type, type Static } from '@sinclair/typebox';
 
 export const LOCKSTEP_FORMAT = 'maa-lockstep/1';
 
-export const Lockstep = Type.Object({
-    format: Type.Literal(LOCKSTEP_FORMAT, { errorMessage: `format must be '${LOCKSTEP_FORMAT}'` }),
-    /** `module:callable`, called with `parameters`, returning the controller. */
-    factory: Type.String({ pattern: '^[A-Za-z_][A-Za-z0-9_.]*:[A-Za-z_][A-Za-z0-9_]*$', errorMessage: "factory must be 'module:callable'" }),
-    /** Folders (relative to the file) put on sys.path; default `["."]`. */
-    python_path: Type.Optional(Type.Array(Type.String({ errorMessage: 'python_path must be a list of strings' }), { errorMessage: 'python_path must be a list of strings' })),
-    /** The control period in seconds (the application's time slice). */
-    period: Type.Optional(Type.Number({ exclusiveMinimum: 0, errorMessage: 'period must be a positive number of seconds' })),
-    /** Passed to the factory. */
-    parameters: Type.Optional(Type.Record(Type.String(), Type.Unknown(), { errorMessage: 'parameters must be an object' })),
-}, {
-    $id: 'urn:maa:protocol:lockstep',
-    title: 'Lockstep',
-    description: 'lockstep.json: how maa-sim loads a python-timesync build (docs/simulation.md)',
-    errorMessage: 'expected an object',
-});
+export const Lockstep = Type.Object(
+    {
+        format: Type.Literal(LOCKSTEP_FORMAT, { errorMessage: `format must be '${LOCKSTEP_FORMAT}'` }),
+        /** `module:callable`, called with `parameters`, returning the controller. */
+        factory: Type.String({
+            pattern: '^[A-Za-z_][A-Za-z0-9_.]*:[A-Za-z_][A-Za-z0-9_]*$',
+            errorMessage: "factory must be 'module:callable'",
+        }),
+        /** Folders (relative to the file) put on sys.path; default `["."]`. */
+        python_path: Type.Optional(
+            Type.Array(Type.String({ errorMessage: 'python_path must be a list of strings' }), {
+                errorMessage: 'python_path must be a list of strings',
+            }),
+        ),
+        /** The control period in seconds (the application's time slice). */
+        period: Type.Optional(Type.Number({ exclusiveMinimum: 0, errorMessage: 'period must be a positive number of seconds' })),
+        /** Passed to the factory. */
+        parameters: Type.Optional(Type.Record(Type.String(), Type.Unknown(), { errorMessage: 'parameters must be an object' })),
+    },
+    {
+        $id: 'urn:maa:protocol:lockstep',
+        title: 'Lockstep',
+        description: 'lockstep.json: how maa-sim loads a python-timesync build (docs/simulation.md)',
+        errorMessage: 'expected an object',
+    },
+);
 export type Lockstep = Static<typeof Lockstep>;
 
 /** A message in JSON form (`maa_sim.messages`): the fields of a ROS 2 message. */

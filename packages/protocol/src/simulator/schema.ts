@@ -19,56 +19,74 @@ export type SimulatorTopic = Static<typeof SimulatorTopic>;
 export const SIMULATOR_TOPICS: readonly SimulatorTopic[] = [
     { name: '/clock', type: 'rosgraph_msgs/msg/Clock', publisher: 'sim', description: 'simulation time' },
     {
-        name: '/joint_states', type: 'sensor_msgs/msg/JointState', publisher: 'sim',
+        name: '/joint_states',
+        type: 'sensor_msgs/msg/JointState',
+        publisher: 'sim',
         description: 'base_yaw (rad), lift (m, gripper height), finger_inner and finger_outer (m, half opening)',
     },
     {
-        name: '/sensors/distance', type: 'std_msgs/msg/Int32', publisher: 'sim',
+        name: '/sensors/distance',
+        type: 'std_msgs/msg/Int32',
+        publisher: 'sim',
         description: 'distance sensor at the bread holder (mm, 2000 when nothing is in range)',
     },
     {
-        name: '/sensors/color', type: 'std_msgs/msg/String', publisher: 'sim',
+        name: '/sensors/color',
+        type: 'std_msgs/msg/String',
+        publisher: 'sim',
         description: 'ToastColor by constant name (WHITE, GOLDEN, BURNT) of what the slot sensor sees',
     },
     {
-        name: '/arm/joint_command', type: 'sensor_msgs/msg/JointState', publisher: 'controller',
+        name: '/arm/joint_command',
+        type: 'sensor_msgs/msg/JointState',
+        publisher: 'controller',
         description: 'position targets by name: base_yaw (rad), lift (m); other fields ignored',
     },
     {
-        name: '/arm/gripper_command', type: 'std_msgs/msg/Float64', publisher: 'controller',
+        name: '/arm/gripper_command',
+        type: 'std_msgs/msg/Float64',
+        publisher: 'controller',
         description: 'target opening between the finger pads (m, 0 .. 0.08; 0 closes with limited force)',
     },
-    { name: '/toaster/command', type: 'std_msgs/msg/String', publisher: 'controller', description: 'ToasterCmd by constant name: START (lever down, heater on) or STOP (lever up)' },
+    {
+        name: '/toaster/command',
+        type: 'std_msgs/msg/String',
+        publisher: 'controller',
+        description: 'ToasterCmd by constant name: START (lever down, heater on) or STOP (lever up)',
+    },
 ];
 
 /** The topic of the automaton states of a run: a JSON object `{node: state}` in a std_msgs/String. */
 export const AUTOMATON_STATES_TOPIC = '/maa/automaton_states';
 
 /** `/sim/get_status` (docs/simulation.md "Services"). */
-export const SimulatorStatus = Type.Object({
-    /** `lockstep` or `ros2`. */
-    mode: Type.String(),
-    /** Simulated seconds (the clock). */
-    time: Type.Number(),
-    world_time: Type.Number(),
-    paused: Type.Boolean(),
-    /** Simulated seconds per wall second; 0 = as fast as possible. */
-    speed: Type.Number({ minimum: 0 }),
-    real_time_factor: Type.Number(),
-    periods: Type.Integer({ minimum: 0 }),
-    period: Type.Number(),
-    toast_level: Type.Number(),
-    toast_on_plate: Type.Boolean(),
-    /** Why the run finished (`goal reached`, `time limit`), null while it runs. */
-    finished: Type.Union([Type.String(), Type.Null()]),
-    /** `[done, asked]` while a /sim/step runs. */
-    stepping: Type.Union([Type.Array(Type.Integer()), Type.Null()]),
-    domain_id: Type.Union([Type.Integer(), Type.Null()]),
-    nodes: Type.Array(Type.Record(Type.String(), Type.Unknown())),
-    /** Node → active state (the latched `/maa/automaton_states`). */
-    automaton_states: Type.Record(Type.String(), Type.String()),
-    events: Type.Array(Type.Record(Type.String(), Type.Unknown())),
-    rosbridge: Type.Union([Type.String(), Type.Null()]),
-    viser: Type.Union([Type.String(), Type.Null()]),
-}, { $id: 'urn:maa:protocol:simulator-status', title: 'SimulatorStatus', description: 'the answer of /sim/get_status' });
+export const SimulatorStatus = Type.Object(
+    {
+        /** `lockstep` or `ros2`. */
+        mode: Type.String(),
+        /** Simulated seconds (the clock). */
+        time: Type.Number(),
+        world_time: Type.Number(),
+        paused: Type.Boolean(),
+        /** Simulated seconds per wall second; 0 = as fast as possible. */
+        speed: Type.Number({ minimum: 0 }),
+        real_time_factor: Type.Number(),
+        periods: Type.Integer({ minimum: 0 }),
+        period: Type.Number(),
+        toast_level: Type.Number(),
+        toast_on_plate: Type.Boolean(),
+        /** Why the run finished (`goal reached`, `time limit`), null while it runs. */
+        finished: Type.Union([Type.String(), Type.Null()]),
+        /** `[done, asked]` while a /sim/step runs. */
+        stepping: Type.Union([Type.Array(Type.Integer()), Type.Null()]),
+        domain_id: Type.Union([Type.Integer(), Type.Null()]),
+        nodes: Type.Array(Type.Record(Type.String(), Type.Unknown())),
+        /** Node → active state (the latched `/maa/automaton_states`). */
+        automaton_states: Type.Record(Type.String(), Type.String()),
+        events: Type.Array(Type.Record(Type.String(), Type.Unknown())),
+        rosbridge: Type.Union([Type.String(), Type.Null()]),
+        viser: Type.Union([Type.String(), Type.Null()]),
+    },
+    { $id: 'urn:maa:protocol:simulator-status', title: 'SimulatorStatus', description: 'the answer of /sim/get_status' },
+);
 export type SimulatorStatus = Static<typeof SimulatorStatus>;

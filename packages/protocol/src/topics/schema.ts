@@ -33,11 +33,14 @@ export const InstanceNode = Type.Object({
 });
 export type InstanceNode = Static<typeof InstanceNode>;
 
-export const TopicMapAnswer = Type.Object({
-    app: Type.String(),
-    platform: Type.String(),
-    mode: SimMode,
-    ports: Type.Array(PortTopicEntry),
-    nodes: Type.Array(InstanceNode),
-}, { $id: 'urn:maa:protocol:topic-map', title: 'TopicMap', description: 'Port topics of a generated application (GET /api/sim/topics)' });
+export const TopicMapAnswer = Type.Object(
+    {
+        app: Type.String(),
+        platform: Type.String(),
+        mode: SimMode,
+        ports: Type.Array(PortTopicEntry),
+        nodes: Type.Array(InstanceNode),
+    },
+    { $id: 'urn:maa:protocol:topic-map', title: 'TopicMap', description: 'Port topics of a generated application (GET /api/sim/topics)' },
+);
 export type TopicMapAnswer = Static<typeof TopicMapAnswer>;

@@ -10,24 +10,30 @@ import { Range } from '../position.js';
 
 export const TRACE_FORMAT_VERSION = 2;
 
-export const TraceElement = Type.Object({
-    /** The model file, relative to the model root (or a URI when the document is not a file). */
-    file: Type.String(),
-    /** The element's text range in `file`, 0-based (LSP); null when the element has no text (built in). */
-    range: Type.Union([Range, Type.Null()]),
-    /** Langium's AST node path inside the file (`/component/ports@0`). */
-    path: Type.String(),
-    /** The AST type (`ComponentType`). */
-    type: Type.String(),
-    name: Type.Optional(Type.String()),
-}, { description: 'The model element a range of generated lines comes from' });
+export const TraceElement = Type.Object(
+    {
+        /** The model file, relative to the model root (or a URI when the document is not a file). */
+        file: Type.String(),
+        /** The element's text range in `file`, 0-based (LSP); null when the element has no text (built in). */
+        range: Type.Union([Range, Type.Null()]),
+        /** Langium's AST node path inside the file (`/component/ports@0`). */
+        path: Type.String(),
+        /** The AST type (`ComponentType`). */
+        type: Type.String(),
+        name: Type.Optional(Type.String()),
+    },
+    { description: 'The model element a range of generated lines comes from' },
+);
 export type TraceElement = Static<typeof TraceElement>;
 
 /** Generated lines, 0-based, both ends inclusive. */
-export const LineSpan = Type.Object({
-    first: Type.Integer({ minimum: 0, description: '0-based first generated line' }),
-    last: Type.Integer({ minimum: 0, description: '0-based last generated line (inclusive)' }),
-}, { description: 'Generated lines, 0-based, both ends inclusive' });
+export const LineSpan = Type.Object(
+    {
+        first: Type.Integer({ minimum: 0, description: '0-based first generated line' }),
+        last: Type.Integer({ minimum: 0, description: '0-based last generated line (inclusive)' }),
+    },
+    { description: 'Generated lines, 0-based, both ends inclusive' },
+);
 export type LineSpan = Static<typeof LineSpan>;
 
 export const Trace = Type.Object({
@@ -59,20 +65,23 @@ export const TraceGenerator = Type.Object({
 });
 export type TraceGenerator = Static<typeof TraceGenerator>;
 
-export const TraceFile = Type.Object({
-    version: Type.Literal(TRACE_FORMAT_VERSION),
-    /** The application's name (`ToastServiceRobot`). */
-    application: Type.String(),
-    platform: Type.String(),
-    /** The qualified root component (`toast.ToastServiceRobot`). */
-    rootComponent: Type.String(),
-    /** The model root, relative to the platform folder (`../../models`). */
-    modelRoot: Type.String(),
-    generators: Type.Array(TraceGenerator),
-    files: Type.Array(TracedFile),
-}, {
-    $id: 'urn:maa:protocol:trace-file',
-    title: 'MontiArcAutomaton trace file (.maa-trace.json)',
-    description: 'Generated line ranges -> model elements; positions 0-based like LSP',
-});
+export const TraceFile = Type.Object(
+    {
+        version: Type.Literal(TRACE_FORMAT_VERSION),
+        /** The application's name (`ToastServiceRobot`). */
+        application: Type.String(),
+        platform: Type.String(),
+        /** The qualified root component (`toast.ToastServiceRobot`). */
+        rootComponent: Type.String(),
+        /** The model root, relative to the platform folder (`../../models`). */
+        modelRoot: Type.String(),
+        generators: Type.Array(TraceGenerator),
+        files: Type.Array(TracedFile),
+    },
+    {
+        $id: 'urn:maa:protocol:trace-file',
+        title: 'MontiArcAutomaton trace file (.maa-trace.json)',
+        description: 'Generated line ranges -> model elements; positions 0-based like LSP',
+    },
+);
 export type TraceFile = Static<typeof TraceFile>;
