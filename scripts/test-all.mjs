@@ -12,7 +12,7 @@
 // Installs no npm packages: run `npm ci` first (the README's test command does).
 // Extra arguments go to Vitest, e.g. `npm test -- packages/cli`; MAA_TEST_PYTHON=0 skips the
 // Python suites except ROS 2, MAA_TEST_ROS2=0 skips ROS 2, MAA_TEST_E2E=0 the browser tests,
-// MAA_TEST_BUILD=0 the build (for a tree that is built already).
+// MAA_TEST_BUILD=0 the build (for a tree that is built already), MAA_TEST_LINT=0 the linters.
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -28,49 +28,58 @@ const started = Date.now();
 const tally = new Tally();
 
 function step(title, command, args, cwd = repo, env = process.env) {
-  console.log(`\n=== ${title}: ${[command, ...args].join(' ')}`);
-  const result = spawnSync(command, args, { cwd, stdio: 'inherit', env });
-  if (result.error) {
-    console.error(`test-all: could not start ${command}: ${result.error.message}`);
-    return 1;
-  }
-  return result.status ?? 1;
+    console.log(`\n=== ${title}: ${[command, ...args].join(' ')}`);
+    const result = spawnSync(command, args, { cwd, stdio: 'inherit', env });
+    if (result.error) {
+        console.error(`test-all: could not start ${command}: ${result.error.message}`);
+        return 1;
+    }
+    return result.status ?? 1;
 }
 
 /** Prints what failed, by kind, and the closing line, and exits with the code that agrees with it. */
 function finish() {
-  for (const line of tally.summary((Date.now() - started) / 60_000)) console.log(line);
-  process.exit(tally.exitCode);
+    for (const line of tally.summary((Date.now() - started) / 60_000)) console.log(line);
+    process.exit(tally.exitCode);
 }
 
 if (!existsSync(path.join(repo, 'node_modules'))) {
-  tally.fail('setups that failed', 'node_modules is missing; run "npm ci" first');
-  finish();
+    tally.fail('setups that failed', 'node_modules is missing; run "npm ci" first');
+    finish();
 }
 
 const buildStatus = process.env.MAA_TEST_BUILD === '0' ? 0 : step('build', npm, ['run', 'build']);
 if (buildStatus !== 0) {
-  tally.fail('setups that failed', `the build exited with ${buildStatus}; no test was run`);
-  finish();
+    tally.fail('setups that failed', `the build exited with ${buildStatus}; no test was run`);
+    finish();
 }
 
 // Some Vitest suites use the simulator (the generated example runs in it), so its Python
 // environment is set up before Vitest; the setup script is idempotent and fast when up to date.
 if (process.env.MAA_TEST_PYTHON !== '0') {
-  const simSetup = step('sim-server setup (used by Vitest too)', 'bash', [path.join(repo, 'sim-server', 'scripts', 'setup_env.sh')]);
-  if (simSetup !== 0) {
-    tally.fail('setups that failed', `sim-server setup exited with ${simSetup}; no test was run`);
-    finish();
-  }
+    const simSetup = step('sim-server setup (used by Vitest too)', 'bash', [path.join(repo, 'sim-server', 'scripts', 'setup_env.sh')]);
+    if (simSetup !== 0) {
+        tally.fail('setups that failed', `sim-server setup exited with ${simSetup}; no test was run`);
+        finish();
+    }
 }
 
 // The IDE backend's ROS 2 session test runs the generated nodes from the ROS 2 venv.
 if (process.env.MAA_TEST_ROS2 !== '0') {
-  const ros2Setup = step('ROS 2 venv setup (used by Vitest too)', 'bash', [path.join(repo, 'packages', 'generators-python', 'scripts', 'setup_ros2_venv.sh')]);
-  if (ros2Setup !== 0) {
-    tally.fail('setups that failed', `the ROS 2 venv setup exited with ${ros2Setup}; no test was run`);
-    finish();
-  }
+    const ros2Setup = step('ROS 2 venv setup (used by Vitest too)', 'bash', [
+        path.join(repo, 'packages', 'generators-python', 'scripts', 'setup_ros2_venv.sh'),
+    ]);
+    if (ros2Setup !== 0) {
+        tally.fail('setups that failed', `the ROS 2 venv setup exited with ${ros2Setup}; no test was run`);
+        finish();
+    }
+}
+
+// The house rules (scripts/lint.mjs: Biome for TypeScript/JavaScript, ruff for Python, lint and
+// formatting); a finding counts as one failure, and the tests run anyway.
+if (process.env.MAA_TEST_LINT !== '0') {
+    const lintStatus = step('lint', process.execPath, [path.join(repo, 'scripts', 'lint.mjs')]);
+    if (lintStatus !== 0) tally.fail('linters that failed', `npm run lint exited with ${lintStatus}`);
 }
 
 vitestSuite(process.argv.slice(2));
@@ -83,27 +92,39 @@ if (process.env.MAA_TEST_E2E !== '0') e2eSuite();
 // The Python suites: each sets up its venv (idempotent scripts), runs pytest (JUnit XML for the
 // counts), then its linters; a failing linter counts as one failure.
 const PYTHON_SUITES = [
-  {
-    // The simulation sidecar (MuJoCo, rclpy, rosbridge, viser).
-    title: 'sim-server', enabled: process.env.MAA_TEST_PYTHON !== '0', dir: 'sim-server',
-    setup: 'sim-server/scripts/setup_env.sh', python: 'sim-server/.venv/bin/python', tests: 'sim-server/tests',
-    lint: [['ruff', ['-m', 'ruff', 'check', '.']], ['mypy', ['-m', 'mypy']]],
-  },
-  {
-    // The ros2-python family with real ROS 2 (rclpy, the rosidl toolchain): generated code
-    // compiles and is ruff-clean, the interface package builds, the ToastService nodes run, and
-    // serve the toast in the simulator (maa-sim is installed into this venv by its setup script).
-    title: 'ros2', enabled: process.env.MAA_TEST_ROS2 !== '0', dir: 'packages/generators-python',
-    setup: 'packages/generators-python/scripts/setup_ros2_venv.sh', python: 'packages/generators-python/.venv-ros2/bin/python',
-    tests: 'packages/generators-python/test/ros2', lint: [],
-  },
-  {
-    // The Python generators' run-time environments (maa_behavior, maa_timesync).
-    title: 'generators-python', enabled: process.env.MAA_TEST_PYTHON !== '0', dir: 'packages/generators-python',
-    setup: 'packages/generators-python/scripts/setup_venv.sh', python: 'packages/generators-python/.venv/bin/python',
-    tests: 'packages/generators-python/test/python',
-    lint: [['ruff', ['-m', 'ruff', 'check', '--config', 'ruff.toml', '--no-cache', 'rte/maa_behavior', 'rte/maa_timesync', 'test/python']]],
-  },
+    {
+        // The simulation sidecar (MuJoCo, rclpy, rosbridge, viser).
+        title: 'sim-server',
+        enabled: process.env.MAA_TEST_PYTHON !== '0',
+        dir: 'sim-server',
+        setup: 'sim-server/scripts/setup_env.sh',
+        python: 'sim-server/.venv/bin/python',
+        tests: 'sim-server/tests',
+        // ruff (lint and format): scripts/lint.mjs
+        lint: [['mypy', ['-m', 'mypy']]],
+    },
+    {
+        // The ros2-python family with real ROS 2 (rclpy, the rosidl toolchain): generated code
+        // compiles and is ruff-clean, the interface package builds, the ToastService nodes run, and
+        // serve the toast in the simulator (maa-sim is installed into this venv by its setup script).
+        title: 'ros2',
+        enabled: process.env.MAA_TEST_ROS2 !== '0',
+        dir: 'packages/generators-python',
+        setup: 'packages/generators-python/scripts/setup_ros2_venv.sh',
+        python: 'packages/generators-python/.venv-ros2/bin/python',
+        tests: 'packages/generators-python/test/ros2',
+        lint: [],
+    },
+    {
+        // The Python generators' run-time environments (maa_behavior, maa_timesync).
+        title: 'generators-python',
+        enabled: process.env.MAA_TEST_PYTHON !== '0',
+        dir: 'packages/generators-python',
+        setup: 'packages/generators-python/scripts/setup_venv.sh',
+        python: 'packages/generators-python/.venv/bin/python',
+        tests: 'packages/generators-python/test/python',
+        lint: [], // ruff (lint and format): scripts/lint.mjs
+    },
 ];
 for (const suite of PYTHON_SUITES.filter((x) => x.enabled)) pythonSuite(suite);
 finish();
@@ -114,102 +135,115 @@ finish();
  * failed hooks separately, which Vitest's own JSON report folds into a bare exit code.
  */
 function vitestSuite(extraArgs) {
-  const outcomeDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-'));
-  const outcomeFile = path.join(outcomeDir, 'vitest-outcome.json');
-  const status = step(
-    'vitest',
-    npx,
-    ['--no-install', 'vitest', 'run', '--reporter=default', `--reporter=${path.join(repo, 'scripts', 'vitest-outcome-reporter.mjs')}`, ...extraArgs],
-    repo,
-    { ...process.env, MAA_VITEST_OUTCOME: outcomeFile },
-  );
-  let outcome;
-  try {
-    outcome = JSON.parse(readFileSync(outcomeFile, 'utf8'));
-  } catch {
-    outcome = undefined;
-  } finally {
-    rmSync(outcomeDir, { recursive: true, force: true });
-  }
-  if (!outcome) {
-    tally.fail('runners that reported nothing', `vitest exited with ${status} and wrote no outcome`);
-    return;
-  }
-  tally.passed += outcome.passed;
-  tally.skipped += outcome.skipped;
-  for (const what of outcome.failedTests) tally.fail('failed tests', what);
-  for (const what of outcome.unhandledErrors) tally.fail('unhandled errors', `vitest: ${what}`);
-  for (const what of outcome.brokenFiles) tally.fail('test files that did not run', what);
-  for (const what of outcome.suiteErrors) tally.fail('failed hooks and suites', what);
-  // Vitest failing for a reason none of the above names (e.g. no test file matched a filter).
-  const named = outcome.failedTests.length + outcome.unhandledErrors.length + outcome.brokenFiles.length + outcome.suiteErrors.length;
-  if (status !== 0 && named === 0) tally.fail('runners that failed without a reason', `vitest exited with ${status} (${outcome.reason})`);
-  const seconds = (ms) => `${(ms / 1000).toFixed(1).padStart(6)} s`;
-  if (outcome.slowestFiles.length > 0) {
-    console.log('\ntest-all: the slowest Vitest files (hooks included):');
-    for (const { file, ms } of outcome.slowestFiles) console.log(`  ${seconds(ms)}  ${file}`);
-    console.log('test-all: the slowest Vitest tests:');
-    for (const { test, ms } of outcome.slowest) console.log(`  ${seconds(ms)}  ${test}`);
-  }
+    const outcomeDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-'));
+    const outcomeFile = path.join(outcomeDir, 'vitest-outcome.json');
+    const status = step(
+        'vitest',
+        npx,
+        [
+            '--no-install',
+            'vitest',
+            'run',
+            '--reporter=default',
+            `--reporter=${path.join(repo, 'scripts', 'vitest-outcome-reporter.mjs')}`,
+            ...extraArgs,
+        ],
+        repo,
+        { ...process.env, MAA_VITEST_OUTCOME: outcomeFile },
+    );
+    let outcome;
+    try {
+        outcome = JSON.parse(readFileSync(outcomeFile, 'utf8'));
+    } catch {
+        outcome = undefined;
+    } finally {
+        rmSync(outcomeDir, { recursive: true, force: true });
+    }
+    if (!outcome) {
+        tally.fail('runners that reported nothing', `vitest exited with ${status} and wrote no outcome`);
+        return;
+    }
+    tally.passed += outcome.passed;
+    tally.skipped += outcome.skipped;
+    for (const what of outcome.failedTests) tally.fail('failed tests', what);
+    for (const what of outcome.unhandledErrors) tally.fail('unhandled errors', `vitest: ${what}`);
+    for (const what of outcome.brokenFiles) tally.fail('test files that did not run', what);
+    for (const what of outcome.suiteErrors) tally.fail('failed hooks and suites', what);
+    // Vitest failing for a reason none of the above names (e.g. no test file matched a filter).
+    const named = outcome.failedTests.length + outcome.unhandledErrors.length + outcome.brokenFiles.length + outcome.suiteErrors.length;
+    if (status !== 0 && named === 0) tally.fail('runners that failed without a reason', `vitest exited with ${status} (${outcome.reason})`);
+    const seconds = (ms) => `${(ms / 1000).toFixed(1).padStart(6)} s`;
+    if (outcome.slowestFiles.length > 0) {
+        console.log('\ntest-all: the slowest Vitest files (hooks included):');
+        for (const { file, ms } of outcome.slowestFiles) console.log(`  ${seconds(ms)}  ${file}`);
+        console.log('test-all: the slowest Vitest tests:');
+        for (const { test, ms } of outcome.slowest) console.log(`  ${seconds(ms)}  ${test}`);
+    }
 }
 
 function pythonSuite(suite) {
-  const setupStatus = step(`${suite.title} setup`, 'bash', [path.join(repo, suite.setup)]);
-  if (setupStatus !== 0) {
-    tally.fail('setups that failed', `${suite.title} setup exited with ${setupStatus}; none of its tests was run`);
-    return;
-  }
-  const python = path.join(repo, suite.python);
-  const junitDir = mkdtempSync(path.join(tmpdir(), `maa-test-all-${suite.title}-`));
-  const junitFile = path.join(junitDir, 'pytest.xml');
-  const pytestStatus = step(`${suite.title} tests`, python, [
-    '-m', 'pytest', suite.tests, '-q', '-p', 'no:cacheprovider', `--junitxml=${junitFile}`,
-  ]);
-  let junit;
-  try {
-    junit = readFileSync(junitFile, 'utf8');
-  } catch {
-    junit = undefined;
-  } finally {
-    rmSync(junitDir, { recursive: true, force: true });
-  }
-  const counts = junit === undefined ? undefined : junitCounts(junit);
-  if (!counts) {
-    tally.fail('runners that reported nothing', `pytest (${suite.title}) exited with ${pytestStatus} and wrote no report`);
-  } else {
-    tally.passed += counts.passed;
-    tally.skipped += counts.skipped;
-    for (const what of counts.failed) tally.fail('failed tests', `${suite.title}: ${what}`);
-    for (const what of counts.errors) tally.fail('test errors outside a test body', `${suite.title}: ${what}`);
-    if (pytestStatus !== 0 && counts.failed.length + counts.errors.length === 0) {
-      tally.fail('runners that failed without a reason', `pytest (${suite.title}) exited with ${pytestStatus}`);
+    const setupStatus = step(`${suite.title} setup`, 'bash', [path.join(repo, suite.setup)]);
+    if (setupStatus !== 0) {
+        tally.fail('setups that failed', `${suite.title} setup exited with ${setupStatus}; none of its tests was run`);
+        return;
     }
-  }
-  for (const [name, args] of suite.lint) {
-    const lintStatus = step(`${suite.title} ${name}`, python, args, path.join(repo, suite.dir));
-    if (lintStatus !== 0) tally.fail('linters that failed', `${suite.title} ${name} exited with ${lintStatus}`);
-  }
+    const python = path.join(repo, suite.python);
+    const junitDir = mkdtempSync(path.join(tmpdir(), `maa-test-all-${suite.title}-`));
+    const junitFile = path.join(junitDir, 'pytest.xml');
+    const pytestStatus = step(`${suite.title} tests`, python, [
+        '-m',
+        'pytest',
+        suite.tests,
+        '-q',
+        '-p',
+        'no:cacheprovider',
+        `--junitxml=${junitFile}`,
+    ]);
+    let junit;
+    try {
+        junit = readFileSync(junitFile, 'utf8');
+    } catch {
+        junit = undefined;
+    } finally {
+        rmSync(junitDir, { recursive: true, force: true });
+    }
+    const counts = junit === undefined ? undefined : junitCounts(junit);
+    if (!counts) {
+        tally.fail('runners that reported nothing', `pytest (${suite.title}) exited with ${pytestStatus} and wrote no report`);
+    } else {
+        tally.passed += counts.passed;
+        tally.skipped += counts.skipped;
+        for (const what of counts.failed) tally.fail('failed tests', `${suite.title}: ${what}`);
+        for (const what of counts.errors) tally.fail('test errors outside a test body', `${suite.title}: ${what}`);
+        if (pytestStatus !== 0 && counts.failed.length + counts.errors.length === 0) {
+            tally.fail('runners that failed without a reason', `pytest (${suite.title}) exited with ${pytestStatus}`);
+        }
+    }
+    for (const [name, args] of suite.lint) {
+        const lintStatus = step(`${suite.title} ${name}`, python, args, path.join(repo, suite.dir));
+        if (lintStatus !== 0) tally.fail('linters that failed', `${suite.title} ${name} exited with ${lintStatus}`);
+    }
 }
 
 function e2eSuite() {
-  const chromium = step('e2e: chromium', process.execPath, [path.join(repo, 'scripts', 'ensure-chromium.mjs')]);
-  if (chromium !== 0) {
-    tally.fail('setups that failed', 'chromium for the e2e tests is missing and could not be installed');
-    return;
-  }
-  const resultsFile = path.join(repo, 'e2e', 'artifacts', 'results.json');
-  rmSync(resultsFile, { force: true });
-  const status = step('e2e', process.execPath, [path.join(repo, 'e2e', 'run.mjs')]);
-  let results;
-  try {
-    results = JSON.parse(readFileSync(resultsFile, 'utf8'));
-  } catch {
-    tally.fail('runners that reported nothing', `the e2e run exited with ${status} and wrote no results`);
-    return;
-  }
-  for (const r of results) {
-    if (r.ok) tally.passed += 1;
-    else tally.fail('failed tests', `e2e: ${r.name}: ${String(r.error ?? '').split('\n')[0]}`);
-  }
-  if (status !== 0 && results.every((r) => r.ok)) tally.fail('runners that failed without a reason', `the e2e run exited with ${status}`);
+    const chromium = step('e2e: chromium', process.execPath, [path.join(repo, 'scripts', 'ensure-chromium.mjs')]);
+    if (chromium !== 0) {
+        tally.fail('setups that failed', 'chromium for the e2e tests is missing and could not be installed');
+        return;
+    }
+    const resultsFile = path.join(repo, 'e2e', 'artifacts', 'results.json');
+    rmSync(resultsFile, { force: true });
+    const status = step('e2e', process.execPath, [path.join(repo, 'e2e', 'run.mjs')]);
+    let results;
+    try {
+        results = JSON.parse(readFileSync(resultsFile, 'utf8'));
+    } catch {
+        tally.fail('runners that reported nothing', `the e2e run exited with ${status} and wrote no results`);
+        return;
+    }
+    for (const r of results) {
+        if (r.ok) tally.passed += 1;
+        else tally.fail('failed tests', `e2e: ${r.name}: ${String(r.error ?? '').split('\n')[0]}`);
+    }
+    if (status !== 0 && results.every((r) => r.ok)) tally.fail('runners that failed without a reason', `the e2e run exited with ${status}`);
 }
