@@ -11,27 +11,37 @@ import { ensureChromium } from '../scripts/ensure-chromium.mjs';
 
 export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 /** The built app (MAA_IDE_APP_DIR overrides packages/ide-web/dist). */
-export const appDir = process.env.MAA_IDE_APP_DIR ? path.resolve(process.env.MAA_IDE_APP_DIR) : path.join(repo, 'packages', 'ide-web', 'dist');
+export const appDir = process.env.MAA_IDE_APP_DIR
+    ? path.resolve(process.env.MAA_IDE_APP_DIR)
+    : path.join(repo, 'packages', 'ide-web', 'dist');
 export const artifacts = path.join(repo, 'e2e', 'artifacts');
 
-export const CHROMIUM_FLAGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-  '--disable-background-networking', '--disable-component-update', '--disable-sync'];
+export const CHROMIUM_FLAGS = [
+    '--headless',
+    '--no-sandbox',
+    '--disable-gpu',
+    '--disable-quic',
+    '--no-first-run',
+    '--disable-background-networking',
+    '--disable-component-update',
+    '--disable-sync',
+];
 
 /** A temp folder with a fresh copy of examples/ (or of `from`) as the workspace. */
 export function freshWorkspace(from = path.join(repo, 'examples')) {
-  const base = mkdtempSync(path.join(os.tmpdir(), 'maa-e2e-'));
-  const workspace = path.join(base, 'workspace');
-  cpSync(from, workspace, { recursive: true });
-  return { base, workspace, dispose: () => rmSync(base, { recursive: true, force: true }) };
+    const base = mkdtempSync(path.join(os.tmpdir(), 'maa-e2e-'));
+    const workspace = path.join(base, 'workspace');
+    cpSync(from, workspace, { recursive: true });
+    return { base, workspace, dispose: () => rmSync(base, { recursive: true, force: true }) };
 }
 
 /** A model root of `components` generated component types in `root` (the CLI benchmark's
  *  generator), plus `robot/System.arc` with every type as a subcomponent once. */
 export function writeLargeModel(root, components) {
-  const gen = generateModels(root, components);
-  writeFileSync(path.join(root, 'maa.json'), '{}\n');
-  const types = writeSystemComponent(root, gen);
-  return { gen, types };
+    const gen = generateModels(root, components);
+    writeFileSync(path.join(root, 'maa.json'), '{}\n');
+    const types = writeSystemComponent(root, gen);
+    return { gen, types };
 }
 
 /**
@@ -40,79 +50,95 @@ export function writeLargeModel(root, components) {
  * `login(page)`, which opens the token URL so the browser keeps the token in maa-ide's cookie.
  */
 export async function startIde(workspace, { log = false } = {}) {
-  const bin = path.join(repo, 'packages', 'ide-server', 'bin', 'maa-ide.js');
-  if (!existsSync(path.join(appDir, 'index.html'))) {
-    throw new Error(`${appDir} has no built app: run "npm run build -w @maa/ide-web" first`);
-  }
-  const child = spawn(process.execPath, [bin, '--workspace', workspace, '--port', '0', '--app-dir', appDir],
-    { cwd: repo, stdio: ['ignore', 'pipe', 'pipe'] });
-  const output = [];
-  const printed = await new Promise((resolve, reject) => {
-    const timer = setTimeout(() => reject(new Error(`maa-ide did not print its URL within 60 s:\n${output.join('')}`)), 60_000);
-    const onData = (chunk) => {
-      const text = chunk.toString();
-      output.push(text);
-      if (log) process.stderr.write(`[maa-ide] ${text}`);
-      const match = /serving .* at (http:\/\/\S+)/.exec(output.join(''));
-      if (match) { clearTimeout(timer); resolve(new URL(match[1])); }
+    const bin = path.join(repo, 'packages', 'ide-server', 'bin', 'maa-ide.js');
+    if (!existsSync(path.join(appDir, 'index.html'))) {
+        throw new Error(`${appDir} has no built app: run "npm run build -w @maa/ide-web" first`);
+    }
+    const child = spawn(process.execPath, [bin, '--workspace', workspace, '--port', '0', '--app-dir', appDir], {
+        cwd: repo,
+        stdio: ['ignore', 'pipe', 'pipe'],
+    });
+    const output = [];
+    const printed = await new Promise((resolve, reject) => {
+        const timer = setTimeout(() => reject(new Error(`maa-ide did not print its URL within 60 s:\n${output.join('')}`)), 60_000);
+        const onData = (chunk) => {
+            const text = chunk.toString();
+            output.push(text);
+            if (log) process.stderr.write(`[maa-ide] ${text}`);
+            const match = /serving .* at (http:\/\/\S+)/.exec(output.join(''));
+            if (match) {
+                clearTimeout(timer);
+                resolve(new URL(match[1]));
+            }
+        };
+        child.stdout.on('data', onData);
+        child.stderr.on('data', onData);
+        child.on('exit', (code) => {
+            clearTimeout(timer);
+            reject(new Error(`maa-ide exited (${code}):\n${output.join('')}`));
+        });
+    });
+    child.stdout.on('data', (c) => output.push(c.toString()));
+    child.stderr.on('data', (c) => output.push(c.toString()));
+    const token = printed.searchParams.get('token');
+    if (!token) throw new Error(`maa-ide printed a URL without its token: ${printed}`);
+    const tokenUrl = printed.toString();
+    return {
+        url: `${printed.origin}/`,
+        tokenUrl,
+        token,
+        output,
+        /** Opens the token URL: maa-ide sets its cookie and redirects to the app. */
+        async login(page) {
+            const response = await page.goto(tokenUrl);
+            if (!response?.ok() || new URL(page.url()).searchParams.has('token')) {
+                throw new Error(`opening ${tokenUrl} did not lead to the app (${response?.status()} at ${page.url()})`);
+            }
+        },
+        async stop() {
+            if (child.exitCode !== null) return;
+            const exited = new Promise((resolve) => child.once('exit', resolve));
+            child.kill('SIGTERM');
+            const timer = setTimeout(() => child.kill('SIGKILL'), 5000);
+            await exited;
+            clearTimeout(timer);
+        },
     };
-    child.stdout.on('data', onData);
-    child.stderr.on('data', onData);
-    child.on('exit', (code) => { clearTimeout(timer); reject(new Error(`maa-ide exited (${code}):\n${output.join('')}`)); });
-  });
-  child.stdout.on('data', (c) => output.push(c.toString()));
-  child.stderr.on('data', (c) => output.push(c.toString()));
-  const token = printed.searchParams.get('token');
-  if (!token) throw new Error(`maa-ide printed a URL without its token: ${printed}`);
-  const tokenUrl = printed.toString();
-  return {
-    url: `${printed.origin}/`, tokenUrl, token, output,
-    /** Opens the token URL: maa-ide sets its cookie and redirects to the app. */
-    async login(page) {
-      const response = await page.goto(tokenUrl);
-      if (!response?.ok() || new URL(page.url()).searchParams.has('token')) {
-        throw new Error(`opening ${tokenUrl} did not lead to the app (${response?.status()} at ${page.url()})`);
-      }
-    },
-    async stop() {
-      if (child.exitCode !== null) return;
-      const exited = new Promise((resolve) => child.once('exit', resolve));
-      child.kill('SIGTERM');
-      const timer = setTimeout(() => child.kill('SIGKILL'), 5000);
-      await exited;
-      clearTimeout(timer);
-    },
-  };
 }
 
 /** Launches chromium with a fresh profile; returns { context, page, close }. */
 export async function launchBrowser({ width = 1600, height = 1000 } = {}) {
-  const executablePath = ensureChromium();
-  const userDataDir = mkdtempSync(path.join(os.tmpdir(), 'maa-chromium-'));
-  const context = await chromium.launchPersistentContext(userDataDir, {
-    executablePath, headless: true, args: CHROMIUM_FLAGS, viewport: { width, height },
-  });
-  const page = context.pages()[0] ?? await context.newPage();
-  const consoleLines = [];
-  page.on('console', (m) => consoleLines.push(`${m.type()}: ${m.text()}`));
-  page.on('pageerror', (e) => consoleLines.push(`pageerror: ${e.message}`));
-  return {
-    context, page, consoleLines,
-    async close() {
-      await context.close().catch(() => undefined);
-      rmSync(userDataDir, { recursive: true, force: true });
-    },
-  };
+    const executablePath = ensureChromium();
+    const userDataDir = mkdtempSync(path.join(os.tmpdir(), 'maa-chromium-'));
+    const context = await chromium.launchPersistentContext(userDataDir, {
+        executablePath,
+        headless: true,
+        args: CHROMIUM_FLAGS,
+        viewport: { width, height },
+    });
+    const page = context.pages()[0] ?? (await context.newPage());
+    const consoleLines = [];
+    page.on('console', (m) => consoleLines.push(`${m.type()}: ${m.text()}`));
+    page.on('pageerror', (e) => consoleLines.push(`pageerror: ${e.message}`));
+    return {
+        context,
+        page,
+        consoleLines,
+        async close() {
+            await context.close().catch(() => undefined);
+            rmSync(userDataDir, { recursive: true, force: true });
+        },
+    };
 }
 
 export async function screenshot(page, name) {
-  mkdirSync(artifacts, { recursive: true });
-  const file = path.join(artifacts, `${name}.png`);
-  await page.screenshot({ path: file });
-  return file;
+    mkdirSync(artifacts, { recursive: true });
+    const file = path.join(artifacts, `${name}.png`);
+    await page.screenshot({ path: file });
+    return file;
 }
 
 /** Waits until the workbench reports ready (editor, language client, diagram mounted). */
 export async function waitForWorkbench(page, timeout = 60_000) {
-  await page.waitForFunction(() => window.maaIde?.ready === true, undefined, { timeout });
+    await page.waitForFunction(() => window.maaIde?.ready === true, undefined, { timeout });
 }

@@ -16,8 +16,8 @@ const log = args.includes('--log');
 
 const selected = scenarios.filter((s) => !only || new RegExp(only, 'i').test(s.name));
 if (selected.length === 0) {
-  console.error(`e2e: no scenario matches "${only}"`);
-  process.exit(2);
+    console.error(`e2e: no scenario matches "${only}"`);
+    process.exit(2);
 }
 
 mkdirSync(artifacts, { recursive: true });
@@ -26,37 +26,48 @@ let ide;
 let browser;
 const results = [];
 try {
-  ide = await startIde(ws.workspace, { log });
-  console.log(`e2e: maa-ide at ${ide.url} on ${ws.workspace}`);
-  browser = await launchBrowser();
-  await ide.login(browser.page);
-  for (const scenario of selected) {
-    const started = Date.now();
-    const ctx = { page: browser.page, url: ide.url, workspace: ws.workspace, shot: (name) => screenshot(browser.page, `${scenario.id}-${name}`) };
-    try {
-      await scenario.run(ctx);
-      await screenshot(browser.page, `${scenario.id}-pass`);
-      results.push({ name: scenario.name, ok: true, ms: Date.now() - started });
-      console.log(`  ✓ ${scenario.name} (${Date.now() - started} ms)`);
-    } catch (error) {
-      const file = await screenshot(browser.page, `${scenario.id}-FAIL`).catch(() => undefined);
-      results.push({ name: scenario.name, ok: false, ms: Date.now() - started, error: String(error?.stack ?? error) });
-      console.log(`  ✗ ${scenario.name} (${Date.now() - started} ms)\n    ${String(error?.message ?? error).split('\n').join('\n    ')}`);
-      if (file) console.log(`    screenshot: ${path.relative(process.cwd(), file)}`);
-      const consoleTail = browser.consoleLines.slice(-15);
-      if (consoleTail.length) console.log(`    browser console (last lines):\n      ${consoleTail.join('\n      ')}`);
+    ide = await startIde(ws.workspace, { log });
+    console.log(`e2e: maa-ide at ${ide.url} on ${ws.workspace}`);
+    browser = await launchBrowser();
+    await ide.login(browser.page);
+    for (const scenario of selected) {
+        const started = Date.now();
+        const ctx = {
+            page: browser.page,
+            url: ide.url,
+            workspace: ws.workspace,
+            shot: (name) => screenshot(browser.page, `${scenario.id}-${name}`),
+        };
+        try {
+            await scenario.run(ctx);
+            await screenshot(browser.page, `${scenario.id}-pass`);
+            results.push({ name: scenario.name, ok: true, ms: Date.now() - started });
+            console.log(`  ✓ ${scenario.name} (${Date.now() - started} ms)`);
+        } catch (error) {
+            const file = await screenshot(browser.page, `${scenario.id}-FAIL`).catch(() => undefined);
+            results.push({ name: scenario.name, ok: false, ms: Date.now() - started, error: String(error?.stack ?? error) });
+            console.log(
+                `  ✗ ${scenario.name} (${Date.now() - started} ms)\n    ${String(error?.message ?? error)
+                    .split('\n')
+                    .join('\n    ')}`,
+            );
+            if (file) console.log(`    screenshot: ${path.relative(process.cwd(), file)}`);
+            const consoleTail = browser.consoleLines.slice(-15);
+            if (consoleTail.length) console.log(`    browser console (last lines):\n      ${consoleTail.join('\n      ')}`);
+        }
     }
-  }
 } catch (error) {
-  console.error(`e2e: ${error?.stack ?? error}`);
-  results.push({ name: 'setup', ok: false, error: String(error) });
+    console.error(`e2e: ${error?.stack ?? error}`);
+    results.push({ name: 'setup', ok: false, error: String(error) });
 } finally {
-  await browser?.close();
-  await ide?.stop();
-  ws.dispose();
+    await browser?.close();
+    await ide?.stop();
+    ws.dispose();
 }
 
 writeFileSync(path.join(artifacts, 'results.json'), JSON.stringify(results, null, 2));
 const failed = results.filter((r) => !r.ok);
-console.log(`\ne2e: ${results.length - failed.length} passed, ${failed.length} failed; screenshots in ${path.relative(process.cwd(), artifacts) || artifacts}`);
+console.log(
+    `\ne2e: ${results.length - failed.length} passed, ${failed.length} failed; screenshots in ${path.relative(process.cwd(), artifacts) || artifacts}`,
+);
 process.exit(failed.length ? 1 : 0);

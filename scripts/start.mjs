@@ -19,7 +19,7 @@ const npm = process.platform === 'win32' ? 'npm.cmd' : 'npm';
 const args = process.argv.slice(2);
 
 if (args.includes('--help') || args.includes('-h')) {
-  console.log(`Usage: npm start [-- options]
+    console.log(`Usage: npm start [-- options]
 
 Builds the workbench, sets up the simulator (sim-server/.venv) and serves the browser IDE.
 Options:
@@ -30,25 +30,25 @@ Options:
   --session-idle S    a simulation ends S seconds after its last client left (default 60)
   --skip-build        start without building (after a build of your own)
 Open the URL maa-ide prints (it holds ?token=...; MAA_IDE_TOKEN=<token> fixes the token).`);
-  process.exit(0);
+    process.exit(0);
 }
 
 function option(name) {
-  const i = args.indexOf(name);
-  return i >= 0 ? args[i + 1] : undefined;
+    const i = args.indexOf(name);
+    return i >= 0 ? args[i + 1] : undefined;
 }
 
 function run(title, command, commandArgs) {
-  console.log(`\n== ${title}: ${[command, ...commandArgs].join(' ')}`);
-  const result = spawnSync(command, commandArgs, { cwd: repo, stdio: 'inherit' });
-  if (result.error) {
-    console.error(`start: could not start ${command}: ${result.error.message}`);
-    process.exit(2);
-  }
-  if (result.status !== 0) {
-    console.error(`\nstart: ${title} failed (exit ${result.status})`);
-    process.exit(result.status ?? 2);
-  }
+    console.log(`\n== ${title}: ${[command, ...commandArgs].join(' ')}`);
+    const result = spawnSync(command, commandArgs, { cwd: repo, stdio: 'inherit' });
+    if (result.error) {
+        console.error(`start: could not start ${command}: ${result.error.message}`);
+        process.exit(2);
+    }
+    if (result.status !== 0) {
+        console.error(`\nstart: ${title} failed (exit ${result.status})`);
+        process.exit(result.status ?? 2);
+    }
 }
 
 if (!args.includes('--skip-build')) run('build', npm, ['run', 'build']);
@@ -56,26 +56,29 @@ run('simulator setup', 'bash', [path.join(repo, 'sim-server', 'scripts', 'setup_
 
 let workspace = option('--workspace');
 if (workspace) {
-  workspace = path.resolve(workspace);
-  if (!existsSync(workspace)) {
-    console.error(`start: the workspace folder ${workspace} does not exist`);
-    process.exit(2);
-  }
+    workspace = path.resolve(workspace);
+    if (!existsSync(workspace)) {
+        console.error(`start: the workspace folder ${workspace} does not exist`);
+        process.exit(2);
+    }
 } else {
-  workspace = path.join(repo, '.maa-workspace');
-  if (args.includes('--reset-workspace')) rmSync(workspace, { recursive: true, force: true });
-  if (!existsSync(workspace)) {
-    cpSync(path.join(repo, 'examples'), workspace, { recursive: true });
-    console.log(`\nstart: created the workspace ${workspace} (a copy of examples/)`);
-  }
+    workspace = path.join(repo, '.maa-workspace');
+    if (args.includes('--reset-workspace')) rmSync(workspace, { recursive: true, force: true });
+    if (!existsSync(workspace)) {
+        cpSync(path.join(repo, 'examples'), workspace, { recursive: true });
+        console.log(`\nstart: created the workspace ${workspace} (a copy of examples/)`);
+    }
 }
 
 const ideArgs = [
-  path.join(repo, 'packages', 'ide-server', 'bin', 'maa-ide.js'),
-  '--workspace', workspace,
-  '--port', option('--port') ?? process.env.PORT ?? '3000',
-  '--host', option('--host') ?? '127.0.0.1',
-  ...(option('--session-idle') ? ['--session-idle', option('--session-idle')] : []),
+    path.join(repo, 'packages', 'ide-server', 'bin', 'maa-ide.js'),
+    '--workspace',
+    workspace,
+    '--port',
+    option('--port') ?? process.env.PORT ?? '3000',
+    '--host',
+    option('--host') ?? '127.0.0.1',
+    ...(option('--session-idle') ? ['--session-idle', option('--session-idle')] : []),
 ];
 console.log(`\n== IDE: node ${ideArgs.join(' ')}`);
 const ide = spawn(process.execPath, ideArgs, { cwd: repo, stdio: 'inherit' });

@@ -4,54 +4,60 @@
 
 /** Tests passed and skipped, and every failure by kind, each failure with a name. */
 export class Tally {
-  passed = 0;
-  skipped = 0;
-  /** kind → what failed (one entry per failure), in the order they were found. */
-  failures = new Map();
+    passed = 0;
+    skipped = 0;
+    /** kind → what failed (one entry per failure), in the order they were found. */
+    failures = new Map();
 
-  fail(kind, what) {
-    if (!this.failures.has(kind)) this.failures.set(kind, []);
-    this.failures.get(kind).push(what);
-  }
-
-  /** Failures of every kind: the "failed" of the closing line. */
-  get failed() {
-    let n = 0;
-    for (const list of this.failures.values()) n += list.length;
-    return n;
-  }
-
-  /** 0 exactly when nothing failed and some test passed. */
-  get exitCode() {
-    return this.failed === 0 && this.passed > 0 ? 0 : 1;
-  }
-
-  /**
-   * The closing lines: what failed, by kind and by name; a `failures:` line counting each kind;
-   * the time; and last `tests: N passed, N failed, N skipped`, where failed counts every kind.
-   */
-  summary(minutes) {
-    const lines = [];
-    if (this.failed > 0) {
-      lines.push('', 'test-all: what failed:');
-      for (const [kind, list] of this.failures) {
-        lines.push(`  ${kind} (${list.length}):`);
-        for (const what of list) lines.push(`    - ${what}`);
-      }
-      lines.push('', `failures: ${[...this.failures].map(([kind, list]) => `${list.length} ${kind}`).join(', ')}`);
-    } else if (this.passed === 0) {
-      lines.push('', 'test-all: no test was run');
-    } else {
-      lines.push('');
+    fail(kind, what) {
+        if (!this.failures.has(kind)) this.failures.set(kind, []);
+        this.failures.get(kind).push(what);
     }
-    if (minutes !== undefined) lines.push(`test-all: finished in ${minutes.toFixed(1)} min`);
-    lines.push(`tests: ${this.passed} passed, ${this.failed} failed, ${this.skipped} skipped`);
-    return lines;
-  }
+
+    /** Failures of every kind: the "failed" of the closing line. */
+    get failed() {
+        let n = 0;
+        for (const list of this.failures.values()) n += list.length;
+        return n;
+    }
+
+    /** 0 exactly when nothing failed and some test passed. */
+    get exitCode() {
+        return this.failed === 0 && this.passed > 0 ? 0 : 1;
+    }
+
+    /**
+     * The closing lines: what failed, by kind and by name; a `failures:` line counting each kind;
+     * the time; and last `tests: N passed, N failed, N skipped`, where failed counts every kind.
+     */
+    summary(minutes) {
+        const lines = [];
+        if (this.failed > 0) {
+            lines.push('', 'test-all: what failed:');
+            for (const [kind, list] of this.failures) {
+                lines.push(`  ${kind} (${list.length}):`);
+                for (const what of list) lines.push(`    - ${what}`);
+            }
+            lines.push('', `failures: ${[...this.failures].map(([kind, list]) => `${list.length} ${kind}`).join(', ')}`);
+        } else if (this.passed === 0) {
+            lines.push('', 'test-all: no test was run');
+        } else {
+            lines.push('');
+        }
+        if (minutes !== undefined) lines.push(`test-all: finished in ${minutes.toFixed(1)} min`);
+        lines.push(`tests: ${this.passed} passed, ${this.failed} failed, ${this.skipped} skipped`);
+        return lines;
+    }
 }
 
 const unescapeXml = (text) =>
-  text.replace(/&#10;/g, '\n').replace(/&quot;/g, '"').replace(/&apos;/g, "'").replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&amp;/g, '&');
+    text
+        .replace(/&#10;/g, '\n')
+        .replace(/&quot;/g, '"')
+        .replace(/&apos;/g, "'")
+        .replace(/&lt;/g, '<')
+        .replace(/&gt;/g, '>')
+        .replace(/&amp;/g, '&');
 
 /**
  * pytest's JUnit XML (`<testsuite errors= failures= skipped= tests=>` with `<testcase>`s): the
@@ -59,22 +65,22 @@ const unescapeXml = (text) =>
  * undefined when the text holds no test suite.
  */
 export function junitCounts(xml) {
-  const suite = /<testsuite\b([^>]*)>/.exec(xml);
-  if (!suite) return undefined;
-  const attribute = (name) => Number((new RegExp(`\\b${name}="(\\d+)"`).exec(suite[1]) ?? [])[1] ?? 0);
-  const failed = [];
-  const errors = [];
-  for (const match of xml.matchAll(/<testcase\b([^>]*?)(?:\/>|>([\s\S]*?)<\/testcase>)/g)) {
-    const body = match[2] ?? '';
-    const attr = (name) => unescapeXml(new RegExp(`\\b${name}="([^"]*)"`).exec(match[1])?.[1] ?? '');
-    const name = [attr('classname'), attr('name')].filter(Boolean).join('::');
-    const message = (tag) => unescapeXml(new RegExp(`<${tag}\\b[^>]*\\bmessage="([^"]*)"`).exec(body)?.[1] ?? tag).split('\n')[0];
-    if (/<failure\b/.test(body)) failed.push(`${name}: ${message('failure')}`);
-    else if (/<error\b/.test(body)) errors.push(`${name}: ${message('error')}`);
-  }
-  // The attributes count; the cases name what they can (for pytest the two agree).
-  while (failed.length < attribute('failures')) failed.push('a failed test (not named in the report)');
-  while (errors.length < attribute('errors')) errors.push('an error (not named in the report)');
-  const skipped = attribute('skipped');
-  return { passed: attribute('tests') - failed.length - errors.length - skipped, failed, errors, skipped };
+    const suite = /<testsuite\b([^>]*)>/.exec(xml);
+    if (!suite) return undefined;
+    const attribute = (name) => Number((new RegExp(`\\b${name}="(\\d+)"`).exec(suite[1]) ?? [])[1] ?? 0);
+    const failed = [];
+    const errors = [];
+    for (const match of xml.matchAll(/<testcase\b([^>]*?)(?:\/>|>([\s\S]*?)<\/testcase>)/g)) {
+        const body = match[2] ?? '';
+        const attr = (name) => unescapeXml(new RegExp(`\\b${name}="([^"]*)"`).exec(match[1])?.[1] ?? '');
+        const name = [attr('classname'), attr('name')].filter(Boolean).join('::');
+        const message = (tag) => unescapeXml(new RegExp(`<${tag}\\b[^>]*\\bmessage="([^"]*)"`).exec(body)?.[1] ?? tag).split('\n')[0];
+        if (/<failure\b/.test(body)) failed.push(`${name}: ${message('failure')}`);
+        else if (/<error\b/.test(body)) errors.push(`${name}: ${message('error')}`);
+    }
+    // The attributes count; the cases name what they can (for pytest the two agree).
+    while (failed.length < attribute('failures')) failed.push('a failed test (not named in the report)');
+    while (errors.length < attribute('errors')) errors.push('an error (not named in the report)');
+    const skipped = attribute('skipped');
+    return { passed: attribute('tests') - failed.length - errors.length - skipped, failed, errors, skipped };
 }

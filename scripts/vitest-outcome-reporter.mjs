@@ -11,70 +11,70 @@ const SLOWEST = 10;
 
 /** @param {{ message?: string, name?: string } | undefined} error */
 function describe(error) {
-  if (!error) return 'unknown error';
-  const name = error.name && !String(error.message ?? '').startsWith(error.name) ? `${error.name}: ` : '';
-  return `${name}${String(error.message ?? error).split('\n')[0]}`;
+    if (!error) return 'unknown error';
+    const name = error.name && !String(error.message ?? '').startsWith(error.name) ? `${error.name}: ` : '';
+    return `${name}${String(error.message ?? error).split('\n')[0]}`;
 }
 
 export default class OutcomeReporter {
-  onInit(vitest) {
-    this.root = vitest.config.root;
-  }
-
-  /**
-   * @param {ReadonlyArray<import('vitest/node').TestModule>} modules
-   * @param {ReadonlyArray<{ message?: string, name?: string }>} unhandledErrors
-   * @param {'passed' | 'interrupted' | 'failed'} reason
-   */
-  onTestRunEnd(modules, unhandledErrors, reason) {
-    const target = process.env.MAA_VITEST_OUTCOME;
-    if (!target) return;
-    const outcome = {
-      reason,
-      passed: 0,
-      skipped: 0,
-      failedTests: [],
-      /** Test files whose tests did not run (load error, crashed worker, never started). */
-      brokenFiles: [],
-      /** beforeAll/afterAll hooks and suites that failed outside any single test. */
-      suiteErrors: [],
-      unhandledErrors: unhandledErrors.map(describe),
-      slowest: [],
-      /** Test files by their whole time (hooks included: a beforeAll that generates and runs code). */
-      slowestFiles: [],
-    };
-    const durations = [];
-    const fileDurations = [];
-    for (const module of modules) {
-      const file = path.relative(this.root ?? process.cwd(), module.moduleId);
-      const state = module.state();
-      let ran = 0;
-      for (const test of module.children.allTests()) {
-        const result = test.result();
-        if (result.state === 'passed') outcome.passed += 1;
-        else if (result.state === 'skipped') outcome.skipped += 1;
-        else if (result.state === 'failed') outcome.failedTests.push(`${file} > ${test.fullName}: ${describe(result.errors?.[0])}`);
-        else outcome.failedTests.push(`${file} > ${test.fullName}: did not finish (${result.state})`);
-        if (result.state !== 'skipped') ran += 1;
-        const duration = test.diagnostic()?.duration;
-        if (typeof duration === 'number') durations.push({ test: `${file} > ${test.fullName}`, ms: Math.round(duration) });
-      }
-      const fileDuration = module.diagnostic()?.duration;
-      if (typeof fileDuration === 'number') fileDurations.push({ file, ms: Math.round(fileDuration) });
-      const moduleErrors = module.errors();
-      if (state === 'queued' || state === 'pending') {
-        outcome.brokenFiles.push(`${file}: did not start or finish (${state})`);
-      } else if (moduleErrors.length > 0 && ran === 0) {
-        outcome.brokenFiles.push(`${file}: ${describe(moduleErrors[0])}`);
-      } else if (moduleErrors.length > 0) {
-        outcome.suiteErrors.push(`${file}: ${describe(moduleErrors[0])}`);
-      }
-      for (const suite of module.children.allSuites()) {
-        for (const error of suite.errors()) outcome.suiteErrors.push(`${file} > ${suite.fullName}: ${describe(error)}`);
-      }
+    onInit(vitest) {
+        this.root = vitest.config.root;
     }
-    outcome.slowest = durations.sort((a, b) => b.ms - a.ms).slice(0, SLOWEST);
-    outcome.slowestFiles = fileDurations.sort((a, b) => b.ms - a.ms).slice(0, SLOWEST);
-    writeFileSync(target, JSON.stringify(outcome, null, 2));
-  }
+
+    /**
+     * @param {ReadonlyArray<import('vitest/node').TestModule>} modules
+     * @param {ReadonlyArray<{ message?: string, name?: string }>} unhandledErrors
+     * @param {'passed' | 'interrupted' | 'failed'} reason
+     */
+    onTestRunEnd(modules, unhandledErrors, reason) {
+        const target = process.env.MAA_VITEST_OUTCOME;
+        if (!target) return;
+        const outcome = {
+            reason,
+            passed: 0,
+            skipped: 0,
+            failedTests: [],
+            /** Test files whose tests did not run (load error, crashed worker, never started). */
+            brokenFiles: [],
+            /** beforeAll/afterAll hooks and suites that failed outside any single test. */
+            suiteErrors: [],
+            unhandledErrors: unhandledErrors.map(describe),
+            slowest: [],
+            /** Test files by their whole time (hooks included: a beforeAll that generates and runs code). */
+            slowestFiles: [],
+        };
+        const durations = [];
+        const fileDurations = [];
+        for (const module of modules) {
+            const file = path.relative(this.root ?? process.cwd(), module.moduleId);
+            const state = module.state();
+            let ran = 0;
+            for (const test of module.children.allTests()) {
+                const result = test.result();
+                if (result.state === 'passed') outcome.passed += 1;
+                else if (result.state === 'skipped') outcome.skipped += 1;
+                else if (result.state === 'failed') outcome.failedTests.push(`${file} > ${test.fullName}: ${describe(result.errors?.[0])}`);
+                else outcome.failedTests.push(`${file} > ${test.fullName}: did not finish (${result.state})`);
+                if (result.state !== 'skipped') ran += 1;
+                const duration = test.diagnostic()?.duration;
+                if (typeof duration === 'number') durations.push({ test: `${file} > ${test.fullName}`, ms: Math.round(duration) });
+            }
+            const fileDuration = module.diagnostic()?.duration;
+            if (typeof fileDuration === 'number') fileDurations.push({ file, ms: Math.round(fileDuration) });
+            const moduleErrors = module.errors();
+            if (state === 'queued' || state === 'pending') {
+                outcome.brokenFiles.push(`${file}: did not start or finish (${state})`);
+            } else if (moduleErrors.length > 0 && ran === 0) {
+                outcome.brokenFiles.push(`${file}: ${describe(moduleErrors[0])}`);
+            } else if (moduleErrors.length > 0) {
+                outcome.suiteErrors.push(`${file}: ${describe(moduleErrors[0])}`);
+            }
+            for (const suite of module.children.allSuites()) {
+                for (const error of suite.errors()) outcome.suiteErrors.push(`${file} > ${suite.fullName}: ${describe(error)}`);
+            }
+        }
+        outcome.slowest = durations.sort((a, b) => b.ms - a.ms).slice(0, SLOWEST);
+        outcome.slowestFiles = fileDurations.sort((a, b) => b.ms - a.ms).slice(0, SLOWEST);
+        writeFileSync(target, JSON.stringify(outcome, null, 2));
+    }
 }

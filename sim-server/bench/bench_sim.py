@@ -78,7 +78,9 @@ def generated_timesync() -> Path | None:
     out = Path(tempfile.mkdtemp(prefix="maa-bench-"))
     result = subprocess.run(
         ["node", str(maa_gen), "generate", str(app), "--platform", "timesync", "--out", str(out)],
-        capture_output=True, text=True, check=False,
+        capture_output=True,
+        text=True,
+        check=False,
     )
     return out / "timesync" if result.returncode == 0 else None
 

@@ -257,7 +257,7 @@ def test_token_from_environment_or_made_per_start(monkeypatch: pytest.MonkeyPatc
     assert first != second and len(first) >= 40
     monkeypatch.delenv("MAA_SIM_TOKEN")
     assert len(resolve_token()) >= 40
-    for bad in ("has space", "semi;colon", "quote\"", "t\u00e9st"):
+    for bad in ("has space", "semi;colon", 'quote"', "t\u00e9st"):
         monkeypatch.setenv("MAA_SIM_TOKEN", bad)
         with pytest.raises(ValueError, match="MAA_SIM_TOKEN"):
             resolve_token()

@@ -24,8 +24,8 @@ const here = path.dirname(fileURLToPath(import.meta.url));
 const CLI = path.resolve(here, '..', 'bin', 'maa-gen.js');
 
 function option(name, fallback) {
-  const i = process.argv.indexOf(`--${name}`);
-  return i >= 0 && process.argv[i + 1] !== undefined ? process.argv[i + 1] : fallback;
+    const i = process.argv.indexOf(`--${name}`);
+    return i >= 0 && process.argv[i + 1] !== undefined ? process.argv[i + 1] : fallback;
 }
 const flag = (name) => process.argv.includes(`--${name}`);
 
@@ -74,140 +74,223 @@ class {{ t.name | pascal_case }}:
 `;
 
 function installGenerators(root) {
-  const dir = path.join(root, 'node_modules', 'bench-gens');
-  mkdirSync(path.join(dir, 'templates'), { recursive: true });
-  writeFileSync(path.join(dir, 'package.json'), JSON.stringify({
-    name: 'bench-gens', version: '1.0.0', type: 'module',
-    maa: { generators: [
-      { name: 'bench.Components', kind: 'component', supports: ['compute'], output: { gpl: 'python', rte: 'bench-rte' }, entry: 'components.js', templates: 'templates', checks: ['components.BehaviorOrHandwritten', 'components.NoInheritance'] },
-      { name: 'bench.DataTypes', kind: 'datatype', output: { gpl: 'python' }, entry: 'datatypes.js', templates: 'templates', checks: ['datatypes.NoInheritance'] },
-    ] },
-  }, null, 2));
-  writeFileSync(path.join(dir, 'templates', 'component.py.njk'), COMPONENT_TEMPLATE);
-  writeFileSync(path.join(dir, 'templates', 'types.py.njk'), TYPES_TEMPLATE);
-  writeFileSync(path.join(dir, 'components.js'), `export default () => ({ kind: 'component', async generate(ctx) {
+    const dir = path.join(root, 'node_modules', 'bench-gens');
+    mkdirSync(path.join(dir, 'templates'), { recursive: true });
+    writeFileSync(
+        path.join(dir, 'package.json'),
+        JSON.stringify(
+            {
+                name: 'bench-gens',
+                version: '1.0.0',
+                type: 'module',
+                maa: {
+                    generators: [
+                        {
+                            name: 'bench.Components',
+                            kind: 'component',
+                            supports: ['compute'],
+                            output: { gpl: 'python', rte: 'bench-rte' },
+                            entry: 'components.js',
+                            templates: 'templates',
+                            checks: ['components.BehaviorOrHandwritten', 'components.NoInheritance'],
+                        },
+                        {
+                            name: 'bench.DataTypes',
+                            kind: 'datatype',
+                            output: { gpl: 'python' },
+                            entry: 'datatypes.js',
+                            templates: 'templates',
+                            checks: ['datatypes.NoInheritance'],
+                        },
+                    ],
+                },
+            },
+            null,
+            2,
+        ),
+    );
+    writeFileSync(path.join(dir, 'templates', 'component.py.njk'), COMPONENT_TEMPLATE);
+    writeFileSync(path.join(dir, 'templates', 'types.py.njk'), TYPES_TEMPLATE);
+    writeFileSync(
+        path.join(dir, 'components.js'),
+        `export default () => ({ kind: 'component', async generate(ctx) {
   for (const c of ctx.architecture.components) {
     const f = ctx.out.file(c.qualifiedName.replace(/\\./g, '/') + '.py');
     f.render('component.py.njk', { c }, c.node);
     await ctx.behavior(c);
   }
 } });
-`);
-  writeFileSync(path.join(dir, 'datatypes.js'), `export default () => ({ kind: 'datatype', generate(ctx) {
+`,
+    );
+    writeFileSync(
+        path.join(dir, 'datatypes.js'),
+        `export default () => ({ kind: 'datatype', generate(ctx) {
   ctx.out.file('types.py').render('types.py.njk', { types: ctx.dataTypes });
   return {};
 } });
-`);
-  return dir;
+`,
+    );
+    return dir;
 }
 
 function writeSystem(root, gen) {
-  const count = writeSystemComponent(root, gen);
-  writeFileSync(path.join(root, 'Bench.arcapp'), 'application Bench for robot.System {\n  platform python {\n    bench.Components;\n    bench.DataTypes;\n  }\n}\n');
-  return count;
+    const count = writeSystemComponent(root, gen);
+    writeFileSync(
+        path.join(root, 'Bench.arcapp'),
+        'application Bench for robot.System {\n  platform python {\n    bench.Components;\n    bench.DataTypes;\n  }\n}\n',
+    );
+    return count;
 }
 
 function run(args, options = {}) {
-  return new Promise((resolve, reject) => {
-    const started = performance.now();
-    execFile(process.execPath, args, { maxBuffer: 256 * 1024 * 1024, ...options }, (error, stdout, stderr) => {
-      const ms = performance.now() - started;
-      if (error && typeof error.code !== 'number') reject(error);
-      else resolve({ code: error ? error.code : 0, stdout, stderr, ms });
+    return new Promise((resolve, reject) => {
+        const started = performance.now();
+        execFile(process.execPath, args, { maxBuffer: 256 * 1024 * 1024, ...options }, (error, stdout, stderr) => {
+            const ms = performance.now() - started;
+            if (error && typeof error.code !== 'number') reject(error);
+            else resolve({ code: error ? error.code : 0, stdout, stderr, ms });
+        });
     });
-  });
 }
 
 async function main() {
-  const components = Number(option('components', '1000'));
-  const work = mkdtempSync(path.join(tmpdir(), 'maa-gen-bench-'));
-  const root = path.join(work, 'models');
-  try {
-    const gen = generateModels(root, components);
-    const componentTypes = writeSystem(root, gen);
-    installGenerators(root);
-    console.log(`maa-gen generate benchmark: ${gen.atomic + gen.composed} components of the check benchmark (${PACKAGES} packages) + a System component`);
-    console.log(`instantiating each (${componentTypes} component types), 1 class diagram; generator family: component + data type generator (Nunjucks)`);
-    console.log(`Node ${process.version}, ${process.platform}/${process.arch}\n`);
+    const components = Number(option('components', '1000'));
+    const work = mkdtempSync(path.join(tmpdir(), 'maa-gen-bench-'));
+    const root = path.join(work, 'models');
+    try {
+        const gen = generateModels(root, components);
+        const componentTypes = writeSystem(root, gen);
+        installGenerators(root);
+        console.log(
+            `maa-gen generate benchmark: ${gen.atomic + gen.composed} components of the check benchmark (${PACKAGES} packages) + a System component`,
+        );
+        console.log(
+            `instantiating each (${componentTypes} component types), 1 class diagram; generator family: component + data type generator (Nunjucks)`,
+        );
+        console.log(`Node ${process.version}, ${process.platform}/${process.arch}\n`);
 
-    const { createMaaServices } = await import('@maa/language-server');
-    const core = await import('@maa/generator-core/node');
-    const { NodeFileSystem } = await import('langium/node');
-    const out = path.join(work, 'out');
+        const { createMaaServices } = await import('@maa/language-server');
+        const core = await import('@maa/generator-core/node');
+        const { NodeFileSystem } = await import('langium/node');
+        const out = path.join(work, 'out');
 
-    process.stderr.write('orchestrated generation, first run...\n');
-    const t0 = performance.now();
-    const first = await core.generate({ services: createMaaServices(NodeFileSystem), appFile: path.join(root, 'Bench.arcapp'), outDir: out });
-    const firstMs = performance.now() - t0;
-    if (!first.ok) throw new Error(`generation failed:\n${first.diagnostics.filter((d) => d.severity === 'error').slice(0, 10).map((d) => `${d.file}:${d.line} ${d.code} ${d.message}`).join('\n')}`);
-    process.stderr.write('orchestrated generation, second run (unchanged)...\n');
-    const t1 = performance.now();
-    const second = await core.generate({ services: createMaaServices(NodeFileSystem), appFile: path.join(root, 'Bench.arcapp'), outDir: out });
-    const secondMs = performance.now() - t1;
+        process.stderr.write('orchestrated generation, first run...\n');
+        const t0 = performance.now();
+        const first = await core.generate({
+            services: createMaaServices(NodeFileSystem),
+            appFile: path.join(root, 'Bench.arcapp'),
+            outDir: out,
+        });
+        const firstMs = performance.now() - t0;
+        if (!first.ok)
+            throw new Error(
+                `generation failed:\n${first.diagnostics
+                    .filter((d) => d.severity === 'error')
+                    .slice(0, 10)
+                    .map((d) => `${d.file}:${d.line} ${d.code} ${d.message}`)
+                    .join('\n')}`,
+            );
+        process.stderr.write('orchestrated generation, second run (unchanged)...\n');
+        const t1 = performance.now();
+        const second = await core.generate({
+            services: createMaaServices(NodeFileSystem),
+            appFile: path.join(root, 'Bench.arcapp'),
+            outDir: out,
+        });
+        const secondMs = performance.now() - t1;
 
-    // Raw rendering: the same templates over the same views, no orchestration, no tracing.
-    process.stderr.write('raw template rendering...\n');
-    const services = createMaaServices(NodeFileSystem);
-    core.configureGeneratorRegistry(services.shared, core.GeneratorRegistry.EMPTY);
-    const { checkRoots } = await import('@maa/language-adl');
-    await checkRoots(services, [{ root }]);
-    const { URI } = await import('langium');
-    const app = services.shared.workspace.LangiumDocuments.getDocument(URI.file(path.join(root, 'Bench.arcapp'))).parseResult.value.application;
-    const tArch = performance.now();
-    const architecture = core.applicationArchitecture(app);
-    const archMs = performance.now() - tArch;
-    const env = core.createTemplateEnvironment([path.join(root, 'node_modules', 'bench-gens', 'templates')]);
-    const raw = [];
-    for (let i = 0; i < 3; i++) {
-      const t = performance.now();
-      let bytes = 0;
-      for (const c of architecture.components) bytes += env.render('component.py.njk', { c }).length;
-      bytes += env.render('types.py.njk', { types: architecture.dataTypes }).length;
-      raw.push({ ms: performance.now() - t, bytes });
+        // Raw rendering: the same templates over the same views, no orchestration, no tracing.
+        process.stderr.write('raw template rendering...\n');
+        const services = createMaaServices(NodeFileSystem);
+        core.configureGeneratorRegistry(services.shared, core.GeneratorRegistry.EMPTY);
+        const { checkRoots } = await import('@maa/language-adl');
+        await checkRoots(services, [{ root }]);
+        const { URI } = await import('langium');
+        const app = services.shared.workspace.LangiumDocuments.getDocument(URI.file(path.join(root, 'Bench.arcapp'))).parseResult.value
+            .application;
+        const tArch = performance.now();
+        const architecture = core.applicationArchitecture(app);
+        const archMs = performance.now() - tArch;
+        const env = core.createTemplateEnvironment([path.join(root, 'node_modules', 'bench-gens', 'templates')]);
+        const raw = [];
+        for (let i = 0; i < 3; i++) {
+            const t = performance.now();
+            let bytes = 0;
+            for (const c of architecture.components) bytes += env.render('component.py.njk', { c }).length;
+            bytes += env.render('types.py.njk', { types: architecture.dataTypes }).length;
+            raw.push({ ms: performance.now() - t, bytes });
+        }
+        const rawMs = Math.min(...raw.map((r) => r.ms));
+
+        process.stderr.write('cold maa-gen generate (CLI)...\n');
+        const cli = await run([CLI, 'generate', path.join(root, 'Bench.arcapp'), '--out', path.join(work, 'out-cli')], { cwd: work });
+        if (cli.code !== 0) throw new Error(`maa-gen generate failed (exit ${cli.code}):\n${cli.stderr}`);
+
+        const f = first.timings;
+        const overhead = f.discover + f.check + f.instantiate + f.generate + f.trace + f.write - raw[0].ms;
+        const ms = (x) => `${x.toFixed(0)} ms`;
+        const s = (x) => `${(x / 1000).toFixed(2)} s`;
+        const files = first.platforms[0].files.length;
+        const rows = [
+            [
+                'raw template rendering, cold (templates compiled on first use)',
+                `${ms(raw[0].ms)}  (${files} outputs, ${(raw[0].bytes / 1024).toFixed(0)} KiB)`,
+            ],
+            ['raw template rendering, warm (best of 3)', ms(rawMs)],
+            ['building the architecture view (once)', ms(archMs)],
+            ['orchestrated, 1st run: discover manifests', ms(f.discover)],
+            ['orchestrated, 1st run: load + language checks (all files)', s(f.load)],
+            ['orchestrated, 1st run: configuration checks + generator rules', ms(f.check)],
+            ['orchestrated, 1st run: instantiate generators', ms(f.instantiate)],
+            ['orchestrated, 1st run: generate (render via FileBuilders, trace marks)', ms(f.generate)],
+            ['orchestrated, 1st run: resolve traces + trace file', ms(f.trace)],
+            [
+                'orchestrated, 1st run: plan (protected regions) + stage + commit the write',
+                `${ms(f.write)}  (${first.platforms[0].written.length} files written)`,
+            ],
+            ['orchestrated, 1st run: total (in-process)', s(firstMs)],
+            [
+                'orchestration overhead (1st run: all but loading, minus cold raw rendering)',
+                `${ms(overhead)}  (${(overhead / raw[0].ms).toFixed(1)} x cold raw rendering; ${((overhead / firstMs) * 100).toFixed(0)} % of the run)`,
+            ],
+            [
+                'orchestrated, 2nd run (output unchanged): total',
+                `${s(secondMs)}  (load ${s(second.timings.load)}, generate ${ms(second.timings.generate)}, trace ${ms(second.timings.trace)}, plan + write ${ms(second.timings.write)}, ${second.platforms[0].written.length} written)`,
+            ],
+            ['cold maa-gen generate through the CLI (wall time)', s(cli.ms)],
+        ];
+        const width = Math.max(...rows.map((r) => r[0].length));
+        console.log(`| ${'measure'.padEnd(width)} | value`);
+        console.log(`|${'-'.repeat(width + 2)}|${'-'.repeat(40)}`);
+        for (const [k, v] of rows) console.log(`| ${k.padEnd(width)} | ${v}`);
+        console.log(
+            `\n${files} generated files + trace file; ${first.diagnostics.filter((d) => d.severity === 'warning').length} model warnings (unconnected outputs of the System's subcomponents).`,
+        );
+        if (flag('json'))
+            console.log(
+                JSON.stringify(
+                    {
+                        rawMs,
+                        raw,
+                        archMs,
+                        first: { ms: firstMs, timings: first.timings },
+                        second: { ms: secondMs, timings: second.timings },
+                        cliMs: cli.ms,
+                    },
+                    null,
+                    2,
+                ),
+            );
+    } finally {
+        if (flag('keep')) console.log(`\nkept in ${work}`);
+        else rmSync(work, { recursive: true, force: true });
     }
-    const rawMs = Math.min(...raw.map((r) => r.ms));
-
-    process.stderr.write('cold maa-gen generate (CLI)...\n');
-    const cli = await run([CLI, 'generate', path.join(root, 'Bench.arcapp'), '--out', path.join(work, 'out-cli')], { cwd: work });
-    if (cli.code !== 0) throw new Error(`maa-gen generate failed (exit ${cli.code}):\n${cli.stderr}`);
-
-    const f = first.timings;
-    const overhead = f.discover + f.check + f.instantiate + f.generate + f.trace + f.write - raw[0].ms;
-    const ms = (x) => `${x.toFixed(0)} ms`;
-    const s = (x) => `${(x / 1000).toFixed(2)} s`;
-    const files = first.platforms[0].files.length;
-    const rows = [
-      ['raw template rendering, cold (templates compiled on first use)', `${ms(raw[0].ms)}  (${files} outputs, ${(raw[0].bytes / 1024).toFixed(0)} KiB)`],
-      ['raw template rendering, warm (best of 3)', ms(rawMs)],
-      ['building the architecture view (once)', ms(archMs)],
-      ['orchestrated, 1st run: discover manifests', ms(f.discover)],
-      ['orchestrated, 1st run: load + language checks (all files)', s(f.load)],
-      ['orchestrated, 1st run: configuration checks + generator rules', ms(f.check)],
-      ['orchestrated, 1st run: instantiate generators', ms(f.instantiate)],
-      ['orchestrated, 1st run: generate (render via FileBuilders, trace marks)', ms(f.generate)],
-      ['orchestrated, 1st run: resolve traces + trace file', ms(f.trace)],
-      ['orchestrated, 1st run: plan (protected regions) + stage + commit the write', `${ms(f.write)}  (${first.platforms[0].written.length} files written)`],
-      ['orchestrated, 1st run: total (in-process)', s(firstMs)],
-      ['orchestration overhead (1st run: all but loading, minus cold raw rendering)', `${ms(overhead)}  (${(overhead / raw[0].ms).toFixed(1)} x cold raw rendering; ${(overhead / firstMs * 100).toFixed(0)} % of the run)`],
-      ['orchestrated, 2nd run (output unchanged): total', `${s(secondMs)}  (load ${s(second.timings.load)}, generate ${ms(second.timings.generate)}, trace ${ms(second.timings.trace)}, plan + write ${ms(second.timings.write)}, ${second.platforms[0].written.length} written)`],
-      ['cold maa-gen generate through the CLI (wall time)', s(cli.ms)],
-    ];
-    const width = Math.max(...rows.map((r) => r[0].length));
-    console.log(`| ${'measure'.padEnd(width)} | value`);
-    console.log(`|${'-'.repeat(width + 2)}|${'-'.repeat(40)}`);
-    for (const [k, v] of rows) console.log(`| ${k.padEnd(width)} | ${v}`);
-    console.log(`\n${files} generated files + trace file; ${first.diagnostics.filter((d) => d.severity === 'warning').length} model warnings (unconnected outputs of the System's subcomponents).`);
-    if (flag('json')) console.log(JSON.stringify({ rawMs, raw, archMs, first: { ms: firstMs, timings: first.timings }, second: { ms: secondMs, timings: second.timings }, cliMs: cli.ms }, null, 2));
-  } finally {
-    if (flag('keep')) console.log(`\nkept in ${work}`);
-    else rmSync(work, { recursive: true, force: true });
-  }
 }
 
 try {
-  await main();
-  process.exit(0);
+    await main();
+    process.exit(0);
 } catch (e) {
-  console.error(`bench: ${e instanceof Error ? e.message : String(e)}`);
-  process.exit(1);
+    console.error(`bench: ${e instanceof Error ? e.message : String(e)}`);
+    process.exit(1);
 }

@@ -1,23 +1,23 @@
 /** The process streams and location a command talks to; injectable so commands stay testable. */
 export interface CliIo {
-  readonly cwd: string;
-  readonly env: NodeJS.ProcessEnv;
-  readonly stdoutIsTTY: boolean;
-  readonly stderrIsTTY: boolean;
-  /** Width of the terminal behind stderr, when it is one. */
-  readonly stderrColumns?: number;
-  out(text: string): void;
-  err(text: string): void;
+    readonly cwd: string;
+    readonly env: NodeJS.ProcessEnv;
+    readonly stdoutIsTTY: boolean;
+    readonly stderrIsTTY: boolean;
+    /** Width of the terminal behind stderr, when it is one. */
+    readonly stderrColumns?: number;
+    out(text: string): void;
+    err(text: string): void;
 }
 
 export function processIo(): CliIo {
-  return {
-    cwd: process.cwd(),
-    env: process.env,
-    stdoutIsTTY: process.stdout.isTTY === true,
-    stderrIsTTY: process.stderr.isTTY === true,
-    stderrColumns: process.stderr.columns,
-    out: (text) => void process.stdout.write(text),
-    err: (text) => void process.stderr.write(text),
-  };
+    return {
+        cwd: process.cwd(),
+        env: process.env,
+        stdoutIsTTY: process.stdout.isTTY === true,
+        stderrIsTTY: process.stderr.isTTY === true,
+        stderrColumns: process.stderr.columns,
+        out: (text) => void process.stdout.write(text),
+        err: (text) => void process.stderr.write(text),
+    };
 }

@@ -1,8 +1,8 @@
 import type { CliIo } from './io.js';
 
 export interface Progress {
-  update(message: string): void;
-  done(): void;
+    update(message: string): void;
+    done(): void;
 }
 
 /**
@@ -10,18 +10,18 @@ export interface Progress {
  * not a TTY (pipes, CI logs, tests) nothing is written at all.
  */
 export function createProgress(io: CliIo): Progress | undefined {
-  if (!io.stderrIsTTY) return undefined;
-  const width = Math.max(20, (io.stderrColumns || 80) - 1);
-  let shown = false;
-  return {
-    update(message) {
-      const line = message.replace(/\s+/g, ' ');
-      io.err(`\r\x1b[K${line.length > width ? `${line.slice(0, width - 1)}…` : line}`);
-      shown = true;
-    },
-    done() {
-      if (shown) io.err('\r\x1b[K');
-      shown = false;
-    },
-  };
+    if (!io.stderrIsTTY) return undefined;
+    const width = Math.max(20, (io.stderrColumns || 80) - 1);
+    let shown = false;
+    return {
+        update(message) {
+            const line = message.replace(/\s+/g, ' ');
+            io.err(`\r\x1b[K${line.length > width ? `${line.slice(0, width - 1)}…` : line}`);
+            shown = true;
+        },
+        done() {
+            if (shown) io.err('\r\x1b[K');
+            shown = false;
+        },
+    };
 }

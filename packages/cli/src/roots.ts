@@ -13,12 +13,10 @@ import { CliError } from './errors.js';
  * as file arguments they are checked within the root of modelRootOfFile, the same root that is
  * the default `--root` of `maa-gen generate` and `maa-gen test` and the one the IDE generates in.
  */
-export const MODEL_FILE_EXTENSIONS: readonly string[] = [
-  ...new Set(LANGUAGE_FACTS.languages.flatMap((l) => l.fileExtensions)),
-].sort();
+export const MODEL_FILE_EXTENSIONS: readonly string[] = [...new Set(LANGUAGE_FACTS.languages.flatMap((l) => l.fileExtensions))].sort();
 
 export function isModelFile(file: string): boolean {
-  return MODEL_FILE_EXTENSIONS.includes(path.extname(file));
+    return MODEL_FILE_EXTENSIONS.includes(path.extname(file));
 }
 
 /**
@@ -32,74 +30,74 @@ export function isModelFile(file: string): boolean {
  * the same root. All problems with the arguments are collected into one CliError, one per line.
  */
 export function resolveRoots(args: readonly string[], cwd: string): RootSpec[] {
-  const roots = new Map<string, { whole: boolean; files: string[] }>();
-  const problems: string[] = [];
+    const roots = new Map<string, { whole: boolean; files: string[] }>();
+    const problems: string[] = [];
 
-  for (const arg of args) {
-    const abs = path.resolve(cwd, arg);
-    const stats = statOrProblem(abs, arg, problems);
-    if (!stats) continue;
-    if (stats.isDirectory()) {
-      if (!readable(abs, constants.R_OK | constants.X_OK)) {
-        problems.push(`cannot read directory: ${arg} (permission denied)`);
-        continue;
-      }
-      const entry = roots.get(abs);
-      if (entry) {
-        entry.whole = true;
-        entry.files = [];
-      } else {
-        roots.set(abs, { whole: true, files: [] });
-      }
-    } else if (stats.isFile()) {
-      if (!isModelFile(abs)) {
-        problems.push(`not a model file (expected ${MODEL_FILE_EXTENSIONS.join(' or ')}): ${arg}`);
-        continue;
-      }
-      let text: string;
-      try {
-        text = readFileSync(abs, 'utf8');
-      } catch (e) {
-        problems.push(`cannot read file: ${arg} (${describe(e)})`);
-        continue;
-      }
-      const root = modelRootOfFile(abs, text);
-      const entry = roots.get(root);
-      if (!entry) {
-        roots.set(root, { whole: false, files: [abs] });
-      } else if (!entry.whole && !entry.files.includes(abs)) {
-        entry.files.push(abs);
-      }
-    } else {
-      problems.push(`not a file or directory: ${arg}`);
+    for (const arg of args) {
+        const abs = path.resolve(cwd, arg);
+        const stats = statOrProblem(abs, arg, problems);
+        if (!stats) continue;
+        if (stats.isDirectory()) {
+            if (!readable(abs, constants.R_OK | constants.X_OK)) {
+                problems.push(`cannot read directory: ${arg} (permission denied)`);
+                continue;
+            }
+            const entry = roots.get(abs);
+            if (entry) {
+                entry.whole = true;
+                entry.files = [];
+            } else {
+                roots.set(abs, { whole: true, files: [] });
+            }
+        } else if (stats.isFile()) {
+            if (!isModelFile(abs)) {
+                problems.push(`not a model file (expected ${MODEL_FILE_EXTENSIONS.join(' or ')}): ${arg}`);
+                continue;
+            }
+            let text: string;
+            try {
+                text = readFileSync(abs, 'utf8');
+            } catch (e) {
+                problems.push(`cannot read file: ${arg} (${describe(e)})`);
+                continue;
+            }
+            const root = modelRootOfFile(abs, text);
+            const entry = roots.get(root);
+            if (!entry) {
+                roots.set(root, { whole: false, files: [abs] });
+            } else if (!entry.whole && !entry.files.includes(abs)) {
+                entry.files.push(abs);
+            }
+        } else {
+            problems.push(`not a file or directory: ${arg}`);
+        }
     }
-  }
 
-  if (problems.length > 0) {
-    throw new CliError(problems.join('\n'));
-  }
-  return [...roots].map(([root, { whole, files }]) => (whole ? { root } : { root, files }));
+    if (problems.length > 0) {
+        throw new CliError(problems.join('\n'));
+    }
+    return [...roots].map(([root, { whole, files }]) => (whole ? { root } : { root, files }));
 }
 
 function statOrProblem(abs: string, arg: string, problems: string[]): Stats | undefined {
-  try {
-    return statSync(abs);
-  } catch (e) {
-    const code = (e as NodeJS.ErrnoException).code;
-    if (code === 'ENOENT' || code === 'ENOTDIR') {
-      problems.push(`path not found: ${arg}`);
-    } else {
-      problems.push(`cannot access: ${arg} (${describe(e)})`);
+    try {
+        return statSync(abs);
+    } catch (e) {
+        const code = (e as NodeJS.ErrnoException).code;
+        if (code === 'ENOENT' || code === 'ENOTDIR') {
+            problems.push(`path not found: ${arg}`);
+        } else {
+            problems.push(`cannot access: ${arg} (${describe(e)})`);
+        }
+        return undefined;
     }
-    return undefined;
-  }
 }
 
 function describe(e: unknown): string {
-  const code = (e as NodeJS.ErrnoException).code;
-  if (code === 'EACCES' || code === 'EPERM') return 'permission denied';
-  if (code === 'EISDIR') return 'is a directory';
-  return code ?? (e instanceof Error ? e.message : String(e));
+    const code = (e as NodeJS.ErrnoException).code;
+    if (code === 'EACCES' || code === 'EPERM') return 'permission denied';
+    if (code === 'EISDIR') return 'is a directory';
+    return code ?? (e instanceof Error ? e.message : String(e));
 }
 
 /**
@@ -109,12 +107,12 @@ function describe(e: unknown): string {
  * `package toast.ctrl;`); else the file's own folder.
  */
 export function modelRootOfFile(file: string, text: string | undefined): string {
-  const posix = (p: string): string => p.split(path.sep).join('/');
-  const root = resolveModelRoot(posix(path.resolve(file)), {
-    hasMarker: (folder) => existsSync(path.join(folder, MODEL_ROOT_MARKER)),
-    packageName: text === undefined ? undefined : declaredPackage(text),
-  });
-  return path.resolve(root.split('/').join(path.sep) || path.sep);
+    const posix = (p: string): string => p.split(path.sep).join('/');
+    const root = resolveModelRoot(posix(path.resolve(file)), {
+        hasMarker: (folder) => existsSync(path.join(folder, MODEL_ROOT_MARKER)),
+        packageName: text === undefined ? undefined : declaredPackage(text),
+    });
+    return path.resolve(root.split('/').join(path.sep) || path.sep);
 }
 
 /**
@@ -122,14 +120,14 @@ export function modelRootOfFile(file: string, text: string | undefined): string 
  * grammar has none), so only the `maa.json` rule and its own folder apply; nothing is read.
  */
 export function modelRootOfApp(appFile: string): string {
-  return modelRootOfFile(appFile, undefined);
+    return modelRootOfFile(appFile, undefined);
 }
 
 function readable(abs: string, mode: number): boolean {
-  try {
-    accessSync(abs, mode);
-    return true;
-  } catch {
-    return false;
-  }
+    try {
+        accessSync(abs, mode);
+        return true;
+    } catch {
+        return false;
+    }
 }

@@ -1,4 +1,15 @@
-import { existsSync, lstatSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, readlinkSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import {
+    existsSync,
+    lstatSync,
+    mkdirSync,
+    mkdtempSync,
+    readdirSync,
+    readFileSync,
+    readlinkSync,
+    rmSync,
+    symlinkSync,
+    writeFileSync,
+} from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -29,9 +40,9 @@ const OLD: Trees = {
         file('pkg/b.py', 'B1\n'),
         file('pkg/old/stale.py', 'stale\n'),
         file('user/impl.py', '# implement\n', true),
-        file('deployment.json', '{"version": 1}\n')
+        file('deployment.json', '{"version": 1}\n'),
     ],
-    beta: [file('types.py', 'T1\n'), file('lockstep.json', '{"version": 1}\n')]
+    beta: [file('types.py', 'T1\n'), file('lockstep.json', '{"version": 1}\n')],
 };
 const NEW: Trees = {
     alpha: [
@@ -39,9 +50,9 @@ const NEW: Trees = {
         file('pkg/b.py', 'B1\n'),
         ...Array.from({ length: 15 }, (_, i) => file(`pkg/gen/f${String(i).padStart(2, '0')}.py`, `F${i}\n`)),
         file('user/impl.py', '# implement\n', true),
-        file('deployment.json', '{"version": 2}\n')
+        file('deployment.json', '{"version": 2}\n'),
     ],
-    beta: [file('types.py', 'T2\n'), file('lockstep.json', '{"version": 2}\n'), file('extra.py', 'E2\n')]
+    beta: [file('types.py', 'T2\n'), file('lockstep.json', '{"version": 2}\n'), file('extra.py', 'E2\n')],
 };
 
 /** What a user does between the generations: protected region, user file, notes, a build folder with a link. */
@@ -100,8 +111,12 @@ beforeAll(() => {
     expectedNew = { alpha: snapshot(path.join(out, 'alpha')), beta: snapshot(path.join(out, 'beta')) };
     // The new trees are what the rules say, not just what the writer happens to do.
     expect(expectedNew.alpha).toMatchObject({
-        'pkg/a.py': `A2\n${region('USER = 1')}`, 'user/impl.py': '# mine\n', 'NOTES.md': 'notes\n',
-        'build/latest/x.o': 'binary\n', 'deployment.json': '{"version": 2}\n', 'pkg/gen/f14.py': 'F14\n'
+        'pkg/a.py': `A2\n${region('USER = 1')}`,
+        'user/impl.py': '# mine\n',
+        'NOTES.md': 'notes\n',
+        'build/latest/x.o': 'binary\n',
+        'deployment.json': '{"version": 2}\n',
+        'pkg/gen/f14.py': 'F14\n',
     });
     expect(Object.keys(expectedNew.alpha).filter((k) => k.startsWith('pkg/old'))).toEqual([]);
     expect(expectedNew.beta).toMatchObject({ 'types.py': 'T2\n', 'user-notes.txt': 'mine\n', 'extra.py': 'E2\n' });
@@ -132,22 +147,26 @@ function expectCleanNew(out: string): void {
 }
 
 describe('writing is atomic per platform folder under SIGKILL', () => {
-    test.each(['staging', 'commit', 'cleanup'] as const)('killed %s phase 20 times: each platform wholly old or wholly new, the next run cleans up', async (phase) => {
-        const seen: Record<string, number> = {};
-        for (let trial = 1; trial <= TRIALS; trial++) {
-            const out = existingOutput();
-            const where = await killAt(out, phase, trial);
-            const states = `${platformState(out, 'alpha')}/${platformState(out, 'beta')}`;
-            expect(states, `killed at ${where}`).toMatch(/^(old|new)\/(old|new)$/);
-            seen[states] = (seen[states] ?? 0) + 1;
-            writeTrees(out, NEW);
-            expectCleanNew(out);
-        }
-        // The kills landed where the phase says: nothing visible changed while staging, everything after the commit.
-        if (phase === 'staging') expect(seen).toEqual({ 'old/old': TRIALS });
-        if (phase === 'cleanup') expect(seen).toEqual({ 'new/new': TRIALS });
-        if (phase === 'commit') expect(Object.keys(seen).sort()).toEqual(['new/new', 'new/old']);
-    }, 300_000);
+    test.each(['staging', 'commit', 'cleanup'] as const)(
+        'killed %s phase 20 times: each platform wholly old or wholly new, the next run cleans up',
+        async (phase) => {
+            const seen: Record<string, number> = {};
+            for (let trial = 1; trial <= TRIALS; trial++) {
+                const out = existingOutput();
+                const where = await killAt(out, phase, trial);
+                const states = `${platformState(out, 'alpha')}/${platformState(out, 'beta')}`;
+                expect(states, `killed at ${where}`).toMatch(/^(old|new)\/(old|new)$/);
+                seen[states] = (seen[states] ?? 0) + 1;
+                writeTrees(out, NEW);
+                expectCleanNew(out);
+            }
+            // The kills landed where the phase says: nothing visible changed while staging, everything after the commit.
+            if (phase === 'staging') expect(seen).toEqual({ 'old/old': TRIALS });
+            if (phase === 'cleanup') expect(seen).toEqual({ 'new/new': TRIALS });
+            if (phase === 'commit') expect(Object.keys(seen).sort()).toEqual(['new/new', 'new/old']);
+        },
+        300_000,
+    );
 
     test('a kill while recovering from a killed run is recovered by the run after it', async () => {
         for (let trial = 1; trial <= 5; trial++) {
@@ -253,7 +272,10 @@ describe('write failures name the path and change nothing', () => {
         const out = existingOutput();
         writeFileSync(path.join(out, 'alpha/pkg/gen'), 'a file of the user\n');
         const before = snapshot(path.join(out, 'alpha'));
-        expect(failure(() => writeTrees(out, NEW))).toEqual({ path: path.join(out, 'alpha/pkg/gen'), reason: 'is a file where generated files need a folder' });
+        expect(failure(() => writeTrees(out, NEW))).toEqual({
+            path: path.join(out, 'alpha/pkg/gen'),
+            reason: 'is a file where generated files need a folder',
+        });
         expect(snapshot(path.join(out, 'alpha'))).toEqual(before);
         expect(platformState(out, 'beta')).toBe('old');
     });
@@ -263,7 +285,10 @@ describe('write failures name the path and change nothing', () => {
         const out = path.join(root, 'out');
         mkdirSync(out);
         writeFileSync(path.join(out, 'alpha'), 'mine\n');
-        expect(failure(() => writeTrees(out, NEW))).toEqual({ path: path.join(out, 'alpha'), reason: 'is a file where the platform folder is needed' });
+        expect(failure(() => writeTrees(out, NEW))).toEqual({
+            path: path.join(out, 'alpha'),
+            reason: 'is a file where the platform folder is needed',
+        });
         expect(readFileSync(path.join(out, 'alpha'), 'utf8')).toBe('mine\n');
         expect(readdirSync(out)).toEqual(['alpha']);
         const asFile = path.join(root, 'file');
@@ -284,11 +309,14 @@ describe('write failures name the path and change nothing', () => {
         expect(platformState(out, 'alpha')).toBe('old');
     });
 
-    test('a second generation into the same output while one runs is refused; a dead one\'s lock is taken over', () => {
+    test("a second generation into the same output while one runs is refused; a dead one's lock is taken over", () => {
         const out = existingOutput();
         const lock = path.join(out, STATE_DIR, 'lock');
         writeFileSync(lock, `${process.pid}\n`); // this process is alive
-        expect(failure(() => writeTrees(out, NEW))).toEqual({ path: lock, reason: `another generation (process ${process.pid}) is writing this output; run again when it has finished` });
+        expect(failure(() => writeTrees(out, NEW))).toEqual({
+            path: lock,
+            reason: `another generation (process ${process.pid}) is writing this output; run again when it has finished`,
+        });
         rmSync(lock);
         expectUnchanged(out);
         writeFileSync(lock, '2147483646\n'); // no such process

@@ -13,7 +13,10 @@ describe.each(APP_DIAGNOSTICS.entries.map((e) => [e.code, e] as const))('%s', (c
         if (entry.invalid.at !== undefined) expect(hits.map((h) => h.text)).toContain(entry.invalid.at);
         for (const h of hits) expect(h.message.length).toBeGreaterThan(20);
         // The invalid example shows this one problem only.
-        expect(found.filter((f) => f.code !== code), dump(found)).toEqual([]);
+        expect(
+            found.filter((f) => f.code !== code),
+            dump(found),
+        ).toEqual([]);
     });
     test('is not reported on the valid example, which has no diagnostics at all', async () => {
         const found = await validate(entry.valid.files);

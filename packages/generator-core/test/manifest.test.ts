@@ -7,9 +7,30 @@ import { afterEach, describe, expect, test } from 'vitest';
 import { discoverGenerators, GeneratorRegistry, installationRoot, ManifestError, validateManifest } from '../src/index.js';
 
 const VALID = {
-    component: { name: 'ros2.Components', kind: 'component', supports: ['compute'], output: { gpl: 'python', rte: 'maa-python-behavior' }, entry: 'dist/c.js' },
-    behavior: { name: 'ros2.AutomataBehavior', kind: 'behavior', language: 'automaton', output: { gpl: 'python', rte: 'maa-python-behavior' }, checks: ['automata.Flat'], entry: 'dist/a.js', requires: ['ports', 'package'] },
-    datatype: { name: 'ros2.DataTypes', kind: 'datatype', output: { gpl: 'python' }, checks: ['datatypes.NoGenerics'], entry: 'dist/d.js', templates: 'templates/datatypes' }
+    component: {
+        name: 'ros2.Components',
+        kind: 'component',
+        supports: ['compute'],
+        output: { gpl: 'python', rte: 'maa-python-behavior' },
+        entry: 'dist/c.js',
+    },
+    behavior: {
+        name: 'ros2.AutomataBehavior',
+        kind: 'behavior',
+        language: 'automaton',
+        output: { gpl: 'python', rte: 'maa-python-behavior' },
+        checks: ['automata.Flat'],
+        entry: 'dist/a.js',
+        requires: ['ports', 'package'],
+    },
+    datatype: {
+        name: 'ros2.DataTypes',
+        kind: 'datatype',
+        output: { gpl: 'python' },
+        checks: ['datatypes.NoGenerics'],
+        entry: 'dist/d.js',
+        templates: 'templates/datatypes',
+    },
 };
 
 function problem(json: unknown): string {
@@ -36,19 +57,47 @@ describe('manifest validation', () => {
 
     test.each([
         ['a missing field', { ...VALID.component, entry: undefined }, "maa.generators[1]: missing required field 'entry'"],
-        ['an unknown kind', { ...VALID.component, kind: 'platform' }, 'maa.generators[1].kind: must be one of "component", "behavior", "datatype"'],
+        [
+            'an unknown kind',
+            { ...VALID.component, kind: 'platform' },
+            'maa.generators[1].kind: must be one of "component", "behavior", "datatype"',
+        ],
         ['a name that is not qualified', { ...VALID.component, name: 'ros2 Components' }, 'maa.generators[1].name: must match pattern'],
-        ['a behavior generator without language', { ...VALID.behavior, language: undefined }, "maa.generators[1]: missing required field 'language'"],
-        ['a behavior generator without RTE', { ...VALID.behavior, output: { gpl: 'python' } }, "maa.generators[1].output: missing required field 'rte'"],
-        ['a component generator without RTE', { ...VALID.component, output: { gpl: 'python' } }, "maa.generators[1].output: missing required field 'rte'"],
-        ['a component generator with a language', { ...VALID.component, language: 'automaton' }, 'maa.generators[1].language: is not allowed for a component generator'],
-        ['a data type generator with supports', { ...VALID.datatype, supports: ['compute'] }, 'maa.generators[1].supports: is not allowed for a datatype generator'],
+        [
+            'a behavior generator without language',
+            { ...VALID.behavior, language: undefined },
+            "maa.generators[1]: missing required field 'language'",
+        ],
+        [
+            'a behavior generator without RTE',
+            { ...VALID.behavior, output: { gpl: 'python' } },
+            "maa.generators[1].output: missing required field 'rte'",
+        ],
+        [
+            'a component generator without RTE',
+            { ...VALID.component, output: { gpl: 'python' } },
+            "maa.generators[1].output: missing required field 'rte'",
+        ],
+        [
+            'a component generator with a language',
+            { ...VALID.component, language: 'automaton' },
+            'maa.generators[1].language: is not allowed for a component generator',
+        ],
+        [
+            'a data type generator with supports',
+            { ...VALID.datatype, supports: ['compute'] },
+            'maa.generators[1].supports: is not allowed for a datatype generator',
+        ],
         ['an unknown field', { ...VALID.datatype, entrypoint: 'x.js' }, "maa.generators[1]: unknown field 'entrypoint'"],
         ['a wrongly typed field', { ...VALID.datatype, checks: 'datatypes.NoGenerics' }, 'maa.generators[1].checks: must be array'],
         ['a bad check name', { ...VALID.datatype, checks: ['no generics'] }, 'maa.generators[1].checks[0]: must match pattern'],
-        ['an unknown context requirement', { ...VALID.behavior, requires: ['ports', 'everything'] }, 'maa.generators[1].requires[1]: must be one of'],
+        [
+            'an unknown context requirement',
+            { ...VALID.behavior, requires: ['ports', 'everything'] },
+            'maa.generators[1].requires[1]: must be one of',
+        ],
         ['an empty GPL', { ...VALID.datatype, output: { gpl: '' } }, 'maa.generators[1].output.gpl: must NOT have fewer than 1 characters'],
-        ['not an object', 'ros2.Components', 'maa.generators[1]: must be object']
+        ['not an object', 'ros2.Components', 'maa.generators[1]: must be object'],
     ])('reports %s, naming the package and the field', (_what, json, expected) => {
         const message = problem(JSON.parse(JSON.stringify(json)) as unknown);
         expect(message).toContain('generator package my-gens (/x/package.json): ');
@@ -70,9 +119,13 @@ describe('discovery from installed packages', () => {
         dir = mkdtempSync(path.join(tmpdir(), 'maa-discovery-'));
     }
 
-    test('finds inline manifests and manifest files, in plain and scoped packages, and the project\'s own', () => {
+    test("finds inline manifests and manifest files, in plain and scoped packages, and the project's own", () => {
         setup();
-        write('node_modules/ros2-gens/package.json', { name: 'ros2-gens', version: '1.2.3', maa: { generators: [VALID.component, 'manifests/automata.json'] } });
+        write('node_modules/ros2-gens/package.json', {
+            name: 'ros2-gens',
+            version: '1.2.3',
+            maa: { generators: [VALID.component, 'manifests/automata.json'] },
+        });
         write('node_modules/ros2-gens/manifests/automata.json', VALID.behavior);
         write('node_modules/@acme/types/package.json', { name: '@acme/types', maa: { generators: [VALID.datatype] } });
         write('node_modules/unrelated/package.json', { name: 'unrelated', version: '1.0.0' });
@@ -80,7 +133,10 @@ describe('discovery from installed packages', () => {
         const registry = discoverGenerators(fs, URI.file(path.join(dir, 'models', 'deep')), { extraRoots: [] });
         expect(registry.problems.map((p) => p.message)).toEqual([]);
         expect(registry.all().map((g) => `${g.manifest.name} ${g.source.packageName}`)).toEqual([
-            'local.DataTypes project', 'ros2.AutomataBehavior ros2-gens', 'ros2.Components ros2-gens', 'ros2.DataTypes @acme/types'
+            'local.DataTypes project',
+            'ros2.AutomataBehavior ros2-gens',
+            'ros2.Components ros2-gens',
+            'ros2.DataTypes @acme/types',
         ]);
         const automata = registry.get('ros2.AutomataBehavior')!;
         expect(automata.source.file).toBe(path.join(dir, 'node_modules/ros2-gens/manifests/automata.json'));
@@ -100,8 +156,14 @@ describe('discovery from installed packages', () => {
     test('invalid declarations become problems naming package and field; valid ones still load', () => {
         setup();
         write('node_modules/bad-array/package.json', { name: 'bad-array', maa: { generators: { name: 'x' } } });
-        write('node_modules/bad-item/package.json', { name: 'bad-item', maa: { generators: [VALID.component, { ...VALID.behavior, kind: 'behaviour' }, 42] } });
-        write('node_modules/bad-file/package.json', { name: 'bad-file', maa: { generators: ['missing.json', 'broken.json', '../escape.json'] } });
+        write('node_modules/bad-item/package.json', {
+            name: 'bad-item',
+            maa: { generators: [VALID.component, { ...VALID.behavior, kind: 'behaviour' }, 42] },
+        });
+        write('node_modules/bad-file/package.json', {
+            name: 'bad-file',
+            maa: { generators: ['missing.json', 'broken.json', '../escape.json'] },
+        });
         write('node_modules/bad-file/broken.json', '{ "name": ');
         write('node_modules/dup/package.json', { name: 'dup', maa: { generators: [VALID.component] } });
         const registry = discoverGenerators(fs, URI.file(dir), { extraRoots: [] });
@@ -113,7 +175,7 @@ describe('discovery from installed packages', () => {
             "generator package bad-file (<dir>/node_modules/bad-file/package.json): maa.generators[2]: manifest file '../escape.json' lies outside the package",
             'generator package bad-item (<dir>/node_modules/bad-item/package.json): maa.generators[1].kind: must be one of "component", "behavior", "datatype"',
             'generator package bad-item (<dir>/node_modules/bad-item/package.json): maa.generators[2]: must be a manifest object or the path of a manifest file',
-            "generator package dup (<dir>/node_modules/dup/package.json): maa.generators[0].name: generator 'ros2.Components' is already declared by package bad-item; this declaration is ignored"
+            "generator package dup (<dir>/node_modules/dup/package.json): maa.generators[0].name: generator 'ros2.Components' is already declared by package bad-item; this declaration is ignored",
         ]);
         expect(registry.all().map((g) => g.manifest.name)).toEqual(['ros2.Components']);
         expect(registry.problemsOf('bad-item')).toHaveLength(2);
@@ -131,6 +193,8 @@ describe('discovery from installed packages', () => {
     test('a registry from given manifests validates them too', () => {
         const r = GeneratorRegistry.fromManifests([VALID.component, { ...VALID.datatype, output: {} }], 'tests');
         expect(r.all().map((g) => g.manifest.name)).toEqual(['ros2.Components']);
-        expect(r.problems.map((p) => p.message)).toEqual(["generator package tests ((inline)): generators[1].output: missing required field 'gpl'"]);
+        expect(r.problems.map((p) => p.message)).toEqual([
+            "generator package tests ((inline)): generators[1].output: missing required field 'gpl'",
+        ]);
     });
 });

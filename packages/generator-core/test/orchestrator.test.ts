@@ -34,29 +34,36 @@ describe('the generation pipeline', () => {
             'components:robot.Filter:own:compute',
             'components:robot.Robot:none',
             'components:robot.Sensor:none',
-            'components:end:t.Components'
+            'components:end:t.Components',
         ]);
         expect(r.platforms.map((p) => p.platform)).toEqual(['alpha']);
         expect(r.platforms[0]!.generators).toEqual([
             { name: 't.Components', kind: 'component', files: 5 },
             { name: 't.Automata', kind: 'behavior', files: 1 },
-            { name: 't.DataTypes', kind: 'datatype', files: 1 }
+            { name: 't.DataTypes', kind: 'datatype', files: 1 },
         ]);
         expect(r.platforms[0]!.files).toEqual([
-            'behaviors/ctrl_automaton.py', 'components/ctrl.py', 'components/filter.py', 'components/robot.py',
-            'components/sensor.py', 'types.py', 'user/sensor_impl.py'
+            'behaviors/ctrl_automaton.py',
+            'components/ctrl.py',
+            'components/filter.py',
+            'components/robot.py',
+            'components/sensor.py',
+            'types.py',
+            'user/sensor_impl.py',
         ]);
-        expect(readFileSync(w.out('alpha/components/ctrl.py'), 'utf8')).toBe([
-            '# robot.Ctrl',
-            'class Ctrl:',
-            '    distance: "int"  # in',
-            '    mode: "Mode"  # out',
-            'BEHAVIOR = "behaviors.ctrl_automaton"',
-            '# PROTECTED REGION BEGIN extra',
-            '# your code here',
-            '# PROTECTED REGION END extra',
-            ''
-        ].join('\n'));
+        expect(readFileSync(w.out('alpha/components/ctrl.py'), 'utf8')).toBe(
+            [
+                '# robot.Ctrl',
+                'class Ctrl:',
+                '    distance: "int"  # in',
+                '    mode: "Mode"  # out',
+                'BEHAVIOR = "behaviors.ctrl_automaton"',
+                '# PROTECTED REGION BEGIN extra',
+                '# your code here',
+                '# PROTECTED REGION END extra',
+                '',
+            ].join('\n'),
+        );
         expect(readFileSync(w.out('alpha/behaviors/ctrl_automaton.py'), 'utf8')).toContain('STATE_Idle = "Idle"');
         expect(existsSync(w.out('beta'))).toBe(false);
     });
@@ -81,35 +88,51 @@ describe('the generation pipeline', () => {
     test('an unknown platform is an input error', async () => {
         const w = workspace();
         await expect(w.generate({ platforms: ['gamma'] })).rejects.toThrow(GenerateInputError);
-        await expect(w.generate({ platforms: ['gamma'] })).rejects.toThrow("application 'Demo' has no platform 'gamma' (platforms: alpha, beta)");
+        await expect(w.generate({ platforms: ['gamma'] })).rejects.toThrow(
+            "application 'Demo' has no platform 'gamma' (platforms: alpha, beta)",
+        );
     });
 });
 
 describe('the trace file', () => {
-    test('maps generated line ranges to model elements (file, range, AST path), in @maa/protocol\'s format (0-based)', async () => {
+    test("maps generated line ranges to model elements (file, range, AST path), in @maa/protocol's format (0-based)", async () => {
         const w = workspace();
         await w.generate({ platforms: ['alpha'] });
         const trace = traceFileContract.parse(JSON.parse(readFileSync(w.out(`alpha/${TRACE_FILE}`), 'utf8')), TRACE_FILE);
-        expect(trace).toMatchObject({ version: 2, application: 'Demo', platform: 'alpha', rootComponent: 'robot.Robot', modelRoot: '../../models' });
+        expect(trace).toMatchObject({
+            version: 2,
+            application: 'Demo',
+            platform: 'alpha',
+            rootComponent: 'robot.Robot',
+            modelRoot: '../../models',
+        });
         expect(trace.generators.map((g) => g.name)).toEqual(['t.Components', 't.Automata', 't.DataTypes']);
         const ctrl = trace.files.find((f) => f.path === 'components/ctrl.py')!;
         expect(ctrl.generator).toBe('t.Components');
         expect(ctrl.lines).toBe(8);
         // Generated lines and model positions are 0-based; a range's end is exclusive.
-        const short = ctrl.traces.map((t) => `${t.lines.first}-${t.lines.last} ${t.element.type} ${t.element.name ?? ''} ${t.element.file}:${t.element.range!.start.line}`);
+        const short = ctrl.traces.map(
+            (t) =>
+                `${t.lines.first}-${t.lines.last} ${t.element.type} ${t.element.name ?? ''} ${t.element.file}:${t.element.range!.start.line}`,
+        );
         expect(short).toEqual([
             '0-3 ComponentType Ctrl robot/Ctrl.arc:4',
             '2-2 Port distance robot/Ctrl.arc:5',
-            '3-3 Port mode robot/Ctrl.arc:6'
+            '3-3 Port mode robot/Ctrl.arc:6',
         ]);
         expect(ctrl.traces[1]!.element.range).toEqual({ start: { line: 5, character: 7 }, end: { line: 5, character: 22 } });
         expect(ctrl.traces[1]!.element.path).toMatch(/^\/component\/body\/elements@\d+\/ports@0$/);
         const automaton = trace.files.find((f) => f.path === 'behaviors/ctrl_automaton.py')!;
-        expect(automaton.traces.map((t) => `${t.lines.first} ${t.element.name} ${t.generator}`)).toEqual(['2 Idle t.Automata', '3 Busy t.Automata']);
+        expect(automaton.traces.map((t) => `${t.lines.first} ${t.element.name} ${t.generator}`)).toEqual([
+            '2 Idle t.Automata',
+            '3 Busy t.Automata',
+        ]);
         const filter = trace.files.find((f) => f.path === 'components/filter.py')!;
         expect(filter.traces.some((t) => t.element.type === 'ComputeBlock')).toBe(true);
         const types = trace.files.find((f) => f.path === 'types.py')!;
-        expect(types.traces.map((t) => `${t.lines.first}-${t.lines.last} ${t.element.type} ${t.element.file}`)).toEqual(['1-3 CDEnum robot/types/Types.cd']);
+        expect(types.traces.map((t) => `${t.lines.first}-${t.lines.last} ${t.element.type} ${t.element.file}`)).toEqual([
+            '1-3 CDEnum robot/types/Types.cd',
+        ]);
         expect(trace.files.find((f) => f.path === 'user/sensor_impl.py')!.userFile).toBe(true);
     });
 });
@@ -129,20 +152,29 @@ describe('writing', () => {
         expect(snapshot(path.join(w.dir, 'out2'))).toEqual(before);
     });
 
-    test.each(['datatypes', 'components', 'automata'] as const)('a failing generator (%s) leaves the output folder untouched', async (where) => {
-        const w = workspace();
-        expect((await w.generate()).ok).toBe(true);
-        writeFileSync(w.out('alpha/user/sensor_impl.py'), '# my code\n');
-        const before = snapshot(w.out());
-        w.write('models/robot/Filter.arc', MODELS['robot/Filter.arc']!.replace('raw / 2', 'raw / 3'));
-        w.rec.failIn = where;
-        const r = await w.generate();
-        expect(r.ok).toBe(false);
-        const generator = { datatypes: 't.DataTypes', components: 't.Components', automata: 't.Automata' }[where];
-        expect(errors(r)).toEqual([expect.stringMatching(new RegExp(`^App\\.arcapp:\\d+ gen/generator-failed Generator '${generator.replace('.', '\\.')}' failed: ${where} exploded`))]);
-        expect(snapshot(w.out())).toEqual(before);
-        expect(r.platforms).toEqual([]);
-    });
+    test.each(['datatypes', 'components', 'automata'] as const)(
+        'a failing generator (%s) leaves the output folder untouched',
+        async (where) => {
+            const w = workspace();
+            expect((await w.generate()).ok).toBe(true);
+            writeFileSync(w.out('alpha/user/sensor_impl.py'), '# my code\n');
+            const before = snapshot(w.out());
+            w.write('models/robot/Filter.arc', MODELS['robot/Filter.arc']!.replace('raw / 2', 'raw / 3'));
+            w.rec.failIn = where;
+            const r = await w.generate();
+            expect(r.ok).toBe(false);
+            const generator = { datatypes: 't.DataTypes', components: 't.Components', automata: 't.Automata' }[where];
+            expect(errors(r)).toEqual([
+                expect.stringMatching(
+                    new RegExp(
+                        `^App\\.arcapp:\\d+ gen/generator-failed Generator '${generator.replace('.', '\\.')}' failed: ${where} exploded`,
+                    ),
+                ),
+            ]);
+            expect(snapshot(w.out())).toEqual(before);
+            expect(r.platforms).toEqual([]);
+        },
+    );
 
     test('a failing generator creates no output folder', async () => {
         const w = workspace();
@@ -193,7 +225,9 @@ describe('writing', () => {
         w.rec.fewer = true; // robot.py is no longer generated
         const r = await w.generate({ platforms: ['alpha'] });
         expect(r.ok).toBe(true);
-        expect(r.diagnostics.filter((d) => d.code.startsWith('gen/')).map((d) => `${d.severity} ${d.code}`)).toEqual(['warning gen/stale-file-kept']);
+        expect(r.diagnostics.filter((d) => d.code.startsWith('gen/')).map((d) => `${d.severity} ${d.code}`)).toEqual([
+            'warning gen/stale-file-kept',
+        ]);
         expect(r.platforms[0]!.keptStale).toEqual(['components/robot.py']);
         expect(r.platforms[0]!.removed).toEqual(['components/sensor.py']);
         expect(readFileSync(w.out('alpha/components/robot.py'), 'utf8')).toBe(before['alpha/components/robot.py']);
@@ -214,7 +248,7 @@ describe('writing', () => {
     test.each([
         ['../escape.py', "writes '../escape.py', which leaves the output folder"],
         ['/etc/passwd', "writes '/etc/passwd': output paths are relative"],
-        ['types.py', "generator 't.Components' writes 'types.py', which generator 't.DataTypes' has already written"]
+        ['types.py', "generator 't.Components' writes 'types.py', which generator 't.DataTypes' has already written"],
     ])('rejects the output path %s', async (bad, message) => {
         const w = workspace();
         w.rec.badPath = bad;
@@ -241,7 +275,7 @@ describe('write failures', () => {
         const r = await w.generate({ platforms: ['alpha'], displayPath: (p) => path.relative(w.dir, p) });
         expect(r.ok).toBe(false);
         expect(errors(r)).toEqual([
-            `App.arcapp:1 gen/write-failed Cannot write the output: ${path.join('out', 'alpha', 'components')}: is a file where generated files need a folder. Nothing was changed.`
+            `App.arcapp:1 gen/write-failed Cannot write the output: ${path.join('out', 'alpha', 'components')}: is a file where generated files need a folder. Nothing was changed.`,
         ]);
         expect(snapshot(w.out())).toEqual(blocked);
         expect(blocked).not.toEqual(before);
@@ -250,9 +284,19 @@ describe('write failures', () => {
 
 describe('checks before generation', () => {
     test('configuration problems of the selected platform stop generation before any generator runs', async () => {
-        const w = workspace({ ...MODELS, 'App.arcapp': MODELS['App.arcapp']!.replace('    t.Automata;\n    t.DataTypes;\n  }\n  platform beta', '    t.DataTypes;\n  }\n  platform beta') });
+        const w = workspace({
+            ...MODELS,
+            'App.arcapp': MODELS['App.arcapp']!.replace(
+                '    t.Automata;\n    t.DataTypes;\n  }\n  platform beta',
+                '    t.DataTypes;\n  }\n  platform beta',
+            ),
+        });
         const r = await w.generate({ platforms: ['alpha'] });
-        expect(errors(r)).toEqual([expect.stringMatching(/^App\.arcapp:2 app\/uncovered-behavior-language Platform 'alpha' has no generator for the behavior language 'automaton' \(used by robot\.Ctrl\)/)]);
+        expect(errors(r)).toEqual([
+            expect.stringMatching(
+                /^App\.arcapp:2 app\/uncovered-behavior-language Platform 'alpha' has no generator for the behavior language 'automaton' \(used by robot\.Ctrl\)/,
+            ),
+        ]);
         expect(w.rec.log).toEqual([]);
         // The other platform is fine.
         expect((await w.generate({ platforms: ['beta'] })).ok).toBe(true);
@@ -269,10 +313,17 @@ describe('checks before generation', () => {
 
     test('a violated standard rule is reported on the model element, naming the generator', async () => {
         const manifests = MANIFESTS.map((m) => (m.name === 't.Components' ? { ...m, checks: ['components.NoInheritance'] } : m));
-        const w = workspace({ ...MODELS, 'robot/Base.arc': 'package robot;\n\ncomponent Base { }\n', 'robot/Sensor.arc': MODELS['robot/Sensor.arc']!.replace('Sensor {', 'Sensor extends Base {') }, manifests);
+        const w = workspace(
+            {
+                ...MODELS,
+                'robot/Base.arc': 'package robot;\n\ncomponent Base { }\n',
+                'robot/Sensor.arc': MODELS['robot/Sensor.arc']!.replace('Sensor {', 'Sensor extends Base {'),
+            },
+            manifests,
+        );
         const r = await w.generate({ platforms: ['alpha'] });
         expect(errors(r)).toEqual([
-            "Sensor.arc:3 app/generator-rule-violated Generator 't.Components' requires components.NoInheritance (component types extend no other component type), but component type 'robot.Sensor' extends robot.Base."
+            "Sensor.arc:3 app/generator-rule-violated Generator 't.Components' requires components.NoInheritance (component types extend no other component type), but component type 'robot.Sensor' extends robot.Base.",
         ]);
         expect(w.rec.log).toEqual([]);
     });
@@ -284,19 +335,22 @@ describe('checks before generation', () => {
         const automata = modules['automata.js']!;
         modules['automata.js'] = (i) => ({
             ...(automata(i) as object),
-            rules: [{
-                name: 't.NoBusyState', description: 'No state is called Busy.',
-                *check(scope: { behaviors: ReadonlyArray<{ node: { elements: Array<{ $type: string; name?: string }> } }> }) {
-                    for (const b of scope.behaviors) {
-                        for (const s of b.node.elements) if (s.name === 'Busy') yield { node: s, message: 'there is a state Busy' };
-                    }
-                }
-            }]
+            rules: [
+                {
+                    name: 't.NoBusyState',
+                    description: 'No state is called Busy.',
+                    *check(scope: { behaviors: ReadonlyArray<{ node: { elements: Array<{ $type: string; name?: string }> } }> }) {
+                        for (const b of scope.behaviors) {
+                            for (const s of b.node.elements) if (s.name === 'Busy') yield { node: s, message: 'there is a state Busy' };
+                        }
+                    },
+                },
+            ],
         });
         const r = await w.generate({ platforms: ['alpha'] }, modules);
         expect(errors(r)).toEqual([
             "App.arcapp:4 gen/unknown-check Generator 't.Automata' declares the check 't.Unknown', which neither the standard rules nor the generator define.",
-            "Ctrl.arc:11 app/generator-rule-violated Generator 't.Automata' requires t.NoBusyState (no state is called Busy), but there is a state Busy."
+            "Ctrl.arc:11 app/generator-rule-violated Generator 't.Automata' requires t.NoBusyState (no state is called Busy), but there is a state Busy.",
         ]);
         expect(w.rec.log).toEqual([]);
     });
@@ -304,20 +358,34 @@ describe('checks before generation', () => {
     test('generators that cannot be loaded are reported on their reference', async () => {
         const w = workspace();
         const modules = (await import('./test-generators.js')).createGenerators(w.rec);
-        modules['datatypes.js'] = () => ({ kind: 'component', generate() { /* wrong kind */ } });
+        modules['datatypes.js'] = () => ({
+            kind: 'component',
+            generate() {
+                /* wrong kind */
+            },
+        });
         modules['automata.js'] = () => ({ nothing: true });
         const r = await w.generate({ platforms: ['alpha'] }, modules);
         expect(errors(r)).toEqual([
             "App.arcapp:4 gen/load-failed Generator 't.Automata' (package test-gens) cannot be loaded: its export 'default' is not a generator (an object with a generate function, or a function returning one)",
-            "App.arcapp:5 gen/load-failed Generator 't.DataTypes' (package test-gens) cannot be loaded: its code implements a component generator, but its manifest declares kind 'datatype'"
+            "App.arcapp:5 gen/load-failed Generator 't.DataTypes' (package test-gens) cannot be loaded: its code implements a component generator, but its manifest declares kind 'datatype'",
         ]);
     });
 
     test('without a loader hook, generators are imported from their package (entry relative to the package)', async () => {
         const w = workspace();
-        w.write('gens/datatypes.js', 'export default { kind: "datatype", generate(ctx) { ctx.out.file("dt.txt").line("types: " + ctx.dataTypes.map((t) => t.name).join(",")); } };\n');
-        w.write('gens/automata.js', 'export function create() { return { generate(b, ctx) { ctx.out.file("a.txt").line(b.language); return { ok: "yes" }; } }; }\n');
-        w.write('gens/components.js', 'export default () => ({ async generate(ctx) { for (const c of ctx.architecture.components) { const d = await ctx.behavior(c); ctx.out.file(c.name + ".txt").line(d ? d.handledBy : "none"); } } });\n');
+        w.write(
+            'gens/datatypes.js',
+            'export default { kind: "datatype", generate(ctx) { ctx.out.file("dt.txt").line("types: " + ctx.dataTypes.map((t) => t.name).join(",")); } };\n',
+        );
+        w.write(
+            'gens/automata.js',
+            'export function create() { return { generate(b, ctx) { ctx.out.file("a.txt").line(b.language); return { ok: "yes" }; } }; }\n',
+        );
+        w.write(
+            'gens/components.js',
+            'export default () => ({ async generate(ctx) { for (const c of ctx.architecture.components) { const d = await ctx.behavior(c); ctx.out.file(c.name + ".txt").line(d ? d.handledBy : "none"); } } });\n',
+        );
         w.manifests = MANIFESTS.map((m) => (m.name === 't.Automata' ? { ...m, export: 'create' } : m));
         const r = await w.generate({ platforms: ['alpha'], loadModule: undefined });
         expect(errors(r)).toEqual([]);

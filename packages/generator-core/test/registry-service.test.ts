@@ -11,7 +11,8 @@ describe('the generator registry service', () => {
         const b = new ModelTestBench(() => createTestFamily(), 'b');
         configureGeneratorRegistry(a.host.shared, DEMO_REGISTRY);
         arcAppServices(b.host.shared)!.generators.Registry.configure(GeneratorRegistry.EMPTY);
-        const unknown = async (bench: ModelTestBench) => (await bench.validate(files)).filter((f) => f.code === 'app/unknown-generator').map((f) => f.text);
+        const unknown = async (bench: ModelTestBench) =>
+            (await bench.validate(files)).filter((f) => f.code === 'app/unknown-generator').map((f) => f.text);
         expect(await unknown(a)).toEqual([]);
         expect(await unknown(b)).toEqual(['py.Components', 'py.Automata', 'py.DataTypes']);
     });
@@ -29,6 +30,8 @@ describe('the generator registry service', () => {
     test('a family without the .arcapp language has no registry service', () => {
         const bench = new ModelTestBench(() => createTestFamily(), 'd');
         expect(arcAppServices(bench.host.shared)).toBeDefined();
-        expect(() => configureGeneratorRegistry({ ...bench.host.shared, ServiceRegistry: { all: [] } } as never, DEMO_REGISTRY)).toThrow(/no \.arcapp language/);
+        expect(() => configureGeneratorRegistry({ ...bench.host.shared, ServiceRegistry: { all: [] } } as never, DEMO_REGISTRY)).toThrow(
+            /no \.arcapp language/,
+        );
     });
 });

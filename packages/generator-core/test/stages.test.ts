@@ -34,18 +34,22 @@ function workspace(files: Record<string, string> = MODELS, manifests: unknown[] 
 function runOf(w: Workspace, options: Partial<GenerateOptions> = {}): GenerationRun {
     const modules = createGenerators(w.rec);
     const appFile = path.join(w.models, 'App.arcapp');
-    return createRun({
-        services: createTestFamily(NodeFileSystem),
-        appFile,
-        outDir: path.join(w.dir, 'out'),
-        registry: w.registry(),
-        loadModule: async (url) => {
-            const base = url.substring(url.lastIndexOf('/') + 1);
-            if (!(base in modules)) throw new Error(`no test module ${base}`);
-            return { default: modules[base] };
+    return createRun(
+        {
+            services: createTestFamily(NodeFileSystem),
+            appFile,
+            outDir: path.join(w.dir, 'out'),
+            registry: w.registry(),
+            loadModule: async (url) => {
+                const base = url.substring(url.lastIndexOf('/') + 1);
+                if (!(base in modules)) throw new Error(`no test module ${base}`);
+                return { default: modules[base] };
+            },
+            ...options,
         },
-        ...options
-    }, appFile, w.models);
+        appFile,
+        w.models,
+    );
 }
 
 function value<T>(r: StageResult<T>): T {
@@ -109,7 +113,10 @@ describe('check', () => {
     });
 
     test('a platform without a data type generator is a failure; the other platform is not reported', async () => {
-        const app = MODELS['App.arcapp']!.replace(/(platform alpha \{[^}]*?)\s+t\.DataTypes;/, '$1').replace('platform beta {', 'platform beta {\n    t.Unknown;');
+        const app = MODELS['App.arcapp']!.replace(/(platform alpha \{[^}]*?)\s+t\.DataTypes;/, '$1').replace(
+            'platform beta {',
+            'platform beta {\n    t.Unknown;',
+        );
         const w = workspace(withApp(app));
         const run = runOf(w, { platforms: ['alpha'] });
         const r = check(run, value(await load(run)));
@@ -144,7 +151,11 @@ describe('select', () => {
         const c = value(check(run, loaded));
         const beta = loaded.app.platforms.find((p) => p.name === 'beta')!;
         const { selections } = value(select({ ...loaded }, { ...c, platforms: [beta] }));
-        expect(selections.get(beta)!.references.map((r) => r.generator.manifest.name)).toEqual(['t.Components', 't.Automata', 't.DataTypes']);
+        expect(selections.get(beta)!.references.map((r) => r.generator.manifest.name)).toEqual([
+            't.Components',
+            't.Automata',
+            't.DataTypes',
+        ]);
     });
 });
 
@@ -161,11 +172,17 @@ describe('configure', () => {
         const c = await checked(w, { platforms: ['alpha'], loadModule: async () => ({}) });
         const r = await configure(c.run, c.checked, value(select(c.loaded, c.checked)));
         expect(r.ok).toBe(false);
-        expect(codes(r.diagnostics)).toEqual(['App.arcapp:3 gen/load-failed', 'App.arcapp:4 gen/load-failed', 'App.arcapp:5 gen/load-failed']);
+        expect(codes(r.diagnostics)).toEqual([
+            'App.arcapp:3 gen/load-failed',
+            'App.arcapp:4 gen/load-failed',
+            'App.arcapp:5 gen/load-failed',
+        ]);
     });
 
     test('a check that neither the standard rules nor the generator define is a failure (gen/unknown-check)', async () => {
-        const manifests = MANIFESTS.map((m) => (m.name === 't.DataTypes' ? { ...m, checks: ['datatypes.NoGenerics', 'datatypes.Nonexistent'] } : m));
+        const manifests = MANIFESTS.map((m) =>
+            m.name === 't.DataTypes' ? { ...m, checks: ['datatypes.NoGenerics', 'datatypes.Nonexistent'] } : m,
+        );
         const w = workspace(MODELS, manifests);
         const c = await checked(w, { platforms: ['alpha'] });
         const r = await configure(c.run, c.checked, value(select(c.loaded, c.checked)));

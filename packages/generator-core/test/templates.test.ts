@@ -1,16 +1,47 @@
 import { describe, expect, test } from 'vitest';
-import { camelCase, constantCase, indentLines, kebabCase, mergeProtectedRegions, pascalCase, pythonIdentifier, pythonString, snakeCase, xmlEscape } from '../src/index.js';
+import {
+    camelCase,
+    constantCase,
+    indentLines,
+    kebabCase,
+    mergeProtectedRegions,
+    pascalCase,
+    pythonIdentifier,
+    pythonString,
+    snakeCase,
+    xmlEscape,
+} from '../src/index.js';
 import { createTemplateEnvironment, createTemplateRenderer } from '../src/node.js';
 import { resolveTraceMarks, Tracer } from '../src/output/file-builder.js';
 
 describe('naming conventions', () => {
     test.each([
-        ['ToastServiceRobot', 'toast_service_robot', 'ToastServiceRobot', 'toastServiceRobot', 'TOAST_SERVICE_ROBOT', 'toast-service-robot'],
+        [
+            'ToastServiceRobot',
+            'toast_service_robot',
+            'ToastServiceRobot',
+            'toastServiceRobot',
+            'TOAST_SERVICE_ROBOT',
+            'toast-service-robot',
+        ],
         ['armController', 'arm_controller', 'ArmController', 'armController', 'ARM_CONTROLLER', 'arm-controller'],
         ['HTTPServer2go', 'http_server2go', 'HTTPServer2go', 'hTTPServer2go', 'HTTP_SERVER2GO', 'http-server2go'],
-        ['toast_service robot', 'toast_service_robot', 'ToastServiceRobot', 'toastServiceRobot', 'TOAST_SERVICE_ROBOT', 'toast-service-robot']
+        [
+            'toast_service robot',
+            'toast_service_robot',
+            'ToastServiceRobot',
+            'toastServiceRobot',
+            'TOAST_SERVICE_ROBOT',
+            'toast-service-robot',
+        ],
     ])('%s', (input, snake, pascal, camel, constant, kebab) => {
-        expect([snakeCase(input), pascalCase(input), camelCase(input), constantCase(input), kebabCase(input)]).toEqual([snake, pascal, camel, constant, kebab]);
+        expect([snakeCase(input), pascalCase(input), camelCase(input), constantCase(input), kebabCase(input)]).toEqual([
+            snake,
+            pascal,
+            camel,
+            constant,
+            kebab,
+        ]);
     });
 
     test('identifiers, strings and escaping', () => {
@@ -25,7 +56,10 @@ describe('naming conventions', () => {
 describe('the shared Nunjucks environment', () => {
     test('offers the naming filters, does not escape, and trims block lines', () => {
         const env = createTemplateEnvironment();
-        const out = env.renderString('{% for p in ports %}\n{{ p | snake_case }} = {{ p | py_str }}  # <{{ p | constant_case }}>\n{% endfor %}\n', { ports: ['distanceSensor', 'armCmd'] });
+        const out = env.renderString(
+            '{% for p in ports %}\n{{ p | snake_case }} = {{ p | py_str }}  # <{{ p | constant_case }}>\n{% endfor %}\n',
+            { ports: ['distanceSensor', 'armCmd'] },
+        );
         expect(out).toBe('distance_sensor = "distanceSensor"  # <DISTANCE_SENSOR>\narm_cmd = "armCmd"  # <ARM_CMD>\n');
     });
 
@@ -37,10 +71,16 @@ describe('the shared Nunjucks environment', () => {
         const tracer = new Tracer();
         const a = { $type: 'Port', name: 'a' } as never;
         const b = { $type: 'Port', name: 'b' } as never;
-        const out = createTemplateRenderer().renderString('header\n{% for p in ps %}\n{% trace p %}\nline {{ p.name }}\nmore {{ p.name }}\n{% endtrace %}\n{% endfor %}\nend\n', { ps: [a, b], __maaTracer: tracer });
+        const out = createTemplateRenderer().renderString(
+            'header\n{% for p in ps %}\n{% trace p %}\nline {{ p.name }}\nmore {{ p.name }}\n{% endtrace %}\n{% endfor %}\nend\n',
+            { ps: [a, b], __maaTracer: tracer },
+        );
         const { content, ranges } = resolveTraceMarks(out, tracer);
         expect(content).toBe('header\nline a\nmore a\nline b\nmore b\nend\n');
-        expect(ranges.map((r) => `${r.startLine}-${r.endLine} ${(r.element as unknown as { name: string }).name}`)).toEqual(['2-3 a', '4-5 b']);
+        expect(ranges.map((r) => `${r.startLine}-${r.endLine} ${(r.element as unknown as { name: string }).name}`)).toEqual([
+            '2-3 a',
+            '4-5 b',
+        ]);
     });
 
     test('a renderer without a template folder renders strings only', () => {
@@ -50,10 +90,14 @@ describe('the shared Nunjucks environment', () => {
 
 describe('protected regions', () => {
     test('carry the user content of the existing file into the regenerated one', () => {
-        const generated = 'a\n# PROTECTED REGION BEGIN imports\n# default\n# PROTECTED REGION END imports\nb\n// PROTECTED REGION BEGIN body\n// PROTECTED REGION END body\n';
-        const existing = 'old a\n# PROTECTED REGION BEGIN imports\nimport os\n# PROTECTED REGION END imports\n// PROTECTED REGION BEGIN gone\nx = 1\n// PROTECTED REGION END gone\n';
+        const generated =
+            'a\n# PROTECTED REGION BEGIN imports\n# default\n# PROTECTED REGION END imports\nb\n// PROTECTED REGION BEGIN body\n// PROTECTED REGION END body\n';
+        const existing =
+            'old a\n# PROTECTED REGION BEGIN imports\nimport os\n# PROTECTED REGION END imports\n// PROTECTED REGION BEGIN gone\nx = 1\n// PROTECTED REGION END gone\n';
         const merged = mergeProtectedRegions(generated, existing);
-        expect(merged.text).toBe('a\n# PROTECTED REGION BEGIN imports\nimport os\n# PROTECTED REGION END imports\nb\n// PROTECTED REGION BEGIN body\n// PROTECTED REGION END body\n');
+        expect(merged.text).toBe(
+            'a\n# PROTECTED REGION BEGIN imports\nimport os\n# PROTECTED REGION END imports\nb\n// PROTECTED REGION BEGIN body\n// PROTECTED REGION END body\n',
+        );
         expect(merged.kept).toBe(1);
         expect(merged.dropped).toEqual(['gone']);
     });

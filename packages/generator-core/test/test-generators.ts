@@ -4,8 +4,13 @@ import path from 'node:path';
 import { NodeFileSystem } from 'langium/node';
 import type { AstNode } from 'langium';
 import {
-    GeneratorRegistry, snakeCase, sourceText,
-    type BehaviorGenerator, type ComponentGenerator, type DataTypeGenerator, type GeneratorInstantiation
+    GeneratorRegistry,
+    snakeCase,
+    sourceText,
+    type BehaviorGenerator,
+    type ComponentGenerator,
+    type DataTypeGenerator,
+    type GeneratorInstantiation,
 } from '../src/index.js';
 import { generate, type GenerateOptions, type GenerateResult } from '../src/node.js';
 import { createTestFamily } from './helpers.js';
@@ -28,7 +33,7 @@ export const MODELS: Record<string, string> = {
         '  sensor.value -> filter.raw;',
         '  filter.smooth -> ctrl.distance;',
         '}',
-        ''
+        '',
     ].join('\n'),
     'robot/Sensor.arc': 'package robot;\n\n<<handwritten>> component Sensor {\n  port out int value;\n}\n',
     'robot/Filter.arc': [
@@ -42,7 +47,7 @@ export const MODELS: Record<string, string> = {
         '    smooth = raw / 2;',
         '  }',
         '}',
-        ''
+        '',
     ].join('\n'),
     'robot/Ctrl.arc': [
         'package robot;',
@@ -60,7 +65,7 @@ export const MODELS: Record<string, string> = {
         '    Busy -> Idle [distance >= 10] / { mode = Mode.IDLE; };',
         '  }',
         '}',
-        ''
+        '',
     ].join('\n'),
     'robot/types/Types.cd': 'package robot.types;\n\nclassdiagram Types {\n  enum Mode { IDLE, BUSY; }\n}\n',
     'App.arcapp': [
@@ -76,14 +81,28 @@ export const MODELS: Record<string, string> = {
         '    t.DataTypes;',
         '  }',
         '}',
-        ''
-    ].join('\n')
+        '',
+    ].join('\n'),
 };
 
 export const MANIFESTS = [
-    { name: 't.Components', kind: 'component', supports: ['compute'], output: { gpl: 'python', rte: 't-rte' }, entry: 'components.js', templates: 'templates' },
-    { name: 't.Automata', kind: 'behavior', language: 'automaton', output: { gpl: 'python', rte: 't-rte' }, entry: 'automata.js', requires: ['ports', 'package'] },
-    { name: 't.DataTypes', kind: 'datatype', output: { gpl: 'python' }, entry: 'datatypes.js' }
+    {
+        name: 't.Components',
+        kind: 'component',
+        supports: ['compute'],
+        output: { gpl: 'python', rte: 't-rte' },
+        entry: 'components.js',
+        templates: 'templates',
+    },
+    {
+        name: 't.Automata',
+        kind: 'behavior',
+        language: 'automaton',
+        output: { gpl: 'python', rte: 't-rte' },
+        entry: 'automata.js',
+        requires: ['ports', 'package'],
+    },
+    { name: 't.DataTypes', kind: 'datatype', output: { gpl: 'python' }, entry: 'datatypes.js' },
 ];
 
 export const TEMPLATES: Record<string, string> = {
@@ -95,8 +114,8 @@ export const TEMPLATES: Record<string, string> = {
         '    {{ p.name | snake_case }}: {{ p.typeName | py_str }}  # {{ p.direction }}',
         '{% endtrace %}',
         '{% endfor %}',
-        ''
-    ].join('\n')
+        '',
+    ].join('\n'),
 };
 
 /** What the generators did, in order. */
@@ -129,7 +148,7 @@ export function createGenerators(rec: Recorder): Record<string, (i: GeneratorIns
                 types[t.qualifiedName] = { module: 'types', name: t.name };
             }
             return { types };
-        }
+        },
     });
     const automata = (): BehaviorGenerator => ({
         kind: 'behavior',
@@ -145,7 +164,7 @@ export function createGenerators(rec: Recorder): Record<string, (i: GeneratorIns
                 if (s.$type === 'State') f.line(`STATE_${s.name} = ${JSON.stringify(s.name)}`, s);
             }
             return { module: `behaviors.${name.replace(/\.py$/, '')}` };
-        }
+        },
     });
     const components = (i: GeneratorInstantiation): ComponentGenerator => ({
         kind: 'component',
@@ -172,11 +191,13 @@ export function createGenerators(rec: Recorder): Record<string, (i: GeneratorIns
                 f.line('# your code here');
                 f.line('# PROTECTED REGION END extra');
                 if (c.handwritten) {
-                    ctx.out.file(`user/${snakeCase(c.name)}_impl.py`, { userFile: true }).line(`# implement ${c.name} here (generated once)`);
+                    ctx.out
+                        .file(`user/${snakeCase(c.name)}_impl.py`, { userFile: true })
+                        .line(`# implement ${c.name} here (generated once)`);
                 }
             }
             rec.log.push(`components:end:${i.manifest.name}`);
-        }
+        },
     });
     return { 'components.js': components, 'automata.js': automata, 'datatypes.js': datatypes };
 }
@@ -217,7 +238,7 @@ export class Workspace {
                 if (!(base in modules)) throw new Error(`no test module ${base}`);
                 return { default: modules[base] };
             },
-            ...options
+            ...options,
         });
     }
 

@@ -17,7 +17,7 @@ describe('variantName', () => {
         expect(variantName('Room', { eco: false, dim: false }, 2, none)).toBe('Room__no_dim_eco');
     });
 
-    it('numbers a variant without features by its position among the type\'s variants', () => {
+    it("numbers a variant without features by its position among the type's variants", () => {
         expect(variantName('Wing', undefined, 1, none)).toBe('Wing__2');
         expect(variantName('Wing', {}, 2, none)).toBe('Wing__3');
     });

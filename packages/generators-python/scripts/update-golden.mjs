@@ -8,18 +8,18 @@ import { freshBase, generateCase, goldenCases, goldenDir, listFiles } from './go
 const base = freshBase();
 
 for (const c of goldenCases()) {
-  const { result, dir } = await generateCase(c, base);
-  if (!result.ok) {
-    console.error(`update-golden: ${c.name} does not generate:`);
-    for (const d of result.diagnostics) console.error(`  ${d.file}:${d.line}: ${d.code} ${d.message}`);
-    process.exit(1);
-  }
-  const target = path.join(goldenDir, c.name);
-  rmSync(target, { recursive: true, force: true });
-  for (const file of listFiles(dir)) {
-    mkdirSync(path.dirname(path.join(target, file)), { recursive: true });
-    cpSync(path.join(dir, file), path.join(target, file));
-  }
-  console.log(`update-golden: ${c.name}: ${listFiles(dir).length} files`);
+    const { result, dir } = await generateCase(c, base);
+    if (!result.ok) {
+        console.error(`update-golden: ${c.name} does not generate:`);
+        for (const d of result.diagnostics) console.error(`  ${d.file}:${d.line}: ${d.code} ${d.message}`);
+        process.exit(1);
+    }
+    const target = path.join(goldenDir, c.name);
+    rmSync(target, { recursive: true, force: true });
+    for (const file of listFiles(dir)) {
+        mkdirSync(path.dirname(path.join(target, file)), { recursive: true });
+        cpSync(path.join(dir, file), path.join(target, file));
+    }
+    console.log(`update-golden: ${c.name}: ${listFiles(dir).length} files`);
 }
 rmSync(base, { recursive: true, force: true });

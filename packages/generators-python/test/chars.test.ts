@@ -66,7 +66,10 @@ describe('char and Character in generated Python', () => {
         await ensureVenv();
         const { report, run: r } = await streamTests(path.join(model.dir, 'A.arcapp'), model.dir);
         expect(report?.results, r.stdout + r.stderr).toHaveLength(1);
-        expect(report!.results.filter((x) => !x.passed), r.stdout + r.stderr).toEqual([]);
+        expect(
+            report!.results.filter((x) => !x.passed),
+            r.stdout + r.stderr,
+        ).toEqual([]);
         expect(r.status).toBe(0);
     }, 240_000);
 

@@ -107,7 +107,10 @@ describe('switch, do-while, break, continue and autoconnect in generated Python'
         await ensureVenv();
         const { report, run: r } = await streamTests(path.join(model.dir, 'A.arcapp'), model.dir);
         expect(report?.results, r.stdout + r.stderr).toBeDefined();
-        expect(report!.results.filter((x) => !x.passed), r.stdout + r.stderr).toEqual([]);
+        expect(
+            report!.results.filter((x) => !x.passed),
+            r.stdout + r.stderr,
+        ).toEqual([]);
         expect(report!.results.map((x) => path.basename(x.file)).sort()).toEqual(['Calc.stream', 'Root.stream']);
         expect(r.status).toBe(0);
     }, 240_000);
@@ -119,7 +122,9 @@ describe('switch, do-while, break, continue and autoconnect in generated Python'
         expect(g.status, g.stdout + g.stderr).toBe(0);
         const c = await run(venvPython, ['-m', 'compileall', '-q', out], model.dir);
         expect(c.status, c.stdout + c.stderr).toBe(0);
-        const text = pythonFiles(out).map((f) => readFileSync(f, 'utf8')).join('\n');
+        const text = pythonFiles(out)
+            .map((f) => readFileSync(f, 'utf8'))
+            .join('\n');
         expect(text).toContain('_maa_sw');
         expect(text).toContain('_maa_first');
         // The subcomponent reads the root's in port only through the implied connector i -> calc.i.
@@ -129,4 +134,6 @@ describe('switch, do-while, break, continue and autoconnect in generated Python'
     }, 240_000);
 });
 
-interface Deployment { nodes: Array<{ instance: string; subscribes: Array<{ port: string; topic: string }> }> }
+interface Deployment {
+    nodes: Array<{ instance: string; subscribes: Array<{ port: string; topic: string }> }>;
+}

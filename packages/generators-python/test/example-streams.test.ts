@@ -10,24 +10,37 @@ import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
 describe('stream tests of the example (maa-gen test)', () => {
     it('every stream test of examples/toast-service passes', async () => {
         await ensureVenv();
-        const r = await run(process.execPath, [
-            maaGen, 'test', 'examples/toast-service/TR.arcapp', '--format', 'json', '--python', venvPython
-        ], repoDir);
+        const r = await run(
+            process.execPath,
+            [maaGen, 'test', 'examples/toast-service/TR.arcapp', '--format', 'json', '--python', venvPython],
+            repoDir,
+        );
         const out = JSON.parse(r.stdout) as { results: StreamResult[]; summary: { passed: number; failed: number } };
         expect(out.results.filter((x) => !x.passed)).toEqual([]);
         expect(out.summary.passed).toBeGreaterThanOrEqual(11);
         for (const component of ['Controller', 'ToasterController', 'ArmController']) {
-            expect(out.results.some((x) => x.file.endsWith(`${component}.stream`)), component).toBe(true);
+            expect(
+                out.results.some((x) => x.file.endsWith(`${component}.stream`)),
+                component,
+            ).toBe(true);
         }
         expect(r.status).toBe(0);
     }, 180_000);
 
     it('a failing stream test fails the command with a readable difference', async () => {
         await ensureVenv();
-        const r = await run(process.execPath, [
-            maaGen, 'test', 'examples/toast-service/TR.arcapp',
-            'packages/generators-python/test/fixtures/failing/Controller.stream', '--python', venvPython
-        ], repoDir);
+        const r = await run(
+            process.execPath,
+            [
+                maaGen,
+                'test',
+                'examples/toast-service/TR.arcapp',
+                'packages/generators-python/test/fixtures/failing/Controller.stream',
+                '--python',
+                venvPython,
+            ],
+            repoDir,
+        );
         expect(r.status).toBe(1);
         expect(r.stdout).toContain('FAIL');
         expect(r.stdout).toContain('arm: expected NONE Tk LOAD_BREAD Tk; got NONE Tk Tk');
@@ -37,9 +50,11 @@ describe('stream tests of the example (maa-gen test)', () => {
         const out = mkdtempSync(path.join(tmpdir(), 'maa-streams-out-'));
         try {
             writeFileSync(path.join(out, 'timesync'), 'a file where the platform folder belongs\n');
-            const r = await run(process.execPath, [
-                maaGen, 'test', 'examples/toast-service/TR.arcapp', '--out', out, '--python', venvPython
-            ], repoDir);
+            const r = await run(
+                process.execPath,
+                [maaGen, 'test', 'examples/toast-service/TR.arcapp', '--out', out, '--python', venvPython],
+                repoDir,
+            );
             expect(r.stdout).toContain('gen/write-failed');
             expect(r.stderr).toContain('no stream test was run');
             expect(r.status).toBe(2);
@@ -56,11 +71,30 @@ describe.skipIf(!existsSync(maaSim))('the example on the simulator (lock-step, t
     it('serves a toast: the toast ends up on the plate', async () => {
         const out = mkdtempSync(path.join(tmpdir(), 'maa-timesync-sim-'));
         try {
-            const gen = await run(process.execPath, [
-                maaGen, 'generate', 'examples/toast-service/TR.arcapp', '--platform', 'timesync', '--out', out
-            ], repoDir);
+            const gen = await run(
+                process.execPath,
+                [maaGen, 'generate', 'examples/toast-service/TR.arcapp', '--platform', 'timesync', '--out', out],
+                repoDir,
+            );
             expect(gen.status, gen.stderr).toBe(0);
-            const sim = await run(maaSim, ['run', '--package', path.join(out, 'timesync'), '--mode', 'lockstep', '--until-goal', '--viser-port', 'off', '--rosbridge-port', 'off', '--max-time', '60'], repoDir);
+            const sim = await run(
+                maaSim,
+                [
+                    'run',
+                    '--package',
+                    path.join(out, 'timesync'),
+                    '--mode',
+                    'lockstep',
+                    '--until-goal',
+                    '--viser-port',
+                    'off',
+                    '--rosbridge-port',
+                    'off',
+                    '--max-time',
+                    '60',
+                ],
+                repoDir,
+            );
             expect(`${sim.stdout}${sim.stderr}`).toContain('toast on the plate: True');
         } finally {
             rmSync(out, { recursive: true, force: true });

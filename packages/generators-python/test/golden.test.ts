@@ -5,8 +5,19 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { RTE_FOLDERS, freshBase, rteCopy, generateCase, goldenCases, goldenDir, listFiles, packageDir } from '../scripts/golden-lib.mjs';
 import { ensureVenv, lintPython, run, venvPython } from './python-env.js';
 
-interface GoldenCase { name: string; app: string; platform: string }
-interface Generated { result: { ok: boolean; diagnostics: Array<{ code?: string; message: string }>; platforms: Array<{ files: string[]; unchanged: string[]; kept: string[] }> }; dir: string }
+interface GoldenCase {
+    name: string;
+    app: string;
+    platform: string;
+}
+interface Generated {
+    result: {
+        ok: boolean;
+        diagnostics: Array<{ code?: string; message: string }>;
+        platforms: Array<{ files: string[]; unchanged: string[]; kept: string[] }>;
+    };
+    dir: string;
+}
 
 // Golden files of the Python generators: regenerate with `npm run golden:update -w @maa/generators-python`.
 describe.each(goldenCases() as GoldenCase[])('golden files: $name', (c) => {
@@ -57,8 +68,25 @@ describe.each(goldenCases() as GoldenCase[])('golden files: $name', (c) => {
         if (c.platform === 'rospython') {
             // ROS 2 packages: the settings of test/ros2 (the packages and run-time environments are third-party imports there)
             const pkgs = readdirSync(first.dir).filter((d) => statSync(path.join(first.dir, d)).isDirectory());
-            const r = await run(venvPython, ['-m', 'ruff', 'check', '--no-cache', '--output-format', 'concise', '--config', path.join(packageDir, 'test', 'ros2', 'ruff-generated.toml'),
-                '--config', `lint.isort.known-third-party=[${[...pkgs, 'maa_behavior', 'maa_ros2'].map((x) => `'${x}'`).join(',')}]`, '--extend-exclude', 'maa_behavior', '.'], first.dir);
+            const r = await run(
+                venvPython,
+                [
+                    '-m',
+                    'ruff',
+                    'check',
+                    '--no-cache',
+                    '--output-format',
+                    'concise',
+                    '--config',
+                    path.join(packageDir, 'test', 'ros2', 'ruff-generated.toml'),
+                    '--config',
+                    `lint.isort.known-third-party=[${[...pkgs, 'maa_behavior', 'maa_ros2'].map((x) => `'${x}'`).join(',')}]`,
+                    '--extend-exclude',
+                    'maa_behavior',
+                    '.',
+                ],
+                first.dir,
+            );
             expect(r.status, r.stdout + r.stderr).toBe(0);
             return;
         }

@@ -64,30 +64,54 @@ interface Case {
 const CASES: Readonly<Record<string, readonly Case[]>> = {
     'Object.Object()': [{ type: 'boolean', expr: 'Object.Object().equals(obj)' }],
     'Object.equals(Object)': [
-        { type: 'boolean', expr: 'obj.equals("Hello, World")' }, { type: 'boolean', expr: 'i.equals(42)' },
-        { type: 'boolean', expr: 'db.equals(2.5)' }, { type: 'boolean', expr: 'l.equals(col)' }, { type: 'boolean', expr: 'i.equals(lg)' }
+        { type: 'boolean', expr: 'obj.equals("Hello, World")' },
+        { type: 'boolean', expr: 'i.equals(42)' },
+        { type: 'boolean', expr: 'db.equals(2.5)' },
+        { type: 'boolean', expr: 'l.equals(col)' },
+        { type: 'boolean', expr: 'i.equals(lg)' },
     ],
     'Object.hashCode()': [
-        { type: 'int', expr: 'obj.hashCode()' }, { type: 'int', expr: 'i.hashCode()' }, { type: 'int', expr: 'lg.hashCode()' },
-        { type: 'int', expr: 'db.hashCode()' }, { type: 'int', expr: 'fl.hashCode()' }, { type: 'int', expr: 'bo.hashCode()' },
-        { type: 'int', expr: 'ch.hashCode()' }, { type: 'int', expr: 'l.hashCode()' }, { type: 'int', expr: 'm.hashCode()' },
-        { type: 'int', expr: 'st.hashCode()' }, { type: 'int', expr: 'd.hashCode()' }, { type: 'int', expr: 'o.hashCode()' }
+        { type: 'int', expr: 'obj.hashCode()' },
+        { type: 'int', expr: 'i.hashCode()' },
+        { type: 'int', expr: 'lg.hashCode()' },
+        { type: 'int', expr: 'db.hashCode()' },
+        { type: 'int', expr: 'fl.hashCode()' },
+        { type: 'int', expr: 'bo.hashCode()' },
+        { type: 'int', expr: 'ch.hashCode()' },
+        { type: 'int', expr: 'l.hashCode()' },
+        { type: 'int', expr: 'm.hashCode()' },
+        { type: 'int', expr: 'st.hashCode()' },
+        { type: 'int', expr: 'd.hashCode()' },
+        { type: 'int', expr: 'o.hashCode()' },
     ],
     'Object.toString()': [
-        { type: 'String', expr: 'n.toString()' }, { type: 'String', expr: 'fl.toString()' }, { type: 'String', expr: 'ch.toString()' },
-        { type: 'String', expr: 'l.toString()' }, { type: 'String', expr: 'm.toString()' }, { type: 'String', expr: 'st.toString()' },
-        { type: 'String', expr: 'o.toString()' }, { type: 'String', expr: 'oe.toString()' }, { type: 'String', expr: 'd.toString()' }
+        { type: 'String', expr: 'n.toString()' },
+        { type: 'String', expr: 'fl.toString()' },
+        { type: 'String', expr: 'ch.toString()' },
+        { type: 'String', expr: 'l.toString()' },
+        { type: 'String', expr: 'm.toString()' },
+        { type: 'String', expr: 'st.toString()' },
+        { type: 'String', expr: 'o.toString()' },
+        { type: 'String', expr: 'oe.toString()' },
+        { type: 'String', expr: 'd.toString()' },
     ],
     'Comparable.compareTo(T)': [
-        { type: 'int', expr: 'cs.compareTo("Help")' }, { type: 'int', expr: 'i.compareTo(7)' }, { type: 'int', expr: 'ch.compareTo(\'a\')' },
-        { type: 'int', expr: 'd.compareTo(d0)' }, { type: 'int', expr: 'bo.compareTo(false)' }, { type: 'int', expr: 'db.compareTo(2.5)' }
+        { type: 'int', expr: 'cs.compareTo("Help")' },
+        { type: 'int', expr: 'i.compareTo(7)' },
+        { type: 'int', expr: "ch.compareTo('a')" },
+        { type: 'int', expr: 'd.compareTo(d0)' },
+        { type: 'int', expr: 'bo.compareTo(false)' },
+        { type: 'int', expr: 'db.compareTo(2.5)' },
     ],
     'CharSequence.length()': [{ type: 'int', expr: 'seq.length()' }],
     'CharSequence.charAt(int)': [{ type: 'char', expr: 'seq.charAt(1)' }],
     'CharSequence.isEmpty()': [{ type: 'boolean', expr: 'seq.isEmpty()' }],
     'Number.byteValue()': [{ type: 'byte', expr: 'Integer.valueOf(300).byteValue()' }],
     'Number.shortValue()': [{ type: 'short', expr: 'Integer.valueOf(70000).shortValue()' }],
-    'Number.intValue()': [{ type: 'int', expr: 'n.intValue()' }, { type: 'int', expr: 'Double.valueOf(-3.9).intValue()' }],
+    'Number.intValue()': [
+        { type: 'int', expr: 'n.intValue()' },
+        { type: 'int', expr: 'Double.valueOf(-3.9).intValue()' },
+    ],
     'Number.longValue()': [{ type: 'long', expr: 'db.longValue()' }],
     'Number.floatValue()': [{ type: 'float', expr: 'n.floatValue()' }],
     'Number.doubleValue()': [{ type: 'double', expr: 'fl.doubleValue()' }],
@@ -99,19 +123,22 @@ const CASES: Readonly<Record<string, readonly Case[]>> = {
     'Boolean.parseBoolean(String)': [{ type: 'boolean', expr: 'Boolean.parseBoolean("TRUE")' }],
     'Boolean.logicalAnd(boolean, boolean)': [{ type: 'boolean', expr: 'Boolean.logicalAnd(true, false)' }],
     'Boolean.logicalOr(boolean, boolean)': [{ type: 'boolean', expr: 'Boolean.logicalOr(true, false)' }],
-    'Character.Character(char)': [{ type: 'Character', expr: 'Character.Character(\'z\')' }],
-    'Character.valueOf(char)': [{ type: 'Character', expr: 'Character.valueOf(\'a\')' }],
+    'Character.Character(char)': [{ type: 'Character', expr: "Character.Character('z')" }],
+    'Character.valueOf(char)': [{ type: 'Character', expr: "Character.valueOf('a')" }],
     'Character.charValue()': [{ type: 'char', expr: 'ch.charValue()' }],
-    'Character.toString(char)': [{ type: 'String', expr: 'Character.toString(\'b\')' }],
-    'Character.compare(char, char)': [{ type: 'int', expr: 'Character.compare(\'a\', \'d\')' }],
-    'Character.isDigit(char)': [{ type: 'boolean', expr: 'Character.isDigit(\'7\')' }, { type: 'boolean', expr: 'Character.isDigit(\'x\')' }],
-    'Character.isLetter(char)': [{ type: 'boolean', expr: 'Character.isLetter(\'x\')' }],
-    'Character.isLetterOrDigit(char)': [{ type: 'boolean', expr: 'Character.isLetterOrDigit(\'_\')' }],
-    'Character.isWhitespace(char)': [{ type: 'boolean', expr: 'Character.isWhitespace(\' \')' }],
-    'Character.isUpperCase(char)': [{ type: 'boolean', expr: 'Character.isUpperCase(\'Q\')' }],
-    'Character.isLowerCase(char)': [{ type: 'boolean', expr: 'Character.isLowerCase(\'Q\')' }],
-    'Character.toUpperCase(char)': [{ type: 'char', expr: 'Character.toUpperCase(\'q\')' }],
-    'Character.toLowerCase(char)': [{ type: 'char', expr: 'Character.toLowerCase(\'Q\')' }],
+    'Character.toString(char)': [{ type: 'String', expr: "Character.toString('b')" }],
+    'Character.compare(char, char)': [{ type: 'int', expr: "Character.compare('a', 'd')" }],
+    'Character.isDigit(char)': [
+        { type: 'boolean', expr: "Character.isDigit('7')" },
+        { type: 'boolean', expr: "Character.isDigit('x')" },
+    ],
+    'Character.isLetter(char)': [{ type: 'boolean', expr: "Character.isLetter('x')" }],
+    'Character.isLetterOrDigit(char)': [{ type: 'boolean', expr: "Character.isLetterOrDigit('_')" }],
+    'Character.isWhitespace(char)': [{ type: 'boolean', expr: "Character.isWhitespace(' ')" }],
+    'Character.isUpperCase(char)': [{ type: 'boolean', expr: "Character.isUpperCase('Q')" }],
+    'Character.isLowerCase(char)': [{ type: 'boolean', expr: "Character.isLowerCase('Q')" }],
+    'Character.toUpperCase(char)': [{ type: 'char', expr: "Character.toUpperCase('q')" }],
+    'Character.toLowerCase(char)': [{ type: 'char', expr: "Character.toLowerCase('Q')" }],
     'Byte.Byte(byte)': [{ type: 'Byte', expr: 'Byte.Byte(by.byteValue())' }],
     'Byte.valueOf(byte)': [{ type: 'Byte', expr: 'Byte.valueOf(Byte.MIN_VALUE)' }],
     'Byte.byteValue()': [{ type: 'byte', expr: 'by.byteValue()' }],
@@ -172,7 +199,10 @@ const CASES: Readonly<Record<string, readonly Case[]>> = {
     'Double.isInfinite()': [{ type: 'boolean', expr: 'db.isInfinite()' }],
     'Double.sum(double, double)': [{ type: 'double', expr: 'Double.sum(0.1, 0.2)' }],
     'String.String()': [{ type: 'String', expr: 'String.String()' }],
-    'String.valueOf(Object)': [{ type: 'String', expr: 'String.valueOf(3.5)' }, { type: 'String', expr: 'String.valueOf(l)' }],
+    'String.valueOf(Object)': [
+        { type: 'String', expr: 'String.valueOf(3.5)' },
+        { type: 'String', expr: 'String.valueOf(l)' },
+    ],
     'String.length()': [{ type: 'int', expr: 's.length()' }],
     'String.isEmpty()': [{ type: 'boolean', expr: 's.isEmpty()' }],
     'String.charAt(int)': [{ type: 'char', expr: 's.charAt(4)' }],
@@ -219,18 +249,35 @@ const CASES: Readonly<Record<string, readonly Case[]>> = {
     'Math.signum(double)': [{ type: 'double', expr: 'Math.signum(-3.2)' }],
     'Math.floor(double)': [{ type: 'double', expr: 'Math.floor(-1.5)' }],
     'Math.ceil(double)': [{ type: 'double', expr: 'Math.ceil(-1.5)' }],
-    'Math.round(double)': [{ type: 'long', expr: 'Math.round(2.5)' }, { type: 'long', expr: 'Math.round(-2.5)' }],
+    'Math.round(double)': [
+        { type: 'long', expr: 'Math.round(2.5)' },
+        { type: 'long', expr: 'Math.round(-2.5)' },
+    ],
     'Math.toRadians(double)': [{ type: 'double', expr: 'Math.toRadians(180.0)' }],
     'Math.toDegrees(double)': [{ type: 'double', expr: 'Math.toDegrees(1.0)' }],
     'Iterator.hasNext()': [{ type: 'boolean', expr: 'it.hasNext()' }],
     'Iterator.next()': [{ type: 'Integer', expr: 'it.next()' }],
     'Iterable.iterator()': [{ type: 'Integer', expr: 'itb.iterator().next()' }],
-    'Collection.size()': [{ type: 'int', expr: 'col.size()' }, { type: 'int', expr: 'st.size()' }],
+    'Collection.size()': [
+        { type: 'int', expr: 'col.size()' },
+        { type: 'int', expr: 'st.size()' },
+    ],
     'Collection.isEmpty()': [{ type: 'boolean', expr: 'col.isEmpty()' }],
-    'Collection.contains(Object)': [{ type: 'boolean', expr: 'col.contains(1)' }, { type: 'boolean', expr: 'st.contains("x")' }],
-    'Collection.add(E)': [{ type: 'boolean', expr: 'col.add(4)' }, { type: 'boolean', expr: 'st.add("x")' }],
-    'Collection.remove(Object)': [{ type: 'boolean', expr: 'col.remove(Integer.valueOf(3))' }, { type: 'boolean', expr: 'st.remove("z")' }],
-    'Collection.clear()': [{ type: 'int', before: 'Set<String> cleared = HashSet.HashSet(); cleared.add("a"); cleared.clear();', expr: 'cleared.size()' }],
+    'Collection.contains(Object)': [
+        { type: 'boolean', expr: 'col.contains(1)' },
+        { type: 'boolean', expr: 'st.contains("x")' },
+    ],
+    'Collection.add(E)': [
+        { type: 'boolean', expr: 'col.add(4)' },
+        { type: 'boolean', expr: 'st.add("x")' },
+    ],
+    'Collection.remove(Object)': [
+        { type: 'boolean', expr: 'col.remove(Integer.valueOf(3))' },
+        { type: 'boolean', expr: 'st.remove("z")' },
+    ],
+    'Collection.clear()': [
+        { type: 'int', before: 'Set<String> cleared = HashSet.HashSet(); cleared.add("a"); cleared.clear();', expr: 'cleared.size()' },
+    ],
     'List.get(int)': [{ type: 'Integer', expr: 'l.get(0)' }],
     'List.set(int, E)': [{ type: 'Integer', expr: 'l.set(1, 8)' }],
     'List.indexOf(Object)': [{ type: 'int', expr: 'l.indexOf(3)' }],
@@ -240,13 +287,22 @@ const CASES: Readonly<Record<string, readonly Case[]>> = {
     'Queue.offer(E)': [{ type: 'boolean', expr: 'q.offer(7)' }],
     'Map.get(Object)': [{ type: 'Integer', expr: 'm.get("a")' }],
     'Map.put(K, V)': [{ type: 'Integer', expr: 'm.put("a", 5)' }],
-    'Map.containsKey(Object)': [{ type: 'boolean', expr: 'm.containsKey("b")' }, { type: 'boolean', expr: 'm.containsKey("z")' }],
+    'Map.containsKey(Object)': [
+        { type: 'boolean', expr: 'm.containsKey("b")' },
+        { type: 'boolean', expr: 'm.containsKey("z")' },
+    ],
     'Map.containsValue(Object)': [{ type: 'boolean', expr: 'm.containsValue(2)' }],
     'Map.remove(Object)': [{ type: 'Integer', expr: 'm.remove("b")' }],
     'Map.getOrDefault(Object, V)': [{ type: 'Integer', expr: 'm.getOrDefault("z", 0)' }],
     'Map.size()': [{ type: 'int', expr: 'm.size()' }],
     'Map.isEmpty()': [{ type: 'boolean', expr: 'm.isEmpty()' }],
-    'Map.clear()': [{ type: 'boolean', before: 'Map<String, Integer> gone = HashMap.HashMap(); gone.put("k", 1); gone.clear();', expr: 'gone.isEmpty()' }],
+    'Map.clear()': [
+        {
+            type: 'boolean',
+            before: 'Map<String, Integer> gone = HashMap.HashMap(); gone.put("k", 1); gone.clear();',
+            expr: 'gone.isEmpty()',
+        },
+    ],
     'Map.keySet()': [{ type: 'Set<String>', before: 'm.put("c", 3);', expr: 'm.keySet()' }],
     'Map.values()': [{ type: 'Collection<Integer>', expr: 'm.values()' }],
     'ArrayList.ArrayList()': [{ type: 'int', expr: 'ArrayList.ArrayList().size()' }],
@@ -256,7 +312,10 @@ const CASES: Readonly<Record<string, readonly Case[]>> = {
     'Optional.empty()': [{ type: 'Optional<String>', expr: 'Optional.empty()' }],
     'Optional.of(T)': [{ type: 'Optional<String>', expr: 'Optional.of("w")' }],
     'Optional.ofNullable(T)': [{ type: 'Optional<String>', expr: 'Optional.ofNullable(null)' }],
-    'Optional.isPresent()': [{ type: 'boolean', expr: 'o.isPresent()' }, { type: 'boolean', expr: 'oe.isPresent()' }],
+    'Optional.isPresent()': [
+        { type: 'boolean', expr: 'o.isPresent()' },
+        { type: 'boolean', expr: 'oe.isPresent()' },
+    ],
     'Optional.isEmpty()': [{ type: 'boolean', expr: 'oe.isEmpty()' }],
     'Optional.get()': [{ type: 'String', expr: 'o.get()' }],
     'Optional.orElse(T)': [{ type: 'String', expr: 'oe.orElse("w")' }],
@@ -269,7 +328,7 @@ const CASES: Readonly<Record<string, readonly Case[]>> = {
     'Collections.emptyList()': [{ type: 'int', expr: 'Collections.emptyList().size()' }],
     'Collections.emptySet()': [{ type: 'boolean', expr: 'Collections.emptySet().isEmpty()' }],
     'Collections.emptyMap()': [{ type: 'int', expr: 'Collections.emptyMap().size()' }],
-    'Collections.singletonList(T)': [{ type: 'List<Integer>', expr: 'Collections.singletonList(4)' }]
+    'Collections.singletonList(T)': [{ type: 'List<Integer>', expr: 'Collections.singletonList(4)' }],
 };
 
 /** The members of the built-in library as `Type.method(parameter types)` / `Type.ATTRIBUTE`. */
@@ -310,11 +369,19 @@ function arcModel(name: string, selected: ReadonlyArray<Case & { k: number }>): 
     const out = new Set(selected.map((c) => c.k));
     const ports = selected.map((c) => `  port <<sync>> out ${c.type} r${c.k};`).join('\n');
     const body = cases.map((c, k) => `${c.before ?? ''}\n    ${out.has(k) ? `r${k} = ` : ''}${c.expr};`).join('\n');
-    return `package probe;\n\nimport java.util.*;\n\ncomponent ${name} {\n  port <<sync>> in int tick;\n${ports}\n\n  compute {\n${SETUP.split('\n').map((x) => `    ${x}`).join('\n')}\n    ${body}\n  }\n}\n`;
+    return `package probe;\n\nimport java.util.*;\n\ncomponent ${name} {\n  port <<sync>> in int tick;\n${ports}\n\n  compute {\n${SETUP.split(
+        '\n',
+    )
+        .map((x) => `    ${x}`)
+        .join('\n')}\n    ${body}\n  }\n}\n`;
 }
 
 function javaProgram(): string {
-    const body = cases.map((c, k) => `${toJava(c.before ?? '')}\n    ${c.type} r${k} = ${toJava(c.expr)};\n    System.out.println(String.valueOf(r${k}));`).join('\n');
+    const body = cases
+        .map(
+            (c, k) => `${toJava(c.before ?? '')}\n    ${c.type} r${k} = ${toJava(c.expr)};\n    System.out.println(String.valueOf(r${k}));`,
+        )
+        .join('\n');
     return `import java.util.*;\n\n@SuppressWarnings({"unchecked", "rawtypes", "deprecation", "removal"})\npublic class Probe {\n  public static void main(String[] args) {\n${toJava(SETUP)}\n${body}\n  }\n}\n`;
 }
 
@@ -358,25 +425,56 @@ describe('the JDK library in generated Python', () => {
         await ensureVenv();
         const root = path.join(work, 'models');
         mkdirSync(path.join(root, 'probe'), { recursive: true });
-        writeFileSync(path.join(root, 'probe', 'LibProbe.arc'), arcModel('LibProbe', cases.map((c, k) => ({ ...c, k }))));
+        writeFileSync(
+            path.join(root, 'probe', 'LibProbe.arc'),
+            arcModel(
+                'LibProbe',
+                cases.map((c, k) => ({ ...c, k })),
+            ),
+        );
         writeFileSync(path.join(root, 'probe', 'RosProbe.arc'), arcModel('RosProbe', rosCases));
-        writeFileSync(path.join(root, 'Probe.arcapp'), 'application Probe for probe.LibProbe {\n  platform timesync {\n    timesync.Components;\n    timesync.DataTypes;\n  }\n}\n');
-        writeFileSync(path.join(root, 'RosProbe.arcapp'), 'application RosProbe for probe.RosProbe {\n  platform rospython {\n    ros2.Components;\n    ros2.DataTypes;\n  }\n}\n');
+        writeFileSync(
+            path.join(root, 'Probe.arcapp'),
+            'application Probe for probe.LibProbe {\n  platform timesync {\n    timesync.Components;\n    timesync.DataTypes;\n  }\n}\n',
+        );
+        writeFileSync(
+            path.join(root, 'RosProbe.arcapp'),
+            'application RosProbe for probe.RosProbe {\n  platform rospython {\n    ros2.Components;\n    ros2.DataTypes;\n  }\n}\n',
+        );
         const out = path.join(work, 'out');
         const generate = async (app: string, platform: string): Promise<void> => {
-            const gen = await run(process.execPath, [maaGen, 'generate', path.join(root, app), '--platform', platform, '--out', out], repoDir);
+            const gen = await run(
+                process.execPath,
+                [maaGen, 'generate', path.join(root, app), '--platform', platform, '--out', out],
+                repoDir,
+            );
             if (gen.status !== 0) throw new Error(`maa-gen generate ${app} failed:\n${gen.stdout}\n${gen.stderr}`);
         };
-        const runBehavior = async (dir: string, module: string, cls: string, wanted: ReadonlyArray<readonly [number, string]>): Promise<string[]> => {
+        const runBehavior = async (
+            dir: string,
+            module: string,
+            cls: string,
+            wanted: ReadonlyArray<readonly [number, string]>,
+        ): Promise<string[]> => {
             const py = await run(venvPython, ['-c', PY_HARNESS, dir, module, cls, JSON.stringify(wanted)], packageDir);
             if (py.status !== 0) throw new Error(`the generated code failed:\n${py.stdout}\n${py.stderr}`);
             return py.stdout.trimEnd().split('\n');
         };
         await generate('Probe.arcapp', 'timesync');
-        python = await runBehavior(path.join(out, 'timesync'), 'probe.lib_probe', 'LibProbeBehavior', cases.map((c, k) => [k, c.type] as const));
+        python = await runBehavior(
+            path.join(out, 'timesync'),
+            'probe.lib_probe',
+            'LibProbeBehavior',
+            cases.map((c, k) => [k, c.type] as const),
+        );
         // The ROS 2 build's behavior module is plain Python (no rclpy): run it the same way.
         await generate('RosProbe.arcapp', 'rospython');
-        ros = await runBehavior(path.join(out, 'rospython', 'ros_probe'), 'ros_probe.model.probe.ros_probe_behavior', 'RosProbeBehavior', rosCases.map((c) => [c.k, c.type] as const));
+        ros = await runBehavior(
+            path.join(out, 'rospython', 'ros_probe'),
+            'ros_probe.model.probe.ros_probe_behavior',
+            'RosProbeBehavior',
+            rosCases.map((c) => [c.k, c.type] as const),
+        );
         const javaDir = path.join(work, 'java');
         mkdirSync(javaDir);
         writeFileSync(path.join(javaDir, 'Probe.java'), javaProgram());

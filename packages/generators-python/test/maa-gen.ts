@@ -10,9 +10,17 @@ import { repoDir, run, venvPython, type RunResult } from './python-env.js';
 export const maaGen = path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js');
 
 /** One stream test's outcome in `maa-gen test --format json`. */
-export interface StreamResult { file: string; test: string | null; passed: boolean; problems: string[] }
+export interface StreamResult {
+    file: string;
+    test: string | null;
+    passed: boolean;
+    problems: string[];
+}
 
-export interface StreamReport { results: StreamResult[]; summary: { passed: number; failed: number } }
+export interface StreamReport {
+    results: StreamResult[];
+    summary: { passed: number; failed: number };
+}
 
 /** An application of `component` for both Python platforms (components, automata, data types). */
 export function bothPlatformsApp(component: string, name = 'A'): string {
@@ -47,11 +55,19 @@ export function tempModelRoot(prefix: string, files: Readonly<Record<string, str
     afterAll(() => {
         if (dir) rmSync(dir, { recursive: true, force: true });
     });
-    return { get dir() { return dir; } };
+    return {
+        get dir() {
+            return dir;
+        },
+    };
 }
 
 /** `maa-gen test <app> --format json` with the package's venv: the report (if it printed one) and the run. */
-export async function streamTests(app: string, cwd: string, extra: readonly string[] = []): Promise<{ report?: StreamReport; run: RunResult }> {
+export async function streamTests(
+    app: string,
+    cwd: string,
+    extra: readonly string[] = [],
+): Promise<{ report?: StreamReport; run: RunResult }> {
     const r = await run(process.execPath, [maaGen, 'test', app, '--format', 'json', '--python', venvPython, ...extra], cwd);
     let report: StreamReport | undefined;
     try {

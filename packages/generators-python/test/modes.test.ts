@@ -12,9 +12,11 @@ import { ensureVenv, lintPython, repoDir, run, venvPython } from './python-env.j
 describe('mode automata on python-timesync (maa-gen test)', () => {
     it('every stream test of the modes fixture passes', async () => {
         await ensureVenv();
-        const r = await run(process.execPath, [
-            maaGen, 'test', 'packages/generators-python/test/fixtures/modes/Modes.arcapp', '--format', 'json', '--python', venvPython
-        ], repoDir);
+        const r = await run(
+            process.execPath,
+            [maaGen, 'test', 'packages/generators-python/test/fixtures/modes/Modes.arcapp', '--format', 'json', '--python', venvPython],
+            repoDir,
+        );
         const out = JSON.parse(r.stdout) as { results: StreamResult[]; summary: { passed: number; failed: number } };
         expect(out.results.filter((x) => !x.passed)).toEqual([]);
         expect(out.summary.passed).toBe(3);
@@ -23,9 +25,19 @@ describe('mode automata on python-timesync (maa-gen test)', () => {
 
     it('a guard over an enum parameter switches only the instance whose parameter allows it (mode-params fixture)', async () => {
         await ensureVenv();
-        const r = await run(process.execPath, [
-            maaGen, 'test', 'packages/generators-python/test/fixtures/mode-params/SelectorPair.arcapp', '--format', 'json', '--python', venvPython
-        ], repoDir);
+        const r = await run(
+            process.execPath,
+            [
+                maaGen,
+                'test',
+                'packages/generators-python/test/fixtures/mode-params/SelectorPair.arcapp',
+                '--format',
+                'json',
+                '--python',
+                venvPython,
+            ],
+            repoDir,
+        );
         const out = JSON.parse(r.stdout) as { results: StreamResult[]; summary: { passed: number; failed: number } };
         expect(out.results.filter((x) => !x.passed)).toEqual([]);
         expect(out.summary.passed).toBe(1);
@@ -37,19 +49,40 @@ describe('mode automata on ROS 2', () => {
     it('generate a mode manager node and gated subcomponent nodes (no components.NoModes refusal); test/ros2/test_ros2_modes.py runs them', async () => {
         const out = mkdtempSync(path.join(tmpdir(), 'maa-modes-ros2-'));
         try {
-            const r = await run(process.execPath, [
-                maaGen, 'generate', 'packages/generators-python/test/fixtures/modes/Modes.arcapp',
-                '--platform', 'rospython', '--out', out
-            ], repoDir);
+            const r = await run(
+                process.execPath,
+                [
+                    maaGen,
+                    'generate',
+                    'packages/generators-python/test/fixtures/modes/Modes.arcapp',
+                    '--platform',
+                    'rospython',
+                    '--out',
+                    out,
+                ],
+                repoDir,
+            );
             expect(r.stdout + r.stderr).not.toContain('components.NoModes');
             expect(r.status).toBe(0);
             const deployment = JSON.parse(readFileSync(path.join(out, 'rospython', 'gearbox', 'deployment.json'), 'utf8')) as {
-                nodes: Array<{ name: string; namespace: string; subscribes: Array<{ topic: string }>; publishes: Array<{ port?: string; topic: string }> }>
+                nodes: Array<{
+                    name: string;
+                    namespace: string;
+                    subscribes: Array<{ topic: string }>;
+                    publishes: Array<{ port?: string; topic: string }>;
+                }>;
             };
             const byName = new Map(deployment.nodes.map((n) => [n.name, n]));
             expect([...byName.keys()].sort()).toEqual(['maa_modes', 's1', 's10', 't']);
             const manager = byName.get('maa_modes')!;
-            expect(manager.publishes.map((t) => t.topic)).toEqual(['/gearbox/maa_modes/mode', '/gearbox/maa_modes/s1/i', '/gearbox/o', '/gearbox/maa_modes/s10/i', '/gearbox/maa_modes/t/i', '/gearbox/total']);
+            expect(manager.publishes.map((t) => t.topic)).toEqual([
+                '/gearbox/maa_modes/mode',
+                '/gearbox/maa_modes/s1/i',
+                '/gearbox/o',
+                '/gearbox/maa_modes/s10/i',
+                '/gearbox/maa_modes/t/i',
+                '/gearbox/total',
+            ]);
             for (const n of ['s1', 's10', 't']) expect(byName.get(n)!.subscribes.map((t) => t.topic)).toContain('/gearbox/maa_modes/mode');
         } finally {
             rmSync(out, { recursive: true, force: true });
@@ -59,15 +92,24 @@ describe('mode automata on ROS 2', () => {
     it('a mode manager takes enum parameters as the regular nodes do (by ordinal, converted back for the guards)', async () => {
         const out = mkdtempSync(path.join(tmpdir(), 'maa-mode-params-ros2-'));
         try {
-            const r = await run(process.execPath, [
-                maaGen, 'generate', 'packages/generators-python/test/fixtures/mode-params/SelectorPair.arcapp',
-                '--platform', 'rospython', '--out', out
-            ], repoDir);
+            const r = await run(
+                process.execPath,
+                [
+                    maaGen,
+                    'generate',
+                    'packages/generators-python/test/fixtures/mode-params/SelectorPair.arcapp',
+                    '--platform',
+                    'rospython',
+                    '--out',
+                    out,
+                ],
+                repoDir,
+            );
             expect(r.stdout + r.stderr).not.toContain('primitive types only');
             expect(r.status, r.stdout + r.stderr).toBe(0);
             const pkg = path.join(out, 'rospython', 'selector_pair');
             const deployment = JSON.parse(readFileSync(path.join(pkg, 'deployment.json'), 'utf8')) as {
-                nodes: Array<{ name: string; namespace: string; parameters: Record<string, unknown> }>
+                nodes: Array<{ name: string; namespace: string; parameters: Record<string, unknown> }>;
             };
             const managers = new Map(deployment.nodes.filter((n) => n.name === 'maa_modes').map((n) => [n.namespace, n.parameters]));
             expect(managers.get('/selector_pair/a')).toEqual({ kind: 0 });
@@ -102,10 +144,19 @@ describe('event-based mode automata on python-timesync', () => {
         await ensureVenv();
         const out = mkdtempSync(path.join(tmpdir(), 'maa-modes-event-'));
         try {
-            const gen = await run(process.execPath, [
-                maaGen, 'generate', 'packages/generators-python/test/fixtures/modes/Shifter.arcapp',
-                '--platform', 'timesync', '--out', out
-            ], repoDir);
+            const gen = await run(
+                process.execPath,
+                [
+                    maaGen,
+                    'generate',
+                    'packages/generators-python/test/fixtures/modes/Shifter.arcapp',
+                    '--platform',
+                    'timesync',
+                    '--out',
+                    out,
+                ],
+                repoDir,
+            );
             expect(gen.status, gen.stdout + gen.stderr).toBe(0);
             const build = path.join(out, 'timesync');
             expect(await lintPython(build)).toEqual([]);

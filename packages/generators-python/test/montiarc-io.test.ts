@@ -25,14 +25,25 @@ const conformance = path.resolve(repoDir, '..', 'shared', 'conformance');
  */
 const EXTENDED_SUPPORTED: readonly string[] = [
     // mode automata (12-B)
-    'montiarc.modes.sync.SimpleTransitionTest', 'montiarc.modes.sync.composition.InitiallyUnusedOutPortsTest',
+    'montiarc.modes.sync.SimpleTransitionTest',
+    'montiarc.modes.sync.composition.InitiallyUnusedOutPortsTest',
     // feature configurations (12-A): one build per component and `features` of the case
-    'montiarc.sync.variability.FieldSourceTest', 'montiarc.sync.variability.OptionalDelayTest'
+    'montiarc.sync.variability.FieldSourceTest',
+    'montiarc.sync.variability.OptionalDelayTest',
 ];
 
-interface Case { id: string }
-interface Result { id: string; passed: boolean; reason: string | null }
-interface Generation { builds: Record<string, { ok: boolean; dir: string; errors: string[] }>; cases: Record<string, string> }
+interface Case {
+    id: string;
+}
+interface Result {
+    id: string;
+    passed: boolean;
+    reason: string | null;
+}
+interface Generation {
+    builds: Record<string, { ok: boolean; dir: string; errors: string[] }>;
+    cases: Record<string, string>;
+}
 
 function testClass(id: string): string {
     const i = id.indexOf('Test.');
@@ -40,7 +51,9 @@ function testClass(id: string): string {
 }
 
 function casesOf(suite: string): Case[] {
-    return existsSync(path.join(suite, 'io_cases.json')) ? (JSON.parse(readFileSync(path.join(suite, 'io_cases.json'), 'utf8')).cases as Case[]) : [];
+    return existsSync(path.join(suite, 'io_cases.json'))
+        ? (JSON.parse(readFileSync(path.join(suite, 'io_cases.json'), 'utf8')).cases as Case[])
+        : [];
 }
 
 /** Generates and runs one suite in a fresh folder; the results and the generation report. */
@@ -65,7 +78,9 @@ function runSuite(suite: string): { results: () => Result[]; generation: () => G
             return `${String(mine.filter((r) => r.passed).length).padStart(3)}/${String(mine.length).padEnd(3)} ${k}`;
         });
         const passed = results.filter((r) => r.passed).length;
-        console.log(`${path.basename(suite)} pass rate per test class:\n${rows.join('\n')}\ntotal: ${passed}/${results.length} (${((100 * passed) / Math.max(1, results.length)).toFixed(1)}%)`);
+        console.log(
+            `${path.basename(suite)} pass rate per test class:\n${rows.join('\n')}\ntotal: ${passed}/${results.length} (${((100 * passed) / Math.max(1, results.length)).toFixed(1)}%)`,
+        );
     }, 900_000);
     return { results: () => results, generation: () => generation };
 }
@@ -73,7 +88,10 @@ function runSuite(suite: string): { results: () => Result[]; generation: () => G
 /** ruff and py_compile over every build that generated. */
 async function lintBuilds(generation: Generation): Promise<string[]> {
     const problems: string[] = [];
-    for (const b of Object.values(generation.builds).filter((x) => x.ok).sort((x, y) => (x.dir < y.dir ? -1 : 1))) problems.push(...(await lintPython(b.dir)));
+    for (const b of Object.values(generation.builds)
+        .filter((x) => x.ok)
+        .sort((x, y) => (x.dir < y.dir ? -1 : 1)))
+        problems.push(...(await lintPython(b.dir)));
     return problems;
 }
 
@@ -88,7 +106,10 @@ describe.skipIf(ioClasses.length === 0)('montiarc-io conformance (python-timesyn
     });
 
     it.each(ioClasses)('%s', (k) => {
-        const failed = s.results().filter((r) => testClass(r.id) === k && !r.passed).map((r) => `${r.id}: ${r.reason}`);
+        const failed = s
+            .results()
+            .filter((r) => testClass(r.id) === k && !r.passed)
+            .map((r) => `${r.id}: ${r.reason}`);
         expect(failed).toEqual([]);
     });
 
@@ -105,17 +126,36 @@ describe.skipIf(extendedCases.length === 0)('montiarc-io-extended conformance (p
     const supported = (id: string): boolean => EXTENDED_SUPPORTED.includes(id) || EXTENDED_SUPPORTED.includes(testClass(id));
 
     it('runs every case, one build per component and feature configuration', () => {
-        expect(s.results().map((r) => r.id).sort()).toEqual(extendedCases.map((c) => c.id).sort());
+        expect(
+            s
+                .results()
+                .map((r) => r.id)
+                .sort(),
+        ).toEqual(extendedCases.map((c) => c.id).sort());
         const variants = new Set(Object.values(s.generation().cases));
-        const configurations = new Set(extendedCases.map((c) => JSON.stringify([(c as Case & { component: string }).component, Object.entries((c as Case & { features?: Record<string, boolean> }).features ?? {}).sort()])));
+        const configurations = new Set(
+            extendedCases.map((c) =>
+                JSON.stringify([
+                    (c as Case & { component: string }).component,
+                    Object.entries((c as Case & { features?: Record<string, boolean> }).features ?? {}).sort(),
+                ]),
+            ),
+        );
         expect(variants.size).toBe(configurations.size);
     });
 
     it('every supported case passes', () => {
-        const failed = s.results().filter((r) => supported(r.id) && !r.passed).map((r) => `${r.id}: ${r.reason}`);
+        const failed = s
+            .results()
+            .filter((r) => supported(r.id) && !r.passed)
+            .map((r) => `${r.id}: ${r.reason}`);
         expect(failed).toEqual([]);
-        const unlisted = s.results().filter((r) => r.passed && !supported(r.id)).map((r) => r.id);
-        if (unlisted.length > 0) console.log(`montiarc-io-extended: passing but not yet in EXTENDED_SUPPORTED:\n  ${unlisted.join('\n  ')}`);
+        const unlisted = s
+            .results()
+            .filter((r) => r.passed && !supported(r.id))
+            .map((r) => r.id);
+        if (unlisted.length > 0)
+            console.log(`montiarc-io-extended: passing but not yet in EXTENDED_SUPPORTED:\n  ${unlisted.join('\n  ')}`);
     });
 
     it('the generated code passes ruff check and py_compile', async () => {
@@ -139,6 +179,11 @@ describe('the io-case harness on a suite of its own (every field of the format)'
     });
 
     it('scores every case of the suite', () => {
-        expect(s.results().map((r) => r.id).sort()).toEqual(Object.keys(expectations).sort());
+        expect(
+            s
+                .results()
+                .map((r) => r.id)
+                .sort(),
+        ).toEqual(Object.keys(expectations).sort());
     });
 });

@@ -38,7 +38,11 @@ export function run(command: string, args: string[], cwd: string, input?: string
         });
         child.on('close', (code, signal) => {
             const tail = signal ? `\n(killed by ${signal})` : '';
-            resolve({ status: code ?? 1, stdout: Buffer.concat(stdout).toString('utf8'), stderr: `${Buffer.concat(stderr).toString('utf8')}${spawnError}${tail}` });
+            resolve({
+                status: code ?? 1,
+                stdout: Buffer.concat(stdout).toString('utf8'),
+                stderr: `${Buffer.concat(stderr).toString('utf8')}${spawnError}${tail}`,
+            });
         });
         child.stdin.on('error', () => undefined); // a command that exits without reading its input
         child.stdin.end(input);
@@ -68,16 +72,28 @@ export function pythonFiles(dir: string): string[] {
 /** `ruff check` (inside the folder, with the package's settings) and `py_compile` of every file. */
 export async function lintPython(dir: string): Promise<string[]> {
     const problems: string[] = [];
-    const ruff = await run(venvPython, ['-m', 'ruff', 'check', '--config', ruffConfig, '--no-cache', '--output-format', 'concise', '.'], dir);
+    const ruff = await run(
+        venvPython,
+        ['-m', 'ruff', 'check', '--config', ruffConfig, '--no-cache', '--output-format', 'concise', '.'],
+        dir,
+    );
     if (ruff.status !== 0) problems.push(`ruff check in ${dir}:\n${ruff.stdout}${ruff.stderr}`);
     const files = pythonFiles(dir);
     // Compiled into a temporary folder, so the generated folder stays free of __pycache__.
-    const compile = await run(venvPython, ['-c', [
-        'import os, sys, py_compile, tempfile',
-        'with tempfile.TemporaryDirectory() as d:',
-        '    for i, f in enumerate(sys.argv[1:]):',
-        '        py_compile.compile(f, cfile=os.path.join(d, f"{i}.pyc"), doraise=True)'
-    ].join('\n'), ...files], dir);
+    const compile = await run(
+        venvPython,
+        [
+            '-c',
+            [
+                'import os, sys, py_compile, tempfile',
+                'with tempfile.TemporaryDirectory() as d:',
+                '    for i, f in enumerate(sys.argv[1:]):',
+                '        py_compile.compile(f, cfile=os.path.join(d, f"{i}.pyc"), doraise=True)',
+            ].join('\n'),
+            ...files,
+        ],
+        dir,
+    );
     if (compile.status !== 0) problems.push(`py_compile in ${dir}:\n${compile.stderr}`);
     return problems;
 }

@@ -71,7 +71,10 @@ describe('ros2.* golden files', () => {
                 expect(actual, f).toBe(readFileSync(path.join(goldenDir, f), 'utf8'));
             }
         }
-        const trace = JSON.parse(readFileSync(path.join(platform, '.maa-trace.json'), 'utf8')) as { generators: Array<{ name: string }>; files: Array<{ path: string; traces: unknown[] }> };
+        const trace = JSON.parse(readFileSync(path.join(platform, '.maa-trace.json'), 'utf8')) as {
+            generators: Array<{ name: string }>;
+            files: Array<{ path: string; traces: unknown[] }>;
+        };
         expect(trace.generators.map((g) => g.name)).toEqual(['ros2.Components', 'ros2.AutomataBehavior', 'ros2.DataTypes']);
         // nodes and messages are traced to the model
         expect(trace.files.find((f) => f.path === 'robot/robot/nodes/unit__ctrl.py')?.traces.length).toBeGreaterThan(0);
@@ -98,19 +101,22 @@ describe('ros2.* golden files', () => {
     it('reports a topic with two publishers (gen/generator-failed)', async () => {
         const root = temp();
         cpSync(modelRoot, root, { recursive: true });
-        writeFileSync(path.join(root, 'robot', 'Sensor.ros2.py'), [
-            '"""A platform component that publishes on a port topic of another node."""',
-            '',
-            'from typing import ClassVar',
-            '',
-            'from robot.handwritten.sensor_base import SensorBase',
-            '',
-            '',
-            'class Sensor(SensorBase):',
-            '    SUBSCRIBES: ClassVar[dict[str, str]] = {}',
-            '    PUBLISHES: ClassVar[dict[str, str]] = {"/robot/unit/ctrl/reading": "robot_interfaces/msg/Reading"}',
-            ''
-        ].join('\n'));
+        writeFileSync(
+            path.join(root, 'robot', 'Sensor.ros2.py'),
+            [
+                '"""A platform component that publishes on a port topic of another node."""',
+                '',
+                'from typing import ClassVar',
+                '',
+                'from robot.handwritten.sensor_base import SensorBase',
+                '',
+                '',
+                'class Sensor(SensorBase):',
+                '    SUBSCRIBES: ClassVar[dict[str, str]] = {}',
+                '    PUBLISHES: ClassVar[dict[str, str]] = {"/robot/unit/ctrl/reading": "robot_interfaces/msg/Reading"}',
+                '',
+            ].join('\n'),
+        );
         const result = await run(path.join(root, 'Golden.arcapp'), temp(), root);
         expect(result.ok).toBe(false);
         const d = result.diagnostics.find((x) => x.code === 'gen/generator-failed');

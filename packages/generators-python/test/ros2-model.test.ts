@@ -28,26 +28,68 @@ function port(name: string, topic: string, rosType = 'std_msgs/msg/Int32'): Node
     return { port: name, topic, rosType, helper: 'std_port', codec: 'std_port(Int32, int)', sampled: true, delayed: false, node: AST };
 }
 
-function node(fqn: string, options: { inputs?: NodePort[]; outputs?: NodePort[]; parameters?: Parameter[]; publishes?: Array<{ topic: string; type: string }> } = {}): ComponentNode {
+function node(
+    fqn: string,
+    options: {
+        inputs?: NodePort[];
+        outputs?: NodePort[];
+        parameters?: Parameter[];
+        publishes?: Array<{ topic: string; type: string }>;
+    } = {},
+): ComponentNode {
     const name = fqn.split('/').pop()!;
     const namespace = fqn.slice(0, fqn.length - name.length - 1) || '/';
     const c = component(`app.${name}`);
     const instance: InstanceView = { path: [name], component: c, args: [] };
     return {
-        kind: 'component', instance, name, namespace, fqn, module: `app.nodes.${name}`, moduleName: name, file: `app/app/nodes/${name}.py`,
-        instancePath: `robot.${name}`, parameters: options.parameters ?? [], imports: new PyImports(), component: c,
-        behavior: { module: 'maa_behavior', cls: 'NoBehavior' }, inputs: options.inputs ?? [], outputs: options.outputs ?? [],
-        platform: { subscribes: [], publishes: options.publishes ?? [] }, gates: []
+        kind: 'component',
+        instance,
+        name,
+        namespace,
+        fqn,
+        module: `app.nodes.${name}`,
+        moduleName: name,
+        file: `app/app/nodes/${name}.py`,
+        instancePath: `robot.${name}`,
+        parameters: options.parameters ?? [],
+        imports: new PyImports(),
+        component: c,
+        behavior: { module: 'maa_behavior', cls: 'NoBehavior' },
+        inputs: options.inputs ?? [],
+        outputs: options.outputs ?? [],
+        platform: { subscribes: [], publishes: options.publishes ?? [] },
+        gates: [],
     };
 }
 
 function manager(fqn: string, relayTarget: string): ModeManagerNode {
     const c = component('app.Modes');
     return {
-        kind: 'manager', instance: { path: ['m'], component: c, args: [] }, name: 'maa_modes', namespace: fqn.replace(/\/maa_modes$/, ''), fqn,
-        module: 'app.nodes.m__maa_modes', moduleName: 'm__maa_modes', file: 'app/app/nodes/m__maa_modes.py', instancePath: 'robot.m',
-        parameters: [], imports: new PyImports(), modeTopic: `${fqn}/mode`, inputs: [],
-        relays: [{ source: '/robot/a/o', target: relayTarget, rosType: 'std_msgs/msg/Int32', helper: 'std_port', codec: 'std_port(Int32, int)', sampled: true, modes: ['On'], port: 'o' }]
+        kind: 'manager',
+        instance: { path: ['m'], component: c, args: [] },
+        name: 'maa_modes',
+        namespace: fqn.replace(/\/maa_modes$/, ''),
+        fqn,
+        module: 'app.nodes.m__maa_modes',
+        moduleName: 'm__maa_modes',
+        file: 'app/app/nodes/m__maa_modes.py',
+        instancePath: 'robot.m',
+        parameters: [],
+        imports: new PyImports(),
+        modeTopic: `${fqn}/mode`,
+        inputs: [],
+        relays: [
+            {
+                source: '/robot/a/o',
+                target: relayTarget,
+                rosType: 'std_msgs/msg/Int32',
+                helper: 'std_port',
+                codec: 'std_port(Int32, int)',
+                sampled: true,
+                modes: ['On'],
+                port: 'o',
+            },
+        ],
     };
 }
 
@@ -63,28 +105,42 @@ describe('ros2 application model: topic rules', () => {
     it('a well-formed application keeps every rule', () => {
         const a = app([
             node('/robot/a', { outputs: [port('o', '/robot/a/o')], inputs: [port('i', '/robot/i')] }),
-            node('/robot/b', { inputs: [port('i', '/robot/a/o')] })
+            node('/robot/b', { inputs: [port('i', '/robot/a/o')] }),
         ]);
         expect(violations(a)).toEqual([]);
         expect(() => checkTopicRules(a)).not.toThrow();
     });
 
-    it('two publishers of a topic (a port and a handwritten PUBLISHES, or a mode manager\'s relay)', () => {
-        const a = app([node('/robot/a', { outputs: [port('o', '/robot/a/o')] }), node('/robot/s', { publishes: [{ topic: '/robot/a/o', type: 'std_msgs/msg/Int32' }] })]);
-        expect(violations(a)).toEqual(['ros2.OnePublisherPerTopic: topic /robot/a/o would have two publishers, /robot/a and /robot/s; a topic has exactly one publisher']);
+    it("two publishers of a topic (a port and a handwritten PUBLISHES, or a mode manager's relay)", () => {
+        const a = app([
+            node('/robot/a', { outputs: [port('o', '/robot/a/o')] }),
+            node('/robot/s', { publishes: [{ topic: '/robot/a/o', type: 'std_msgs/msg/Int32' }] }),
+        ]);
+        expect(violations(a)).toEqual([
+            'ros2.OnePublisherPerTopic: topic /robot/a/o would have two publishers, /robot/a and /robot/s; a topic has exactly one publisher',
+        ]);
         expect(() => checkTopicRules(a)).toThrow(GenerationError);
         const m = app([node('/robot/m/x', { outputs: [port('o', '/robot/m/o')] })], [manager('/robot/m/maa_modes', '/robot/m/o')]);
-        expect(violations(m)).toEqual(['ros2.OnePublisherPerTopic: topic /robot/m/o would have two publishers, /robot/m/maa_modes and /robot/m/x; a topic has exactly one publisher']);
+        expect(violations(m)).toEqual([
+            'ros2.OnePublisherPerTopic: topic /robot/m/o would have two publishers, /robot/m/maa_modes and /robot/m/x; a topic has exactly one publisher',
+        ]);
     });
 
     it('two types on a topic', () => {
-        const a = app([node('/robot/a', { outputs: [port('o', '/robot/a/o')] }), node('/robot/b', { inputs: [port('i', '/robot/a/o', 'std_msgs/msg/String')] })]);
-        expect(violations(a)).toEqual(['ros2.OneTypePerTopic: topic /robot/a/o would carry two types, std_msgs/msg/Int32 and std_msgs/msg/String']);
+        const a = app([
+            node('/robot/a', { outputs: [port('o', '/robot/a/o')] }),
+            node('/robot/b', { inputs: [port('i', '/robot/a/o', 'std_msgs/msg/String')] }),
+        ]);
+        expect(violations(a)).toEqual([
+            'ros2.OneTypePerTopic: topic /robot/a/o would carry two types, std_msgs/msg/Int32 and std_msgs/msg/String',
+        ]);
     });
 
     it('a read topic without a publisher (topics below the root namespace count as fed from outside)', () => {
         const a = app([node('/robot/b', { inputs: [port('i', '/elsewhere/o'), port('j', '/robot/j')] })]);
-        expect(violations(a)).toEqual(['ros2.ReadTopicsArePublished: in port \'i\' of /robot/b reads topic /elsewhere/o, which has no publisher']);
+        expect(violations(a)).toEqual([
+            "ros2.ReadTopicsArePublished: in port 'i' of /robot/b reads topic /elsewhere/o, which has no publisher",
+        ]);
     });
 });
 
@@ -99,9 +155,12 @@ describe('ros2 application model: deployment.json', () => {
             { name: 'speed', value: 2, float: true },
             { name: 'count', value: 2, float: false },
             { name: 'gain', value: 0.5, float: true },
-            { name: 'color', value: 1, enumType: 'Color', float: false }
+            { name: 'color', value: 1, enumType: 'Color', float: false },
         ];
-        const a = app([node('/robot/a', { outputs: [port('o', '/robot/a/o')], parameters })], [manager('/robot/m/maa_modes', '/robot/m/o')]);
+        const a = app(
+            [node('/robot/a', { outputs: [port('o', '/robot/a/o')], parameters })],
+            [manager('/robot/m/maa_modes', '/robot/m/o')],
+        );
         const deployment = deploymentOf(a, 'app.Robot');
         expect(deploymentContract.parse(deployment, 'model')).toEqual(deployment);
         const text = deploymentJson(a, deployment);
@@ -112,7 +171,10 @@ describe('ros2 application model: deployment.json', () => {
         expect(deployment.nodes[1]).toMatchObject({
             name: 'maa_modes',
             subscribes: [{ topic: '/robot/a/o', type: 'std_msgs/msg/Int32' }],
-            publishes: [{ topic: '/robot/m/maa_modes/mode', type: 'std_msgs/msg/String' }, { port: 'o', topic: '/robot/m/o', type: 'std_msgs/msg/Int32' }]
+            publishes: [
+                { topic: '/robot/m/maa_modes/mode', type: 'std_msgs/msg/String' },
+                { port: 'o', topic: '/robot/m/o', type: 'std_msgs/msg/Int32' },
+            ],
         });
     });
 
@@ -136,15 +198,30 @@ describe('ros2 parameters: constant expressions evaluated on the AST', () => {
         temps.push(root, out);
         cpSync(modelRoot, root, { recursive: true });
         const robot = path.join(root, 'robot', 'Robot.arc');
-        writeFileSync(robot, readFileSync(robot, 'utf8').replace('Scale scale(3);', `Scale scale(${scale});`).replace('Unit unit(Mode.FAST, 2.5);', `Unit unit(${unit});`));
-        const result = await generate({ services: createMaaServices(NodeFileSystem), appFile: path.join(root, 'Golden.arcapp'), modelRoot: root, outDir: out });
+        writeFileSync(
+            robot,
+            readFileSync(robot, 'utf8')
+                .replace('Scale scale(3);', `Scale scale(${scale});`)
+                .replace('Unit unit(Mode.FAST, 2.5);', `Unit unit(${unit});`),
+        );
+        const result = await generate({
+            services: createMaaServices(NodeFileSystem),
+            appFile: path.join(root, 'Golden.arcapp'),
+            modelRoot: root,
+            outDir: out,
+        });
         return { result, out };
     }
 
     it('arguments written as constant expressions generate the same files as their values', async () => {
         const { result, out } = await generateWith('(7 - 1) / 2', 'true ? Mode.FAST : Mode.SLOW, 5 / 2.0');
         expect(result.diagnostics.filter((d) => d.severity === 'error')).toEqual([]);
-        for (const f of ['robot/deployment.json', 'robot/launch/golden.launch.py', 'robot/robot/nodes/scale.py', 'robot/robot/nodes/unit__ctrl.py']) {
+        for (const f of [
+            'robot/deployment.json',
+            'robot/launch/golden.launch.py',
+            'robot/robot/nodes/scale.py',
+            'robot/robot/nodes/unit__ctrl.py',
+        ]) {
             expect(readFileSync(path.join(out, 'rospython', f), 'utf8'), f).toBe(readFileSync(path.join(here, 'golden-ros2', f), 'utf8'));
         }
     });
@@ -153,6 +230,8 @@ describe('ros2 parameters: constant expressions evaluated on the AST', () => {
         const { result } = await generateWith('Math.max(1, 2)', 'Mode.FAST, 2.5');
         expect(result.ok).toBe(false);
         const d = result.diagnostics.find((x) => x.code === 'gen/generator-failed');
-        expect(d?.message).toContain("ros2.Components needs a constant value here (ROS parameters are static): 'Math.max(1, 2)' is not a constant expression");
+        expect(d?.message).toContain(
+            "ros2.Components needs a constant value here (ROS parameters are static): 'Math.max(1, 2)' is not a constant expression",
+        );
     });
 });

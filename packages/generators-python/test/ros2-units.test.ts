@@ -7,27 +7,32 @@ describe('ros2.* helpers', () => {
         const text = [
             'class DistanceSensor(DistanceSensorBase):',
             '    SUBSCRIBES: ClassVar[dict[str, str]] = {"/sensors/distance": "std_msgs/msg/Int32", \'/a/b\': \'x/msg/Y\'}',
-            '    PUBLISHES: ClassVar[dict[str, str]] = {}'
+            '    PUBLISHES: ClassVar[dict[str, str]] = {}',
         ].join('\n');
         expect(platformTopics(text)).toEqual({
-            subscribes: [{ topic: '/sensors/distance', type: 'std_msgs/msg/Int32' }, { topic: '/a/b', type: 'x/msg/Y' }],
-            publishes: []
+            subscribes: [
+                { topic: '/sensors/distance', type: 'std_msgs/msg/Int32' },
+                { topic: '/a/b', type: 'x/msg/Y' },
+            ],
+            publishes: [],
         });
         expect(platformTopics('class X:\n    pass\n')).toEqual({ subscribes: [], publishes: [] });
     });
 
     it('orders imports like ruff (isort): plain imports first, then by module; constants, classes, functions', () => {
-        const lines = importLines(new Map([
-            ['std_msgs.msg', new Set(['Int32'])],
-            ['maa_ros2', new Set(['run_node', 'InPort', 'ComponentNode', 'PORT_QOS'])],
-            ['app_interfaces.msg', new Set([''])],
-            ['app.model.types', new Set(['Mode'])]
-        ]));
+        const lines = importLines(
+            new Map([
+                ['std_msgs.msg', new Set(['Int32'])],
+                ['maa_ros2', new Set(['run_node', 'InPort', 'ComponentNode', 'PORT_QOS'])],
+                ['app_interfaces.msg', new Set([''])],
+                ['app.model.types', new Set(['Mode'])],
+            ]),
+        );
         expect(lines).toEqual([
             'import app_interfaces.msg',
             'from app.model.types import Mode',
             'from maa_ros2 import PORT_QOS, ComponentNode, InPort, run_node',
-            'from std_msgs.msg import Int32'
+            'from std_msgs.msg import Int32',
         ]);
     });
 

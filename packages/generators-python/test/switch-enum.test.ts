@@ -85,7 +85,9 @@ describe('a switch over an enum with bare constant labels in generated Python', 
         await ensureVenv();
         const { report, run: r } = await streamTests(path.join(model.dir, 'A.arcapp'), model.dir);
         expect(report?.results, r.stdout + r.stderr).toBeDefined();
-        expect(report!.results.map((x) => [x.test, x.passed, x.problems])).toEqual([['a switch over an enum in port with bare constant labels', true, []]]);
+        expect(report!.results.map((x) => [x.test, x.passed, x.problems])).toEqual([
+            ['a switch over an enum in port with bare constant labels', true, []],
+        ]);
         expect(r.status).toBe(0);
     }, 240_000);
 
@@ -100,6 +102,11 @@ describe('a switch over an enum with bare constant labels in generated Python', 
         const pkgRoot = path.resolve(path.dirname(behavior!), '..', '..', '..');
         const r = await run(venvPython, ['-c', STEP_ROS2, pkgRoot], model.dir);
         expect(r.status, r.stdout + r.stderr).toBe(0);
-        expect(JSON.parse(r.stdout)).toEqual([[11, 'GREEN'], [10, 'BLUE'], [10, 'RED'], [-1, 'BLACK']]);
+        expect(JSON.parse(r.stdout)).toEqual([
+            [11, 'GREEN'],
+            [10, 'BLUE'],
+            [10, 'RED'],
+            [-1, 'BLACK'],
+        ]);
     }, 240_000);
 });

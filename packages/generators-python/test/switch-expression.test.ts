@@ -113,6 +113,12 @@ describe('switch expressions in generated Python', () => {
         const pkgRoot = path.resolve(path.dirname(behavior!), '..', '..', '..');
         const r = await run(venvPython, ['-c', STEP_ROS2, pkgRoot], model.dir);
         expect(r.status, r.stdout + r.stderr).toBe(0);
-        expect(JSON.parse(r.stdout)).toEqual([[10, 108, 1005, 'r'], [10, -2, 1000, 'gb'], [8, 8, 1000, 'gb'], [0, 7, 1000, 'k'], [0, 8, 1000, 'r']]);
+        expect(JSON.parse(r.stdout)).toEqual([
+            [10, 108, 1005, 'r'],
+            [10, -2, 1000, 'gb'],
+            [8, 8, 1000, 'gb'],
+            [0, 7, 1000, 'k'],
+            [0, 8, 1000, 'r'],
+        ]);
     }, 240_000);
 });

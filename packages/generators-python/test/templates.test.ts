@@ -9,32 +9,44 @@ import { packageDir } from './python-env.js';
 // that every template file is used and ships with the package.
 describe('Python templates', () => {
     it('render a mode transition body: unused arguments deleted, transitions in order, None last', () => {
-        expect(renderLines('timesync/mode-transition.njk', {
-            unused: ['trigger', 'params'],
-            transitions: [
-                { conditions: ['mode == "A"', '(inputs.get("go") == 1)'], target: 'B' },
-                { conditions: ['mode == "B"'], target: 'A' }
-            ]
-        })).toEqual([
+        expect(
+            renderLines('timesync/mode-transition.njk', {
+                unused: ['trigger', 'params'],
+                transitions: [
+                    { conditions: ['mode == "A"', '(inputs.get("go") == 1)'], target: 'B' },
+                    { conditions: ['mode == "B"'], target: 'A' },
+                ],
+            }),
+        ).toEqual([
             'del trigger, params',
             'if mode == "A" and (inputs.get("go") == 1):',
             '    return "B"',
             'if mode == "B":',
             '    return "A"',
-            'return None'
+            'return None',
         ]);
         expect(renderLines('timesync/mode-transition.njk', { unused: [], transitions: [] })).toEqual(['return None']);
     });
 
     it('write Python tuples, sets and dicts with the right commas', () => {
         const view = (ins: string[], delayed: string[]) => ({
-            className: 'ArmBehavior', qualifiedName: 'p.Arm', inPorts: ins, outPorts: ['status', 'x'], delayed, statusType: 'None',
-            programs: [{ name: 'home', steps: ['Move(Fixed(0.0), Keep())', 'Gripper(close=True)'] }, { name: 'idle', steps: [] }],
-            commands: [{ constant: 'HOME', program: 'home' }]
+            className: 'ArmBehavior',
+            qualifiedName: 'p.Arm',
+            inPorts: ins,
+            outPorts: ['status', 'x'],
+            delayed,
+            statusType: 'None',
+            programs: [
+                { name: 'home', steps: ['Move(Fixed(0.0), Keep())', 'Gripper(close=True)'] },
+                { name: 'idle', steps: [] },
+            ],
+            commands: [{ constant: 'HOME', program: 'home' }],
         });
         const one = renderPython('behavior/robotarm.njk', view(['cmd'], []));
         expect(one).toContain('    IN_PORTS = ("cmd",)\n    OUT_PORTS = ("status", "x")\n    DELAYED = frozenset()\n');
-        expect(one).toContain('        "home": (\n            Move(Fixed(0.0), Keep()),\n            Gripper(close=True),\n        ),\n        "idle": (\n        ),\n');
+        expect(one).toContain(
+            '        "home": (\n            Move(Fixed(0.0), Keep()),\n            Gripper(close=True),\n        ),\n        "idle": (\n        ),\n',
+        );
         expect(one).toContain('    COMMANDS: ClassVar[Mapping[str, str]] = {\n        "HOME": "home",\n    }\n');
         expect(one.endsWith('    }\n')).toBe(true);
         const none = renderPython('behavior/robotarm.njk', view([], ['status', 'x']));
@@ -43,8 +55,15 @@ describe('Python templates', () => {
     });
 
     it('render a module: docstring, import groups, two blank lines, the classes, one final newline', () => {
-        expect(renderPython('behavior/module.py.njk', { doc: 'D.', imports: ['from typing import ClassVar', '', 'from maa_behavior import Behavior'], body: 'class A:\n    pass' }))
-            .toBe('"""D."""\n\nfrom __future__ import annotations\n\nfrom typing import ClassVar\n\nfrom maa_behavior import Behavior\n\n\nclass A:\n    pass\n');
+        expect(
+            renderPython('behavior/module.py.njk', {
+                doc: 'D.',
+                imports: ['from typing import ClassVar', '', 'from maa_behavior import Behavior'],
+                body: 'class A:\n    pass',
+            }),
+        ).toBe(
+            '"""D."""\n\nfrom __future__ import annotations\n\nfrom typing import ClassVar\n\nfrom maa_behavior import Behavior\n\n\nclass A:\n    pass\n',
+        );
     });
 
     it('are each rendered by an emitter or included by another template, and ship with the package', () => {

@@ -55,12 +55,16 @@ describe('feature configurations on python-timesync (maa-gen test)', () => {
 const instancesApp = path.join(repoDir, 'packages', 'generators-python', 'test', 'fixtures', 'variability-instances', 'Instances.arcapp');
 
 describe('instances of one type in different configurations (maa-gen test)', () => {
-    it('python-timesync: each lamp behaves per its instance\'s configuration; a stream test of the type finds the variant of its features', async () => {
+    it("python-timesync: each lamp behaves per its instance's configuration; a stream test of the type finds the variant of its features", async () => {
         await ensureVenv();
         const r = await run(process.execPath, [maaGen, 'test', instancesApp, '--format', 'json', '--python', venvPython], repoDir);
         const out = JSON.parse(r.stdout) as { results: StreamResult[] };
         // LampPlain.stream names hall.Lamp with dimmable = false: it runs against the variant Lamp__no_dimmable.
-        expect(out.results.map((x) => x.file.split(/[\\/]/).pop()).sort()).toEqual(['Hall.stream', 'LampDimmable.stream', 'LampPlain.stream']);
+        expect(out.results.map((x) => x.file.split(/[\\/]/).pop()).sort()).toEqual([
+            'Hall.stream',
+            'LampDimmable.stream',
+            'LampPlain.stream',
+        ]);
         expect(out.results.filter((x) => !x.passed)).toEqual([]);
         expect(r.status, r.stdout + r.stderr).toBe(0);
     }, 180_000);
@@ -94,7 +98,11 @@ describe('feature configurations on ROS 2', () => {
     it('a binding of an unknown feature is refused (app/unknown-feature)', async () => {
         const app = configured(true);
         writeFileSync(app, readFileSync(app, 'utf8').replace('lamp.Room(dim = true)', 'lamp.Room(dimmed = true)'));
-        const r = await run(process.execPath, [maaGen, 'generate', app, '--platform', 'timesync', '--out', path.join(work, 'unknown')], repoDir);
+        const r = await run(
+            process.execPath,
+            [maaGen, 'generate', app, '--platform', 'timesync', '--out', path.join(work, 'unknown')],
+            repoDir,
+        );
         expect(r.stdout + r.stderr).toContain('app/unknown-feature');
         expect(r.status).toBe(1);
     }, 180_000);

@@ -16,150 +16,160 @@ export const MIN_TOKEN_LENGTH = 16;
 
 /** A fresh token: 32 random bytes, base64url. */
 export function generateToken(): string {
-  return randomBytes(32).toString('base64url');
+    return randomBytes(32).toString('base64url');
 }
 
 /** The reason a given token cannot be used, or undefined when it can. */
 export function tokenProblem(token: string): string | undefined {
-  if (token.length < MIN_TOKEN_LENGTH) return `the token must have at least ${MIN_TOKEN_LENGTH} characters`;
-  if (!TOKEN_SYNTAX.test(token)) return 'the token may hold only letters, digits and . _ ~ -';
-  return undefined;
+    if (token.length < MIN_TOKEN_LENGTH) return `the token must have at least ${MIN_TOKEN_LENGTH} characters`;
+    if (!TOKEN_SYNTAX.test(token)) return 'the token may hold only letters, digits and . _ ~ -';
+    return undefined;
 }
 
 /** Constant-time comparison (hashing first makes the lengths equal, so the length leaks nothing either). */
 export function sameSecret(given: string, expected: string): boolean {
-  const a = createHash('sha256').update(given).digest();
-  const b = createHash('sha256').update(expected).digest();
-  return timingSafeEqual(a, b);
+    const a = createHash('sha256').update(given).digest();
+    const b = createHash('sha256').update(expected).digest();
+    return timingSafeEqual(a, b);
 }
 
 /** `host[:port]` as the URL parser normalizes it (lower case, IPv6 in brackets), or undefined when malformed. */
 function parseHost(value: string): URL | undefined {
-  // No userinfo, path or query may hide in a Host header.
-  if (!/^[A-Za-z0-9.:[\]-]+$/.test(value)) return undefined;
-  try {
-    return new URL(`http://${value}`);
-  } catch {
-    return undefined;
-  }
+    // No userinfo, path or query may hide in a Host header.
+    if (!/^[A-Za-z0-9.:[\]-]+$/.test(value)) return undefined;
+    try {
+        return new URL(`http://${value}`);
+    } catch {
+        return undefined;
+    }
 }
 
 export type AccessRefusal = { status: 400 | 401 | 403; message: string };
 
 export type Authentication =
-  /** Token from the cookie or the Authorization header. */
-  | { ok: true; via: 'cookie' | 'bearer' }
-  /** Token from `?token=`: set the cookie (and redirect pages to the URL without it). */
-  | { ok: true; via: 'query' }
-  | { ok: false; refusal: AccessRefusal };
+    /** Token from the cookie or the Authorization header. */
+    | { ok: true; via: 'cookie' | 'bearer' }
+    /** Token from `?token=`: set the cookie (and redirect pages to the URL without it). */
+    | { ok: true; via: 'query' }
+    | { ok: false; refusal: AccessRefusal };
 
 /** A request (or WebSocket upgrade) let in, with its parsed URL, or refused and why. */
 export type Admission =
-  | { ok: true; url: URL; via: 'cookie' | 'bearer' | 'query' }
-  /** `unauthenticated`: the Host and Origin were fine, the token was missing or wrong (401). */
-  | { ok: false; refusal: AccessRefusal; unauthenticated: boolean };
+    | { ok: true; url: URL; via: 'cookie' | 'bearer' | 'query' }
+    /** `unauthenticated`: the Host and Origin were fine, the token was missing or wrong (401). */
+    | { ok: false; refusal: AccessRefusal; unauthenticated: boolean };
 
 export class AccessGuard {
-  private readonly hostnames: Set<string>;
+    private readonly hostnames: Set<string>;
 
-  /**
-   * @param listenHost the `--host` the server listens on (also accepted as Host)
-   * @param port the port it serves
-   * @param token the per-start secret
-   */
-  constructor(listenHost: string, readonly port: number, readonly token: string) {
-    const own = parseHost(listenHost.includes(':') && !listenHost.startsWith('[') ? `[${listenHost}]` : listenHost)?.hostname;
-    // 0.0.0.0 and :: are "every address", never a name a browser would send.
-    const wildcard = own === '0.0.0.0' || own === '[::]';
-    this.hostnames = new Set([...LOOPBACK_NAMES, ...(own && !wildcard ? [own] : [])]);
-  }
-
-  /** The cookie that holds the token; the port is in its name because cookies ignore ports. */
-  get cookieName(): string {
-    return `maa-ide-token-${this.port}`;
-  }
-
-  /** The `Set-Cookie` value that stores the token in the browser. */
-  setCookie(): string {
-    return `${this.cookieName}=${this.token}; HttpOnly; SameSite=Strict; Path=/`;
-  }
-
-  /**
-   * Every check a request or upgrade passes before it is routed, in this order: Host and Origin
-   * (so a refused page reads, writes and starts nothing), a well-formed URL, the token.
-   */
-  admit(req: IncomingMessage): Admission {
-    const refusal = this.checkOrigin(req);
-    if (refusal) return { ok: false, refusal, unauthenticated: false };
-    let url: URL;
-    try {
-      url = new URL(req.url ?? '/', 'http://localhost');
-    } catch {
-      return { ok: false, refusal: { status: 400, message: 'malformed URL' }, unauthenticated: false };
+    /**
+     * @param listenHost the `--host` the server listens on (also accepted as Host)
+     * @param port the port it serves
+     * @param token the per-start secret
+     */
+    constructor(
+        listenHost: string,
+        readonly port: number,
+        readonly token: string,
+    ) {
+        const own = parseHost(listenHost.includes(':') && !listenHost.startsWith('[') ? `[${listenHost}]` : listenHost)?.hostname;
+        // 0.0.0.0 and :: are "every address", never a name a browser would send.
+        const wildcard = own === '0.0.0.0' || own === '[::]';
+        this.hostnames = new Set([...LOOPBACK_NAMES, ...(own && !wildcard ? [own] : [])]);
     }
-    const auth = this.authenticate(req, url.searchParams);
-    return auth.ok ? { ok: true, url, via: auth.via } : { ok: false, refusal: auth.refusal, unauthenticated: true };
-  }
 
-  /** Host and Origin (docs/ide.md): undefined when both are acceptable. */
-  checkOrigin(req: IncomingMessage): AccessRefusal | undefined {
-    const hostHeader = req.headers.host;
-    if (!hostHeader) return { status: 403, message: 'the request has no Host header' };
-    const host = parseHost(hostHeader);
-    const port = host ? Number(host.port || '80') : NaN;
-    if (!host || !this.hostnames.has(host.hostname) || port !== this.port) {
-      return { status: 403, message: `maa-ide does not serve the host ${JSON.stringify(hostHeader)} (use ${[...this.hostnames].join(', ')} with port ${this.port})` };
+    /** The cookie that holds the token; the port is in its name because cookies ignore ports. */
+    get cookieName(): string {
+        return `maa-ide-token-${this.port}`;
     }
-    const origin = req.headers.origin;
-    if (origin === undefined) return undefined;
-    let parsed: URL | undefined;
-    try {
-      parsed = new URL(origin);
-    } catch {
-      parsed = undefined;
-    }
-    if (!parsed || parsed.protocol !== 'http:' || parsed.host !== host.host) {
-      return { status: 403, message: `requests from the origin ${JSON.stringify(origin)} are not accepted (only from http://${host.host})` };
-    }
-    return undefined;
-  }
 
-  /** Checks the token of a request: the query parameter, the cookie, or `Authorization: Bearer`. */
-  authenticate(req: IncomingMessage, query: URLSearchParams): Authentication {
-    const fromQuery = query.get('token');
-    if (fromQuery !== null && sameSecret(fromQuery, this.token)) return { ok: true, via: 'query' };
-    const cookie = readCookie(req.headers.cookie, this.cookieName);
-    if (cookie !== undefined && sameSecret(cookie, this.token)) return { ok: true, via: 'cookie' };
-    const bearer = /^Bearer\s+(\S+)\s*$/i.exec(req.headers.authorization ?? '')?.[1];
-    if (bearer !== undefined && sameSecret(bearer, this.token)) return { ok: true, via: 'bearer' };
-    const given = fromQuery !== null || cookie !== undefined || bearer !== undefined;
-    return {
-      ok: false,
-      refusal: {
-        status: 401,
-        message: given
-          ? 'the token is not valid (maa-ide makes a new one at every start: open the URL it printed)'
-          : 'a token is required: open the URL maa-ide printed (it holds ?token=...), or send "Authorization: Bearer <token>"',
-      },
-    };
-  }
+    /** The `Set-Cookie` value that stores the token in the browser. */
+    setCookie(): string {
+        return `${this.cookieName}=${this.token}; HttpOnly; SameSite=Strict; Path=/`;
+    }
+
+    /**
+     * Every check a request or upgrade passes before it is routed, in this order: Host and Origin
+     * (so a refused page reads, writes and starts nothing), a well-formed URL, the token.
+     */
+    admit(req: IncomingMessage): Admission {
+        const refusal = this.checkOrigin(req);
+        if (refusal) return { ok: false, refusal, unauthenticated: false };
+        let url: URL;
+        try {
+            url = new URL(req.url ?? '/', 'http://localhost');
+        } catch {
+            return { ok: false, refusal: { status: 400, message: 'malformed URL' }, unauthenticated: false };
+        }
+        const auth = this.authenticate(req, url.searchParams);
+        return auth.ok ? { ok: true, url, via: auth.via } : { ok: false, refusal: auth.refusal, unauthenticated: true };
+    }
+
+    /** Host and Origin (docs/ide.md): undefined when both are acceptable. */
+    checkOrigin(req: IncomingMessage): AccessRefusal | undefined {
+        const hostHeader = req.headers.host;
+        if (!hostHeader) return { status: 403, message: 'the request has no Host header' };
+        const host = parseHost(hostHeader);
+        const port = host ? Number(host.port || '80') : NaN;
+        if (!host || !this.hostnames.has(host.hostname) || port !== this.port) {
+            return {
+                status: 403,
+                message: `maa-ide does not serve the host ${JSON.stringify(hostHeader)} (use ${[...this.hostnames].join(', ')} with port ${this.port})`,
+            };
+        }
+        const origin = req.headers.origin;
+        if (origin === undefined) return undefined;
+        let parsed: URL | undefined;
+        try {
+            parsed = new URL(origin);
+        } catch {
+            parsed = undefined;
+        }
+        if (parsed?.protocol !== 'http:' || parsed.host !== host.host) {
+            return {
+                status: 403,
+                message: `requests from the origin ${JSON.stringify(origin)} are not accepted (only from http://${host.host})`,
+            };
+        }
+        return undefined;
+    }
+
+    /** Checks the token of a request: the query parameter, the cookie, or `Authorization: Bearer`. */
+    authenticate(req: IncomingMessage, query: URLSearchParams): Authentication {
+        const fromQuery = query.get('token');
+        if (fromQuery !== null && sameSecret(fromQuery, this.token)) return { ok: true, via: 'query' };
+        const cookie = readCookie(req.headers.cookie, this.cookieName);
+        if (cookie !== undefined && sameSecret(cookie, this.token)) return { ok: true, via: 'cookie' };
+        const bearer = /^Bearer\s+(\S+)\s*$/i.exec(req.headers.authorization ?? '')?.[1];
+        if (bearer !== undefined && sameSecret(bearer, this.token)) return { ok: true, via: 'bearer' };
+        const given = fromQuery !== null || cookie !== undefined || bearer !== undefined;
+        return {
+            ok: false,
+            refusal: {
+                status: 401,
+                message: given
+                    ? 'the token is not valid (maa-ide makes a new one at every start: open the URL it printed)'
+                    : 'a token is required: open the URL maa-ide printed (it holds ?token=...), or send "Authorization: Bearer <token>"',
+            },
+        };
+    }
 }
 
 /** The value of one cookie of a `Cookie` header (the last one when repeated). */
 export function readCookie(header: string | undefined, name: string): string | undefined {
-  if (!header) return undefined;
-  let value: string | undefined;
-  for (const part of header.split(';')) {
-    const eq = part.indexOf('=');
-    if (eq < 0) continue;
-    if (part.slice(0, eq).trim() === name) value = part.slice(eq + 1).trim();
-  }
-  return value;
+    if (!header) return undefined;
+    let value: string | undefined;
+    for (const part of header.split(';')) {
+        const eq = part.indexOf('=');
+        if (eq < 0) continue;
+        if (part.slice(0, eq).trim() === name) value = part.slice(eq + 1).trim();
+    }
+    return value;
 }
 
 /** The page a browser gets without the token (text only: nothing of the app is revealed). */
 export function loginPage(): string {
-  return `<!doctype html>
+    return `<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><title>maa-ide: token required</title></head>
 <body style="font-family: sans-serif; max-width: 40em; margin: 3em auto">
 <h1>maa-ide needs its token</h1>

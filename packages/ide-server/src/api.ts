@@ -11,13 +11,13 @@ import type { SimMode, SimSessions } from './sim-session.js';
 import type { Workspace } from './workspace.js';
 
 export interface ApiOptions {
-  workspace: Workspace;
-  generation: GenerationService;
-  sims: SimSessions;
-  /** Largest accepted file body (PUT /api/file). */
-  maxFileBytes: number;
-  /** What error bodies and simulator logs pass through (no absolute paths). */
-  redact?: Redact;
+    workspace: Workspace;
+    generation: GenerationService;
+    sims: SimSessions;
+    /** Largest accepted file body (PUT /api/file). */
+    maxFileBytes: number;
+    /** What error bodies and simulator logs pass through (no absolute paths). */
+    redact?: Redact;
 }
 
 const OK: OkAnswer = { ok: true };
@@ -27,91 +27,97 @@ const MODE_KIND: Record<SimMode, string> = { lockstep: 'timesync', ros2: 'ros2' 
 
 /** The routes of docs/ide.md "Backend HTTP API". */
 export function createApiRouter({ workspace, generation, sims, maxFileBytes, redact }: ApiOptions): Router {
-  const router = new Router(redact);
+    const router = new Router(redact);
 
-  router.on('GET', '/api/files', async ({ res }) => {
-    sendJson(res, 200, { root: workspace.name, entries: await workspace.list() } satisfies FilesAnswer);
-  });
-
-  router.on('GET', '/api/file', async ({ res, query }) => {
-    sendText(res, 200, (await workspace.read(requireQuery(query, 'path'))).toString('utf8'));
-  });
-  router.on('PUT', '/api/file', async ({ req, res, query }) => {
-    const rel = requireQuery(query, 'path');
-    await workspace.write(rel, await readBody(req, maxFileBytes));
-    sendJson(res, 200, OK);
-  });
-  router.on('DELETE', '/api/file', async ({ res, query }) => {
-    await workspace.delete(requireQuery(query, 'path'));
-    sendJson(res, 200, OK);
-  });
-
-  router.on('GET', '/api/apps', async ({ res }) => {
-    sendJson(res, 200, { apps: await listApps(workspace) });
-  });
-
-  router.on('POST', '/api/generate', async ({ req, res }) => {
-    const body = await readRequest(req, requests.generate);
-    const { platformDir: _dir, ...answer } = await generation.generate(body.app, body.platform);
-    // Diagnostics of a failed write name the output folder: no absolute paths in answers.
-    sendJson(res, 200, (redact ? { ...answer, diagnostics: redact.value(answer.diagnostics) } : answer) satisfies GenerateAnswer);
-  });
-  router.on('GET', '/api/generated/file', async ({ res, query }) => {
-    const root = generation.platformRoot(requireQuery(query, 'app'), requireQuery(query, 'platform'));
-    const rel = requireQuery(query, 'path');
-    const abs = await root.resolve(rel);
-    const info = await stat(abs).catch(() => undefined);
-    if (!info?.isFile()) throw new HttpError(404, `not generated: ${rel}`);
-    sendText(res, 200, await readFile(abs, 'utf8'));
-  });
-  router.on('GET', '/api/generated/trace', async ({ res, query }) => {
-    const app = requireQuery(query, 'app');
-    const platform = requireQuery(query, 'platform');
-    const abs = await generation.platformRoot(app, platform).resolve('.maa-trace.json');
-    const text = await readFile(abs, 'utf8').catch(() => {
-      throw new HttpError(404, `no trace: ${app} has not been generated for ${platform}`);
+    router.on('GET', '/api/files', async ({ res }) => {
+        sendJson(res, 200, { root: workspace.name, entries: await workspace.list() } satisfies FilesAnswer);
     });
-    sendText(res, 200, text, 'application/json; charset=utf-8');
-  });
 
-  router.on('POST', '/api/sim/start', async ({ req, res }) => {
-    const { app: appPath, platform: platformName, speed, ...body } = await readRequest(req, requests.simStart);
-    const app = await readApp(workspace, appPath);
-    const platform = app?.platforms.find((p) => p.name === platformName);
-    if (!app || !platform) throw new HttpError(400, `${appPath} has no platform '${platformName}'`);
-    const mode = body.mode ?? (platform.kind === 'ros2' ? 'ros2' : 'lockstep');
-    if (platform.kind !== MODE_KIND[mode]) {
-      throw new HttpError(400, `${mode} mode needs a ${MODE_KIND[mode]} platform; '${platformName}' is a ${platform.kind || 'unknown'} platform`);
-    }
-    const generated = await generation.generate(appPath, platformName);
-    if (!generated.ok) {
-      const errors = generated.diagnostics.filter((d) => d.severity === 'error').length;
-      throw new HttpError(409, `generating ${platformName} failed with ${errors} error${errors === 1 ? '' : 's'}`, { diagnostics: generated.diagnostics });
-    }
-    const { session } = await sims.start({ app: appPath, platform: platformName, mode, speed, platformDir: generated.platformDir });
-    sendJson(res, 200, { ok: true, session, mode, rosbridge: ROSBRIDGE_PATH, viser: `${VISER_PATH}/` } satisfies SimStartAnswer);
-  });
-  // The port topics of a generated platform (run /api/generate or /api/sim/start first).
-  router.on('GET', '/api/sim/topics', async ({ res, query }) => {
-    const appPath = requireQuery(query, 'app');
-    const platformName = requireQuery(query, 'platform');
-    const app = await readApp(workspace, appPath);
-    const platform = app?.platforms.find((p) => p.name === platformName);
-    if (!app || !platform) throw new HttpError(400, `${appPath} has no platform '${platformName}'`);
-    const mode = (Object.keys(MODE_KIND) as SimMode[]).find((m) => MODE_KIND[m] === platform.kind);
-    if (!mode) throw new HttpError(400, `'${platformName}' is a ${platform.kind || 'unknown'} platform, which does not run in the simulator`);
-    generation.platformRoot(appPath, platformName); // checks the app path and the platform name
-    const platformDir = path.join(generation.appOutDir(appPath), platformName);
-    sendJson(res, 200, (await topicMap(platformDir, appPath, platformName, mode)) satisfies TopicMapAnswer);
-  });
-  router.on('POST', '/api/sim/stop', async ({ res }) => {
-    await sims.stop();
-    sendJson(res, 200, OK);
-  });
-  router.on('GET', '/api/sim/status', ({ res }) => {
-    const status = sims.status();
-    sendJson(res, 200, redact ? { ...status, log: redact.value(status.log) } : status);
-  });
+    router.on('GET', '/api/file', async ({ res, query }) => {
+        sendText(res, 200, (await workspace.read(requireQuery(query, 'path'))).toString('utf8'));
+    });
+    router.on('PUT', '/api/file', async ({ req, res, query }) => {
+        const rel = requireQuery(query, 'path');
+        await workspace.write(rel, await readBody(req, maxFileBytes));
+        sendJson(res, 200, OK);
+    });
+    router.on('DELETE', '/api/file', async ({ res, query }) => {
+        await workspace.delete(requireQuery(query, 'path'));
+        sendJson(res, 200, OK);
+    });
 
-  return router;
+    router.on('GET', '/api/apps', async ({ res }) => {
+        sendJson(res, 200, { apps: await listApps(workspace) });
+    });
+
+    router.on('POST', '/api/generate', async ({ req, res }) => {
+        const body = await readRequest(req, requests.generate);
+        const { platformDir: _dir, ...answer } = await generation.generate(body.app, body.platform);
+        // Diagnostics of a failed write name the output folder: no absolute paths in answers.
+        sendJson(res, 200, (redact ? { ...answer, diagnostics: redact.value(answer.diagnostics) } : answer) satisfies GenerateAnswer);
+    });
+    router.on('GET', '/api/generated/file', async ({ res, query }) => {
+        const root = generation.platformRoot(requireQuery(query, 'app'), requireQuery(query, 'platform'));
+        const rel = requireQuery(query, 'path');
+        const abs = await root.resolve(rel);
+        const info = await stat(abs).catch(() => undefined);
+        if (!info?.isFile()) throw new HttpError(404, `not generated: ${rel}`);
+        sendText(res, 200, await readFile(abs, 'utf8'));
+    });
+    router.on('GET', '/api/generated/trace', async ({ res, query }) => {
+        const app = requireQuery(query, 'app');
+        const platform = requireQuery(query, 'platform');
+        const abs = await generation.platformRoot(app, platform).resolve('.maa-trace.json');
+        const text = await readFile(abs, 'utf8').catch(() => {
+            throw new HttpError(404, `no trace: ${app} has not been generated for ${platform}`);
+        });
+        sendText(res, 200, text, 'application/json; charset=utf-8');
+    });
+
+    router.on('POST', '/api/sim/start', async ({ req, res }) => {
+        const { app: appPath, platform: platformName, speed, ...body } = await readRequest(req, requests.simStart);
+        const app = await readApp(workspace, appPath);
+        const platform = app?.platforms.find((p) => p.name === platformName);
+        if (!app || !platform) throw new HttpError(400, `${appPath} has no platform '${platformName}'`);
+        const mode = body.mode ?? (platform.kind === 'ros2' ? 'ros2' : 'lockstep');
+        if (platform.kind !== MODE_KIND[mode]) {
+            throw new HttpError(
+                400,
+                `${mode} mode needs a ${MODE_KIND[mode]} platform; '${platformName}' is a ${platform.kind || 'unknown'} platform`,
+            );
+        }
+        const generated = await generation.generate(appPath, platformName);
+        if (!generated.ok) {
+            const errors = generated.diagnostics.filter((d) => d.severity === 'error').length;
+            throw new HttpError(409, `generating ${platformName} failed with ${errors} error${errors === 1 ? '' : 's'}`, {
+                diagnostics: generated.diagnostics,
+            });
+        }
+        const { session } = await sims.start({ app: appPath, platform: platformName, mode, speed, platformDir: generated.platformDir });
+        sendJson(res, 200, { ok: true, session, mode, rosbridge: ROSBRIDGE_PATH, viser: `${VISER_PATH}/` } satisfies SimStartAnswer);
+    });
+    // The port topics of a generated platform (run /api/generate or /api/sim/start first).
+    router.on('GET', '/api/sim/topics', async ({ res, query }) => {
+        const appPath = requireQuery(query, 'app');
+        const platformName = requireQuery(query, 'platform');
+        const app = await readApp(workspace, appPath);
+        const platform = app?.platforms.find((p) => p.name === platformName);
+        if (!app || !platform) throw new HttpError(400, `${appPath} has no platform '${platformName}'`);
+        const mode = (Object.keys(MODE_KIND) as SimMode[]).find((m) => MODE_KIND[m] === platform.kind);
+        if (!mode)
+            throw new HttpError(400, `'${platformName}' is a ${platform.kind || 'unknown'} platform, which does not run in the simulator`);
+        generation.platformRoot(appPath, platformName); // checks the app path and the platform name
+        const platformDir = path.join(generation.appOutDir(appPath), platformName);
+        sendJson(res, 200, (await topicMap(platformDir, appPath, platformName, mode)) satisfies TopicMapAnswer);
+    });
+    router.on('POST', '/api/sim/stop', async ({ res }) => {
+        await sims.stop();
+        sendJson(res, 200, OK);
+    });
+    router.on('GET', '/api/sim/status', ({ res }) => {
+        const status = sims.status();
+        sendJson(res, 200, redact ? { ...status, log: redact.value(status.log) } : status);
+    });
+
+    return router;
 }

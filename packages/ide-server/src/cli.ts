@@ -4,49 +4,58 @@ import { tokenProblem } from './access.js';
 import { defaults, startIdeServer } from './server.js';
 
 function parsePort(value: string): number {
-  const port = Number(value);
-  if (!Number.isInteger(port) || port < 0 || port > 65535) throw new InvalidArgumentError('a TCP port from 0 (any free port) to 65535');
-  return port;
+    const port = Number(value);
+    if (!Number.isInteger(port) || port < 0 || port > 65535) throw new InvalidArgumentError('a TCP port from 0 (any free port) to 65535');
+    return port;
 }
 
 function parseSeconds(value: string): number {
-  const seconds = Number(value);
-  if (!Number.isFinite(seconds) || seconds <= 0) throw new InvalidArgumentError('a positive number of seconds');
-  return seconds;
+    const seconds = Number(value);
+    if (!Number.isFinite(seconds) || seconds <= 0) throw new InvalidArgumentError('a positive number of seconds');
+    return seconds;
 }
 
 function parseToken(value: string): string {
-  const problem = tokenProblem(value);
-  if (problem) throw new InvalidArgumentError(problem);
-  return value;
+    const problem = tokenProblem(value);
+    if (problem) throw new InvalidArgumentError(problem);
+    return value;
 }
 
 interface CliOptions {
-  workspace: string;
-  port: number;
-  host: string;
-  appDir: string;
-  maaSim: string;
-  ros2Venv: string;
-  token?: string;
-  sessionIdle: number;
+    workspace: string;
+    port: number;
+    host: string;
+    appDir: string;
+    maaSim: string;
+    ros2Venv: string;
+    token?: string;
+    sessionIdle: number;
 }
 
 export function createProgram(): Command {
-  return new Command('maa-ide')
-    .description('the IDE backend: serves the browser IDE, the workspace, code generation and simulation sessions on one origin')
-    .option('-w, --workspace <dir>', 'the folder to edit', process.cwd())
-    .option('-p, --port <n>', 'HTTP port (0 = any free port)', parsePort, defaults.port)
-    .option('--host <address>', 'address to listen on', defaults.host)
-    .option('--app-dir <dir>', 'the built web app', defaults.appDir)
-    .option('--maa-sim <path>', "the simulator's maa-sim executable (lockstep sessions)", defaults.maaSim)
-    .option('--ros2-venv <dir>', 'the Python venv of ROS 2 sessions (rclpy, rosidl, maa-sim; the default one is set up when missing)', defaults.ros2Venv)
-    .option('--token <t>', 'the secret every request must carry (default: $MAA_IDE_TOKEN, else a new random one per start)', parseToken)
-    .option('--session-idle <seconds>', 'a simulation ends when no client was connected for this long', parseSeconds, defaults.sessionIdleSeconds)
-    .helpOption('-h, --help', 'show help')
-    .addHelpText(
-      'after',
-      `
+    return new Command('maa-ide')
+        .description('the IDE backend: serves the browser IDE, the workspace, code generation and simulation sessions on one origin')
+        .option('-w, --workspace <dir>', 'the folder to edit', process.cwd())
+        .option('-p, --port <n>', 'HTTP port (0 = any free port)', parsePort, defaults.port)
+        .option('--host <address>', 'address to listen on', defaults.host)
+        .option('--app-dir <dir>', 'the built web app', defaults.appDir)
+        .option('--maa-sim <path>', "the simulator's maa-sim executable (lockstep sessions)", defaults.maaSim)
+        .option(
+            '--ros2-venv <dir>',
+            'the Python venv of ROS 2 sessions (rclpy, rosidl, maa-sim; the default one is set up when missing)',
+            defaults.ros2Venv,
+        )
+        .option('--token <t>', 'the secret every request must carry (default: $MAA_IDE_TOKEN, else a new random one per start)', parseToken)
+        .option(
+            '--session-idle <seconds>',
+            'a simulation ends when no client was connected for this long',
+            parseSeconds,
+            defaults.sessionIdleSeconds,
+        )
+        .helpOption('-h, --help', 'show help')
+        .addHelpText(
+            'after',
+            `
 Access (docs/ide.md): open the URL maa-ide prints (http://127.0.0.1:<port>/?token=...); the
 browser keeps the token in the cookie maa-ide-token-<port>. Scripts send "Authorization: Bearer
 <token>". Only requests to 127.0.0.1, localhost, [::1] or --host (with the served port) are
@@ -65,69 +74,69 @@ Examples:
   maa-ide --workspace ~/models --port 0      (prints the port it got)
   MAA_IDE_TOKEN=$(openssl rand -hex 32) maa-ide --workspace .maa-workspace
   curl -H "Authorization: Bearer $MAA_IDE_TOKEN" http://127.0.0.1:3000/api/files`,
-    );
+        );
 }
 
 /** Entry point of the `maa-ide` bin. */
 export function run(argv: readonly string[]): void {
-  const program = createProgram().exitOverride();
-  try {
-    program.parse([...argv]);
-  } catch (e) {
-    // Commander printed the message (or the help); a usage error exits 2 like a failed start.
-    process.exit(e instanceof CommanderError && e.exitCode === 0 ? 0 : 2);
-  }
-  const options = program.opts<CliOptions>();
-  const workspace = path.resolve(options.workspace);
-  const fromEnv = process.env['MAA_IDE_TOKEN'];
-  // Nothing maa-ide starts (setup scripts, the simulator, the user's components) needs it.
-  delete process.env['MAA_IDE_TOKEN'];
-  let token = options.token;
-  if (token === undefined && fromEnv !== undefined && fromEnv !== '') {
-    const problem = tokenProblem(fromEnv);
-    if (problem) {
-      console.error(`maa-ide: error: MAA_IDE_TOKEN: ${problem}`);
-      process.exit(2);
+    const program = createProgram().exitOverride();
+    try {
+        program.parse([...argv]);
+    } catch (e) {
+        // Commander printed the message (or the help); a usage error exits 2 like a failed start.
+        process.exit(e instanceof CommanderError && e.exitCode === 0 ? 0 : 2);
     }
-    token = fromEnv;
-  }
-  startIdeServer({
-    workspace,
-    port: options.port,
-    host: options.host,
-    appDir: options.appDir,
-    maaSim: options.maaSim,
-    ros2Venv: options.ros2Venv,
-    token,
-    sessionIdleSeconds: options.sessionIdle,
-  }).then(
-    (server) => {
-      console.log(`maa-ide: serving ${workspace} at ${server.loginUrl}`);
-      let stopping = false;
-      const stop = (signal: NodeJS.Signals): void => {
-        if (stopping) {
-          // A second Ctrl-C while the simulator shuts down: do not wait any longer.
-          console.error(`maa-ide: ${signal} again, exiting at once`);
-          process.exit(130);
+    const options = program.opts<CliOptions>();
+    const workspace = path.resolve(options.workspace);
+    const fromEnv = process.env['MAA_IDE_TOKEN'];
+    // Nothing maa-ide starts (setup scripts, the simulator, the user's components) needs it.
+    delete process.env['MAA_IDE_TOKEN'];
+    let token = options.token;
+    if (token === undefined && fromEnv !== undefined && fromEnv !== '') {
+        const problem = tokenProblem(fromEnv);
+        if (problem) {
+            console.error(`maa-ide: error: MAA_IDE_TOKEN: ${problem}`);
+            process.exit(2);
         }
-        stopping = true;
-        console.log(`maa-ide: ${signal}, shutting down`);
-        server.close().then(
-          () => process.exit(0),
-          (e: unknown) => {
-            console.error(`maa-ide: error while shutting down: ${(e as Error).message}`);
-            process.exit(1);
-          },
-        );
-      };
-      process.on('SIGINT', stop);
-      process.on('SIGTERM', stop);
-    },
-    (e: unknown) => {
-      const err = e as NodeJS.ErrnoException;
-      const message = err.code === 'EADDRINUSE' ? `port ${options.port} on ${options.host} is in use (try --port 0)` : err.message;
-      console.error(`maa-ide: error: ${message}`);
-      process.exit(2);
-    },
-  );
+        token = fromEnv;
+    }
+    startIdeServer({
+        workspace,
+        port: options.port,
+        host: options.host,
+        appDir: options.appDir,
+        maaSim: options.maaSim,
+        ros2Venv: options.ros2Venv,
+        token,
+        sessionIdleSeconds: options.sessionIdle,
+    }).then(
+        (server) => {
+            console.log(`maa-ide: serving ${workspace} at ${server.loginUrl}`);
+            let stopping = false;
+            const stop = (signal: NodeJS.Signals): void => {
+                if (stopping) {
+                    // A second Ctrl-C while the simulator shuts down: do not wait any longer.
+                    console.error(`maa-ide: ${signal} again, exiting at once`);
+                    process.exit(130);
+                }
+                stopping = true;
+                console.log(`maa-ide: ${signal}, shutting down`);
+                server.close().then(
+                    () => process.exit(0),
+                    (e: unknown) => {
+                        console.error(`maa-ide: error while shutting down: ${(e as Error).message}`);
+                        process.exit(1);
+                    },
+                );
+            };
+            process.on('SIGINT', stop);
+            process.on('SIGTERM', stop);
+        },
+        (e: unknown) => {
+            const err = e as NodeJS.ErrnoException;
+            const message = err.code === 'EADDRINUSE' ? `port ${options.port} on ${options.host} is in use (try --port 0)` : err.message;
+            console.error(`maa-ide: error: ${message}`);
+            process.exit(2);
+        },
+    );
 }

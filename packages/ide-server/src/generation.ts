@@ -12,7 +12,7 @@ export type { GenerateAnswer, IdeDiagnostic } from '@maa/protocol';
 
 /** The folder of a generated platform (absolute) next to what the answer reports. */
 export interface GenerationOutcome extends GenerateAnswer {
-  platformDir: string;
+    platformDir: string;
 }
 
 /**
@@ -21,96 +21,100 @@ export interface GenerationOutcome extends GenerateAnswer {
  * language services are not shared between runs (every run loads the model root afresh).
  */
 export class GenerationService {
-  private queue: Promise<unknown> = Promise.resolve();
+    private queue: Promise<unknown> = Promise.resolve();
 
-  /**
-   * @param outRoot the backend's output folder: `<app path>/<platform>/` below it
-   * @param discoveryRoots further folders generators are discovered from (the backend's installation)
-   */
-  constructor(private readonly workspace: Workspace, readonly outRoot: string, private readonly discoveryRoots: readonly string[]) {}
+    /**
+     * @param outRoot the backend's output folder: `<app path>/<platform>/` below it
+     * @param discoveryRoots further folders generators are discovered from (the backend's installation)
+     */
+    constructor(
+        private readonly workspace: Workspace,
+        readonly outRoot: string,
+        private readonly discoveryRoots: readonly string[],
+    ) {}
 
-  /** The output folder (of every platform) of an application, after checking the app path's syntax. */
-  appOutDir(app: string): string {
-    return path.join(this.outRoot, ...checkRelativePath(app, 'app'));
-  }
-
-  /** Confinement for reading one generated platform's files. */
-  platformRoot(app: string, platform: string): ConfinedRoot {
-    checkPlatformName(platform);
-    return new ConfinedRoot(path.join(this.appOutDir(app), platform), `the generated output of ${app} (${platform})`);
-  }
-
-  generate(app: string, platform: string): Promise<GenerationOutcome> {
-    const run = this.queue.then(() => this.run(app, platform));
-    this.queue = run.catch(() => undefined);
-    return run;
-  }
-
-  private async run(app: string, platform: string): Promise<GenerationOutcome> {
-    checkPlatformName(platform);
-    if (!app.endsWith('.arcapp')) throw new HttpError(400, `not an application configuration (expected .arcapp): ${app}`);
-    const appFile = await this.workspace.confined.resolve(app, 'app');
-    if (!existsSync(appFile) || !statSync(appFile).isFile()) throw new HttpError(404, `not found: ${app}`);
-    const outDir = this.appOutDir(app);
-    const [{ createMaaServices }, { generate, GenerateInputError }, { NodeFileSystem }] = await Promise.all([
-      import('@maa/language-server'),
-      import('@maa/generator-core/node'),
-      import('langium/node'),
-    ]);
-    let result;
-    try {
-      result = await generate({
-        services: createMaaServices(NodeFileSystem),
-        appFile,
-        modelRoot: this.modelRootOf(appFile),
-        platforms: [platform],
-        outDir,
-        discoveryRoots: this.discoveryRoots,
-      });
-    } catch (e) {
-      if (e instanceof GenerateInputError) throw new HttpError(400, e.message);
-      throw e;
+    /** The output folder (of every platform) of an application, after checking the app path's syntax. */
+    appOutDir(app: string): string {
+        return path.join(this.outRoot, ...checkRelativePath(app, 'app'));
     }
-    const platformDir = path.join(outDir, platform);
-    const generated = result.platforms.find((p) => p.platform === platform);
-    const files = generated
-      ? await Promise.all(
-          [...generated.files].sort().map(async (f) => ({ path: f, size: (await stat(path.join(platformDir, f))).size })),
-        )
-      : [];
-    return { ok: result.ok, platform, files, diagnostics: result.diagnostics.map((d) => this.toIde(d)), platformDir };
-  }
 
-  /**
-   * The model root of the app by the one rule of `resolveModelRoot` (docs/user-guide.md, "Model
-   * roots"), inside the workspace; an `.arcapp` declares no package, so nothing is read.
-   */
-  private modelRootOf(appFile: string): string {
-    const posix = (p: string): string => p.split(path.sep).join('/');
-    const root = resolveModelRoot(posix(appFile), {
-      hasMarker: (folder) => existsSync(path.join(folder, MODEL_ROOT_MARKER)),
-      stopAt: posix(path.resolve(this.workspace.root)),
-    });
-    return path.resolve(root.split('/').join(path.sep) || path.sep);
-  }
+    /** Confinement for reading one generated platform's files. */
+    platformRoot(app: string, platform: string): ConfinedRoot {
+        checkPlatformName(platform);
+        return new ConfinedRoot(path.join(this.appOutDir(app), platform), `the generated output of ${app} (${platform})`);
+    }
 
-  private toIde(d: CheckDiagnostic): IdeDiagnostic {
-    const rel = path.relative(this.workspace.root, d.file);
-    const file = rel.startsWith('..') || path.isAbsolute(rel) ? d.file : rel.split(path.sep).join('/');
-    return {
-      file,
-      range: {
-        start: { line: Math.max(0, d.line - 1), character: Math.max(0, d.column - 1) },
-        end: { line: Math.max(0, d.endLine - 1), character: Math.max(0, d.endColumn - 1) },
-      },
-      severity: d.severity,
-      code: d.code,
-      message: d.message,
-    };
-  }
+    generate(app: string, platform: string): Promise<GenerationOutcome> {
+        const run = this.queue.then(() => this.run(app, platform));
+        this.queue = run.catch(() => undefined);
+        return run;
+    }
+
+    private async run(app: string, platform: string): Promise<GenerationOutcome> {
+        checkPlatformName(platform);
+        if (!app.endsWith('.arcapp')) throw new HttpError(400, `not an application configuration (expected .arcapp): ${app}`);
+        const appFile = await this.workspace.confined.resolve(app, 'app');
+        if (!existsSync(appFile) || !statSync(appFile).isFile()) throw new HttpError(404, `not found: ${app}`);
+        const outDir = this.appOutDir(app);
+        const [{ createMaaServices }, { generate, GenerateInputError }, { NodeFileSystem }] = await Promise.all([
+            import('@maa/language-server'),
+            import('@maa/generator-core/node'),
+            import('langium/node'),
+        ]);
+        let result: Awaited<ReturnType<typeof import('@maa/generator-core/node').generate>>;
+        try {
+            result = await generate({
+                services: createMaaServices(NodeFileSystem),
+                appFile,
+                modelRoot: this.modelRootOf(appFile),
+                platforms: [platform],
+                outDir,
+                discoveryRoots: this.discoveryRoots,
+            });
+        } catch (e) {
+            if (e instanceof GenerateInputError) throw new HttpError(400, e.message);
+            throw e;
+        }
+        const platformDir = path.join(outDir, platform);
+        const generated = result.platforms.find((p) => p.platform === platform);
+        const files = generated
+            ? await Promise.all(
+                  [...generated.files].sort().map(async (f) => ({ path: f, size: (await stat(path.join(platformDir, f))).size })),
+              )
+            : [];
+        return { ok: result.ok, platform, files, diagnostics: result.diagnostics.map((d) => this.toIde(d)), platformDir };
+    }
+
+    /**
+     * The model root of the app by the one rule of `resolveModelRoot` (docs/user-guide.md, "Model
+     * roots"), inside the workspace; an `.arcapp` declares no package, so nothing is read.
+     */
+    private modelRootOf(appFile: string): string {
+        const posix = (p: string): string => p.split(path.sep).join('/');
+        const root = resolveModelRoot(posix(appFile), {
+            hasMarker: (folder) => existsSync(path.join(folder, MODEL_ROOT_MARKER)),
+            stopAt: posix(path.resolve(this.workspace.root)),
+        });
+        return path.resolve(root.split('/').join(path.sep) || path.sep);
+    }
+
+    private toIde(d: CheckDiagnostic): IdeDiagnostic {
+        const rel = path.relative(this.workspace.root, d.file);
+        const file = rel.startsWith('..') || path.isAbsolute(rel) ? d.file : rel.split(path.sep).join('/');
+        return {
+            file,
+            range: {
+                start: { line: Math.max(0, d.line - 1), character: Math.max(0, d.column - 1) },
+                end: { line: Math.max(0, d.endLine - 1), character: Math.max(0, d.endColumn - 1) },
+            },
+            severity: d.severity,
+            code: d.code,
+            message: d.message,
+        };
+    }
 }
 
 /** A platform name is one path segment (it names the output folder). */
 export function checkPlatformName(platform: string): void {
-  if (!/^[A-Za-z_][A-Za-z0-9_-]*$/.test(platform)) throw new HttpError(400, `invalid platform name: ${JSON.stringify(platform)}`);
+    if (!/^[A-Za-z_][A-Za-z0-9_-]*$/.test(platform)) throw new HttpError(400, `invalid platform name: ${JSON.stringify(platform)}`);
 }

@@ -9,13 +9,13 @@ import { readdirSync, readFileSync } from 'node:fs';
 
 /** `/proc/<pid>/stat` → [ppid, pgid]; the command name (field 2) may hold blanks and parentheses. */
 function parentAndGroup(pid: string): [number, number] | undefined {
-  try {
-    const stat = readFileSync(`/proc/${pid}/stat`, 'utf8');
-    const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
-    return [Number(fields[1]), Number(fields[2])];
-  } catch {
-    return undefined; // gone meanwhile, or no /proc (not Linux)
-  }
+    try {
+        const stat = readFileSync(`/proc/${pid}/stat`, 'utf8');
+        const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
+        return [Number(fields[1]), Number(fields[2])];
+    } catch {
+        return undefined; // gone meanwhile, or no /proc (not Linux)
+    }
 }
 
 /**
@@ -23,57 +23,57 @@ function parentAndGroup(pid: string): [number, number] | undefined {
  * Synchronous: it also runs in a `process.on('exit')` handler.
  */
 export function descendantGroups(pid: number): number[] {
-  let names: string[];
-  try {
-    names = readdirSync('/proc').filter((n) => /^\d+$/.test(n));
-  } catch {
-    return [];
-  }
-  const children = new Map<number, number[]>();
-  const groupOf = new Map<number, number>();
-  for (const name of names) {
-    const info = parentAndGroup(name);
-    if (!info) continue;
-    const [ppid, pgid] = info;
-    const p = Number(name);
-    groupOf.set(p, pgid);
-    const list = children.get(ppid);
-    if (list) list.push(p);
-    else children.set(ppid, [p]);
-  }
-  const groups = new Set<number>();
-  const queue = [...(children.get(pid) ?? [])];
-  while (queue.length > 0) {
-    const p = queue.pop()!;
-    const g = groupOf.get(p);
-    if (g !== undefined && g !== pid && g > 1) groups.add(g);
-    queue.push(...(children.get(p) ?? []));
-  }
-  return [...groups];
+    let names: string[];
+    try {
+        names = readdirSync('/proc').filter((n) => /^\d+$/.test(n));
+    } catch {
+        return [];
+    }
+    const children = new Map<number, number[]>();
+    const groupOf = new Map<number, number>();
+    for (const name of names) {
+        const info = parentAndGroup(name);
+        if (!info) continue;
+        const [ppid, pgid] = info;
+        const p = Number(name);
+        groupOf.set(p, pgid);
+        const list = children.get(ppid);
+        if (list) list.push(p);
+        else children.set(ppid, [p]);
+    }
+    const groups = new Set<number>();
+    const queue = [...(children.get(pid) ?? [])];
+    while (queue.length > 0) {
+        const p = queue.pop()!;
+        const g = groupOf.get(p);
+        if (g !== undefined && g !== pid && g > 1) groups.add(g);
+        queue.push(...(children.get(p) ?? []));
+    }
+    return [...groups];
 }
 
 /** Signals a whole process group; false when it no longer exists. */
 export function signalGroup(pgid: number, signal: NodeJS.Signals | 0): boolean {
-  try {
-    process.kill(-pgid, signal);
-    return true;
-  } catch (e) {
-    // EPERM: members we may not signal; nothing more we can do about them.
-    return (e as NodeJS.ErrnoException).code === 'EPERM';
-  }
+    try {
+        process.kill(-pgid, signal);
+        return true;
+    } catch (e) {
+        // EPERM: members we may not signal; nothing more we can do about them.
+        return (e as NodeJS.ErrnoException).code === 'EPERM';
+    }
 }
 
 /** Whether any process of the group is left. */
 export function groupAlive(pgid: number): boolean {
-  return signalGroup(pgid, 0);
+    return signalGroup(pgid, 0);
 }
 
 /** Whether a process with this id exists (EPERM: it does, as another user's; a zombie counts until reaped). */
 export function processAlive(pid: number): boolean {
-  try {
-    process.kill(pid, 0);
-    return true;
-  } catch (e) {
-    return (e as NodeJS.ErrnoException).code === 'EPERM';
-  }
+    try {
+        process.kill(pid, 0);
+        return true;
+    } catch (e) {
+        return (e as NodeJS.ErrnoException).code === 'EPERM';
+    }
 }

@@ -1,6 +1,6 @@
 import { spawn, type ChildProcess } from 'node:child_process';
 import { randomBytes, randomUUID } from 'node:crypto';
-import { existsSync, readdirSync } from 'node:fs';
+import { type Dirent, existsSync, readdirSync } from 'node:fs';
 import { connect } from 'node:net';
 import path from 'node:path';
 import { createInterface } from 'node:readline';
@@ -24,50 +24,50 @@ const ROS2_SUPERVISION = ['--startup-timeout', '60', '--hang-timeout', '15'];
 
 /** What a session starts (the validated request of `POST /api/sim/start` with the generated folder). */
 export interface SimStartRequest {
-  app: string;
-  platform: string;
-  mode: SimMode;
-  /** Simulated seconds per wall second; undefined leaves maa-sim's default. */
-  speed?: number;
-  /** The generated platform folder. */
-  platformDir: string;
+    app: string;
+    platform: string;
+    mode: SimMode;
+    /** Simulated seconds per wall second; undefined leaves maa-sim's default. */
+    speed?: number;
+    /** The generated platform folder. */
+    platformDir: string;
 }
 
 export interface SimEndpoints {
-  rosbridge: URL;
-  viser: URL | undefined;
+    rosbridge: URL;
+    viser: URL | undefined;
 }
 
 /** Where the proxy sends a session's traffic, with the secret maa-sim requires (`MAA_SIM_TOKEN`). */
 export interface SimTarget extends SimEndpoints {
-  token: string;
+    token: string;
 }
 
 export interface SimSessionOptions {
-  /** How long a simulation may take to become ready (default 90 s). */
-  readyTimeoutMs?: number;
-  /** A session ends when it had no client for this long (default 60 s; docs/ide.md "Simulation sessions"). */
-  idleMs?: number;
-  /** How long a stop waits after SIGTERM before SIGKILL (default 8 s). */
-  stopGraceMs?: number;
+    /** How long a simulation may take to become ready (default 90 s). */
+    readyTimeoutMs?: number;
+    /** A session ends when it had no client for this long (default 60 s; docs/ide.md "Simulation sessions"). */
+    idleMs?: number;
+    /** How long a stop waits after SIGTERM before SIGKILL (default 8 s). */
+    stopGraceMs?: number;
 }
 
 interface Session {
-  id: string;
-  request: SimStartRequest;
-  /** Set while the environment is prepared (ros2: venv setup, interface build), before maa-sim runs. */
-  preparing?: AbortController;
-  /** maa-sim, once spawned (the leader of its own process group). */
-  child?: ChildProcess;
-  /** The bearer token maa-sim's endpoints require (passed as MAA_SIM_TOKEN). */
-  token: string;
-  /** Open proxied WebSockets of this session. */
-  clients: number;
-  idleTimer?: NodeJS.Timeout;
-  log: string[];
-  endpoints?: SimEndpoints;
-  exitCode?: number | null;
-  exited?: Promise<void>;
+    id: string;
+    request: SimStartRequest;
+    /** Set while the environment is prepared (ros2: venv setup, interface build), before maa-sim runs. */
+    preparing?: AbortController;
+    /** maa-sim, once spawned (the leader of its own process group). */
+    child?: ChildProcess;
+    /** The bearer token maa-sim's endpoints require (passed as MAA_SIM_TOKEN). */
+    token: string;
+    /** Open proxied WebSockets of this session. */
+    clients: number;
+    idleTimer?: NodeJS.Timeout;
+    log: string[];
+    endpoints?: SimEndpoints;
+    exitCode?: number | null;
+    exited?: Promise<void>;
 }
 
 /** `GET /api/sim/status` (@maa/protocol). */
@@ -81,307 +81,327 @@ export type SimStatus = SimStatusAnswer;
  * we picked. Start and stop are serialized; a crashed child stays visible in the status.
  */
 export class SimSessions {
-  private current: Session | undefined;
-  private lock: Promise<unknown> = Promise.resolve();
-  private readonly readyTimeoutMs: number;
-  private readonly idleMs: number;
-  private readonly stopGraceMs: number;
-  /** Kills the running session's processes when the backend exits, however it exits. */
-  private readonly onExit = (): void => this.killNow();
+    private current: Session | undefined;
+    private lock: Promise<unknown> = Promise.resolve();
+    private readonly readyTimeoutMs: number;
+    private readonly idleMs: number;
+    private readonly stopGraceMs: number;
+    /** Kills the running session's processes when the backend exits, however it exits. */
+    private readonly onExit = (): void => this.killNow();
 
-  /**
-   * @param maaSim the maa-sim of lockstep sessions (and of ros2 ones when there is no `ros2` environment)
-   * @param ros2 the environment ros2 sessions run in (its maa-sim, the interface packages installed into it)
-   */
-  constructor(
-    private readonly maaSim: string,
-    options: SimSessionOptions = {},
-    private readonly ros2?: Ros2Environment,
-  ) {
-    this.readyTimeoutMs = options.readyTimeoutMs ?? 90_000;
-    this.idleMs = options.idleMs ?? 60_000;
-    this.stopGraceMs = options.stopGraceMs ?? 8_000;
-    process.on('exit', this.onExit);
-  }
-
-  /** The endpoints and token of the running session (undefined when none runs). */
-  target(): SimTarget | undefined {
-    const s = this.current;
-    return s?.child && s.exitCode === undefined && s.endpoints ? { ...s.endpoints, token: s.token } : undefined;
-  }
-
-  /** The running session's process group (maa-sim's pid), for tests and diagnostics. */
-  processGroup(): number | undefined {
-    const s = this.current;
-    return s?.child && s.exitCode === undefined ? s.child.pid : undefined;
-  }
-
-  /**
-   * A client (a proxied WebSocket) of the running session opened; call the returned function
-   * when it closes. The session does not idle out while it has clients.
-   */
-  clientOpened(): () => void {
-    const s = this.current;
-    if (!s) return () => undefined;
-    s.clients++;
-    clearTimeout(s.idleTimer);
-    let released = false;
-    return () => {
-      if (released) return;
-      released = true;
-      s.clients--;
-      if (s.clients === 0) this.armIdle(s);
-    };
-  }
-
-  /** A request about the simulation (`/api/sim/*`, proxied HTTP): the idle time starts again. */
-  signOfLife(): void {
-    const s = this.current;
-    if (s?.endpoints && s.exitCode === undefined && s.clients === 0) this.armIdle(s);
-  }
-
-  /** Stops listening for the backend's exit (the server closed; stop() ran before). */
-  dispose(): void {
-    process.off('exit', this.onExit);
-    this.killNow();
-  }
-
-  private armIdle(s: Session): void {
-    clearTimeout(s.idleTimer);
-    s.idleTimer = setTimeout(() => {
-      if (this.current !== s || s.clients > 0 || s.exitCode !== undefined) return;
-      s.log.push(`maa-ide: no client for ${this.idleMs / 1000} s, stopping the simulation`);
-      this.serialized(() => (this.current === s ? this.stopCurrent() : Promise.resolve())).catch(() => undefined);
-    }, this.idleMs);
-    s.idleTimer.unref();
-  }
-
-  /** SIGKILL for the running session's groups, synchronously (process exit). */
-  private killNow(): void {
-    const pid = this.processGroup();
-    if (pid === undefined) return;
-    for (const group of [pid, ...descendantGroups(pid)]) signalGroup(group, 'SIGKILL');
-  }
-
-  start(request: SimStartRequest): Promise<{ session: string }> {
-    return this.serialized(async () => {
-      await this.stopCurrent();
-      return this.spawnSession(request);
-    });
-  }
-
-  /** Stops the session; a start still preparing its environment is cancelled at once (its answer is 409). */
-  stop(): Promise<void> {
-    this.current?.preparing?.abort();
-    return this.serialized(() => this.stopCurrent());
-  }
-
-  status(): SimStatus {
-    const s = this.current;
-    if (!s) return { running: false, log: [] };
-    const running = s.child !== undefined && s.exitCode === undefined;
-    return {
-      running,
-      ...(s.preparing ? { preparing: true } : {}),
-      session: s.id,
-      mode: s.request.mode,
-      app: s.request.app,
-      platform: s.request.platform,
-      ...(running || s.exitCode === undefined ? {} : { exitCode: s.exitCode }),
-      log: s.log.slice(-STATUS_LOG_LINES),
-    };
-  }
-
-  private serialized<T>(body: () => Promise<T>): Promise<T> {
-    const run = this.lock.then(body);
-    this.lock = run.catch(() => undefined);
-    return run;
-  }
-
-  private async spawnSession(request: SimStartRequest): Promise<{ session: string }> {
-    const ros2 = request.mode === 'ros2' ? this.ros2 : undefined;
-    if (!ros2 && !existsSync(this.maaSim)) {
-      throw new HttpError(500, `the simulator is not installed (${this.maaSim} is missing); run "bash sim-server/scripts/setup_env.sh"`);
+    /**
+     * @param maaSim the maa-sim of lockstep sessions (and of ros2 ones when there is no `ros2` environment)
+     * @param ros2 the environment ros2 sessions run in (its maa-sim, the interface packages installed into it)
+     */
+    constructor(
+        private readonly maaSim: string,
+        options: SimSessionOptions = {},
+        private readonly ros2?: Ros2Environment,
+    ) {
+        this.readyTimeoutMs = options.readyTimeoutMs ?? 90_000;
+        this.idleMs = options.idleMs ?? 60_000;
+        this.stopGraceMs = options.stopGraceMs ?? 8_000;
+        process.on('exit', this.onExit);
     }
-    const packageDir = findPackageDir(request.platformDir, PACKAGE_FILE[request.mode]);
-    if (!packageDir) {
-      throw new HttpError(409, `the generated platform ${request.platform} has no ${PACKAGE_FILE[request.mode]}, so it cannot run in ${request.mode} mode`);
-    }
-    const log: string[] = [];
-    const push = (line: string): void => {
-      log.push(line);
-      if (log.length > LOG_LINES) log.splice(0, log.length - LOG_LINES);
-    };
-    let maaSim = this.maaSim;
-    const extraArgs: string[] = [];
-    if (ros2) {
-      // The session is visible (status: preparing, with the progress in its log) while the venv is
-      // set up and the interface package built; a stop cancels it.
-      const preparing = new AbortController();
-      const session: Session = { id: randomUUID(), request, log, preparing, token: '', clients: 0 };
-      this.current = session;
-      try {
-        maaSim = await ros2.prepare(request.platformDir, push, preparing.signal);
-      } catch (e) {
-        const message = e instanceof Error ? e.message : String(e);
-        push(`maa-ide: ${message.split('\n')[0]}`);
-        if (e instanceof HttpError && !(e.extra && 'log' in e.extra)) throw withLog(e.status, e.message, log);
-        throw e;
-      } finally {
-        delete session.preparing;
-      }
-    }
-    if (request.mode === 'ros2') extraArgs.push(...ROS2_SUPERVISION);
-    const args = ['run', '--package', packageDir, '--mode', request.mode, '--rosbridge-port', '0', '--viser-port', '0', '--host', '127.0.0.1', '--status-json', ...extraArgs];
-    if (request.speed !== undefined) args.push('--speed', String(request.speed));
-    if (request.mode === 'ros2') push(`maa-ide: starting ${maaSim} (ros2 mode)`);
-    const token = randomBytes(32).toString('base64url');
-    const env: NodeJS.ProcessEnv = { ...process.env, PYTHONUNBUFFERED: '1', MAA_SIM_TOKEN: token };
-    delete env['MAA_IDE_TOKEN']; // the simulation (it runs the user's components) needs only its own
-    // detached: a process group of its own, so a stop reaches everything maa-sim started.
-    const child = spawn(maaSim, args, { cwd: packageDir, stdio: ['ignore', 'pipe', 'pipe'], env, detached: true });
-    let markExited!: () => void;
-    const session: Session = {
-      id: this.current?.request === request ? this.current.id : randomUUID(),
-      request,
-      child,
-      log,
-      token,
-      clients: 0,
-      exited: new Promise<void>((resolve) => (markExited = resolve)),
-    };
-    this.current = session;
-    const ready = new Promise<SimEndpoints>((resolve, reject) => {
-      createInterface({ input: child.stdout! }).on('line', (line) => {
-        const endpoints = parseReadyLine(line);
-        if (endpoints) resolve(endpoints);
-        push(line);
-      });
-      createInterface({ input: child.stderr! }).on('line', push);
-      // 'close' comes after the last output line was read; 'exit' is the fallback should a
-      // grandchild keep the pipes open.
-      let finished = false;
-      const finish = (code: number | null, signal: NodeJS.Signals | null): void => {
-        if (finished) return;
-        finished = true;
-        session.exitCode = code ?? (signal ? null : -1);
-        clearTimeout(session.idleTimer);
-        // What maa-sim left in its group (it crashed, or was killed) goes with it.
-        if (child.pid !== undefined && groupAlive(child.pid)) signalGroup(child.pid, 'SIGKILL');
-        const how = signal ? `signal ${signal}` : `exit code ${code}`;
-        push(`maa-ide: maa-sim ended (${how})`);
-        markExited();
-        reject(withLog(500, `the simulator exited before it was ready (${how})`, session.log));
-      };
-      child.on('close', finish);
-      child.on('error', (e) => {
-        // Failing to spawn, or (rarely) to signal the process.
-        push(`maa-ide: maa-sim process error: ${e.message}`);
-        reject(new HttpError(500, `cannot start the simulator ${maaSim}: ${e.message}`));
-        if (child.pid === undefined) finish(null, null); // never started: no 'exit' will come
-      });
-      child.on('exit', (code, signal) => setTimeout(() => finish(code, signal), 2_000).unref());
-    });
-    // The race below may be decided by the timeout; a later rejection must not be unhandled.
-    ready.catch(() => undefined);
-    let timer: NodeJS.Timeout | undefined;
-    const timeout = new Promise<never>((_, reject) => {
-      timer = setTimeout(
-        () => reject(withLog(504, `the simulator was not ready after ${this.readyTimeoutMs / 1000} s`, session.log)),
-        this.readyTimeoutMs,
-      );
-    });
-    try {
-      const endpoints = await Promise.race([ready, timeout]);
-      await waitForPort(endpoints.rosbridge, 10_000);
-      session.endpoints = endpoints;
-      // A session nobody connects to ends like one whose clients left.
-      this.armIdle(session);
-      return { session: session.id };
-    } catch (e) {
-      await this.stopCurrent();
-      throw e;
-    } finally {
-      clearTimeout(timer);
-    }
-  }
 
-  /**
-   * SIGTERM to maa-sim's group (maa-sim then stops its nodes and exits 0); after the grace time
-   * SIGKILL to its group and the groups of its descendants, and once it exited SIGKILL to
-   * whatever of those groups is left.
-   */
-  private async stopCurrent(): Promise<void> {
-    const s = this.current;
-    const pid = s?.child?.pid;
-    if (!s?.exited || pid === undefined || s.exitCode !== undefined) return;
-    clearTimeout(s.idleTimer);
-    const groups = new Set([pid, ...descendantGroups(pid)]);
-    signalGroup(pid, 'SIGTERM');
-    const killed = setTimeout(() => {
-      for (const g of [...groups, ...descendantGroups(pid)]) signalGroup(g, 'SIGKILL');
-    }, this.stopGraceMs);
-    await s.exited;
-    clearTimeout(killed);
-    for (const g of groups) if (groupAlive(g)) signalGroup(g, 'SIGKILL');
-  }
+    /** The endpoints and token of the running session (undefined when none runs). */
+    target(): SimTarget | undefined {
+        const s = this.current;
+        return s?.child && s.exitCode === undefined && s.endpoints ? { ...s.endpoints, token: s.token } : undefined;
+    }
+
+    /** The running session's process group (maa-sim's pid), for tests and diagnostics. */
+    processGroup(): number | undefined {
+        const s = this.current;
+        return s?.child && s.exitCode === undefined ? s.child.pid : undefined;
+    }
+
+    /**
+     * A client (a proxied WebSocket) of the running session opened; call the returned function
+     * when it closes. The session does not idle out while it has clients.
+     */
+    clientOpened(): () => void {
+        const s = this.current;
+        if (!s) return () => undefined;
+        s.clients++;
+        clearTimeout(s.idleTimer);
+        let released = false;
+        return () => {
+            if (released) return;
+            released = true;
+            s.clients--;
+            if (s.clients === 0) this.armIdle(s);
+        };
+    }
+
+    /** A request about the simulation (`/api/sim/*`, proxied HTTP): the idle time starts again. */
+    signOfLife(): void {
+        const s = this.current;
+        if (s?.endpoints && s.exitCode === undefined && s.clients === 0) this.armIdle(s);
+    }
+
+    /** Stops listening for the backend's exit (the server closed; stop() ran before). */
+    dispose(): void {
+        process.off('exit', this.onExit);
+        this.killNow();
+    }
+
+    private armIdle(s: Session): void {
+        clearTimeout(s.idleTimer);
+        s.idleTimer = setTimeout(() => {
+            if (this.current !== s || s.clients > 0 || s.exitCode !== undefined) return;
+            s.log.push(`maa-ide: no client for ${this.idleMs / 1000} s, stopping the simulation`);
+            this.serialized(() => (this.current === s ? this.stopCurrent() : Promise.resolve())).catch(() => undefined);
+        }, this.idleMs);
+        s.idleTimer.unref();
+    }
+
+    /** SIGKILL for the running session's groups, synchronously (process exit). */
+    private killNow(): void {
+        const pid = this.processGroup();
+        if (pid === undefined) return;
+        for (const group of [pid, ...descendantGroups(pid)]) signalGroup(group, 'SIGKILL');
+    }
+
+    start(request: SimStartRequest): Promise<{ session: string }> {
+        return this.serialized(async () => {
+            await this.stopCurrent();
+            return this.spawnSession(request);
+        });
+    }
+
+    /** Stops the session; a start still preparing its environment is cancelled at once (its answer is 409). */
+    stop(): Promise<void> {
+        this.current?.preparing?.abort();
+        return this.serialized(() => this.stopCurrent());
+    }
+
+    status(): SimStatus {
+        const s = this.current;
+        if (!s) return { running: false, log: [] };
+        const running = s.child !== undefined && s.exitCode === undefined;
+        return {
+            running,
+            ...(s.preparing ? { preparing: true } : {}),
+            session: s.id,
+            mode: s.request.mode,
+            app: s.request.app,
+            platform: s.request.platform,
+            ...(running || s.exitCode === undefined ? {} : { exitCode: s.exitCode }),
+            log: s.log.slice(-STATUS_LOG_LINES),
+        };
+    }
+
+    private serialized<T>(body: () => Promise<T>): Promise<T> {
+        const run = this.lock.then(body);
+        this.lock = run.catch(() => undefined);
+        return run;
+    }
+
+    private async spawnSession(request: SimStartRequest): Promise<{ session: string }> {
+        const ros2 = request.mode === 'ros2' ? this.ros2 : undefined;
+        if (!ros2 && !existsSync(this.maaSim)) {
+            throw new HttpError(
+                500,
+                `the simulator is not installed (${this.maaSim} is missing); run "bash sim-server/scripts/setup_env.sh"`,
+            );
+        }
+        const packageDir = findPackageDir(request.platformDir, PACKAGE_FILE[request.mode]);
+        if (!packageDir) {
+            throw new HttpError(
+                409,
+                `the generated platform ${request.platform} has no ${PACKAGE_FILE[request.mode]}, so it cannot run in ${request.mode} mode`,
+            );
+        }
+        const log: string[] = [];
+        const push = (line: string): void => {
+            log.push(line);
+            if (log.length > LOG_LINES) log.splice(0, log.length - LOG_LINES);
+        };
+        let maaSim = this.maaSim;
+        const extraArgs: string[] = [];
+        if (ros2) {
+            // The session is visible (status: preparing, with the progress in its log) while the venv is
+            // set up and the interface package built; a stop cancels it.
+            const preparing = new AbortController();
+            const session: Session = { id: randomUUID(), request, log, preparing, token: '', clients: 0 };
+            this.current = session;
+            try {
+                maaSim = await ros2.prepare(request.platformDir, push, preparing.signal);
+            } catch (e) {
+                const message = e instanceof Error ? e.message : String(e);
+                push(`maa-ide: ${message.split('\n')[0]}`);
+                if (e instanceof HttpError && !(e.extra && 'log' in e.extra)) throw withLog(e.status, e.message, log);
+                throw e;
+            } finally {
+                delete session.preparing;
+            }
+        }
+        if (request.mode === 'ros2') extraArgs.push(...ROS2_SUPERVISION);
+        const args = [
+            'run',
+            '--package',
+            packageDir,
+            '--mode',
+            request.mode,
+            '--rosbridge-port',
+            '0',
+            '--viser-port',
+            '0',
+            '--host',
+            '127.0.0.1',
+            '--status-json',
+            ...extraArgs,
+        ];
+        if (request.speed !== undefined) args.push('--speed', String(request.speed));
+        if (request.mode === 'ros2') push(`maa-ide: starting ${maaSim} (ros2 mode)`);
+        const token = randomBytes(32).toString('base64url');
+        const env: NodeJS.ProcessEnv = { ...process.env, PYTHONUNBUFFERED: '1', MAA_SIM_TOKEN: token };
+        delete env['MAA_IDE_TOKEN']; // the simulation (it runs the user's components) needs only its own
+        // detached: a process group of its own, so a stop reaches everything maa-sim started.
+        const child = spawn(maaSim, args, { cwd: packageDir, stdio: ['ignore', 'pipe', 'pipe'], env, detached: true });
+        let markExited!: () => void;
+        const session: Session = {
+            id: this.current?.request === request ? this.current.id : randomUUID(),
+            request,
+            child,
+            log,
+            token,
+            clients: 0,
+            exited: new Promise<void>((resolve) => (markExited = resolve)),
+        };
+        this.current = session;
+        const ready = new Promise<SimEndpoints>((resolve, reject) => {
+            createInterface({ input: child.stdout! }).on('line', (line) => {
+                const endpoints = parseReadyLine(line);
+                if (endpoints) resolve(endpoints);
+                push(line);
+            });
+            createInterface({ input: child.stderr! }).on('line', push);
+            // 'close' comes after the last output line was read; 'exit' is the fallback should a
+            // grandchild keep the pipes open.
+            let finished = false;
+            const finish = (code: number | null, signal: NodeJS.Signals | null): void => {
+                if (finished) return;
+                finished = true;
+                session.exitCode = code ?? (signal ? null : -1);
+                clearTimeout(session.idleTimer);
+                // What maa-sim left in its group (it crashed, or was killed) goes with it.
+                if (child.pid !== undefined && groupAlive(child.pid)) signalGroup(child.pid, 'SIGKILL');
+                const how = signal ? `signal ${signal}` : `exit code ${code}`;
+                push(`maa-ide: maa-sim ended (${how})`);
+                markExited();
+                reject(withLog(500, `the simulator exited before it was ready (${how})`, session.log));
+            };
+            child.on('close', finish);
+            child.on('error', (e) => {
+                // Failing to spawn, or (rarely) to signal the process.
+                push(`maa-ide: maa-sim process error: ${e.message}`);
+                reject(new HttpError(500, `cannot start the simulator ${maaSim}: ${e.message}`));
+                if (child.pid === undefined) finish(null, null); // never started: no 'exit' will come
+            });
+            child.on('exit', (code, signal) => setTimeout(() => finish(code, signal), 2_000).unref());
+        });
+        // The race below may be decided by the timeout; a later rejection must not be unhandled.
+        ready.catch(() => undefined);
+        let timer: NodeJS.Timeout | undefined;
+        const timeout = new Promise<never>((_, reject) => {
+            timer = setTimeout(
+                () => reject(withLog(504, `the simulator was not ready after ${this.readyTimeoutMs / 1000} s`, session.log)),
+                this.readyTimeoutMs,
+            );
+        });
+        try {
+            const endpoints = await Promise.race([ready, timeout]);
+            await waitForPort(endpoints.rosbridge, 10_000);
+            session.endpoints = endpoints;
+            // A session nobody connects to ends like one whose clients left.
+            this.armIdle(session);
+            return { session: session.id };
+        } catch (e) {
+            await this.stopCurrent();
+            throw e;
+        } finally {
+            clearTimeout(timer);
+        }
+    }
+
+    /**
+     * SIGTERM to maa-sim's group (maa-sim then stops its nodes and exits 0); after the grace time
+     * SIGKILL to its group and the groups of its descendants, and once it exited SIGKILL to
+     * whatever of those groups is left.
+     */
+    private async stopCurrent(): Promise<void> {
+        const s = this.current;
+        const pid = s?.child?.pid;
+        if (!s?.exited || pid === undefined || s.exitCode !== undefined) return;
+        clearTimeout(s.idleTimer);
+        const groups = new Set([pid, ...descendantGroups(pid)]);
+        signalGroup(pid, 'SIGTERM');
+        const killed = setTimeout(() => {
+            for (const g of [...groups, ...descendantGroups(pid)]) signalGroup(g, 'SIGKILL');
+        }, this.stopGraceMs);
+        await s.exited;
+        clearTimeout(killed);
+        for (const g of groups) if (groupAlive(g)) signalGroup(g, 'SIGKILL');
+    }
 }
 
 /** An error whose message ends with the log tail; the answer also carries the tail as `log`. */
 function withLog(status: number, message: string, log: readonly string[]): HttpError {
-  const tail = log.slice(-STATUS_LOG_LINES);
-  return new HttpError(status, `${message}:\n${tail.slice(-20).join('\n')}`, { log: tail });
+    const tail = log.slice(-STATUS_LOG_LINES);
+    return new HttpError(status, `${message}:\n${tail.slice(-20).join('\n')}`, { log: tail });
 }
 
 /** `{"event": "ready", "rosbridge": "ws://...", "viser": "http://..."}` → its endpoints. */
 export function parseReadyLine(line: string): SimEndpoints | undefined {
-  if (!line.startsWith('{')) return undefined;
-  try {
-    const value = JSON.parse(line) as { event?: unknown; rosbridge?: unknown; viser?: unknown };
-    if (value.event !== 'ready' || typeof value.rosbridge !== 'string') return undefined;
-    return {
-      rosbridge: new URL(value.rosbridge.replace(/^ws/, 'http')),
-      viser: typeof value.viser === 'string' ? new URL(value.viser) : undefined,
-    };
-  } catch {
-    return undefined;
-  }
+    if (!line.startsWith('{')) return undefined;
+    try {
+        const value = JSON.parse(line) as { event?: unknown; rosbridge?: unknown; viser?: unknown };
+        if (value.event !== 'ready' || typeof value.rosbridge !== 'string') return undefined;
+        return {
+            rosbridge: new URL(value.rosbridge.replace(/^ws/, 'http')),
+            viser: typeof value.viser === 'string' ? new URL(value.viser) : undefined,
+        };
+    } catch {
+        return undefined;
+    }
 }
 
 /** The platform folder itself or a folder at most two levels below it that holds `file`. */
 export function findPackageDir(platformDir: string, file: string): string | undefined {
-  const queue: Array<[string, number]> = [[platformDir, 0]];
-  while (queue.length > 0) {
-    const [dir, depth] = queue.shift()!;
-    if (existsSync(path.join(dir, file))) return dir;
-    if (depth === 2) continue;
-    let entries;
-    try {
-      entries = readdirSync(dir, { withFileTypes: true });
-    } catch {
-      continue;
+    const queue: Array<[string, number]> = [[platformDir, 0]];
+    while (queue.length > 0) {
+        const [dir, depth] = queue.shift()!;
+        if (existsSync(path.join(dir, file))) return dir;
+        if (depth === 2) continue;
+        let entries: Dirent[];
+        try {
+            entries = readdirSync(dir, { withFileTypes: true });
+        } catch {
+            continue;
+        }
+        for (const e of entries.sort((a, b) => a.name.localeCompare(b.name))) {
+            if (e.isDirectory() && !e.name.startsWith('.')) queue.push([path.join(dir, e.name), depth + 1]);
+        }
     }
-    for (const e of entries.sort((a, b) => a.name.localeCompare(b.name))) {
-      if (e.isDirectory() && !e.name.startsWith('.')) queue.push([path.join(dir, e.name), depth + 1]);
-    }
-  }
-  return undefined;
+    return undefined;
 }
 
 /** Resolves once a TCP connection to the URL's port succeeds ("once its rosbridge answers"). */
 async function waitForPort(url: URL, timeoutMs: number): Promise<void> {
-  const deadline = Date.now() + timeoutMs;
-  for (;;) {
-    const ok = await new Promise<boolean>((resolve) => {
-      const socket = connect(Number(url.port), url.hostname);
-      socket.once('connect', () => {
-        socket.destroy();
-        resolve(true);
-      });
-      socket.once('error', () => resolve(false));
-    });
-    if (ok) return;
-    if (Date.now() > deadline) throw new HttpError(504, `the simulator's rosbridge (${url.host}) does not accept connections`);
-    await new Promise((r) => setTimeout(r, 100));
-  }
+    const deadline = Date.now() + timeoutMs;
+    for (;;) {
+        const ok = await new Promise<boolean>((resolve) => {
+            const socket = connect(Number(url.port), url.hostname);
+            socket.once('connect', () => {
+                socket.destroy();
+                resolve(true);
+            });
+            socket.once('error', () => resolve(false));
+        });
+        if (ok) return;
+        if (Date.now() > deadline) throw new HttpError(504, `the simulator's rosbridge (${url.host}) does not accept connections`);
+        await new Promise((r) => setTimeout(r, 100));
+    }
 }

@@ -7,40 +7,46 @@
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import {
-  deploymentContract, DEPLOYMENT_FILE_NAME, type Deployment, type InstanceNode, type PortTopicEntry, type SimMode, type TopicMapAnswer,
+    deploymentContract,
+    DEPLOYMENT_FILE_NAME,
+    type Deployment,
+    type InstanceNode,
+    type PortTopicEntry,
+    type SimMode,
+    type TopicMapAnswer,
 } from '@maa/protocol';
 import { HttpError } from './http-util.js';
 import { findPackageDir } from './sim-session.js';
 
 /** The instance path relative to the root: `toastServiceRobot.unit.ctrl` → `unit.ctrl` (the first segment is the root instance). */
 function relativeInstance(instance: string): string {
-  const dot = instance.indexOf('.');
-  return dot < 0 ? '' : instance.slice(dot + 1);
+    const dot = instance.indexOf('.');
+    return dot < 0 ? '' : instance.slice(dot + 1);
 }
 
 function entry(instancePath: string, port: string, direction: 'in' | 'out', topic: string, type: string): PortTopicEntry {
-  return { portPath: instancePath ? `${instancePath}.${port}` : port, instancePath, port, direction, topic, type, external: false };
+    return { portPath: instancePath ? `${instancePath}.${port}` : port, instancePath, port, direction, topic, type, external: false };
 }
 
 /** Marks the in ports whose topic no port publishes (fed from outside: root in ports, platform topics). */
 function markExternal(ports: PortTopicEntry[]): PortTopicEntry[] {
-  const published = new Set(ports.filter((p) => p.direction === 'out').map((p) => p.topic));
-  return ports.map((p) => (p.direction === 'in' && !published.has(p.topic) ? { ...p, external: true } : p));
+    const published = new Set(ports.filter((p) => p.direction === 'out').map((p) => p.topic));
+    return ports.map((p) => (p.direction === 'in' && !published.has(p.topic) ? { ...p, external: true } : p));
 }
 
 /** The port topics and nodes of a deployment (ros2). */
 export function fromDeployment(deployment: Deployment): { ports: PortTopicEntry[]; nodes: InstanceNode[] } {
-  const ports: PortTopicEntry[] = [];
-  const nodes: InstanceNode[] = [];
-  for (const node of deployment.nodes) {
-    if (node.instance === undefined) continue;
-    const instancePath = relativeInstance(node.instance);
-    const namespace = node.namespace ?? '/';
-    nodes.push({ instancePath, node: `${namespace === '/' ? '' : namespace}/${node.name}` });
-    for (const t of node.publishes ?? []) if (t.port) ports.push(entry(instancePath, t.port, 'out', t.topic, t.type));
-    for (const t of node.subscribes ?? []) if (t.port) ports.push(entry(instancePath, t.port, 'in', t.topic, t.type));
-  }
-  return { ports: markExternal(ports), nodes };
+    const ports: PortTopicEntry[] = [];
+    const nodes: InstanceNode[] = [];
+    for (const node of deployment.nodes) {
+        if (node.instance === undefined) continue;
+        const instancePath = relativeInstance(node.instance);
+        const namespace = node.namespace ?? '/';
+        nodes.push({ instancePath, node: `${namespace === '/' ? '' : namespace}/${node.name}` });
+        for (const t of node.publishes ?? []) if (t.port) ports.push(entry(instancePath, t.port, 'out', t.topic, t.type));
+        for (const t of node.subscribes ?? []) if (t.port) ports.push(entry(instancePath, t.port, 'in', t.topic, t.type));
+    }
+    return { ports: markExternal(ports), nodes };
 }
 
 /**
@@ -48,51 +54,51 @@ export function fromDeployment(deployment: Deployment): { ports: PortTopicEntry[
  * up to `}`. Returns the key and the value's quoted strings per line.
  */
 export function pythonTable(source: string, name: string): Array<[string, string[]]> {
-  const lines = source.split('\n');
-  const start = lines.findIndex((l) => l.startsWith(`${name}: `) && l.endsWith('= {'));
-  if (start < 0) throw new HttpError(409, `the generated app module has no ${name} table`);
-  const rows: Array<[string, string[]]> = [];
-  for (const line of lines.slice(start + 1)) {
-    if (line === '}') return rows;
-    const strings = [...line.matchAll(/"((?:[^"\\]|\\.)*)"/g)].map((m) => JSON.parse(`"${m[1]}"`) as string);
-    if (strings.length < 2) throw new HttpError(409, `unexpected line in the generated ${name} table: ${line.trim()}`);
-    rows.push([strings[0]!, strings.slice(1)]);
-  }
-  throw new HttpError(409, `the generated ${name} table is not closed`);
+    const lines = source.split('\n');
+    const start = lines.findIndex((l) => l.startsWith(`${name}: `) && l.endsWith('= {'));
+    if (start < 0) throw new HttpError(409, `the generated app module has no ${name} table`);
+    const rows: Array<[string, string[]]> = [];
+    for (const line of lines.slice(start + 1)) {
+        if (line === '}') return rows;
+        const strings = [...line.matchAll(/"((?:[^"\\]|\\.)*)"/g)].map((m) => JSON.parse(`"${m[1]}"`) as string);
+        if (strings.length < 2) throw new HttpError(409, `unexpected line in the generated ${name} table: ${line.trim()}`);
+        rows.push([strings[0]!, strings.slice(1)]);
+    }
+    throw new HttpError(409, `the generated ${name} table is not closed`);
 }
 
 /** The port topics and nodes of a timesync app module (`PORT_TOPICS`: out ports of atomic instances, in ports of the root). */
 export function fromAppModule(source: string): { ports: PortTopicEntry[]; nodes: InstanceNode[] } {
-  const ports = pythonTable(source, 'PORT_TOPICS').map(([key, [topic, type]]) => {
-    const dot = key.lastIndexOf('.');
-    return dot < 0 ? entry('', key, 'in', topic!, type ?? '') : entry(key.slice(0, dot), key.slice(dot + 1), 'out', topic!, type ?? '');
-  });
-  const nodes = pythonTable(source, 'NODE_NAMES').map(([instancePath, [node]]) => ({ instancePath, node: node! }));
-  return { ports: markExternal(ports), nodes };
+    const ports = pythonTable(source, 'PORT_TOPICS').map(([key, [topic, type]]) => {
+        const dot = key.lastIndexOf('.');
+        return dot < 0 ? entry('', key, 'in', topic!, type ?? '') : entry(key.slice(0, dot), key.slice(dot + 1), 'out', topic!, type ?? '');
+    });
+    const nodes = pythonTable(source, 'NODE_NAMES').map(([instancePath, [node]]) => ({ instancePath, node: node! }));
+    return { ports: markExternal(ports), nodes };
 }
 
 async function readJson(file: string): Promise<unknown> {
-  try {
-    return JSON.parse(await readFile(file, 'utf8'));
-  } catch (e) {
-    throw new HttpError(409, `cannot read ${path.basename(file)}: ${(e as Error).message}`);
-  }
+    try {
+        return JSON.parse(await readFile(file, 'utf8'));
+    } catch (e) {
+        throw new HttpError(409, `cannot read ${path.basename(file)}: ${(e as Error).message}`);
+    }
 }
 
 /** The topic map of a generated platform folder for a mode (409 when the platform lacks the file of the mode). */
 export async function topicMap(platformDir: string, app: string, platform: string, mode: SimMode): Promise<TopicMapAnswer> {
-  const file = mode === 'ros2' ? DEPLOYMENT_FILE_NAME : 'lockstep.json';
-  const dir = findPackageDir(platformDir, file);
-  if (!dir) throw new HttpError(409, `the generated platform ${platform} has no ${file} (generate it first)`);
-  if (mode === 'ros2') {
-    const deployment = deploymentContract.parse(await readJson(path.join(dir, file)), `${platform}/${file}`);
-    return { app, platform, mode, ...fromDeployment(deployment) };
-  }
-  const lockstep = (await readJson(path.join(dir, file))) as { factory?: unknown };
-  const module = typeof lockstep.factory === 'string' ? lockstep.factory.split(':')[0] : undefined;
-  if (!module || !/^[A-Za-z_][A-Za-z0-9_.]*$/.test(module)) throw new HttpError(409, `${platform}/lockstep.json names no factory module`);
-  const source = await readFile(`${path.join(dir, ...module.split('.'))}.py`, 'utf8').catch(() => {
-    throw new HttpError(409, `the generated app module ${module} of ${platform} is missing`);
-  });
-  return { app, platform, mode, ...fromAppModule(source) };
+    const file = mode === 'ros2' ? DEPLOYMENT_FILE_NAME : 'lockstep.json';
+    const dir = findPackageDir(platformDir, file);
+    if (!dir) throw new HttpError(409, `the generated platform ${platform} has no ${file} (generate it first)`);
+    if (mode === 'ros2') {
+        const deployment = deploymentContract.parse(await readJson(path.join(dir, file)), `${platform}/${file}`);
+        return { app, platform, mode, ...fromDeployment(deployment) };
+    }
+    const lockstep = (await readJson(path.join(dir, file))) as { factory?: unknown };
+    const module = typeof lockstep.factory === 'string' ? lockstep.factory.split(':')[0] : undefined;
+    if (!module || !/^[A-Za-z_][A-Za-z0-9_.]*$/.test(module)) throw new HttpError(409, `${platform}/lockstep.json names no factory module`);
+    const source = await readFile(`${path.join(dir, ...module.split('.'))}.py`, 'utf8').catch(() => {
+        throw new HttpError(409, `the generated app module ${module} of ${platform} is missing`);
+    });
+    return { app, platform, mode, ...fromAppModule(source) };
 }

@@ -22,8 +22,16 @@ export const LANGUAGE_FACT_BY_ID: ReadonlyMap<string, LanguageFact> = new Map(LA
 
 /** Languages of plain files the workspace may hold (read-only highlighting). */
 const OTHER_LANGUAGES: Record<string, string> = {
-    '.py': 'python', '.json': 'json', '.md': 'markdown', '.stream': 'maa-stream', '.launch': 'python',
-    '.xml': 'xml', '.txt': 'plaintext', '.cmake': 'plaintext', '.cfg': 'plaintext', '.toml': 'plaintext',
+    '.py': 'python',
+    '.json': 'json',
+    '.md': 'markdown',
+    '.stream': 'maa-stream',
+    '.launch': 'python',
+    '.xml': 'xml',
+    '.txt': 'plaintext',
+    '.cmake': 'plaintext',
+    '.cfg': 'plaintext',
+    '.toml': 'plaintext',
 };
 
 export const MODEL_LANGUAGE_IDS: readonly string[] = FAMILY_LANGUAGES.map((l) => l.id);

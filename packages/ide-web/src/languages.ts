@@ -19,9 +19,23 @@ const STREAM_KEYWORDS = ['component', 'test', 'state', 'ticks', 'Tk', 'run', 'em
 
 const braces: monaco.languages.LanguageConfiguration = {
     comments: { lineComment: '//', blockComment: ['/*', '*/'] },
-    brackets: [['{', '}'], ['[', ']'], ['(', ')']],
-    autoClosingPairs: [{ open: '{', close: '}' }, { open: '[', close: ']' }, { open: '(', close: ')' }, { open: '"', close: '"' }],
-    surroundingPairs: [{ open: '{', close: '}' }, { open: '[', close: ']' }, { open: '(', close: ')' }, { open: '"', close: '"' }],
+    brackets: [
+        ['{', '}'],
+        ['[', ']'],
+        ['(', ')'],
+    ],
+    autoClosingPairs: [
+        { open: '{', close: '}' },
+        { open: '[', close: ']' },
+        { open: '(', close: ')' },
+        { open: '"', close: '"' },
+    ],
+    surroundingPairs: [
+        { open: '{', close: '}' },
+        { open: '[', close: ']' },
+        { open: '(', close: ')' },
+        { open: '"', close: '"' },
+    ],
     indentationRules: { increaseIndentPattern: /\{[^}]*$/, decreaseIndentPattern: /^\s*\}/ },
 };
 
@@ -35,7 +49,10 @@ export function registerLanguages(): void {
         const fact = LANGUAGE_FACT_BY_ID.get(lang.id);
         if (fact) monaco.languages.setMonarchTokensProvider(lang.id, familyGrammar(fact));
     }
-    for (const [id, config] of [['python', pythonGrammar()], ['maa-stream', simpleGrammar(STREAM_KEYWORDS)]] as const) {
+    for (const [id, config] of [
+        ['python', pythonGrammar()],
+        ['maa-stream', simpleGrammar(STREAM_KEYWORDS)],
+    ] as const) {
         monaco.languages.register({ id });
         monaco.languages.setMonarchTokensProvider(id, config);
     }

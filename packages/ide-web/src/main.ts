@@ -42,15 +42,23 @@ interface IdeHooks {
     select(needle: string, options?: { occurrence?: number; offset?: number; length?: number }): boolean;
 }
 declare global {
-    interface Window { maaIde: IdeHooks }
+    interface Window {
+        maaIde: IdeHooks;
+    }
 }
 
 const hooks: IdeHooks = {
-    timings: { start: performance.now() }, ready: false, diagramUpdates: 0,
+    timings: { start: performance.now() },
+    ready: false,
+    diagramUpdates: 0,
     open: async () => undefined,
-    markers: () => monaco.editor.getModelMarkers({}).map((m) => ({
-        path: pathOf(m.resource.toString()) ?? m.resource.toString(), severity: m.severity, message: m.message, line: m.startLineNumber,
-    })),
+    markers: () =>
+        monaco.editor.getModelMarkers({}).map((m) => ({
+            path: pathOf(m.resource.toString()) ?? m.resource.toString(),
+            severity: m.severity,
+            message: m.message,
+            line: m.startLineNumber,
+        })),
     text: (path) => monaco.editor.getModel(monaco.Uri.parse(uriOf(path)))?.getValue(),
     select: (needle, options = {}) => {
         const editor = hooks.editor;
@@ -85,7 +93,8 @@ function setServerStatus(text: string, state: 'starting' | 'ready' | 'error'): v
 // ---------------------------------------------------------------------------------- bottom panel
 type PanelTab = 'problems' | 'generate' | 'simulate';
 function showPanel(tab: PanelTab): void {
-    for (const button of document.querySelectorAll<HTMLElement>('.panel-tab')) button.classList.toggle('active', button.dataset.tab === tab);
+    for (const button of document.querySelectorAll<HTMLElement>('.panel-tab'))
+        button.classList.toggle('active', button.dataset.tab === tab);
     for (const view of document.querySelectorAll<HTMLElement>('.panel-view')) view.hidden = view.dataset.tab !== tab;
 }
 for (const button of document.querySelectorAll<HTMLElement>('.panel-tab')) {
@@ -100,11 +109,20 @@ const openEditor: OpenEditor = async (modelRef, options) => {
     const uri = modelRef.object.textEditorModel.uri.toString();
     const path = pathOf(uri);
     if (!path || !editors) return undefined;
-    const selection = options && 'selection' in options ? (options as { selection?: { startLineNumber: number; startColumn: number; endLineNumber?: number; endColumn?: number } }).selection : undefined;
-    const range = selection ? {
-        start: { line: selection.startLineNumber - 1, character: selection.startColumn - 1 },
-        end: { line: (selection.endLineNumber ?? selection.startLineNumber) - 1, character: (selection.endColumn ?? selection.startColumn) - 1 },
-    } : undefined;
+    const selection =
+        options && 'selection' in options
+            ? (options as { selection?: { startLineNumber: number; startColumn: number; endLineNumber?: number; endColumn?: number } })
+                  .selection
+            : undefined;
+    const range = selection
+        ? {
+              start: { line: selection.startLineNumber - 1, character: selection.startColumn - 1 },
+              end: {
+                  line: (selection.endLineNumber ?? selection.startLineNumber) - 1,
+                  character: (selection.endColumn ?? selection.startColumn) - 1,
+              },
+          }
+        : undefined;
     return await editors.open(path, range);
 };
 
@@ -168,20 +186,34 @@ async function startLanguageClient(): Promise<MonacoLanguageClient> {
 // ---------------------------------------------------------------------------------- diagram
 /** The diagram until the real one is mounted (it is loaded as a chunk of its own), or when it failed. */
 class NoDiagram implements DiagramView {
-    show(): void { /* nothing */ }
-    revealPosition(): void { /* nothing */ }
-    exportSvg(): Promise<string> { return Promise.resolve('<svg xmlns="http://www.w3.org/2000/svg"/>'); }
-    setLiveValues(): void { /* nothing */ }
-    setActiveStates(): void { /* nothing */ }
-    onSelect(): Disposable { return { dispose: () => undefined }; }
-    dispose(): void { /* nothing */ }
+    show(): void {
+        /* nothing */
+    }
+    revealPosition(): void {
+        /* nothing */
+    }
+    exportSvg(): Promise<string> {
+        return Promise.resolve('<svg xmlns="http://www.w3.org/2000/svg"/>');
+    }
+    setLiveValues(): void {
+        /* nothing */
+    }
+    setActiveStates(): void {
+        /* nothing */
+    }
+    onSelect(): Disposable {
+        return { dispose: () => undefined };
+    }
+    dispose(): void {
+        /* nothing */
+    }
 }
 
 /** The workspace file and range a langium-sprotty trace points to (see diagram/trace.ts for the format). */
 function traceTarget(trace: string): { path: string; range: TextRange } | undefined {
     const parsed = parseTrace(trace);
     // parseTrace decodes the URI already: take the path as it is, without a second decoding.
-    if (!parsed || !parsed.uri.startsWith(WORKSPACE_URI)) return undefined;
+    if (!parsed?.uri.startsWith(WORKSPACE_URI)) return undefined;
     return { path: parsed.uri.slice(WORKSPACE_URI.length), range: parsed.range };
 }
 
@@ -219,7 +251,7 @@ async function main(): Promise<void> {
 
     /** Shows the architecture of the active component file (the diagram's own switch shows its automaton). */
     function updateDiagram(path: string | undefined, force = false): void {
-        if (!path || !path.endsWith('.arc')) return;
+        if (!path?.endsWith('.arc')) return;
         if (path === shownDiagram && !force) return;
         shownDiagram = path;
         diagram.show({ uri: uriOf(path), diagramType: 'maa-cc' });
@@ -250,7 +282,9 @@ async function main(): Promise<void> {
     });
     editors = area;
     hooks.editor = area.editor;
-    hooks.open = async (path, range) => { await area.open(path, range); };
+    hooks.open = async (path, range) => {
+        await area.open(path, range);
+    };
 
     const problems = new ProblemsPanel(byId('problems'), (path, range) => void area.open(path, range));
     const problemsCount = byId('problems-count');
@@ -258,7 +292,12 @@ async function main(): Promise<void> {
     problems.onCounts((c) => {
         problemsCount.textContent = String(c.errors + c.warnings);
         problemsCount.hidden = c.errors + c.warnings === 0;
-        statusProblems.replaceChildren(h('span', { class: 'severity-icon error' }), ` ${c.errors} `, h('span', { class: 'severity-icon warning' }), ` ${c.warnings}`);
+        statusProblems.replaceChildren(
+            h('span', { class: 'severity-icon error' }),
+            ` ${c.errors} `,
+            h('span', { class: 'severity-icon warning' }),
+            ` ${c.warnings}`,
+        );
     });
     statusProblems.addEventListener('click', () => showPanel('problems'));
 
@@ -278,7 +317,11 @@ async function main(): Promise<void> {
     const modelFiles = files.filter(isModelFile);
     // `?open=<path>` opens that file first (links, the benchmark).
     const requested = new URLSearchParams(location.search).get('open') ?? undefined;
-    const start = (requested && files.includes(requested) ? requested : undefined) ?? modelFiles.find((p) => START_FILE.test(p)) ?? modelFiles.find((p) => p.endsWith('.arc')) ?? files[0];
+    const start =
+        (requested && files.includes(requested) ? requested : undefined) ??
+        modelFiles.find((p) => START_FILE.test(p)) ??
+        modelFiles.find((p) => p.endsWith('.arc')) ??
+        files[0];
 
     // Language client first, so the documents' didOpen go to the server.
     try {
@@ -292,13 +335,15 @@ async function main(): Promise<void> {
     // The start file first (interactive as soon as possible), then the rest of the models.
     if (start) await area.open(start);
     hooks.timings.editor = performance.now();
-    await Promise.all(modelFiles.map(async (path) => {
-        try {
-            await area.model(path);
-        } catch (error) {
-            notify('warning', error instanceof Error ? error.message : String(error));
-        }
-    }));
+    await Promise.all(
+        modelFiles.map(async (path) => {
+            try {
+                await area.model(path);
+            } catch (error) {
+                notify('warning', error instanceof Error ? error.message : String(error));
+            }
+        }),
+    );
     hooks.timings.models = performance.now();
 
     if (languageClient) {
@@ -326,7 +371,10 @@ async function main(): Promise<void> {
 
     // Commands and shortcuts.
     area.editor.addAction({
-        id: 'maa.showGeneratedCode', label: 'Show Generated Code', contextMenuGroupId: 'navigation', contextMenuOrder: 9,
+        id: 'maa.showGeneratedCode',
+        label: 'Show Generated Code',
+        contextMenuGroupId: 'navigation',
+        contextMenuOrder: 9,
         keybindings: [monaco.KeyMod.CtrlCmd | monaco.KeyMod.Alt | monaco.KeyCode.KeyG],
         run: (editor) => {
             const path = area.activePath;
@@ -335,26 +383,38 @@ async function main(): Promise<void> {
         },
     });
     area.editor.addAction({
-        id: 'maa.save', label: 'File: Save', keybindings: [monaco.KeyMod.CtrlCmd | monaco.KeyCode.KeyS],
+        id: 'maa.save',
+        label: 'File: Save',
+        keybindings: [monaco.KeyMod.CtrlCmd | monaco.KeyCode.KeyS],
         run: () => save(),
     });
-    const quickOpen = new QuickOpen(() => files, (path) => void area.open(path));
+    const quickOpen = new QuickOpen(
+        () => files,
+        (path) => void area.open(path),
+    );
     function save(): void {
         area.save().catch((error: unknown) => notify('error', error instanceof Error ? error.message : String(error)));
     }
     // Capture phase on the window, and the event stops here: VS Code's keybinding service binds
     // the same keys (Ctrl+P opens its own quick input, Ctrl+S its save) and must not see them too.
-    window.addEventListener('keydown', (e) => {
-        const mod = e.ctrlKey || e.metaKey;
-        const key = e.key.toLowerCase();
-        let handled = true;
-        if (mod && !e.shiftKey && key === 's') save();
-        else if (mod && !e.shiftKey && key === 'p') quickOpen.show();
-        else if (mod && e.shiftKey && key === 'm') showPanel('problems');
-        else if (e.altKey && key === 'w' && area.activePath) area.close(area.activePath);
-        else handled = false;
-        if (handled) { e.preventDefault(); e.stopImmediatePropagation(); }
-    }, true);
+    window.addEventListener(
+        'keydown',
+        (e) => {
+            const mod = e.ctrlKey || e.metaKey;
+            const key = e.key.toLowerCase();
+            let handled = true;
+            if (mod && !e.shiftKey && key === 's') save();
+            else if (mod && !e.shiftKey && key === 'p') quickOpen.show();
+            else if (mod && e.shiftKey && key === 'm') showPanel('problems');
+            else if (e.altKey && key === 'w' && area.activePath) area.close(area.activePath);
+            else handled = false;
+            if (handled) {
+                e.preventDefault();
+                e.stopImmediatePropagation();
+            }
+        },
+        true,
+    );
     window.addEventListener('beforeunload', (e) => {
         if (area.openPaths().some((p) => area.isDirty(p))) e.preventDefault();
     });

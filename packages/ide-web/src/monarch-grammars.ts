@@ -27,8 +27,16 @@ function common(): Rule[] {
 }
 
 const sharedStates: Record<string, Rule[]> = {
-    comment: [[/[^/*]+/, 'comment'], [/\*\//, 'comment', '@pop'], [/[/*]/, 'comment']],
-    string: [[/[^\\"]+/, 'string'], [/\\./, 'string.escape'], [/"/, 'string', '@pop']],
+    comment: [
+        [/[^/*]+/, 'comment'],
+        [/\*\//, 'comment', '@pop'],
+        [/[/*]/, 'comment'],
+    ],
+    string: [
+        [/[^\\"]+/, 'string'],
+        [/\\./, 'string.escape'],
+        [/"/, 'string', '@pop'],
+    ],
 };
 
 /**
@@ -48,7 +56,11 @@ export function familyGrammar(fact: LanguageFact): monaco.languages.IMonarchLang
         states[name] = [];
         const { keywords, constants, units } = highlightWords(lang);
         const cases: Record<string, string> = { '@types': 'type' };
-        for (const [kind, words, token] of [['keywords', keywords, 'keyword'], ['constants', constants, 'constant'], ['units', units, 'keyword.unit']] as const) {
+        for (const [kind, words, token] of [
+            ['keywords', keywords, 'keyword'],
+            ['constants', constants, 'constant'],
+            ['units', units, 'keyword.unit'],
+        ] as const) {
             if (words.length === 0) continue;
             attributes[`${kind}_${key}`] = words;
             cases[`@${kind}_${key}`] = token;
@@ -57,12 +69,22 @@ export function familyGrammar(fact: LanguageFact): monaco.languages.IMonarchLang
         for (const id of lang.embeds) {
             const embedded = LANGUAGE_FACT_BY_ID.get(id);
             if (!embedded?.blockKeyword) continue;
-            blocks.push([new RegExp(`(${embedded.blockKeyword})(\\s*)(\\{)`), ['keyword', '', { token: 'delimiter.bracket', next: `@${stateOf(embedded, false)}` }]]);
+            blocks.push([
+                new RegExp(`(${embedded.blockKeyword})(\\s*)(\\{)`),
+                ['keyword', '', { token: 'delimiter.bracket', next: `@${stateOf(embedded, false)}` }],
+            ]);
         }
         states[name] = [
-            ...(root ? [] : [[/\{/, 'delimiter.bracket', `@${name}`], [/\}/, 'delimiter.bracket', '@pop']] satisfies Rule[]),
+            ...(root
+                ? []
+                : ([
+                      [/\{/, 'delimiter.bracket', `@${name}`],
+                      [/\}/, 'delimiter.bracket', '@pop'],
+                  ] satisfies Rule[])),
             ...blocks,
-            ...(units.length > 0 ? [[new RegExp(`(\\d+(?:\\.\\d*)?)(${units.join('|')})\\b`), ['number', 'keyword.unit']] satisfies Rule] : []),
+            ...(units.length > 0
+                ? [[new RegExp(`(\\d+(?:\\.\\d*)?)(${units.join('|')})\\b`), ['number', 'keyword.unit']] satisfies Rule]
+                : []),
             ...common(),
             root ? [/[{}()[\]]/, '@brackets'] : [/[()[\]]/, '@brackets'],
             [/[A-Za-z_][\w]*/, { cases: { ...cases, '[A-Z][\\w]*': 'type.identifier', '@default': 'identifier' } }],
@@ -70,7 +92,12 @@ export function familyGrammar(fact: LanguageFact): monaco.languages.IMonarchLang
         return name;
     };
     stateOf(fact, true);
-    return { defaultToken: '', start: 'root', ...attributes, tokenizer: { ...states, ...sharedStates } } as monaco.languages.IMonarchLanguage;
+    return {
+        defaultToken: '',
+        start: 'root',
+        ...attributes,
+        tokenizer: { ...states, ...sharedStates },
+    } as monaco.languages.IMonarchLanguage;
 }
 
 export function simpleGrammar(keywords: string[]): monaco.languages.IMonarchLanguage {
@@ -82,9 +109,12 @@ export function simpleGrammar(keywords: string[]): monaco.languages.IMonarchLang
             root: [
                 ...common(),
                 [/[{}()[\]]/, '@brackets'],
-                [/[A-Za-z_][\w]*/, {
-                    cases: { '@keywords': 'keyword', '@types': 'type', '[A-Z][\\w]*': 'type.identifier', '@default': 'identifier' },
-                }],
+                [
+                    /[A-Za-z_][\w]*/,
+                    {
+                        cases: { '@keywords': 'keyword', '@types': 'type', '[A-Z][\\w]*': 'type.identifier', '@default': 'identifier' },
+                    },
+                ],
             ],
             ...sharedStates,
         },
@@ -94,9 +124,45 @@ export function simpleGrammar(keywords: string[]): monaco.languages.IMonarchLang
 export function pythonGrammar(): monaco.languages.IMonarchLanguage {
     return {
         defaultToken: '',
-        keywords: ['False', 'None', 'True', 'and', 'as', 'assert', 'async', 'await', 'break', 'class', 'continue', 'def', 'del', 'elif',
-            'else', 'except', 'finally', 'for', 'from', 'global', 'if', 'import', 'in', 'is', 'lambda', 'nonlocal', 'not', 'or', 'pass',
-            'raise', 'return', 'try', 'while', 'with', 'yield', 'match', 'case'],
+        keywords: [
+            'False',
+            'None',
+            'True',
+            'and',
+            'as',
+            'assert',
+            'async',
+            'await',
+            'break',
+            'class',
+            'continue',
+            'def',
+            'del',
+            'elif',
+            'else',
+            'except',
+            'finally',
+            'for',
+            'from',
+            'global',
+            'if',
+            'import',
+            'in',
+            'is',
+            'lambda',
+            'nonlocal',
+            'not',
+            'or',
+            'pass',
+            'raise',
+            'return',
+            'try',
+            'while',
+            'with',
+            'yield',
+            'match',
+            'case',
+        ],
         builtins: ['self', 'print', 'len', 'range', 'int', 'float', 'str', 'bool', 'dict', 'list', 'tuple', 'set', 'super', 'isinstance'],
         tokenizer: {
             root: [
@@ -107,12 +173,23 @@ export function pythonGrammar(): monaco.languages.IMonarchLanguage {
                 [/[rbfu]{0,2}"([^"\\]|\\.)*"/, 'string'],
                 [/[rbfu]{0,2}'([^'\\]|\\.)*'/, 'string'],
                 [/\d+(\.\d*)?([eE][-+]?\d+)?/, 'number'],
-                [/[A-Za-z_]\w*/, { cases: { '@keywords': 'keyword', '@builtins': 'type', '[A-Z][\\w]*': 'type.identifier', '@default': 'identifier' } }],
+                [
+                    /[A-Za-z_]\w*/,
+                    { cases: { '@keywords': 'keyword', '@builtins': 'type', '[A-Z][\\w]*': 'type.identifier', '@default': 'identifier' } },
+                ],
                 [/[{}()[\]]/, '@brackets'],
                 [/[-+*/%=<>!&|^~:]+/, 'operator'],
             ],
-            tripleDouble: [[/"""/, 'string', '@pop'], [/[^"]+/, 'string'], [/"/, 'string']],
-            tripleSingle: [[/'''/, 'string', '@pop'], [/[^']+/, 'string'], [/'/, 'string']],
+            tripleDouble: [
+                [/"""/, 'string', '@pop'],
+                [/[^"]+/, 'string'],
+                [/"/, 'string'],
+            ],
+            tripleSingle: [
+                [/'''/, 'string', '@pop'],
+                [/[^']+/, 'string'],
+                [/'/, 'string'],
+            ],
         },
     } as monaco.languages.IMonarchLanguage;
 }

@@ -2,7 +2,13 @@
 // the server's graph and what it asks for.
 import { describe, expect, it } from 'vitest';
 import {
-    ALL_VARIATION_POINTS, chooseFeature, configurationStatus, featureChecked, featuresOption, graphFeatureInfo, showAll
+    ALL_VARIATION_POINTS,
+    chooseFeature,
+    configurationStatus,
+    featureChecked,
+    featuresOption,
+    graphFeatureInfo,
+    showAll,
 } from '../src/diagram/configuration.js';
 
 describe('graphFeatureInfo', () => {
@@ -15,8 +21,11 @@ describe('graphFeatureInfo', () => {
     it('gives no features for a graph without them or malformed properties', () => {
         expect(graphFeatureInfo(undefined)).toEqual({ features: [], rejected: false });
         expect(graphFeatureInfo({ features: 'dim', configuration: ['x'] })).toEqual({ features: [], rejected: false });
-        expect(graphFeatureInfo({ features: ['dim', 3], configuration: { dim: 'yes', eco: true } }))
-            .toEqual({ features: ['dim'], configuration: { eco: true }, rejected: false });
+        expect(graphFeatureInfo({ features: ['dim', 3], configuration: { dim: 'yes', eco: true } })).toEqual({
+            features: ['dim'],
+            configuration: { eco: true },
+            rejected: false,
+        });
     });
 });
 
@@ -49,7 +58,7 @@ describe('the selection', () => {
 });
 
 describe('the checkboxes and the status', () => {
-    it('show the server\'s configuration, else the choice, else unchecked', () => {
+    it("show the server's configuration, else the choice, else unchecked", () => {
         const s = chooseFeature(ALL_VARIATION_POINTS, 'dim', true);
         const shown = graphFeatureInfo({ features: ['dim', 'eco'], configuration: { dim: true, eco: true } });
         expect(featureChecked(shown, s, 'eco')).toBe(true);
@@ -61,7 +70,9 @@ describe('the checkboxes and the status', () => {
     it('the status names a rejected selection only', () => {
         const s = chooseFeature(ALL_VARIATION_POINTS, 'dim', true);
         expect(configurationStatus(graphFeatureInfo({ features: ['dim'], configuration: { dim: true } }), s)).toBe('');
-        expect(configurationStatus(graphFeatureInfo({ features: ['dim'], configurationRejected: true }), s)).toMatch(/no admitted configuration/);
+        expect(configurationStatus(graphFeatureInfo({ features: ['dim'], configurationRejected: true }), s)).toMatch(
+            /no admitted configuration/,
+        );
         expect(configurationStatus(graphFeatureInfo({ features: ['dim'], configurationRejected: true }), ALL_VARIATION_POINTS)).toBe('');
     });
 });

@@ -1,5 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { clockSeconds, enumLiteralsOf, formatNumber, formatRosValue, isEnumMessage, numericValue, parseInjectedValue } from '../src/simulate/format.js';
+import {
+    clockSeconds,
+    enumLiteralsOf,
+    formatNumber,
+    formatRosValue,
+    isEnumMessage,
+    numericValue,
+    parseInjectedValue,
+} from '../src/simulate/format.js';
 import { SampleWindow, sparklinePath } from '../src/simulate/plot.js';
 
 describe('formatRosValue', () => {
@@ -8,14 +16,23 @@ describe('formatRosValue', () => {
         expect(formatRosValue({ data: 'GOLDEN' })).toBe('GOLDEN');
         expect(formatRosValue({ data: true })).toBe('true');
         expect(formatRosValue({ data: 0.060000001 })).toBe('0.06');
-        expect(formatRosValue({ data: 3.14159265 })).toBe('3.142');
+        expect(formatRosValue({ data: 1.23456789 })).toBe('1.235');
     });
     it('formats joint states as name=value pairs', () => {
-        expect(formatRosValue({ header: { stamp: { sec: 1, nanosec: 0 }, frame_id: '' }, name: ['base_yaw', 'lift'], position: [2.0943951, 0.2], velocity: [], effort: [] }))
-            .toBe('base_yaw=2.094 lift=0.2');
+        expect(
+            formatRosValue({
+                header: { stamp: { sec: 1, nanosec: 0 }, frame_id: '' },
+                name: ['base_yaw', 'lift'],
+                position: [2.0943951, 0.2],
+                velocity: [],
+                effort: [],
+            }),
+        ).toBe('base_yaw=2.094 lift=0.2');
     });
     it('formats structures, arrays and times compactly', () => {
-        expect(formatRosValue({ kind: 'MOVE', target: { angle: 1.5, height: 0.07 } })).toBe('{kind: MOVE, target: {angle: 1.5, height: 0.07}}');
+        expect(formatRosValue({ kind: 'MOVE', target: { angle: 1.5, height: 0.07 } })).toBe(
+            '{kind: MOVE, target: {angle: 1.5, height: 0.07}}',
+        );
         expect(formatRosValue([1, 2, 3, 4, 5, 6, 7, 8, 9, 10])).toBe('[1, 2, 3, 4, 5, 6, 7, 8, …+2]');
         expect(formatRosValue({ sec: 12, nanosec: 500_000_000 })).toBe('12.5 s');
         expect(formatRosValue(null)).toBe('–');
@@ -91,8 +108,28 @@ describe('SampleWindow', () => {
     });
     it('draws a sparkline into the box', () => {
         expect(sparklinePath([], 100, 20)).toBe('');
-        expect(sparklinePath([{ t: 0, v: 0 }, { t: 1, v: 10 }], 100, 20, 0)).toBe('M 0 20 L 100 0');
-        expect(sparklinePath([{ t: 0, v: 5 }, { t: 1, v: 5 }], 100, 20, 0)).toBe('M 0 10 L 100 10');
+        expect(
+            sparklinePath(
+                [
+                    { t: 0, v: 0 },
+                    { t: 1, v: 10 },
+                ],
+                100,
+                20,
+                0,
+            ),
+        ).toBe('M 0 20 L 100 0');
+        expect(
+            sparklinePath(
+                [
+                    { t: 0, v: 5 },
+                    { t: 1, v: 5 },
+                ],
+                100,
+                20,
+                0,
+            ),
+        ).toBe('M 0 10 L 100 10');
     });
 });
 
@@ -119,7 +156,11 @@ describe('enum values in both simulator modes', () => {
         expect(formatRosValue({ color: { value: 2 }, level: 0.5 })).toBe('{color: #2, level: 0.5}');
     });
     it('reads the literals from rosapi message_details', () => {
-        expect(enumLiteralsOf({ fieldnames: ['value'], constnames: ['BURNT', 'WHITE', 'GOLDEN'], constvalues: ['2', '0', '1'] })).toEqual(['WHITE', 'GOLDEN', 'BURNT']);
+        expect(enumLiteralsOf({ fieldnames: ['value'], constnames: ['BURNT', 'WHITE', 'GOLDEN'], constvalues: ['2', '0', '1'] })).toEqual([
+            'WHITE',
+            'GOLDEN',
+            'BURNT',
+        ]);
         expect(enumLiteralsOf({ fieldnames: ['value'], constnames: [], constvalues: [] })).toBeUndefined();
         expect(enumLiteralsOf({ fieldnames: ['data'], constnames: ['A'], constvalues: ['0'] })).toBeUndefined();
         expect(enumLiteralsOf({ fieldnames: ['value'], constnames: ['A', 'B'], constvalues: ['0', '5'] })).toBeUndefined();

@@ -5,7 +5,15 @@ import { dirname, join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { describe, expect, test } from 'vitest';
 import { LANGUAGE_FACTS } from '@maa/language-server/language-facts';
-import { FAMILY_LANGUAGES, highlightWords, isModelFile, languageOf, LANGUAGE_FACT_BY_ID, MODEL_LANGUAGE_IDS, TYPES } from '../src/language-table.js';
+import {
+    FAMILY_LANGUAGES,
+    highlightWords,
+    isModelFile,
+    languageOf,
+    LANGUAGE_FACT_BY_ID,
+    MODEL_LANGUAGE_IDS,
+    TYPES,
+} from '../src/language-table.js';
 
 describe('language table from the language facts', () => {
     test('every file language of the family is registered and recognised by its extensions', () => {
@@ -32,7 +40,7 @@ describe('language table from the language facts', () => {
         expect(isModelFile('README.md')).toBe(false);
     });
 
-    test('the highlighting words of a language are its facts\' keywords, split into keywords, types, constants and units', () => {
+    test("the highlighting words of a language are its facts' keywords, split into keywords, types, constants and units", () => {
         for (const fact of LANGUAGE_FACTS.languages) {
             const { keywords, constants, units } = highlightWords(fact);
             const all = [...fact.keywords, ...fact.softKeywords];
@@ -55,7 +63,19 @@ describe('Monarch grammars from the language facts', () => {
     type Compiled = { start: string | null; tokenizer: Record<string, unknown> };
     // Not in the package's `exports`: imported by file, from the nearest node_modules that has it.
     const compilerUrl = (): string => {
-        const relative = join('node_modules', '@codingame', 'monaco-vscode-editor-api', 'vscode', 'src', 'vs', 'editor', 'standalone', 'common', 'monarch', 'monarchCompile.js');
+        const relative = join(
+            'node_modules',
+            '@codingame',
+            'monaco-vscode-editor-api',
+            'vscode',
+            'src',
+            'vs',
+            'editor',
+            'standalone',
+            'common',
+            'monarch',
+            'monarchCompile.js',
+        );
         for (let dir = dirname(fileURLToPath(import.meta.url)); dirname(dir) !== dir; dir = dirname(dir)) {
             if (existsSync(join(dir, relative))) return pathToFileURL(join(dir, relative)).href;
         }
@@ -64,7 +84,7 @@ describe('Monarch grammars from the language facts', () => {
     const compile = async (id: string, json: unknown): Promise<Compiled> =>
         ((await import(/* @vite-ignore */ compilerUrl())) as { compile: (id: string, json: unknown) => Compiled }).compile(id, json);
 
-    test('every file language\'s grammar compiles, with a state per embedded behavior language', async () => {
+    test("every file language's grammar compiles, with a state per embedded behavior language", async () => {
         const { familyGrammar } = await import('../src/monarch-grammars.js');
         for (const lang of FAMILY_LANGUAGES) {
             const fact = LANGUAGE_FACT_BY_ID.get(lang.id)!;
@@ -75,18 +95,27 @@ describe('Monarch grammars from the language facts', () => {
             expect(Object.keys(grammar.tokenizer)[0], lang.id).toBe('root');
             const embedded = new Set<string>();
             const visit = (id: string): void => {
-                for (const e of LANGUAGE_FACT_BY_ID.get(id)?.embeds ?? []) if (!embedded.has(e)) { embedded.add(e); visit(e); }
+                for (const e of LANGUAGE_FACT_BY_ID.get(id)?.embeds ?? [])
+                    if (!embedded.has(e)) {
+                        embedded.add(e);
+                        visit(e);
+                    }
             };
             visit(lang.id);
-            expect(Object.keys(compiled.tokenizer).sort(), lang.id).toEqual(['comment', 'root', 'string', ...[...embedded].map((e) => `embedded_${e}`)].sort());
+            expect(Object.keys(compiled.tokenizer).sort(), lang.id).toEqual(
+                ['comment', 'root', 'string', ...[...embedded].map((e) => `embedded_${e}`)].sort(),
+            );
             expect(grammar[`keywords_${lang.id}`], lang.id).toEqual(highlightWords(fact).keywords);
-            for (const e of embedded) expect(grammar[`keywords_${e}`], `${lang.id} > ${e}`).toEqual(highlightWords(LANGUAGE_FACT_BY_ID.get(e)!).keywords);
+            for (const e of embedded)
+                expect(grammar[`keywords_${e}`], `${lang.id} > ${e}`).toEqual(highlightWords(LANGUAGE_FACT_BY_ID.get(e)!).keywords);
         }
     });
 
-    test('the .arc grammar opens an automaton block at the behavior language\'s block keyword', async () => {
+    test("the .arc grammar opens an automaton block at the behavior language's block keyword", async () => {
         const { familyGrammar } = await import('../src/monarch-grammars.js');
-        const grammar = familyGrammar(LANGUAGE_FACT_BY_ID.get('arc')!) as unknown as { tokenizer: Record<string, Array<[RegExp, unknown]>> };
+        const grammar = familyGrammar(LANGUAGE_FACT_BY_ID.get('arc')!) as unknown as {
+            tokenizer: Record<string, Array<[RegExp, unknown]>>;
+        };
         const openers = grammar.tokenizer.root!.map(([re]) => re).filter((re) => re instanceof RegExp && re.source.includes('\\{'));
         expect(openers.some((re) => re.test('automaton {'))).toBe(true);
         expect(openers.some((re) => re.test('robotarm {'))).toBe(true);

@@ -20,18 +20,52 @@ import {
 
 function model(): SchemaElement {
     return {
-        type: 'graph', id: 'g', component: 'toast.ToastServiceRobot',
+        type: 'graph',
+        id: 'g',
+        component: 'toast.ToastServiceRobot',
         children: [
             {
-                type: 'node:component', id: 'root', instancePath: '', componentType: 'toast.ToastServiceRobot', behaviorKind: 'composed',
-                position: { x: 10, y: 20 }, size: { width: 500, height: 300 },
+                type: 'node:component',
+                id: 'root',
+                instancePath: '',
+                componentType: 'toast.ToastServiceRobot',
+                behaviorKind: 'composed',
+                position: { x: 10, y: 20 },
+                size: { width: 500, height: 300 },
                 children: [
-                    { type: 'label:name', id: 'root.label', text: 'ToastServiceRobot', position: { x: 5, y: 5 }, size: { width: 100, height: 14 } },
-                    { type: 'port', id: 'root.p.distance', portPath: 'distance', direction: 'in', position: { x: -4, y: 40 }, size: { width: 8, height: 8 } },
                     {
-                        type: 'node:component', id: 'ctrl', instancePath: 'ctrl', componentType: 'toast.Controller', behaviorKind: 'automaton',
-                        position: { x: 100, y: 50 }, size: { width: 120, height: 60 },
-                        children: [{ type: 'port', id: 'ctrl.p.armCmd', portPath: 'ctrl.armCmd', direction: 'out', position: { x: 116, y: 20 }, size: { width: 8, height: 8 } }],
+                        type: 'label:name',
+                        id: 'root.label',
+                        text: 'ToastServiceRobot',
+                        position: { x: 5, y: 5 },
+                        size: { width: 100, height: 14 },
+                    },
+                    {
+                        type: 'port',
+                        id: 'root.p.distance',
+                        portPath: 'distance',
+                        direction: 'in',
+                        position: { x: -4, y: 40 },
+                        size: { width: 8, height: 8 },
+                    },
+                    {
+                        type: 'node:component',
+                        id: 'ctrl',
+                        instancePath: 'ctrl',
+                        componentType: 'toast.Controller',
+                        behaviorKind: 'automaton',
+                        position: { x: 100, y: 50 },
+                        size: { width: 120, height: 60 },
+                        children: [
+                            {
+                                type: 'port',
+                                id: 'ctrl.p.armCmd',
+                                portPath: 'ctrl.armCmd',
+                                direction: 'out',
+                                position: { x: 116, y: 20 },
+                                size: { width: 8, height: 8 },
+                            },
+                        ],
                     },
                     { type: 'edge:connector', id: 'e1', sourcePortPath: 'ctrl.armCmd' },
                     { type: 'comp:header', id: 'h' },
@@ -71,7 +105,10 @@ describe('schema helpers', () => {
     });
     it('collects port paths, instance types and the shown component', () => {
         expect(portPathsOf(model())).toEqual(['distance', 'ctrl.armCmd']);
-        expect([...instanceTypesOf(model())]).toEqual([['', 'toast.ToastServiceRobot'], ['ctrl', 'toast.Controller']]);
+        expect([...instanceTypesOf(model())]).toEqual([
+            ['', 'toast.ToastServiceRobot'],
+            ['ctrl', 'toast.Controller'],
+        ]);
         expect(shownComponentNode(model())?.id).toBe('root');
         expect(instanceOfType(instanceTypesOf(model()), 'toast.Controller')).toBe('ctrl');
         expect(instanceOfType(instanceTypesOf(model()), 'other.Controller')).toBe('ctrl');
@@ -85,7 +122,10 @@ describe('schema helpers', () => {
         expect(stateActivity(undefined, 'A')).toBe('none');
     });
     it('looks live values up by exact or snake-case path', () => {
-        const values = new Map([['ctrl.arm_cmd', '3'], ['distance', '22']]);
+        const values = new Map([
+            ['ctrl.arm_cmd', '3'],
+            ['distance', '22'],
+        ]);
         const bySnake = new Map([...values].map(([k, v]) => [snakePath(k), v]));
         expect(lookupLiveValue(values, bySnake, 'ctrl.armCmd')).toBe('3');
         expect(lookupLiveValue(values, bySnake, 'distance')).toBe('22');
@@ -101,7 +141,10 @@ describe('schema helpers', () => {
         expect(instancePrefix(maps, 'toast.Controller')).toBe('ctrl');
         expect(instancePrefix(maps, 'toast.ToastServiceRobot')).toBeUndefined();
         expect(instancePrefix(maps, undefined)).toBeUndefined();
-        const states = new Map([['ctrl', 'Toasting'], ['toasterCtrl', 'Off']]);
+        const states = new Map([
+            ['ctrl', 'Toasting'],
+            ['toasterCtrl', 'Off'],
+        ]);
         expect(activeStateForType(maps, states, 'toast.Controller')).toBe('Toasting');
         expect(activeStateForType(maps, states, 'toast.Other')).toBeUndefined();
         expect(activeStateForType(maps, new Map([['x', 'A']]), 'toast.Other')).toBe('A');

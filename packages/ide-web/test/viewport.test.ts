@@ -66,8 +66,13 @@ describe('fitViewport', () => {
 
 describe('unionBounds', () => {
     it('spans every box and skips boxes without finite numbers', () => {
-        expect(unionBounds([{ x: 0, y: 10, width: 10, height: 10 }, { x: -5, y: 0, width: 5, height: 5 }, { x: NaN, y: 0, width: 1, height: 1 }]))
-            .toEqual({ x: -5, y: 0, width: 15, height: 20 });
+        expect(
+            unionBounds([
+                { x: 0, y: 10, width: 10, height: 10 },
+                { x: -5, y: 0, width: 5, height: 5 },
+                { x: NaN, y: 0, width: 1, height: 1 },
+            ]),
+        ).toEqual({ x: -5, y: 0, width: 15, height: 20 });
         expect(unionBounds([])).toBeUndefined();
     });
 });

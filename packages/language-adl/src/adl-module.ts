@@ -1,6 +1,13 @@
 import {
-    DefaultWorkspaceManager, URI, type AstNode, type LangiumCoreServices, type LangiumDocument,
-    type LangiumSharedCoreServices, type Module, type PartialLangiumCoreServices, type PartialLangiumSharedCoreServices
+    DefaultWorkspaceManager,
+    URI,
+    type AstNode,
+    type LangiumCoreServices,
+    type LangiumDocument,
+    type LangiumSharedCoreServices,
+    type Module,
+    type PartialLangiumCoreServices,
+    type PartialLangiumSharedCoreServices,
 } from 'langium';
 import type { WorkspaceFolder } from 'vscode-languageserver-types';
 import { ModelRoots } from './model-roots.js';
@@ -38,7 +45,10 @@ export type AdlServices = LangiumCoreServices & AdlAddedServices & { shared: Adl
 
 /** Loads the built-in `java.lang`/`java.util` library next to the workspace's model files. */
 export class AdlWorkspaceManager extends DefaultWorkspaceManager {
-    protected override async loadAdditionalDocuments(_folders: WorkspaceFolder[], collector: (document: LangiumDocument<AstNode>) => void): Promise<void> {
+    protected override async loadAdditionalDocuments(
+        _folders: WorkspaceFolder[],
+        collector: (document: LangiumDocument<AstNode>) => void,
+    ): Promise<void> {
         for (const { uri, text } of BUILTIN_DOCUMENTS) {
             const u = URI.parse(uri);
             if (!this.langiumDocuments.hasDocument(u)) collector(this.langiumDocuments.createDocument(u, text));
@@ -57,32 +67,33 @@ export function builtinDocuments(shared: LangiumSharedCoreServices): LangiumDocu
 
 export const AdlSharedModule: Module<AdlSharedServices, PartialLangiumSharedCoreServices & AdlAddedSharedServices> = {
     workspace: {
-        WorkspaceManager: (s) => new AdlWorkspaceManager(s)
+        WorkspaceManager: (s) => new AdlWorkspaceManager(s),
     },
     maa: {
         ModelRoots: () => new ModelRoots(),
         RootIndex: (s) => new RootIndex(s, s.workspace.IndexManager, s.maa.ModelRoots),
-        ReservedNames: (s) => new ReservedNames(s.maa.ModelRoots)
-    }
+        ReservedNames: (s) => new ReservedNames(s.maa.ModelRoots),
+    },
 };
 
 /** The host language's services; every language of the family is injected with them. */
 export const AdlModule: Module<AdlServices, PartialLangiumCoreServices & AdlAddedServices> = {
     parser: {
-        Lexer: (s) => new GuardedLexer(s)
+        Lexer: (s) => new GuardedLexer(s),
     },
     references: {
         Linker: (s) => new AdlLinker(s),
         ScopeComputation: (s) => new AdlScopeComputation(s),
-        ScopeProvider: (s) => new AdlScopeProvider(s.maa.NameResolver, s.workspace.AstNodeDescriptionProvider, s.shared, () => s.maa.ExpressionTyper)
+        ScopeProvider: (s) =>
+            new AdlScopeProvider(s.maa.NameResolver, s.workspace.AstNodeDescriptionProvider, s.shared, () => s.maa.ExpressionTyper),
     },
     validation: {
         DocumentValidator: (s) => new AdlDocumentValidator(s),
-        ValidationRegistry: (s) => new AdlValidationRegistry(s)
+        ValidationRegistry: (s) => new AdlValidationRegistry(s),
     },
     maa: {
         NameResolver: (s) => new NameResolver(s.shared.maa.RootIndex, s.shared.maa.ModelRoots, s.workspace.AstNodeDescriptionProvider),
         TypeRelations: (s) => new TypeRelations(s.shared.maa.RootIndex),
-        ExpressionTyper: (s) => new ExpressionTyper(s.maa.TypeRelations, s.maa.NameResolver)
-    }
+        ExpressionTyper: (s) => new ExpressionTyper(s.maa.TypeRelations, s.maa.NameResolver),
+    },
 };

@@ -48,7 +48,10 @@ export class ModelRoots {
         const root = this.rootOf(s);
         const rel = decodeURIComponent(s.substring(root.length));
         const folder = rel.includes('/') ? rel.substring(0, rel.lastIndexOf('/')) : '';
-        return folder.split('/').filter((p) => p.length > 0).join('.');
+        return folder
+            .split('/')
+            .filter((p) => p.length > 0)
+            .join('.');
     }
 
     /** Whether a document may see the symbols of another: same root, or the other is built in. */

@@ -1,7 +1,13 @@
 import {
-    createDefaultCoreModule, createDefaultSharedCoreModule, inject, type DefaultSharedCoreModuleContext,
-    type LangiumCoreServices, type LangiumGeneratedCoreServices, type LangiumGeneratedSharedCoreServices,
-    type LangiumSharedCoreServices, type Module
+    createDefaultCoreModule,
+    createDefaultSharedCoreModule,
+    inject,
+    type DefaultSharedCoreModuleContext,
+    type LangiumCoreServices,
+    type LangiumGeneratedCoreServices,
+    type LangiumGeneratedSharedCoreServices,
+    type LangiumSharedCoreServices,
+    type Module,
 } from 'langium';
 import { registerCdChecks } from '@maa/language-cd';
 import { AdlGeneratedSharedModule, ArcGeneratedModule, CdGeneratedModule } from './generated/module.js';
@@ -73,13 +79,28 @@ export function createHostServices(
     generated: GeneratedModules,
     behaviors: readonly BehaviorLanguage[],
     languages: readonly FamilyLanguage[] = [],
-    defaults: HostServiceDefaults = { shared: createDefaultSharedCoreModule, language: createDefaultCoreModule }
+    defaults: HostServiceDefaults = { shared: createDefaultSharedCoreModule, language: createDefaultCoreModule },
 ): HostLanguageServices {
     const sharedExtra = defaults.sharedModules ?? [];
     const languageExtra = defaults.languageModules ?? [];
-    const shared = inject(defaults.shared(context) as Module<AdlSharedServices, object>, generated.shared, AdlSharedModule, ...sharedExtra) as AdlSharedServices;
-    const Arc = inject(defaults.language({ shared }) as Module<AdlServices, object>, generated.arc, AdlModule, ...languageExtra) as AdlServices;
-    const Cd = inject(defaults.language({ shared }) as Module<AdlServices, object>, generated.cd, AdlModule, ...languageExtra) as AdlServices;
+    const shared = inject(
+        defaults.shared(context) as Module<AdlSharedServices, object>,
+        generated.shared,
+        AdlSharedModule,
+        ...sharedExtra,
+    ) as AdlSharedServices;
+    const Arc = inject(
+        defaults.language({ shared }) as Module<AdlServices, object>,
+        generated.arc,
+        AdlModule,
+        ...languageExtra,
+    ) as AdlServices;
+    const Cd = inject(
+        defaults.language({ shared }) as Module<AdlServices, object>,
+        generated.cd,
+        AdlModule,
+        ...languageExtra,
+    ) as AdlServices;
     shared.ServiceRegistry.register(Arc);
     shared.ServiceRegistry.register(Cd);
     registerAdlChecks(Arc);
@@ -87,7 +108,13 @@ export function createHostServices(
     for (const b of behaviors) b.register(Arc);
     const others = new Map<string, AdlServices>();
     for (const l of languages) {
-        const services = inject(defaults.language({ shared }) as Module<AdlServices, object>, l.generated, AdlModule, ...languageExtra, ...(l.module ? [l.module] : [])) as AdlServices;
+        const services = inject(
+            defaults.language({ shared }) as Module<AdlServices, object>,
+            l.generated,
+            AdlModule,
+            ...languageExtra,
+            ...(l.module ? [l.module] : []),
+        ) as AdlServices;
         shared.ServiceRegistry.register(services);
         l.register(services);
         others.set(l.languageId, services);

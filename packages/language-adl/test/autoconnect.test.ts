@@ -31,9 +31,12 @@ describe('autoconnect: parsing', () => {
   type -> inc.i;
   inc.o -> off;
   autoconnect off;
-}`
+}`,
         });
-        expect(found.filter((f) => f.severity === 'error'), JSON.stringify(found)).toEqual([]);
+        expect(
+            found.filter((f) => f.severity === 'error'),
+            JSON.stringify(found),
+        ).toEqual([]);
     });
 
     test('an unknown autoconnect mode is a syntax error', async () => {
@@ -44,7 +47,8 @@ describe('autoconnect: parsing', () => {
 
 describe('autoconnect: implied connectors', () => {
     test('port: same name and type, between the component and its subcomponents and between subcomponents', async () => {
-        expect(await implied(`component Foo {
+        expect(
+            await implied(`component Foo {
   port in int i;
   port out int o;
   component A { port in int i; port out int x; }
@@ -52,11 +56,13 @@ describe('autoconnect: implied connectors', () => {
   A a;
   B b;
   autoconnect port;
-}`)).toEqual(['b.o -> o', 'i -> a.i', 'a.x -> b.x']);
+}`),
+        ).toEqual(['b.o -> o', 'i -> a.i', 'a.x -> b.x']);
     });
 
     test('port: a written connector wins, a different type or an ambiguous source implies nothing', async () => {
-        expect(await implied(`component Foo {
+        expect(
+            await implied(`component Foo {
   port in int i, in int j;
   port out String o;
   component A { port in int i; port in int j; port out int o; }
@@ -65,18 +71,21 @@ describe('autoconnect: implied connectors', () => {
   B b;
   j -> a.i;
   autoconnect port;
-}`)).toEqual(['j -> a.j', 'i -> b.i']);
+}`),
+        ).toEqual(['j -> a.j', 'i -> b.i']);
     });
 
     test('type: the only source of the same type, whatever its name; int and Integer are one type', async () => {
-        expect(await implied(`component Foo {
+        expect(
+            await implied(`component Foo {
   port in Integer speed;
   port in String label;
   port out boolean alarm;
   component A { port in int value; port in String text; port out boolean high; }
   A a;
   autoconnect type;
-}`)).toEqual(['a.high -> alarm', 'speed -> a.value', 'label -> a.text']);
+}`),
+        ).toEqual(['a.high -> alarm', 'speed -> a.value', 'label -> a.text']);
     });
 
     test('type: two sources of one type make it ambiguous; off and no autoconnect imply nothing', async () => {
@@ -99,7 +108,7 @@ describe('autoconnect: the implied connectors in the connector checks', () => {
   port out int o;${INNER}
   Inc inc;
   autoconnect port;
-}`
+}`,
         });
         expect(found, JSON.stringify(found)).toEqual([]);
     });
@@ -111,10 +120,13 @@ describe('autoconnect: the implied connectors in the connector checks', () => {
   port out int o;${INNER}
   Inc inc;
   autoconnect off;
-}`
+}`,
         });
-        expect(hits(found, 'arc/unconnected-sub-in-port', 'arc/unused-in-port', 'arc/unused-out-port').sort())
-            .toEqual(['arc/unconnected-sub-in-port@inc', 'arc/unused-in-port@i', 'arc/unused-out-port@o']);
+        expect(hits(found, 'arc/unconnected-sub-in-port', 'arc/unused-in-port', 'arc/unused-out-port').sort()).toEqual([
+            'arc/unconnected-sub-in-port@inc',
+            'arc/unused-in-port@i',
+            'arc/unused-out-port@o',
+        ]);
     });
 
     test('invalid: a feedback loop made of implied connectors must be delayed', async () => {
@@ -125,7 +137,7 @@ describe('autoconnect: the implied connectors in the connector checks', () => {
   A a;
   B b;
   autoconnect port;
-}`
+}`,
         });
         expect(hits(await validate(loop('')), 'arc/feedback-not-causal')).toEqual(['arc/feedback-not-causal@autoconnect port;']);
         expect(hits(await validate(loop('<<delayed>> ')), 'arc/feedback-not-causal')).toEqual([]);
@@ -145,8 +157,13 @@ describe('autoconnect: context conditions', () => {
     });
 
     test('arc/multiple-autoconnects: the second and later are reported, one is valid', async () => {
-        const found = await validate({ 'Foo.arc': `component Foo {${INNER}\n  Inc inc;\n  autoconnect port;\n  autoconnect type;\n  autoconnect off;\n}` });
-        expect(hits(found, 'arc/multiple-autoconnects')).toEqual(['arc/multiple-autoconnects@autoconnect type;', 'arc/multiple-autoconnects@autoconnect off;']);
+        const found = await validate({
+            'Foo.arc': `component Foo {${INNER}\n  Inc inc;\n  autoconnect port;\n  autoconnect type;\n  autoconnect off;\n}`,
+        });
+        expect(hits(found, 'arc/multiple-autoconnects')).toEqual([
+            'arc/multiple-autoconnects@autoconnect type;',
+            'arc/multiple-autoconnects@autoconnect off;',
+        ]);
         const valid = await validate({ 'Foo.arc': `component Foo {${INNER}\n  Inc inc;\n  autoconnect type;\n}` });
         expect(hits(valid, 'arc/multiple-autoconnects')).toEqual([]);
     });
@@ -154,15 +171,21 @@ describe('autoconnect: context conditions', () => {
 
 describe('arc/behavior-in-decomposed', () => {
     test('invalid: a compute block beside subcomponents', async () => {
-        const found = await validate({ 'Foo.arc': `component Foo {\n  port in int i;\n  port out int o;${INNER}\n  Inc inc;\n  i -> inc.i;\n  inc.o -> o;\n  compute {\n    o = i;\n  }\n}` });
+        const found = await validate({
+            'Foo.arc': `component Foo {\n  port in int i;\n  port out int o;${INNER}\n  Inc inc;\n  i -> inc.i;\n  inc.o -> o;\n  compute {\n    o = i;\n  }\n}`,
+        });
         expect(hits(found, 'arc/behavior-in-decomposed')).toEqual(['arc/behavior-in-decomposed@compute {\n    o = i;\n  }']);
         expect(found.find((f) => f.code === 'arc/behavior-in-decomposed')!.message).toContain("'compute'");
     });
 
     test('valid: an atomic component with a behavior, a decomposed one without (init blocks are not behaviors)', async () => {
-        const atomic = await validate({ 'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = i;\n  }\n}' });
+        const atomic = await validate({
+            'Foo.arc': 'component Foo {\n  port in int i;\n  port out int o;\n  compute {\n    o = i;\n  }\n}',
+        });
         expect(hits(atomic, 'arc/behavior-in-decomposed')).toEqual([]);
-        const withInit = await validate({ 'Foo.arc': `component Foo {\n  port in int i;\n  port out int o;\n  int n = 0;${INNER}\n  Inc inc;\n  i -> inc.i;\n  inc.o -> o;\n  init {\n    n = 1;\n  }\n}` });
+        const withInit = await validate({
+            'Foo.arc': `component Foo {\n  port in int i;\n  port out int o;\n  int n = 0;${INNER}\n  Inc inc;\n  i -> inc.i;\n  inc.o -> o;\n  init {\n    n = 1;\n  }\n}`,
+        });
         expect(hits(withInit, 'arc/behavior-in-decomposed')).toEqual([]);
     });
 });

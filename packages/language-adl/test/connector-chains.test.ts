@@ -26,10 +26,11 @@ function graph(types: Readonly<Record<string, Type>>): ChainGraph<string[], stri
         isAtomic: (scope) => Object.keys(typeOf(scope)?.subs ?? {}).length === 0,
         feeder(scope, target): ChainFeed<string> | undefined {
             const t = typeOf(scope)!;
-            if (t.stops?.some((s) => s.sub === target.sub && s.port === target.port)) return { stop: `${scope.join('.')}:${target.sub ?? ''}.${target.port}` };
+            if (t.stops?.some((s) => s.sub === target.sub && s.port === target.port))
+                return { stop: `${scope.join('.')}:${target.sub ?? ''}.${target.port}` };
             const source = feedingSource(t.connectors ?? [], target);
             return source ? { source } : undefined;
-        }
+        },
     };
 }
 
@@ -39,7 +40,10 @@ const TYPES: Record<string, Type> = {
     // Unit passes its in port x to its inner atom and exposes the inner atom's out port y.
     Unit: {
         subs: { inner: 'Atom' },
-        connectors: [{ source: { port: 'x' }, targets: [{ sub: 'inner', port: 'i' }] }, { source: { sub: 'inner', port: 'o' }, targets: [{ port: 'y' }] }]
+        connectors: [
+            { source: { port: 'x' }, targets: [{ sub: 'inner', port: 'i' }] },
+            { source: { sub: 'inner', port: 'o' }, targets: [{ port: 'y' }] },
+        ],
     },
     Root: {
         subs: { sensor: 'Atom', unit: 'Unit', sink: 'Atom', loop: 'Loop', gated: 'Atom' },
@@ -47,12 +51,12 @@ const TYPES: Record<string, Type> = {
             { source: { sub: 'sensor', port: 'o' }, targets: [{ sub: 'unit', port: 'x' }] },
             { source: { sub: 'unit', port: 'y' }, targets: [{ sub: 'sink', port: 'i' }, { port: 'out' }] },
             { source: { port: 'in' }, targets: [{ sub: 'sensor', port: 'i' }] },
-            { source: { sub: 'loop', port: 'b' }, targets: [{ sub: 'loop', port: 'a' }] }
+            { source: { sub: 'loop', port: 'b' }, targets: [{ sub: 'loop', port: 'a' }] },
         ],
-        stops: [{ sub: 'gated', port: 'i' }]
+        stops: [{ sub: 'gated', port: 'i' }],
     },
     // a composed component whose out port b is fed by its own in port a (a cycle through Root)
-    Loop: { subs: { dummy: 'Atom' }, connectors: [{ source: { port: 'a' }, targets: [{ port: 'b' }] }] }
+    Loop: { subs: { dummy: 'Atom' }, connectors: [{ source: { port: 'a' }, targets: [{ port: 'b' }] }] },
 };
 
 describe('connector chains', () => {
@@ -85,7 +89,7 @@ describe('connector chains', () => {
     test('feedingSource: the first connector with the target', () => {
         const connectors = [
             { source: { sub: 'a', port: 'o' }, targets: [{ sub: 'b', port: 'i' }] },
-            { source: { port: 'x' }, targets: [{ port: 'y' }, { sub: 'b', port: 'j' }] }
+            { source: { port: 'x' }, targets: [{ port: 'y' }, { sub: 'b', port: 'j' }] },
         ];
         expect(feedingSource(connectors, { sub: 'b', port: 'j' })).toEqual({ port: 'x' });
         expect(feedingSource(connectors, { port: 'i' })).toBeUndefined();

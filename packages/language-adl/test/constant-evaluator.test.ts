@@ -2,7 +2,14 @@ import { EmptyFileSystem } from 'langium';
 import { describe, expect, test } from 'vitest';
 import { ModelTestBench } from '../src/testing/index.js';
 import {
-    ConstantEvaluationError, EMPTY_CONSTANT_ENV, constantEnv, createAdlServices, evaluateConstant, type ConstantValue, type SymType, type ast
+    ConstantEvaluationError,
+    EMPTY_CONSTANT_ENV,
+    constantEnv,
+    createAdlServices,
+    evaluateConstant,
+    type ConstantValue,
+    type SymType,
+    type ast,
 } from '../src/index.js';
 
 const bench = new ModelTestBench(() => createAdlServices(EmptyFileSystem), 'constants');
@@ -39,12 +46,12 @@ describe('constant evaluation on the AST', () => {
         ['boolean a = true', 'boolean', true],
         ['boolean a = !false && (1 < 2)', 'boolean', true],
         ['String a = "a\\tb"', 'string', 'a\tb'],
-        ['char a = \'x\'', 'char', 'x'],
-        ['char a = \'\\n\'', 'char', '\n'],
+        ["char a = 'x'", 'char', 'x'],
+        ["char a = '\\n'", 'char', '\n'],
         ['int a = 2 * 3 + 7 / 2 - 10 % 4', 'int', 7],
         ['double a = 7 / 2.0', 'float', 3.5],
         ['int a = 1 > 0 ? 4 : 5', 'int', 4],
-        ['String a = "n" + 1 + 2.0', 'string', 'n12.0']
+        ['String a = "n" + 1 + 2.0', 'string', 'n12.0'],
     ])('%s', async (params, kind, value) => {
         const v = await evaluated(params);
         expect(v.kind).toBe(kind);
@@ -56,7 +63,7 @@ describe('constant evaluation on the AST', () => {
         expect(await evaluated('Color a = GREEN')).toMatchObject({ kind: 'enum', value: 'GREEN', ordinal: 1 });
     });
 
-    test('names take the values of the environment (the enclosing instance\'s parameters)', async () => {
+    test("names take the values of the environment (the enclosing instance's parameters)", async () => {
         const env = constantEnv(new Map<string, ConstantValue>([['speed', { kind: 'int', value: 4 }]]));
         expect(await evaluated('int a = speed * 2 + 1', env)).toEqual({ kind: 'int', value: 9 });
     });
@@ -66,7 +73,7 @@ describe('constant evaluation on the AST', () => {
         ['int a = Math.max(1, 2)', "'Math.max(1, 2)' is not a constant expression"],
         ['int a = 1 / 0', "'1 / 0' divides by zero"],
         ['int a = -true', "'-true' applies '-' to a boolean"],
-        ['Color a = Color.PINK', "'Color.PINK' is not a constant"]
+        ['Color a = Color.PINK', "'Color.PINK' is not a constant"],
     ])('%s is not constant: a ConstantEvaluationError on the expression', async (params, message) => {
         const { params: ps, color } = await parameters(params);
         const expr = ps[0]!.default!;

@@ -4,7 +4,13 @@ import { declaredPackage, resolveModelRoot } from '../src/workspace/model-root.j
 
 const markers = (...folders: string[]) => {
     const asked: string[] = [];
-    return { asked, hasMarker: (f: string) => (asked.push(f), folders.includes(f)) };
+    return {
+        asked,
+        hasMarker: (f: string) => {
+            asked.push(f);
+            return folders.includes(f);
+        },
+    };
 };
 
 describe('resolveModelRoot', () => {

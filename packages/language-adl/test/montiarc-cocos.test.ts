@@ -3,7 +3,14 @@ import { cocosCaseFiles, scoreCocos, type CocosCase } from '../src/testing/monti
 
 // The scoring of MontiArc's context-condition cases (shared/conformance/montiarc/README.md) that
 // every conformance runner uses: checked on made-up cases, so a lenient scorer cannot hide failures.
-const invalid = (expected: string[]): CocosCase => ({ cls: 'PortTest', kind: 'invalid', comment: 'bad', model: 'component A { }', helpers: [], expected });
+const invalid = (expected: string[]): CocosCase => ({
+    cls: 'PortTest',
+    kind: 'invalid',
+    comment: 'bad',
+    model: 'component A { }',
+    helpers: [],
+    expected,
+});
 const valid = (): CocosCase => ({ cls: 'PortTest', kind: 'valid', comment: 'good', model: 'component B { }', helpers: [], expected: [] });
 
 describe('scoring MontiArc context-condition cases', () => {
@@ -19,7 +26,10 @@ describe('scoring MontiArc context-condition cases', () => {
         const score = scoreCocos(cases, [['arc/missing-port'], ['arc/unused-in-port'], ['syntax/unexpected-token'], ['arc/missing-port']]);
         expect(score.passed).toBe(2);
         expect(score.perClass.get('PortTest')).toEqual({ passed: 2, total: 4 });
-        expect(score.failures.map((f) => f.split(': ')[1])).toEqual(['valid, but reported [syntax/unexpected-token]', 'valid, but reported [arc/missing-port]']);
+        expect(score.failures.map((f) => f.split(': ')[1])).toEqual([
+            'valid, but reported [syntax/unexpected-token]',
+            'valid, but reported [arc/missing-port]',
+        ]);
     });
 
     it('places helpers at their package path and the model at the root', () => {

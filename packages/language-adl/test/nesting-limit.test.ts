@@ -5,7 +5,7 @@ import { dump } from '../src/testing/index.js';
 import { validate, type Finding } from './helpers.js';
 
 const component = (body: string): Record<string, string> => ({
-    'A.arc': `component A {\n  port in int i;\n  port out int o;\n  port out boolean b;\n${body}\n}\n`
+    'A.arc': `component A {\n  port in int i;\n  port out int o;\n  port out boolean b;\n${body}\n}\n`,
 });
 
 /** A model with `k` levels of one kind of nesting, and the text of the k-th nesting token. */
@@ -20,21 +20,43 @@ interface Construct {
     readonly atLeast: number;
 }
 
-const nth = (needle: string) => (text: string, k: number): number => {
-    let at = -1;
-    for (let n = 0; n < k; n++) at = text.indexOf(needle, at + 1);
-    return at;
-};
+const nth =
+    (needle: string) =>
+    (text: string, k: number): number => {
+        let at = -1;
+        for (let n = 0; n < k; n++) at = text.indexOf(needle, at + 1);
+        return at;
+    };
 
 const CONSTRUCTS: Record<string, Construct> = {
-    'nested parentheses': { model: (k) => component(`  compute { o = ${'('.repeat(k)}i${')'.repeat(k)}; }`), tokenAt: nth('('), atLeast: 11 },
+    'nested parentheses': {
+        model: (k) => component(`  compute { o = ${'('.repeat(k)}i${')'.repeat(k)}; }`),
+        tokenAt: nth('('),
+        atLeast: 11,
+    },
     'unary minus signs': { model: (k) => component(`  compute { o = ${'- '.repeat(k)}i; }`), tokenAt: nth('-'), atLeast: 180 },
-    'nested blocks': { model: (k) => component(`  compute { ${'{ '.repeat(k)}${'} '.repeat(k)}}`), tokenAt: (t, k) => nth('{')(t, k + 2), atLeast: 45 },
-    'nested if statements': { model: (k) => component(`  compute { ${'if (i > 0) '.repeat(k)}o = 1; }`), tokenAt: ['if', '(', '>'], atLeast: 60 },
-    'else-if chain': { model: (k) => component(`  compute { o = 0; ${'if (i > 0) o = 1; else '.repeat(k)}o = 2; }`), tokenAt: ['if', '(', '>', '=', 'else'], atLeast: 35 },
+    'nested blocks': {
+        model: (k) => component(`  compute { ${'{ '.repeat(k)}${'} '.repeat(k)}}`),
+        tokenAt: (t, k) => nth('{')(t, k + 2),
+        atLeast: 45,
+    },
+    'nested if statements': {
+        model: (k) => component(`  compute { ${'if (i > 0) '.repeat(k)}o = 1; }`),
+        tokenAt: ['if', '(', '>'],
+        atLeast: 60,
+    },
+    'else-if chain': {
+        model: (k) => component(`  compute { o = 0; ${'if (i > 0) o = 1; else '.repeat(k)}o = 2; }`),
+        tokenAt: ['if', '(', '>', '=', 'else'],
+        atLeast: 35,
+    },
     'binary operators': { model: (k) => component(`  compute { o = i${' + i'.repeat(k)}; }`), tokenAt: nth('+'), atLeast: 180 },
     'conditional operators': { model: (k) => component(`  compute { o = ${'b ? 1 : '.repeat(k)}0; }`), tokenAt: ['?', ':'], atLeast: 90 },
-    'generic type arguments': { model: (k) => ({ 'A.arc': `component A {\n  port in ${'java.util.List<'.repeat(k)}Integer${'>'.repeat(k)} l;\n}\n` }), tokenAt: ['<', '.', '>'], atLeast: 25 }
+    'generic type arguments': {
+        model: (k) => ({ 'A.arc': `component A {\n  port in ${'java.util.List<'.repeat(k)}Integer${'>'.repeat(k)} l;\n}\n` }),
+        tokenAt: ['<', '.', '>'],
+        atLeast: 25,
+    },
 };
 
 /** The largest k whose model has no `syntax/too-deep` (binary search: nesting is monotonic). */
@@ -65,7 +87,10 @@ describe('nesting deeper than the parser can take is cut out with one syntax/too
             const k = await largestAccepted(c);
             expect(k).toBeGreaterThanOrEqual(c.atLeast);
             const atLimit = await validate(c.model(k));
-            expect(atLimit.filter((f) => f.code.startsWith('syntax/') || f.code.startsWith('internal/')), dump(atLimit)).toEqual([]);
+            expect(
+                atLimit.filter((f) => f.code.startsWith('syntax/') || f.code.startsWith('internal/')),
+                dump(atLimit),
+            ).toEqual([]);
 
             const files = c.model(k + 1);
             const over = await validate(files);
@@ -82,17 +107,32 @@ describe('nesting deeper than the parser can take is cut out with one syntax/too
                 expect(c.tokenAt).toContain(deep[0]!.text);
             }
             // The cut leaves no follow-up syntax errors and nothing crashes in the checks.
-            expect(over.filter((f) => f.code !== 'syntax/too-deep' && (f.code.startsWith('syntax/') || f.code.startsWith('internal/'))), dump(over)).toEqual([]);
+            expect(
+                over.filter((f) => f.code !== 'syntax/too-deep' && (f.code.startsWith('syntax/') || f.code.startsWith('internal/'))),
+                dump(over),
+            ).toEqual([]);
         });
     });
 
     test('10,000 levels of each kind: one syntax/too-deep, and the rest of the file is still checked', async () => {
         for (const [name, c] of Object.entries(CONSTRUCTS)) {
             const files = c.model(10_000);
-            const found = await validate({ ...files, 'A.arc': `${files['A.arc']!.replace('component A {', 'component A {\n  port in Missing m;')}` });
-            expect(found.filter((f) => f.code === 'syntax/too-deep'), name).toHaveLength(1);
-            expect(found.filter((f) => f.code.startsWith('internal/')), `${name}: ${dump(found)}`).toEqual([]);
-            expect(found.map((f) => f.code), name).toContain('arc/unresolved-type');
+            const found = await validate({
+                ...files,
+                'A.arc': `${files['A.arc']!.replace('component A {', 'component A {\n  port in Missing m;')}`,
+            });
+            expect(
+                found.filter((f) => f.code === 'syntax/too-deep'),
+                name,
+            ).toHaveLength(1);
+            expect(
+                found.filter((f) => f.code.startsWith('internal/')),
+                `${name}: ${dump(found)}`,
+            ).toEqual([]);
+            expect(
+                found.map((f) => f.code),
+                name,
+            ).toContain('arc/unresolved-type');
         }
     });
 
@@ -108,7 +148,10 @@ describe('nesting deeper than the parser can take is cut out with one syntax/too
         for (const text of ['{'.repeat(20_000), '('.repeat(20_000), 'component A { '.repeat(5_000), ') ] }'.repeat(5_000)]) {
             const found = await validate({ 'A.arc': text });
             expect(found.some((f) => f.code.startsWith('syntax/'))).toBe(true);
-            expect(found.filter((f) => f.code.startsWith('internal/')), dump(found)).toEqual([]);
+            expect(
+                found.filter((f) => f.code.startsWith('internal/')),
+                dump(found),
+            ).toEqual([]);
         }
     });
 });
@@ -119,7 +162,10 @@ describe('files above the size limit are not parsed', () => {
         const base = pad(0).length;
         const over = await validate({ 'A.arc': pad(SIZE_LIMIT - base + 1), 'B.arc': 'component B { port in Missing m; }' });
         const big = over.filter((f) => f.file === 'A.arc');
-        expect(big.map((f) => f.code), dump(over)).toEqual(['syntax/too-large']);
+        expect(
+            big.map((f) => f.code),
+            dump(over),
+        ).toEqual(['syntax/too-large']);
         expect(big[0]!.message).toContain('not parsed');
         expect(over.filter((f) => f.file === 'B.arc').map((f) => f.code)).toEqual(['arc/unresolved-type']);
 

@@ -35,7 +35,7 @@ import robot.types.Mode;
   a -> inner.i;
   inner.o -> b1.x;
   b1.y -> b2.x;
-}`
+}`,
 };
 
 describe('the host language parses', () => {
@@ -48,7 +48,9 @@ describe('the host language parses', () => {
         const services = createAdlServices(EmptyFileSystem);
         const root = URI.file('/parse-root');
         services.shared.maa.ModelRoots.setRoots([root]);
-        const docs = Object.entries(files).map(([p, t]) => services.shared.workspace.LangiumDocuments.createDocument(URI.file(`/parse-root/${p}`), t));
+        const docs = Object.entries(files).map(([p, t]) =>
+            services.shared.workspace.LangiumDocuments.createDocument(URI.file(`/parse-root/${p}`), t),
+        );
         await services.shared.workspace.DocumentBuilder.build(docs, {});
         const model = docs[2]!.parseResult.value as ast.ArcModel;
         const robot = model.component!;
@@ -58,10 +60,22 @@ describe('the host language parses', () => {
         expect(robot.params.map((p) => [p.name, p.default?.$cstNode?.text])).toEqual([['k', '3']]);
         expect(robot.parents[0]!.type.ref.ref?.name).toBe('Base');
         expect(robot.parents[0]!.args.map((a) => a.$cstNode?.text)).toEqual(['1', 'n = 4']);
-        const ports = allPorts(robot).map((p) => `${p.direction} ${p.name}:${p.timing}${p.delayed ? ':delayed' : ''}${p.owner === robot ? '' : ':inherited'}`);
-        expect(ports).toEqual(['in a:sync', 'in b:sync', 'out m:timed', 'in p:timed', 'in samples:timed', 'in x:sync:inherited', 'out y:sync:delayed:inherited']);
+        const ports = allPorts(robot).map(
+            (p) => `${p.direction} ${p.name}:${p.timing}${p.delayed ? ':delayed' : ''}${p.owner === robot ? '' : ':inherited'}`,
+        );
+        expect(ports).toEqual([
+            'in a:sync',
+            'in b:sync',
+            'out m:timed',
+            'in p:timed',
+            'in samples:timed',
+            'in x:sync:inherited',
+            'out y:sync:delayed:inherited',
+        ]);
         expect(subcomponentsOf(robot).map((s) => s.name)).toEqual(['inner', 'b1', 'b2']);
-        const fields = robot.body.elements.filter((e): e is ast.FieldDeclaration => e.$type === 'FieldDeclaration').flatMap((d) => d.fields.map((f) => f.name));
+        const fields = robot.body.elements
+            .filter((e): e is ast.FieldDeclaration => e.$type === 'FieldDeclaration')
+            .flatMap((d) => d.fields.map((f) => f.name));
         expect(fields).toEqual(['f', 'g']);
         const inner = robot.body.elements.find((e): e is ast.ComponentType => e.$type === 'ComponentType')!;
         expect(inner.params.map((t) => t.name)).toEqual(['s']);
@@ -83,7 +97,7 @@ describe('the host language parses', () => {
     if (i >= 0 && !(i == 5)) { o = i > 2 ? t : -t; } else o = Math.abs(i) >> 1;
     ;
   }
-}`
+}`,
         });
         expect(found.filter((f) => f.severity === 'error')).toEqual([]);
     });

@@ -19,7 +19,11 @@ describe('broken models yield syntax diagnostics, never a crash', () => {
         for (let n = 0; n < model.length; n += 7) {
             const found = await validate({ 'toast/Controller.arc': model.substring(0, n) });
             for (const f of found) expect(f.code).toMatch(/^(syntax|arc|expr|link)\//);
-            if (n > 20 && n < model.length - 2) expect(found.some((f) => f.code.startsWith('syntax/')), `cut at ${n}`).toBe(true);
+            if (n > 20 && n < model.length - 2)
+                expect(
+                    found.some((f) => f.code.startsWith('syntax/')),
+                    `cut at ${n}`,
+                ).toBe(true);
         }
     });
 

@@ -14,7 +14,7 @@ function model(body: string, extra = ''): Record<string, string> {
   compute {
 ${body}
   }
-}`
+}`,
     };
 }
 
@@ -24,7 +24,8 @@ async function errors(body: string): Promise<string[]> {
 
 describe('switch, do-while, break and continue: valid', () => {
     test('switch groups with fall-through, several labels, default anywhere; arrow rules; switch over String and char', async () => {
-        expect(await errors(`
+        expect(
+            await errors(`
     int r = 0;
     switch (i) {
       case 1:
@@ -49,11 +50,13 @@ describe('switch, do-while, break and continue: valid', () => {
         r = k;
         break;
     }
-    o = r;`)).toEqual([]);
+    o = r;`),
+        ).toEqual([]);
     });
 
     test('do-while, break and continue inside loops and a switch inside a loop', async () => {
-        expect(await errors(`
+        expect(
+            await errors(`
     int n = 0;
     do {
       n++;
@@ -69,7 +72,8 @@ describe('switch, do-while, break and continue: valid', () => {
       }
       while (true) { break; }
     }
-    o = n;`)).toEqual([]);
+    o = n;`),
+        ).toEqual([]);
     });
 });
 
@@ -89,8 +93,12 @@ describe('switch, do-while, break and continue: invalid', () => {
     });
 
     test('expr/mixed-switch-labels: colon groups and arrow rules together; an arrow rule with two statements', async () => {
-        expect((await errors('    switch (i) { case 1: o = 1; case 2 -> o = 2; }')).map((e) => e.split('@')[0])).toEqual(['expr/mixed-switch-labels']);
-        expect((await errors('    switch (i) { case 1 -> o = 1; o = 2; }')).map((e) => e.split('@')[0])).toEqual(['expr/mixed-switch-labels']);
+        expect((await errors('    switch (i) { case 1: o = 1; case 2 -> o = 2; }')).map((e) => e.split('@')[0])).toEqual([
+            'expr/mixed-switch-labels',
+        ]);
+        expect((await errors('    switch (i) { case 1 -> o = 1; o = 2; }')).map((e) => e.split('@')[0])).toEqual([
+            'expr/mixed-switch-labels',
+        ]);
     });
 
     test('expr/break-outside-loop and expr/continue-outside-loop', async () => {

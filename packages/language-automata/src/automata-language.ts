@@ -1,6 +1,11 @@
 import type { AstNode, ReferenceInfo, Scope } from 'langium';
 import {
-    allPorts, enclosingComponent, type AdlDocumentValidator, type AdlScopeProvider, type AdlServices, type BehaviorLanguage
+    allPorts,
+    enclosingComponent,
+    type AdlDocumentValidator,
+    type AdlScopeProvider,
+    type AdlServices,
+    type BehaviorLanguage,
 } from '@maa/language-adl';
 import { allStates, enclosingAutomaton } from './automaton-model.js';
 import { AutomatonChecks } from './automaton-checks.js';
@@ -27,10 +32,11 @@ export const AutomataLanguage: BehaviorLanguage = {
     diagnostics: AUTOMATON_DIAGNOSTICS,
     register(services: AdlServices): void {
         const scopes = services.references.ScopeProvider as AdlScopeProvider;
-        const states = (ctx: ReferenceInfo): Scope => scopes.nodes(() => {
-            const a = enclosingAutomaton(ctx.container);
-            return a ? allStates(a) : [];
-        });
+        const states = (ctx: ReferenceInfo): Scope =>
+            scopes.nodes(() => {
+                const a = enclosingAutomaton(ctx.container);
+                return a ? allStates(a) : [];
+            });
         const events = (ctx: ReferenceInfo): Scope => scopes.nodes(() => incomingPorts(ctx.container));
         scopes.contributions.set('Transition.source', states);
         scopes.contributions.set('Transition.target', states);
@@ -40,11 +46,12 @@ export const AutomataLanguage: BehaviorLanguage = {
         const validator = services.validation.DocumentValidator as AdlDocumentValidator;
         const missingState = {
             code: AutomatonCodes.MissingState,
-            message: (name: string) => `State '${name}' does not exist in this automaton.`
+            message: (name: string) => `State '${name}' does not exist in this automaton.`,
         };
         const missingEvent = {
             code: AutomatonCodes.MissingEvent,
-            message: (name: string) => `'${name}' is not an incoming port of the component: a transition is triggered by an incoming port or by 'Tick'.`
+            message: (name: string) =>
+                `'${name}' is not an incoming port of the component: a transition is triggered by an incoming port or by 'Tick'.`,
         };
         validator.linkCodes.set('Transition.source', missingState);
         validator.linkCodes.set('Transition.target', missingState);
@@ -58,11 +65,15 @@ export const AutomataLanguage: BehaviorLanguage = {
     registerLsp(services) {
         registerAutomatonLsp(services);
         registerModeLsp(services);
-    }
+    },
 };
 
 /** The incoming ports of the component that encloses a node, inherited ones included. */
 function incomingPorts(node: AstNode): AstNode[] {
     const component = enclosingComponent(node);
-    return component ? allPorts(component).filter((p) => p.direction === 'in').map((p) => p.port) : [];
+    return component
+        ? allPorts(component)
+              .filter((p) => p.direction === 'in')
+              .map((p) => p.port)
+        : [];
 }

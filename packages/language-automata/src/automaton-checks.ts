@@ -1,11 +1,30 @@
 import { AstUtils, CstUtils, type AstNode, type ValidationAcceptor, type ValidationChecks } from 'langium';
 import type { Range } from 'vscode-languageserver-types';
-import { Codes, ExpressionChecks, isErroneous, printType, type AdlServices, type ReservedNames, type TypeRelations } from '@maa/language-adl';
+import {
+    Codes,
+    ExpressionChecks,
+    isErroneous,
+    printType,
+    type AdlServices,
+    type ReservedNames,
+    type TypeRelations,
+} from '@maa/language-adl';
 import type { Automaton, AutomataAstType, Expression, State } from './generated/ast.js';
 import { isNameExpression } from './generated/ast.js';
 import {
-    allStates, allTransitions, automatonTiming, describeTransition, enclosingAutomaton, initialStates, isHierarchical,
-    isIncomingPort, sourceOf, substates, transitionHead, triggerOf, type AnyTransition
+    allStates,
+    allTransitions,
+    automatonTiming,
+    describeTransition,
+    enclosingAutomaton,
+    initialStates,
+    isHierarchical,
+    isIncomingPort,
+    sourceOf,
+    substates,
+    transitionHead,
+    triggerOf,
+    type AnyTransition,
 } from './automaton-model.js';
 import { AutomatonCodes } from './codes.js';
 
@@ -37,7 +56,7 @@ export class AutomatonChecks {
             this.checkInitialAction(s, accept);
         },
         Transition: (t, accept) => this.checkTransition(t, accept),
-        InternalTransition: (t, accept) => this.checkTransition(t, accept)
+        InternalTransition: (t, accept) => this.checkTransition(t, accept),
     };
 
     // ---- states ----
@@ -46,14 +65,22 @@ export class AutomatonChecks {
         const initial = initialStates(a);
         if (initial.length === 0) {
             const states = substates(a);
-            const hint = states.length === 0
-                ? "declare one, e.g. 'initial state Idle;'"
-                : `mark one of its top-level states 'initial' (e.g. 'initial state ${states[0]!.name};')`;
-            accept('error', `The automaton has no initial state: ${hint}.`, { node: a, keyword: 'automaton', code: AutomatonCodes.NoInitialState });
+            const hint =
+                states.length === 0
+                    ? "declare one, e.g. 'initial state Idle;'"
+                    : `mark one of its top-level states 'initial' (e.g. 'initial state ${states[0]!.name};')`;
+            accept('error', `The automaton has no initial state: ${hint}.`, {
+                node: a,
+                keyword: 'automaton',
+                code: AutomatonCodes.NoInitialState,
+            });
         }
         for (const extra of initial.slice(1)) {
-            accept('error', `The automaton has more than one initial state ('${initial.map((s) => s.name).join("', '")}'): exactly one top-level state may be initial.`,
-                { node: extra, keyword: 'initial', code: AutomatonCodes.MultipleInitialStates });
+            accept(
+                'error',
+                `The automaton has more than one initial state ('${initial.map((s) => s.name).join("', '")}'): exactly one top-level state may be initial.`,
+                { node: extra, keyword: 'initial', code: AutomatonCodes.MultipleInitialStates },
+            );
         }
     }
 
@@ -65,12 +92,18 @@ export class AutomatonChecks {
         if (!isHierarchical(s)) return;
         const initial = initialStates(s);
         if (initial.length === 0) {
-            accept('warning', `Hierarchical state '${s.name}' has no initial substate: entering it enters its first substate '${substates(s)[0]!.name}'. Mark one substate 'initial'.`,
-                { node: s, property: 'name', code: AutomatonCodes.NoInitialState });
+            accept(
+                'warning',
+                `Hierarchical state '${s.name}' has no initial substate: entering it enters its first substate '${substates(s)[0]!.name}'. Mark one substate 'initial'.`,
+                { node: s, property: 'name', code: AutomatonCodes.NoInitialState },
+            );
         }
         for (const extra of initial.slice(1)) {
-            accept('warning', `Hierarchical state '${s.name}' has more than one initial substate ('${initial.map((i) => i.name).join("', '")}'): entering it enters '${initial[0]!.name}'.`,
-                { node: extra, keyword: 'initial', code: AutomatonCodes.MultipleInitialStates });
+            accept(
+                'warning',
+                `Hierarchical state '${s.name}' has more than one initial substate ('${initial.map((i) => i.name).join("', '")}'): entering it enters '${initial[0]!.name}'.`,
+                { node: extra, keyword: 'initial', code: AutomatonCodes.MultipleInitialStates },
+            );
         }
     }
 
@@ -80,8 +113,11 @@ export class AutomatonChecks {
             if (!s.name) continue;
             const first = seen.get(s.name);
             if (first) {
-                accept('error', `State '${s.name}' is already declared in this automaton (line ${line(first)}): state names are unique in the whole automaton, substates included.`,
-                    { node: s, property: 'name', code: AutomatonCodes.DuplicateState });
+                accept(
+                    'error',
+                    `State '${s.name}' is already declared in this automaton (line ${line(first)}): state names are unique in the whole automaton, substates included.`,
+                    { node: s, property: 'name', code: AutomatonCodes.DuplicateState },
+                );
             } else seen.set(s.name, s);
         }
     }
@@ -89,7 +125,8 @@ export class AutomatonChecks {
     private checkReservedName(s: State, accept: ValidationAcceptor): void {
         if (!s.name) return;
         const reason = this.reserved.reason('state', s.name, AstUtils.getDocument(s).uri);
-        if (reason) accept('error', `The state name '${s.name}' is reserved: ${reason}.`, { node: s, property: 'name', code: Codes.ReservedName });
+        if (reason)
+            accept('error', `The state name '${s.name}' is reserved: ${reason}.`, { node: s, property: 'name', code: Codes.ReservedName });
     }
 
     /** The initial action runs before any input arrives: it may write outgoing ports, never read incoming ones. */
@@ -97,8 +134,11 @@ export class AutomatonChecks {
         if (!s.initialAction) return;
         for (const n of AstUtils.streamAllContents(s.initialAction)) {
             if (isNameExpression(n) && isIncomingPort(n.ref?.ref)) {
-                accept('error', `Incoming port '${n.ref?.$refText ?? ''}' cannot be read in the initial action of state '${s.name}': it runs before the first input arrives (outgoing ports may be written there).`,
-                    { node: n, code: AutomatonCodes.InputInInitial });
+                accept(
+                    'error',
+                    `Incoming port '${n.ref?.$refText ?? ''}' cannot be read in the initial action of state '${s.name}': it runs before the first input arrives (outgoing ports may be written there).`,
+                    { node: n, code: AutomatonCodes.InputInInitial },
+                );
             }
         }
     }
@@ -113,24 +153,38 @@ export class AutomatonChecks {
         const trigger = triggerOf(t);
         if (timing === 'sync' && trigger.kind !== 'none') {
             const what = trigger.kind === 'tick' ? "'Tick'" : `port '${trigger.name}'`;
-            accept('error', `The ${describeTransition(t)} of a <<sync>> automaton cannot have an event (${what}): a sync automaton fires once per time slice on all inputs; test inputs in the guard instead.`,
-                trigger.kind === 'tick' ? { node: t, keyword: 'Tick', code: AutomatonCodes.EventInSync } : { node: t, property: 'event', code: AutomatonCodes.EventInSync });
+            accept(
+                'error',
+                `The ${describeTransition(t)} of a <<sync>> automaton cannot have an event (${what}): a sync automaton fires once per time slice on all inputs; test inputs in the guard instead.`,
+                trigger.kind === 'tick'
+                    ? { node: t, keyword: 'Tick', code: AutomatonCodes.EventInSync }
+                    : { node: t, property: 'event', code: AutomatonCodes.EventInSync },
+            );
         }
         if (timing === 'untimed' && trigger.kind === 'tick') {
-            accept('error', `The ${describeTransition(t)} of an <<untimed>> automaton cannot be triggered by 'Tick': untimed automata do not observe time; use an incoming port as event.`,
-                { node: t, keyword: 'Tick', code: AutomatonCodes.TickInUntimed });
+            accept(
+                'error',
+                `The ${describeTransition(t)} of an <<untimed>> automaton cannot be triggered by 'Tick': untimed automata do not observe time; use an incoming port as event.`,
+                { node: t, keyword: 'Tick', code: AutomatonCodes.TickInUntimed },
+            );
         }
         if (timing === 'untimed' && trigger.kind === 'none') {
-            accept('error', `The ${describeTransition(t)} of an <<untimed>> automaton needs an event: untimed automata react to messages only, so name the incoming port that triggers it.`,
-                { node: t, range: headRange(t), code: AutomatonCodes.UntimedNoEvent });
+            accept(
+                'error',
+                `The ${describeTransition(t)} of an <<untimed>> automaton needs an event: untimed automata react to messages only, so name the incoming port that triggers it.`,
+                { node: t, range: headRange(t), code: AutomatonCodes.UntimedNoEvent },
+            );
         }
     }
 
     private checkGuard(t: AnyTransition, guard: Expression, accept: ValidationAcceptor): void {
         const type = this.expressions.checkExpression(guard as Parameters<ExpressionChecks['checkExpression']>[0], accept);
         if (!isErroneous(type) && !this.rel.isBoolean(type)) {
-            accept('error', `The guard of the ${describeTransition(t)} must be of type boolean, but '${text(guard)}' is of type ${printType(type)}.`,
-                { node: guard, code: AutomatonCodes.GuardNotBoolean });
+            accept(
+                'error',
+                `The guard of the ${describeTransition(t)} must be of type boolean, but '${text(guard)}' is of type ${printType(type)}.`,
+                { node: guard, code: AutomatonCodes.GuardNotBoolean },
+            );
         }
     }
 
@@ -167,12 +221,18 @@ export class AutomatonChecks {
                     const source = sourceOf(later)!;
                     const uri = AstUtils.getDocument(a).uri.toString();
                     const earlierRange = headRange(earlier);
-                    accept('warning', `The ${describeTransition(later)} may be enabled together with the ${describeTransition(earlier)} (line ${line(earlier)}): both start in state '${source.name}' on ${triggerText(later, timing)} and ${reason}. The first declared transition takes precedence.`, {
-                        node: later,
-                        range: headRange(later),
-                        code: AutomatonCodes.Nondeterministic,
-                        relatedInformation: earlierRange ? [{ location: { uri, range: earlierRange }, message: `the ${describeTransition(earlier)}` }] : undefined
-                    });
+                    accept(
+                        'warning',
+                        `The ${describeTransition(later)} may be enabled together with the ${describeTransition(earlier)} (line ${line(earlier)}): both start in state '${source.name}' on ${triggerText(later, timing)} and ${reason}. The first declared transition takes precedence.`,
+                        {
+                            node: later,
+                            range: headRange(later),
+                            code: AutomatonCodes.Nondeterministic,
+                            relatedInformation: earlierRange
+                                ? [{ location: { uri, range: earlierRange }, message: `the ${describeTransition(earlier)}` }]
+                                : undefined,
+                        },
+                    );
                     break;
                 }
             }
@@ -209,7 +269,12 @@ function overlapReason(earlier: AnyTransition, later: AnyTransition): string | u
 /** An expression's tokens without whitespace and comments, for syntactic comparison. */
 function tokens(e: AstNode): string {
     const cst = e.$cstNode;
-    return cst ? CstUtils.flattenCst(cst).filter((l) => !l.hidden).map((l) => l.text).join(' ') : '';
+    return cst
+        ? CstUtils.flattenCst(cst)
+              .filter((l) => !l.hidden)
+              .map((l) => l.text)
+              .join(' ')
+        : '';
 }
 
 function text(e: AstNode): string {

@@ -30,7 +30,7 @@ export function isAnyTransition(node: unknown): node is AnyTransition {
  */
 export function automatonTiming(a: Automaton): Timing {
     const decl = a.$container;
-    const names = isBehaviorDeclaration(decl) ? decl.stereotype?.values.map((v) => v.name) ?? [] : [];
+    const names = isBehaviorDeclaration(decl) ? (decl.stereotype?.values.map((v) => v.name) ?? []) : [];
     return names.find((n): n is Timing => (TIMINGS as readonly string[]).includes(n)) ?? DEFAULT_TIMING;
 }
 
@@ -120,7 +120,7 @@ export function isIncomingPort(node: unknown): node is Port {
 /** A short human-readable name of a transition, e.g. `S -> T` or `-> (internal in S)`. */
 export function describeTransition(t: AnyTransition): string {
     if (t.$type === 'InternalTransition') return `internal transition of state '${t.$container.name}'`;
-    return `transition '${t.source?.$refText ?? '?'} -> ${t.target?.$refText ?? '?'}'` // partially parsed: '?';
+    return `transition '${t.source?.$refText ?? '?'} -> ${t.target?.$refText ?? '?'}'`; // partially parsed: '?';
 }
 
 /**

@@ -14,7 +14,7 @@ export const AutomatonCodes = {
     UntimedNoEvent: 'automaton/untimed-no-event',
     InputInInitial: 'automaton/input-in-initial',
     Nondeterministic: 'automaton/nondeterministic',
-    UnsupportedElement: 'automaton/unsupported-element'
+    UnsupportedElement: 'automaton/unsupported-element',
 } as const;
 
 export type AutomatonCode = (typeof AutomatonCodes)[keyof typeof AutomatonCodes];

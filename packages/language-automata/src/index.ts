@@ -16,7 +16,7 @@ export * as ast from './generated/ast.js';
 export const AutomataGeneratedModules: GeneratedModules = {
     shared: AutomataGeneratedSharedModule,
     arc: ArcGeneratedModule,
-    cd: CdGeneratedModule
+    cd: CdGeneratedModule,
 };
 
 /**

@@ -37,12 +37,16 @@ describe('automaton/multiple-initial-states', () => {
         expect(e[0]!.message).toContain("'s1', 's2'");
     });
     test('several initial substates are a warning', async () => {
-        const found = await validate(comp('  automaton {\n    initial state A {\n      initial state A1;\n      initial state A2;\n    };\n  }'));
+        const found = await validate(
+            comp('  automaton {\n    initial state A {\n      initial state A1;\n      initial state A2;\n    };\n  }'),
+        );
         const w = found.filter((f) => f.code === 'automaton/multiple-initial-states');
         expect(w.map((f) => `${f.severity}@${f.text}@${f.line}`)).toEqual(['warning@initial@5']);
     });
     test('valid: initial states in different automata', async () => {
-        const found = await validate(comp('  component Inner1 { automaton { initial state s1; } }\n  component Inner2 { automaton { initial state s2; } }'));
+        const found = await validate(
+            comp('  component Inner1 { automaton { initial state s1; } }\n  component Inner2 { automaton { initial state s2; } }'),
+        );
         expect(hits(found, 'automaton/multiple-initial-states'), dump(found)).toEqual([]);
     });
 });
@@ -54,7 +58,9 @@ describe('automaton/duplicate-state', () => {
     });
     test('substates share the namespace of the automaton', async () => {
         const found = await validate(comp('  automaton {\n    initial state s1;\n    state s2 { initial state s1; };\n  }'));
-        expect(found.filter((f) => f.code === 'automaton/duplicate-state').map((f) => `${f.severity}@${f.text}@${f.line}`)).toEqual(['error@s1@4']);
+        expect(found.filter((f) => f.code === 'automaton/duplicate-state').map((f) => `${f.severity}@${f.text}@${f.line}`)).toEqual([
+            'error@s1@4',
+        ]);
     });
     test('valid: the same state name in two automata', async () => {
         const found = await validate(comp('  automaton { initial state s; }\n  component Inner { automaton { initial state s; } }'));
@@ -69,8 +75,13 @@ describe('automaton/missing-state', () => {
         expect(found.find((f) => f.code === 'automaton/missing-state')!.message).toContain("'s1'");
     });
     test('valid: transitions between states at any depth, in any order', async () => {
-        const found = await validate(comp('  automaton {\n    a -> bb;\n    bb -> a;\n    initial state a;\n    state b { initial state bb; };\n  }'));
-        expect(found.filter((f) => f.severity === 'error'), dump(found)).toEqual([]);
+        const found = await validate(
+            comp('  automaton {\n    a -> bb;\n    bb -> a;\n    initial state a;\n    state b { initial state bb; };\n  }'),
+        );
+        expect(
+            found.filter((f) => f.severity === 'error'),
+            dump(found),
+        ).toEqual([]);
     });
 });
 
@@ -86,9 +97,12 @@ describe('automaton/missing-event', () => {
     test('valid: inherited incoming ports are events', async () => {
         const found = await validate({
             'Base.arc': 'component Base {\n  port in int i;\n  port out int o;\n}',
-            'Comp.arc': 'component Comp extends Base {\n  automaton {\n    initial state S;\n    S -> S i / { o = i; };\n  }\n}'
+            'Comp.arc': 'component Comp extends Base {\n  automaton {\n    initial state S;\n    S -> S i / { o = i; };\n  }\n}',
         });
-        expect(found.filter((f) => f.severity === 'error'), dump(found)).toEqual([]);
+        expect(
+            found.filter((f) => f.severity === 'error'),
+            dump(found),
+        ).toEqual([]);
     });
 });
 
@@ -112,8 +126,15 @@ describe('automaton/guard-not-boolean', () => {
         expect(found[0]!.text).toBe('nope');
     });
     test('valid: boolean literals, fields, boxed ports, comparisons', async () => {
-        const found = await validate(comp('  port in Boolean b;\n  port in int i;\n  boolean v = true;\n  automaton {\n    initial state s;\n    s -> s [true];\n    s -> s [v] i;\n    s -> s [b] b;\n    s -> s [i > 0 && !v] i;\n  }'));
-        expect(found.filter((f) => f.severity === 'error'), dump(found)).toEqual([]);
+        const found = await validate(
+            comp(
+                '  port in Boolean b;\n  port in int i;\n  boolean v = true;\n  automaton {\n    initial state s;\n    s -> s [true];\n    s -> s [v] i;\n    s -> s [b] b;\n    s -> s [i > 0 && !v] i;\n  }',
+            ),
+        );
+        expect(
+            found.filter((f) => f.severity === 'error'),
+            dump(found),
+        ).toEqual([]);
     });
 });
 
@@ -128,7 +149,10 @@ describe('automaton/event-in-sync', () => {
     });
     test('valid: sync transitions without events', async () => {
         const found = await validate(comp(`${ports}\n  <<sync>> automaton {\n    initial state S;\n    S -> S [i > 0] / { o = i; };\n  }`));
-        expect(found.filter((f) => f.severity === 'error'), dump(found)).toEqual([]);
+        expect(
+            found.filter((f) => f.severity === 'error'),
+            dump(found),
+        ).toEqual([]);
     });
 });
 
@@ -139,15 +163,24 @@ describe('automaton/tick-in-untimed', () => {
     });
     test('valid: Tick in timed automata, explicit or by default', async () => {
         for (const stereo of ['<<timed>> ', '']) {
-            const found = await validate(comp(`${ports}\n  ${stereo}automaton {\n    initial state S;\n    S -> S Tick / { o = 0; };\n    S -> S i / { o = i; };\n  }`));
-            expect(found.filter((f) => f.severity === 'error'), dump(found)).toEqual([]);
+            const found = await validate(
+                comp(
+                    `${ports}\n  ${stereo}automaton {\n    initial state S;\n    S -> S Tick / { o = 0; };\n    S -> S i / { o = i; };\n  }`,
+                ),
+            );
+            expect(
+                found.filter((f) => f.severity === 'error'),
+                dump(found),
+            ).toEqual([]);
         }
     });
 });
 
 describe('automaton/untimed-no-event', () => {
     test('a transition without event in an untimed automaton: reported on its head', async () => {
-        const found = await validate(comp(`${ports}\n  <<untimed>> automaton {\n    initial state S;\n    S -> S [i > 0] / { o = i; };\n  }`));
+        const found = await validate(
+            comp(`${ports}\n  <<untimed>> automaton {\n    initial state S;\n    S -> S [i > 0] / { o = i; };\n  }`),
+        );
         expect(hits(found, 'automaton/untimed-no-event')).toEqual(['automaton/untimed-no-event@S -> S [i > 0]']);
     });
     test('an internal transition without event', async () => {
@@ -156,7 +189,10 @@ describe('automaton/untimed-no-event', () => {
     });
     test('valid: untimed transitions with port events', async () => {
         const found = await validate(comp(`${ports}\n  <<untimed>> automaton {\n    initial state S;\n    S -> S i / { o = i; };\n  }`));
-        expect(found.filter((f) => f.severity === 'error'), dump(found)).toEqual([]);
+        expect(
+            found.filter((f) => f.severity === 'error'),
+            dump(found),
+        ).toEqual([]);
     });
 });
 
@@ -168,34 +204,52 @@ describe('automaton/input-in-initial', () => {
     test('inherited incoming ports, nested initial blocks', async () => {
         const found = await validate({
             'Base.arc': 'component Base {\n  port in int i;\n  port out int o;\n}',
-            'Comp.arc': 'component Comp extends Base {\n  automaton {\n    initial state S {\n      initial { o = i + 1; } state S1;\n    };\n  }\n}'
+            'Comp.arc':
+                'component Comp extends Base {\n  automaton {\n    initial state S {\n      initial { o = i + 1; } state S1;\n    };\n  }\n}',
         });
         expect(hits(found, 'automaton/input-in-initial')).toEqual(['automaton/input-in-initial@i']);
     });
     test('valid: writing outgoing ports, reading fields and parameters, subcomponent ports', async () => {
-        const found = await validate(comp('  port in int i;\n  port out int o;\n  int f = 1;\n  component Inner { port in int i; }\n  Inner sub;\n  automaton {\n    initial { o = f + p; o = 2; } state s;\n    s -> s Tick / { o = i; };\n  }', '(int p)'));
+        const found = await validate(
+            comp(
+                '  port in int i;\n  port out int o;\n  int f = 1;\n  component Inner { port in int i; }\n  Inner sub;\n  automaton {\n    initial { o = f + p; o = 2; } state s;\n    s -> s Tick / { o = i; };\n  }',
+                '(int p)',
+            ),
+        );
         expect(hits(found, 'automaton/input-in-initial'), dump(found)).toEqual([]);
     });
 });
 
 describe('automaton/nondeterministic', () => {
     test('two unguarded tick transitions (Tick and no event) from one state', async () => {
-        const found = await validate(comp(`${ports}\n  automaton {\n    initial state S;\n    state T;\n    S -> T;\n    S -> S Tick / o = 1;;\n  }`));
+        const found = await validate(
+            comp(`${ports}\n  automaton {\n    initial state S;\n    state T;\n    S -> T;\n    S -> S Tick / o = 1;;\n  }`),
+        );
         const w = found.filter((f) => f.code === 'automaton/nondeterministic');
         expect(w.map((f) => `${f.severity}@${f.text}@${f.line}`)).toEqual(['warning@S -> S Tick@8']);
         expect(w[0]!.message).toContain("'S -> T'");
         expect(w[0]!.message).toContain('neither has a guard');
     });
     test('one unguarded transition with the same event', async () => {
-        const found = await validate(comp(`${ports}\n  automaton {\n    initial state S;\n    S -> S [i > 0] i / o = 1;;\n    S -> S i / o = 2;;\n  }`));
+        const found = await validate(
+            comp(`${ports}\n  automaton {\n    initial state S;\n    S -> S [i > 0] i / o = 1;;\n    S -> S i / o = 2;;\n  }`),
+        );
         expect(hits(found, 'automaton/nondeterministic')).toEqual(['automaton/nondeterministic@S -> S i']);
     });
     test('identical guards (up to layout), internal and regular transitions', async () => {
-        const found = await validate(comp(`${ports}\n  <<sync>> automaton {\n    initial state S {\n      -> [i>0] / o = 1;;\n    };\n    S -> S [ i > 0 ] / o = 2;;\n  }`));
+        const found = await validate(
+            comp(
+                `${ports}\n  <<sync>> automaton {\n    initial state S {\n      -> [i>0] / o = 1;;\n    };\n    S -> S [ i > 0 ] / o = 2;;\n  }`,
+            ),
+        );
         expect(hits(found, 'automaton/nondeterministic')).toEqual(['automaton/nondeterministic@S -> S [ i > 0 ]']);
     });
     test('valid: different guards, events or source states', async () => {
-        const found = await validate(comp(`  port in int i, j;\n  port out int o;\n  automaton {\n    initial state S;\n    state T;\n    S -> T [i > 0] i / o = 1;;\n    S -> S [i <= 0] i / o = 2;;\n    S -> S j / o = 3;;\n    S -> S Tick;\n    T -> S Tick;\n  }`));
+        const found = await validate(
+            comp(
+                `  port in int i, j;\n  port out int o;\n  automaton {\n    initial state S;\n    state T;\n    S -> T [i > 0] i / o = 1;;\n    S -> S [i <= 0] i / o = 2;;\n    S -> S j / o = 3;;\n    S -> S Tick;\n    T -> S Tick;\n  }`,
+            ),
+        );
         expect(hits(found, 'automaton/nondeterministic'), dump(found)).toEqual([]);
     });
 });
@@ -207,13 +261,18 @@ describe('arc/reserved-name for states', () => {
     });
     test('valid: soft keywords of the automaton language are fine as state names', async () => {
         const found = await validate(comp('  automaton {\n    initial state key;\n    state entry;\n    entry -> key;\n  }'));
-        expect(found.filter((f) => f.severity === 'error'), dump(found)).toEqual([]);
+        expect(
+            found.filter((f) => f.severity === 'error'),
+            dump(found),
+        ).toEqual([]);
     });
 });
 
 describe('statements in actions are checked by the host, once', () => {
     test('a type error in an action is reported exactly once', async () => {
-        const found = await validate(comp(`${ports}\n  automaton {\n    initial { o = true; } state S { entry / o = false; };\n    S -> S / { o = "x"; };\n  }`));
+        const found = await validate(
+            comp(`${ports}\n  automaton {\n    initial { o = true; } state S { entry / o = false; };\n    S -> S / { o = "x"; };\n  }`),
+        );
         expect(found.filter((f) => f.code === 'expr/type-mismatch').map((f) => f.line)).toEqual([5, 5, 6]);
     });
 });

@@ -12,14 +12,24 @@ const here = fileURLToPath(new URL('.', import.meta.url));
 
 /** The test classes of cocos-extended.json this package is responsible for. */
 const MODE_CLASSES: readonly string[] = [
-    'ModeCoCosTest', 'ModeAutomataInDecomposedComponentTest', 'ModeAutomatonContainsNoStatesTest', 'MaxOneModeAutomatonTest',
-    'ModeOmitPortDefinitionTest', 'AtLeastOneInitialStateTest', 'MaxOneInitialStateTest', 'StatechartContainsNoModeTest',
-    'UnsupportedAutomatonElementsTest'
+    'ModeCoCosTest',
+    'ModeAutomataInDecomposedComponentTest',
+    'ModeAutomatonContainsNoStatesTest',
+    'MaxOneModeAutomatonTest',
+    'ModeOmitPortDefinitionTest',
+    'AtLeastOneInitialStateTest',
+    'MaxOneInitialStateTest',
+    'StatechartContainsNoModeTest',
+    'UnsupportedAutomatonElementsTest',
 ];
 
 const suites = [
     { name: 'cocos.json', title: 'core cases with automata', pick: (c: { model: string }) => /\bautomaton\b/.test(c.model) },
-    { name: 'cocos-extended.json', title: 'mode automata and unsupported automaton elements', pick: (c: { cls: string }) => MODE_CLASSES.includes(c.cls) },
+    {
+        name: 'cocos-extended.json',
+        title: 'mode automata and unsupported automaton elements',
+        pick: (c: { cls: string }) => MODE_CLASSES.includes(c.cls),
+    },
 ] as const;
 
 for (const suite of suites) {
@@ -42,7 +52,14 @@ for (const suite of suites) {
         }
         test.each(cases.map((c) => [`${c.cls} ${c.kind}: ${c.comment}`, c] as const))('%s', async (_name, c) => {
             const found = await validate(cocosCaseFiles(c));
-            expect(cocosFailure(c, found.map((f) => f.code), forbidden), dump(found)).toBeUndefined();
+            expect(
+                cocosFailure(
+                    c,
+                    found.map((f) => f.code),
+                    forbidden,
+                ),
+                dump(found),
+            ).toBeUndefined();
         });
     });
 }

@@ -9,10 +9,16 @@ const NEG = 'component Neg {\n  port in int i;\n  port out int o;\n  <<sync>> co
 const BOOL = 'component Flag {\n  port in int i;\n  port out boolean o;\n  <<sync>> compute { o = i > 0; }\n}';
 
 function switcher(body: string): Record<string, string> {
-    return { 'Pass.arc': PASS, 'Neg.arc': NEG, 'Flag.arc': BOOL, 'Switch.arc': `component Switch {\n  port in int i;\n  port out int o;\n${body}\n}` };
+    return {
+        'Pass.arc': PASS,
+        'Neg.arc': NEG,
+        'Flag.arc': BOOL,
+        'Switch.arc': `component Switch {\n  port in int i;\n  port out int o;\n${body}\n}`,
+    };
 }
 
-const TWO_MODES = '  <<sync>> mode automaton {\n    initial mode Up { Pass p; i -> p.i; p.o -> o; }\n    mode Down { Neg n; i -> n.i; n.o -> o; }\n    Up -> Down [i < 0];\n    Down -> Up [i >= 0];\n  }';
+const TWO_MODES =
+    '  <<sync>> mode automaton {\n    initial mode Up { Pass p; i -> p.i; p.o -> o; }\n    mode Down { Neg n; i -> n.i; n.o -> o; }\n    Up -> Down [i < 0];\n    Down -> Up [i >= 0];\n  }';
 
 describe('mode automata', () => {
     test('parse into modes with their subcomponents, connectors and transitions', async () => {
@@ -31,29 +37,55 @@ describe('mode automata', () => {
 
     test('a valid model with two modes driving the same out port has no errors', async () => {
         const found = await validate(switcher(TWO_MODES));
-        expect(found.filter((f) => f.severity === 'error'), dump(found)).toEqual([]);
+        expect(
+            found.filter((f) => f.severity === 'error'),
+            dump(found),
+        ).toEqual([]);
     });
 
     test("a mode's connectors see its own subcomponents and the shared ones, not another mode's", async () => {
-        const found = await validate(switcher('  Pass shared;\n  i -> shared.i;\n  <<sync>> mode automaton {\n    initial mode Up { Pass p; shared.o -> p.i; p.o -> o; }\n    mode Down { n.o -> o; }\n  }'));
+        const found = await validate(
+            switcher(
+                '  Pass shared;\n  i -> shared.i;\n  <<sync>> mode automaton {\n    initial mode Up { Pass p; shared.o -> p.i; p.o -> o; }\n    mode Down { n.o -> o; }\n  }',
+            ),
+        );
         const links = found.filter((f) => f.code.startsWith('link/') || f.code === 'arc/missing-subcomponent');
-        expect(links.map((f) => f.text), dump(found)).toEqual(['n']);
+        expect(
+            links.map((f) => f.text),
+            dump(found),
+        ).toEqual(['n']);
     });
 
     test('mode transitions name modes of their automaton (automaton/missing-state otherwise)', async () => {
         const found = await validate(switcher(TWO_MODES.replace('Down -> Up', 'Down -> Sideways')));
-        expect(found.filter((f) => f.code === 'automaton/missing-state').map((f) => f.text), dump(found)).toEqual(['Sideways']);
+        expect(
+            found.filter((f) => f.code === 'automaton/missing-state').map((f) => f.text),
+            dump(found),
+        ).toEqual(['Sideways']);
     });
 
     test('guards are boolean and sync mode transitions take no event', async () => {
         const found = await validate(switcher(TWO_MODES.replace('[i < 0]', '[i - 1] i')));
-        expect(found.filter((f) => f.severity === 'error').map((f) => f.code).sort(), dump(found)).toEqual(['automaton/event-in-sync', 'automaton/guard-not-boolean']);
+        expect(
+            found
+                .filter((f) => f.severity === 'error')
+                .map((f) => f.code)
+                .sort(),
+            dump(found),
+        ).toEqual(['automaton/event-in-sync', 'automaton/guard-not-boolean']);
     });
 
     test('connectors in a mode: directions, types and one sender per port in that mode', async () => {
-        const found = await validate(switcher('  <<sync>> mode automaton {\n    initial mode Up { Pass p; Flag f; o -> p.i; i -> f.i; f.o -> o; p.o -> o; }\n  }'));
-        expect(found.filter((f) => f.severity === 'error').map((f) => f.code).sort(), dump(found))
-            .toEqual(['arc/connector-type-mismatch', 'arc/multiple-senders', 'arc/source-direction-mismatch']);
+        const found = await validate(
+            switcher('  <<sync>> mode automaton {\n    initial mode Up { Pass p; Flag f; o -> p.i; i -> f.i; f.o -> o; p.o -> o; }\n  }'),
+        );
+        expect(
+            found
+                .filter((f) => f.severity === 'error')
+                .map((f) => f.code)
+                .sort(),
+            dump(found),
+        ).toEqual(['arc/connector-type-mismatch', 'arc/multiple-senders', 'arc/source-direction-mismatch']);
     });
 
     test('duplicate mode names are reported', async () => {
@@ -63,24 +95,44 @@ describe('mode automata', () => {
 
     test('a mode automaton is no second behavior of its component', async () => {
         const found = await validate(switcher(`${TWO_MODES}\n  <<sync>> compute { }`));
-        expect(found.filter((f) => f.code === 'arc/multiple-behaviors'), dump(found)).toEqual([]);
+        expect(
+            found.filter((f) => f.code === 'arc/multiple-behaviors'),
+            dump(found),
+        ).toEqual([]);
     });
 
     test('mode and final stay usable as names', async () => {
-        const found = await validate({ 'Comp.arc': 'component Comp {\n  port in int mode, out int final;\n  <<sync>> compute { final = mode; }\n}' });
-        expect(found.filter((f) => f.code.startsWith('syntax/')), dump(found)).toEqual([]);
+        const found = await validate({
+            'Comp.arc': 'component Comp {\n  port in int mode, out int final;\n  <<sync>> compute { final = mode; }\n}',
+        });
+        expect(
+            found.filter((f) => f.code.startsWith('syntax/')),
+            dump(found),
+        ).toEqual([]);
     });
 });
 
 describe('connectedness with modes', () => {
     test('ports connected only in a mode count as connected (shared subcomponents, out ports)', async () => {
-        const found = await validate(switcher('  Pass always;\n  i -> always.i;\n  <<sync>> mode automaton {\n    initial mode Up { Pass p; always.o -> p.i; p.o -> o; }\n    mode Down { Neg n; always.o -> n.i; n.o -> o; }\n  }'));
-        expect(found.filter((f) => f.code.startsWith('arc/unconnected') || f.code.startsWith('arc/unused')), dump(found)).toEqual([]);
+        const found = await validate(
+            switcher(
+                '  Pass always;\n  i -> always.i;\n  <<sync>> mode automaton {\n    initial mode Up { Pass p; always.o -> p.i; p.o -> o; }\n    mode Down { Neg n; always.o -> n.i; n.o -> o; }\n  }',
+            ),
+        );
+        expect(
+            found.filter((f) => f.code.startsWith('arc/unconnected') || f.code.startsWith('arc/unused')),
+            dump(found),
+        ).toEqual([]);
     });
 
     test('a port of a shared subcomponent connected in no mode is still reported', async () => {
-        const found = await validate(switcher('  Pass always;\n  <<sync>> mode automaton {\n    initial mode Up { Pass p; i -> p.i; p.o -> o; }\n  }'));
-        expect(found.filter((f) => f.code === 'arc/unconnected-sub-in-port').map((f) => f.text), dump(found)).toEqual(['always']);
+        const found = await validate(
+            switcher('  Pass always;\n  <<sync>> mode automaton {\n    initial mode Up { Pass p; i -> p.i; p.o -> o; }\n  }'),
+        );
+        expect(
+            found.filter((f) => f.code === 'arc/unconnected-sub-in-port').map((f) => f.text),
+            dump(found),
+        ).toEqual(['always']);
     });
 });
 
@@ -89,22 +141,38 @@ describe('partial input', () => {
         '  <<sync>> mode automaton {\n    initial mode',
         '  <<sync>> mode automaton {\n    initial mode A { Pass p; -> p.i; }\n    A -> ;\n  }',
         '  <<sync>> mode automaton {\n    mode { i -> }\n    -> B [;\n  }',
-        '  mode automaton { initial mode A { port in int; } A -> A Tick / o = ; }'
+        '  mode automaton { initial mode A { port in int; } A -> A Tick / o = ; }',
     ])('gives diagnostics, never a failed check: %s', async (body) => {
         const found = await validate(switcher(body));
-        expect(found.filter((f) => f.code === 'internal/check-failed'), dump(found)).toEqual([]);
+        expect(
+            found.filter((f) => f.code === 'internal/check-failed'),
+            dump(found),
+        ).toEqual([]);
         expect(found.length).toBeGreaterThan(0);
     });
 });
 
 describe('subcomponent names', () => {
     test('are unique across the component and all its modes (arc/duplicate-name)', async () => {
-        const found = await validate(switcher('  Pass p;\n  i -> p.i;\n  <<sync>> mode automaton {\n    initial mode Up { Pass q; p.o -> q.i; q.o -> o; }\n    mode Down { Pass p; Neg q; p.o -> q.i; q.o -> o; }\n  }'));
-        expect(found.filter((f) => f.code === 'arc/duplicate-name').map((f) => f.text).sort(), dump(found)).toEqual(['p', 'q']);
+        const found = await validate(
+            switcher(
+                '  Pass p;\n  i -> p.i;\n  <<sync>> mode automaton {\n    initial mode Up { Pass q; p.o -> q.i; q.o -> o; }\n    mode Down { Pass p; Neg q; p.o -> q.i; q.o -> o; }\n  }',
+            ),
+        );
+        expect(
+            found
+                .filter((f) => f.code === 'arc/duplicate-name')
+                .map((f) => f.text)
+                .sort(),
+            dump(found),
+        ).toEqual(['p', 'q']);
     });
 
     test('distinct names in different modes are fine', async () => {
         const found = await validate(switcher(TWO_MODES));
-        expect(found.filter((f) => f.code === 'arc/duplicate-name'), dump(found)).toEqual([]);
+        expect(
+            found.filter((f) => f.code === 'arc/duplicate-name'),
+            dump(found),
+        ).toEqual([]);
     });
 });

@@ -11,7 +11,8 @@ const available = existsSync(MODELS);
 
 function walk(dir: string): string[] {
     return readdirSync(dir, { withFileTypes: true }).flatMap((e) =>
-        e.isDirectory() ? walk(join(dir, e.name)) : /\.(arc|cd)$/.test(e.name) ? [join(dir, e.name)] : []);
+        e.isDirectory() ? walk(join(dir, e.name)) : /\.(arc|cd)$/.test(e.name) ? [join(dir, e.name)] : [],
+    );
 }
 
 describe.skipIf(!available)('MontiArc io models with automata', () => {
@@ -20,7 +21,9 @@ describe.skipIf(!available)('MontiArc io models with automata', () => {
         return;
     }
     const files = Object.fromEntries(walk(MODELS).map((f) => [relative(MODELS, f), readFileSync(f, 'utf8')]));
-    const withAutomata = Object.keys(files).filter((f) => f.endsWith('.arc') && /\bautomaton\b/.test(files[f]!.replace(/\/\*[\s\S]*?\*\/|\/\/.*/g, '')));
+    const withAutomata = Object.keys(files).filter(
+        (f) => f.endsWith('.arc') && /\bautomaton\b/.test(files[f]!.replace(/\/\*[\s\S]*?\*\/|\/\/.*/g, '')),
+    );
     let found: Finding[] | undefined;
     const all = async (): Promise<Finding[]> => (found ??= await validate(files));
 
@@ -29,10 +32,16 @@ describe.skipIf(!available)('MontiArc io models with automata', () => {
     });
     test.each(withAutomata)('%s parses without syntax errors', async (file) => {
         const mine = (await all()).filter((f) => f.file === file);
-        expect(mine.filter((f) => f.code.startsWith('syntax/')), JSON.stringify(mine, null, 1)).toEqual([]);
+        expect(
+            mine.filter((f) => f.code.startsWith('syntax/')),
+            JSON.stringify(mine, null, 1),
+        ).toEqual([]);
     });
     test.each(withAutomata)('%s has no automaton errors', async (file) => {
         const mine = (await all()).filter((f) => f.file === file);
-        expect(mine.filter((f) => f.code.startsWith('automaton/') && f.severity === 'error'), JSON.stringify(mine, null, 1)).toEqual([]);
+        expect(
+            mine.filter((f) => f.code.startsWith('automaton/') && f.severity === 'error'),
+            JSON.stringify(mine, null, 1),
+        ).toEqual([]);
     });
 });

@@ -27,7 +27,11 @@ describe('states', () => {
     state D { state D1; }
   }`);
         expect(allStates(a).map((s) => s.name)).toEqual(['A', 'B', 'C', 'C1', 'C2', 'C21', 'D', 'D1']);
-        expect(allStates(a).filter((s) => s.initial).map((s) => s.name)).toEqual(['A', 'C1', 'C21']);
+        expect(
+            allStates(a)
+                .filter((s) => s.initial)
+                .map((s) => s.name),
+        ).toEqual(['A', 'C1', 'C21']);
         expect(startState(a)?.name).toBe('A');
     });
 
@@ -61,10 +65,16 @@ describe('states', () => {
       do / if (true) o = "d";
     };
   }`);
-        const actions = AstUtils.streamAst(a).filter((n): n is StateAction => n.$type === 'StateAction').toArray();
+        const actions = AstUtils.streamAst(a)
+            .filter((n): n is StateAction => n.$type === 'StateAction')
+            .toArray();
         expect(actions.map((x) => `${x.$container.name}.${x.kind}:${x.action.$type}`)).toEqual([
-            'A.entry:ExpressionStatement', 'A.do:ExpressionStatement', 'A.exit:ExpressionStatement',
-            'B.entry:Block', 'B.exit:Block', 'B.do:IfStatement'
+            'A.entry:ExpressionStatement',
+            'A.do:ExpressionStatement',
+            'A.exit:ExpressionStatement',
+            'B.entry:Block',
+            'B.exit:Block',
+            'B.do:IfStatement',
         ]);
     });
 
@@ -81,7 +91,8 @@ describe('states', () => {
 
 describe('transitions', () => {
     test('every combination of guard, event and action; MontiArc double semicolons', async () => {
-        const a = await automatonOf(`
+        const a = await automatonOf(
+            `
   port in int i;
   port out int o;
   automaton {
@@ -97,9 +108,15 @@ describe('transitions', () => {
     S -> T [i < 0] Tick / o = -1;;
     T -> S / { o = 0; }
     T -> S / o = 0;
-  }`, '');
+  }`,
+            '',
+        );
         const ts = allTransitions(a) as Transition[];
-        expect(ts.map((t) => [t.source.$refText, t.target.$refText, t.guard !== undefined, triggerOf(t).kind, t.action?.$type ?? '-'].join(' '))).toEqual([
+        expect(
+            ts.map((t) =>
+                [t.source.$refText, t.target.$refText, t.guard !== undefined, triggerOf(t).kind, t.action?.$type ?? '-'].join(' '),
+            ),
+        ).toEqual([
             'S T false none -',
             'S T true none -',
             'S T false port -',
@@ -109,7 +126,7 @@ describe('transitions', () => {
             'S T true port Block',
             'S T true tick ExpressionStatement',
             'T S false none Block',
-            'T S false none ExpressionStatement'
+            'T S false none ExpressionStatement',
         ]);
         expect(ts.every((t) => t.source.ref && t.target.ref)).toBe(true);
     });
@@ -127,7 +144,9 @@ describe('transitions', () => {
   }`);
         const ts = allTransitions(a) as InternalTransition[];
         expect(ts.map((t) => `${t.$type}:${t.$container.name}:${triggerOf(t).kind}`)).toEqual([
-            'InternalTransition:A:port', 'InternalTransition:A:none', 'InternalTransition:A:tick'
+            'InternalTransition:A:port',
+            'InternalTransition:A:none',
+            'InternalTransition:A:tick',
         ]);
     });
 
@@ -150,12 +169,22 @@ describe('transitions', () => {
 
 describe('soft keywords', () => {
     test('Tick, state, initial, entry, exit remain usable as names outside automata', async () => {
-        const found = await validate(comp('  port in int state, entry, exit;\n  port out int initial;\n  automaton {\n    initial state S;\n    S -> S entry / initial = state + exit;;\n  }'));
-        expect(found.filter((f) => f.code.startsWith('syntax/') || f.code.startsWith('link/')), dump(found)).toEqual([]);
+        const found = await validate(
+            comp(
+                '  port in int state, entry, exit;\n  port out int initial;\n  automaton {\n    initial state S;\n    S -> S entry / initial = state + exit;;\n  }',
+            ),
+        );
+        expect(
+            found.filter((f) => f.code.startsWith('syntax/') || f.code.startsWith('link/')),
+            dump(found),
+        ).toEqual([]);
     });
     test('a port named Tick parses and is reported as a reserved name', async () => {
         const found = await validate(comp('  port in int Tick;'));
-        expect(found.filter((f) => f.code.startsWith('syntax/')), dump(found)).toEqual([]);
+        expect(
+            found.filter((f) => f.code.startsWith('syntax/')),
+            dump(found),
+        ).toEqual([]);
         expect(found.map((f) => f.code)).toContain('arc/reserved-name');
     });
 });

@@ -22,7 +22,7 @@ export const RobotArmCodes = {
     CommandWithoutProgram: 'robotarm/command-without-program',
     ProgramWithoutCommand: 'robotarm/program-without-command',
     FileNameMismatch: 'robotarm/file-name-mismatch',
-    PackageMismatch: 'robotarm/package-mismatch'
+    PackageMismatch: 'robotarm/package-mismatch',
 } as const;
 
 export type RobotArmCode = (typeof RobotArmCodes)[keyof typeof RobotArmCodes];

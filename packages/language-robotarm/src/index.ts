@@ -14,7 +14,7 @@ export * as ast from './generated/ast.js';
 export const RobotArmGeneratedModules: GeneratedModules = {
     shared: RobotArmGeneratedSharedModule,
     arc: ArcGeneratedModule,
-    cd: CdGeneratedModule
+    cd: CdGeneratedModule,
 };
 
 /** The standalone `.ra` language of this package's grammar build, with its generated module. */

@@ -1,12 +1,27 @@
 import { GrammarUtils, type AstNode, type ValidationAcceptor, type ValidationChecks } from 'langium';
 import { isErroneous, printType, type AdlServices, type ModelRoots, type TypeRelations } from '@maa/language-adl';
-import type {
-    Location, Move, Program, RobotArm, RobotArmAstType, RobotArmInput, RobotArmModel
-} from './generated/ast.js';
+import type { Location, Move, Program, RobotArm, RobotArmAstType, RobotArmInput, RobotArmModel } from './generated/ast.js';
 import {
-    commandConstantName, enumConstants, feederType, formatSI, incomingPortsOf, inputsOf, isEmbedded, locationsOf,
-    moveForm, parseMeasure, programForCommand, programsOf, protocolPorts, robotArmComponent, RobotArmProtocol,
-    ROBOT_ARM_PROFILE, withinLimits, type Dimension, type JointOperand, type RobotArmBody
+    commandConstantName,
+    enumConstants,
+    feederType,
+    formatSI,
+    incomingPortsOf,
+    inputsOf,
+    isEmbedded,
+    locationsOf,
+    moveForm,
+    parseMeasure,
+    programForCommand,
+    programsOf,
+    protocolPorts,
+    robotArmComponent,
+    RobotArmProtocol,
+    ROBOT_ARM_PROFILE,
+    withinLimits,
+    type Dimension,
+    type JointOperand,
+    type RobotArmBody,
 } from './robotarm-model.js';
 import { RobotArmCodes } from './codes.js';
 
@@ -28,7 +43,11 @@ export class RobotArmChecks {
         RobotArmModel: (m, accept) => this.checkFile(m, accept),
         RobotArmDefinition: (d, accept) => {
             if (d.name && /^[a-z]/.test(d.name)) {
-                accept('warning', `The robot arm name '${d.name}' should start with an upper-case letter.`, { node: d, property: 'name', code: RobotArmCodes.NamingConvention });
+                accept('warning', `The robot arm name '${d.name}' should start with an upper-case letter.`, {
+                    node: d,
+                    property: 'name',
+                    code: RobotArmCodes.NamingConvention,
+                });
             }
             this.checkBody(d, accept);
         },
@@ -39,8 +58,11 @@ export class RobotArmChecks {
         RobotArmInput: (i, accept) => {
             const body = i.$container;
             if (body && isEmbedded(body)) {
-                accept('error', `Input '${i.name}' cannot be declared in an embedded robotarm block: there the names after 'move' denote incoming ports of the component; declare 'port in ${i.type?.$cstNode?.text ?? 'int'} ${i.name};' instead.`,
-                    { node: i, code: RobotArmCodes.InputInEmbedded });
+                accept(
+                    'error',
+                    `Input '${i.name}' cannot be declared in an embedded robotarm block: there the names after 'move' denote incoming ports of the component; declare 'port in ${i.type?.$cstNode?.text ?? 'int'} ${i.name};' instead.`,
+                    { node: i, code: RobotArmCodes.InputInEmbedded },
+                );
             }
         },
         Location: (l, accept) => {
@@ -49,14 +71,21 @@ export class RobotArmChecks {
         },
         Program: (p, accept) => {
             if (p.name && /^[a-z]/.test(p.name)) {
-                accept('warning', `The program name '${p.name}' should start with an upper-case letter (programs are selected by command constants such as '${commandConstantName(p.name)}').`,
-                    { node: p, property: 'name', code: RobotArmCodes.NamingConvention });
+                accept(
+                    'warning',
+                    `The program name '${p.name}' should start with an upper-case letter (programs are selected by command constants such as '${commandConstantName(p.name)}').`,
+                    { node: p, property: 'name', code: RobotArmCodes.NamingConvention },
+                );
             }
             if (p.name && p.steps.length === 0) {
-                accept('warning', `Program '${p.name}' has no steps: it completes as soon as it starts.`, { node: p, property: 'name', code: RobotArmCodes.EmptyProgram });
+                accept('warning', `Program '${p.name}' has no steps: it completes as soon as it starts.`, {
+                    node: p,
+                    property: 'name',
+                    code: RobotArmCodes.EmptyProgram,
+                });
             }
         },
-        Move: (m, accept) => this.checkMove(m, accept)
+        Move: (m, accept) => this.checkMove(m, accept),
     };
 
     // ---- files ----
@@ -67,7 +96,11 @@ export class RobotArmChecks {
         if (!doc || !r?.name || this.roots.isBuiltin(doc.uri)) return;
         const file = doc.uri.path.substring(doc.uri.path.lastIndexOf('/') + 1).replace(/\.ra$/, '');
         if (r.name !== file) {
-            accept('error', `Robot arm '${r.name}' must be declared in a file named '${r.name}.ra', not '${file}.ra'.`, { node: r, property: 'name', code: RobotArmCodes.FileNameMismatch });
+            accept('error', `Robot arm '${r.name}' must be declared in a file named '${r.name}.ra', not '${file}.ra'.`, {
+                node: r,
+                property: 'name',
+                code: RobotArmCodes.FileNameMismatch,
+            });
         }
         const expected = this.roots.expectedPackage(doc.uri);
         if ((m.package ?? '') !== expected) {
@@ -87,17 +120,24 @@ export class RobotArmChecks {
             if (!e.name) continue;
             const first = targets.get(e.name);
             if (first) {
-                const clash = first.$type === e.$type ? 'is already declared' : `has the name of the ${kindOf(first).toLowerCase()} declared`;
-                accept('error', `${kindOf(e)} '${e.name}' ${clash} on line ${line(first)}: inputs and locations share one namespace, the names after 'move'.`,
-                    { node: e, property: 'name', code: RobotArmCodes.DuplicateName });
+                const clash =
+                    first.$type === e.$type ? 'is already declared' : `has the name of the ${kindOf(first).toLowerCase()} declared`;
+                accept(
+                    'error',
+                    `${kindOf(e)} '${e.name}' ${clash} on line ${line(first)}: inputs and locations share one namespace, the names after 'move'.`,
+                    { node: e, property: 'name', code: RobotArmCodes.DuplicateName },
+                );
             } else targets.set(e.name, e);
         }
         if (embedded) {
             const ports = new Map(incomingPortsOf(body).map((p) => [p.name, p]));
             for (const l of locationsOf(body)) {
                 if (l.name && ports.has(l.name)) {
-                    accept('error', `Location '${l.name}' has the name of an incoming port of the component: 'move ${l.name}' would be ambiguous; rename the location.`,
-                        { node: l, property: 'name', code: RobotArmCodes.DuplicateName });
+                    accept(
+                        'error',
+                        `Location '${l.name}' has the name of an incoming port of the component: 'move ${l.name}' would be ambiguous; rename the location.`,
+                        { node: l, property: 'name', code: RobotArmCodes.DuplicateName },
+                    );
                 }
             }
         }
@@ -106,15 +146,26 @@ export class RobotArmChecks {
             if (!p.name) continue;
             const first = programs.get(p.name);
             if (first) {
-                accept('error', `Program '${p.name}' is already declared on line ${line(first)}.`, { node: p, property: 'name', code: RobotArmCodes.DuplicateName });
+                accept('error', `Program '${p.name}' is already declared on line ${line(first)}.`, {
+                    node: p,
+                    property: 'name',
+                    code: RobotArmCodes.DuplicateName,
+                });
             } else programs.set(p.name, p);
         }
         for (const e of [...inputsOf(body), ...locationsOf(body)]) {
             if (e.name && e.name in ROBOT_ARM_PROFILE.constants) {
-                accept('error', `'${e.name}' is a RobotArm constant ('move ${e.name};' always moves the lift to its ${e.name} position): choose another name for this ${kindOf(e).toLowerCase()}.`,
-                    { node: e, property: 'name', code: RobotArmCodes.ReservedName });
+                accept(
+                    'error',
+                    `'${e.name}' is a RobotArm constant ('move ${e.name};' always moves the lift to its ${e.name} position): choose another name for this ${kindOf(e).toLowerCase()}.`,
+                    { node: e, property: 'name', code: RobotArmCodes.ReservedName },
+                );
             } else if (e.name && /^[A-Z]/.test(e.name)) {
-                accept('warning', `The ${kindOf(e).toLowerCase()} name '${e.name}' should start with a lower-case letter.`, { node: e, property: 'name', code: RobotArmCodes.NamingConvention });
+                accept('warning', `The ${kindOf(e).toLowerCase()} name '${e.name}' should start with a lower-case letter.`, {
+                    node: e,
+                    property: 'name',
+                    code: RobotArmCodes.NamingConvention,
+                });
             }
         }
     }
@@ -122,23 +173,43 @@ export class RobotArmChecks {
     // ---- values ----
 
     /** A measure in a location or a move: a known unit of the expected dimension, within the joint limits. */
-    private checkMeasure(node: AstNode, property: string, text: string | undefined, accept: ValidationAcceptor, expected: Dimension = property as Dimension): void {
+    private checkMeasure(
+        node: AstNode,
+        property: string,
+        text: string | undefined,
+        accept: ValidationAcceptor,
+        expected: Dimension = property as Dimension,
+    ): void {
         if (!this.checkUnit(node, property, text, accept, expected)) return;
         const m = parseMeasure(text)!;
         const shown = written(node, property, text);
         const what = expected === 'angle' ? 'joint angle' : 'gripper height';
         if (m.dimension !== expected) {
-            accept('error', `'${shown}' is ${m.dimension === 'angle' ? 'an angle' : 'a height'}, but a ${what} is expected here (${UNIT_NAMES[expected]}).`, { node, property, code: RobotArmCodes.UnitMismatch });
+            accept(
+                'error',
+                `'${shown}' is ${m.dimension === 'angle' ? 'an angle' : 'a height'}, but a ${what} is expected here (${UNIT_NAMES[expected]}).`,
+                { node, property, code: RobotArmCodes.UnitMismatch },
+            );
             return;
         }
         if (m.si !== undefined && !withinLimits(expected, m.si)) {
             const { min, max } = ROBOT_ARM_PROFILE[expected];
-            accept('error', `The ${what} '${shown}' is outside the arm's range ${formatSI(expected, min)} .. ${formatSI(expected, max)}.`, { node, property, code: RobotArmCodes.JointLimit });
+            accept('error', `The ${what} '${shown}' is outside the arm's range ${formatSI(expected, min)} .. ${formatSI(expected, max)}.`, {
+                node,
+                property,
+                code: RobotArmCodes.JointLimit,
+            });
         }
     }
 
     /** Reports a missing or unknown unit; true when the unit is known. */
-    private checkUnit(node: AstNode, property: string, text: string | undefined, accept: ValidationAcceptor, expected?: Dimension): boolean {
+    private checkUnit(
+        node: AstNode,
+        property: string,
+        text: string | undefined,
+        accept: ValidationAcceptor,
+        expected?: Dimension,
+    ): boolean {
         const m = parseMeasure(text);
         if (!m) return false;
         const shown = written(node, property, text);
@@ -146,11 +217,19 @@ export class RobotArmChecks {
         if (!m.unit) {
             const example = `${m.value}${expected === 'height' ? 'cm' : 'deg'}`;
             const what = expected === 'angle' ? 'joint angle' : expected === 'height' ? 'gripper height' : 'value';
-            accept('error', `The ${what} '${shown}' has no unit: write e.g. '${example}' (${units}).`, { node, property, code: RobotArmCodes.InvalidUnit });
+            accept('error', `The ${what} '${shown}' has no unit: write e.g. '${example}' (${units}).`, {
+                node,
+                property,
+                code: RobotArmCodes.InvalidUnit,
+            });
             return false;
         }
         if (!m.dimension) {
-            accept('error', `Unknown unit '${m.unit}' in '${shown}': a value is a number with a unit (${units}), e.g. '90deg' or '20cm'.`, { node, property, code: RobotArmCodes.InvalidUnit });
+            accept('error', `Unknown unit '${m.unit}' in '${shown}': a value is a number with a unit (${units}), e.g. '90deg' or '20cm'.`, {
+                node,
+                property,
+                code: RobotArmCodes.InvalidUnit,
+            });
             return false;
         }
         return true;
@@ -186,8 +265,11 @@ export class RobotArmChecks {
         const type = feederType(node, body);
         if (!type || isErroneous(type) || this.rel.isNumeric(type)) return;
         const what = o.kind === 'input' ? 'input' : 'incoming port';
-        accept('error', `The ${what} '${node.name}' is of type ${printType(type)}, but 'move' needs a number for the ${dimension === 'angle' ? 'joint angle' : 'gripper height'} (read in ${dimension === 'angle' ? 'degrees' : 'centimeters'}).`,
-            { node: o.node, code: RobotArmCodes.MoveNotNumeric });
+        accept(
+            'error',
+            `The ${what} '${node.name}' is of type ${printType(type)}, but 'move' needs a number for the ${dimension === 'angle' ? 'joint angle' : 'gripper height'} (read in ${dimension === 'angle' ? 'degrees' : 'centimeters'}).`,
+            { node: o.node, code: RobotArmCodes.MoveNotNumeric },
+        );
     }
 
     // ---- the port protocol of an embedded robot arm ----
@@ -199,45 +281,69 @@ export class RobotArmChecks {
         const at = { node: body, keyword: 'robotarm' } as const;
         const { commandPort, statusPort, statusValues, noCommand } = RobotArmProtocol;
 
-        if (!cmd || cmd.direction !== 'in') {
+        if (cmd?.direction !== 'in') {
             const why = cmd ? `its port '${commandPort}' is outgoing` : `it has no port '${commandPort}'`;
-            accept('error', `Component '${component.name}' runs RobotArm programs, but ${why}: declare 'port in <Enum> ${commandPort};' whose enum constants name the programs (e.g. '${programsOf(body).filter((p) => p.name).map((p) => commandConstantName(p.name))[0] ?? 'PICKUP'}').`,
-                { ...at, code: RobotArmCodes.MissingCmdPort });
+            accept(
+                'error',
+                `Component '${component.name}' runs RobotArm programs, but ${why}: declare 'port in <Enum> ${commandPort};' whose enum constants name the programs (e.g. '${
+                    programsOf(body)
+                        .filter((p) => p.name)
+                        .map((p) => commandConstantName(p.name))[0] ?? 'PICKUP'
+                }').`,
+                { ...at, code: RobotArmCodes.MissingCmdPort },
+            );
         } else {
             const constants = enumConstants(cmd.type);
             if (!constants) {
                 if (!isErroneous(cmd.type)) {
-                    accept('error', `Port '${commandPort}' of component '${component.name}' is of type ${printType(cmd.type)}, but the program to run is selected by an enum from a class diagram whose constants name the programs.`,
-                        { node: cmd.port, property: 'type', code: RobotArmCodes.CmdPortType });
+                    accept(
+                        'error',
+                        `Port '${commandPort}' of component '${component.name}' is of type ${printType(cmd.type)}, but the program to run is selected by an enum from a class diagram whose constants name the programs.`,
+                        { node: cmd.port, property: 'type', code: RobotArmCodes.CmdPortType },
+                    );
                 }
             } else {
                 const typeName = printType(cmd.type);
                 for (const c of constants) {
                     if (c === noCommand || programForCommand(body, c)) continue;
-                    accept('error', `Command '${typeName}.${c}' (port '${commandPort}') selects no program of this robot arm: add a program '${c}' or '${pascal(c)}', or remove the constant ('${noCommand}' is the only constant that names no program).`,
-                        { ...at, code: RobotArmCodes.CommandWithoutProgram });
+                    accept(
+                        'error',
+                        `Command '${typeName}.${c}' (port '${commandPort}') selects no program of this robot arm: add a program '${c}' or '${pascal(c)}', or remove the constant ('${noCommand}' is the only constant that names no program).`,
+                        { ...at, code: RobotArmCodes.CommandWithoutProgram },
+                    );
                 }
                 for (const p of programsOf(body)) {
                     if (!p.name) continue;
                     if (!constants.some((c) => c !== noCommand && programForCommand(body, c) === p)) {
-                        accept('warning', `Program '${p.name}' can never run: no constant of ${typeName} (port '${commandPort}') selects it; add '${commandConstantName(p.name)}' to ${typeName}.`,
-                            { node: p, property: 'name', code: RobotArmCodes.ProgramWithoutCommand });
+                        accept(
+                            'warning',
+                            `Program '${p.name}' can never run: no constant of ${typeName} (port '${commandPort}') selects it; add '${commandConstantName(p.name)}' to ${typeName}.`,
+                            { node: p, property: 'name', code: RobotArmCodes.ProgramWithoutCommand },
+                        );
                     }
                 }
             }
         }
 
-        if (!status || status.direction !== 'out') {
+        if (status?.direction !== 'out') {
             const why = status ? `its port '${statusPort}' is incoming` : `it has no port '${statusPort}'`;
-            accept('error', `Component '${component.name}' runs RobotArm programs, but ${why}: declare 'port out <Enum> ${statusPort};' with an enum of ${statusValues.join(', ')} that reports when a program runs and completes.`,
-                { ...at, code: RobotArmCodes.MissingStatusPort });
+            accept(
+                'error',
+                `Component '${component.name}' runs RobotArm programs, but ${why}: declare 'port out <Enum> ${statusPort};' with an enum of ${statusValues.join(', ')} that reports when a program runs and completes.`,
+                { ...at, code: RobotArmCodes.MissingStatusPort },
+            );
         } else {
             const constants = enumConstants(status.type);
             if (!isErroneous(status.type) && !hasAll(constants, statusValues)) {
                 const missing = constants ? statusValues.filter((v) => !constants.includes(v)) : [];
-                const why = constants ? `its enum ${printType(status.type)} lacks ${missing.join(', ')}` : `it is of type ${printType(status.type)}`;
-                accept('error', `Port '${statusPort}' of component '${component.name}' reports the arm's state with an enum of ${statusValues.join(', ')}, but ${why}.`,
-                    { node: status.port, property: 'type', code: RobotArmCodes.StatusPortType });
+                const why = constants
+                    ? `its enum ${printType(status.type)} lacks ${missing.join(', ')}`
+                    : `it is of type ${printType(status.type)}`;
+                accept(
+                    'error',
+                    `Port '${statusPort}' of component '${component.name}' reports the arm's state with an enum of ${statusValues.join(', ')}, but ${why}.`,
+                    { node: status.port, property: 'type', code: RobotArmCodes.StatusPortType },
+                );
             }
         }
     }
@@ -265,5 +371,10 @@ function line(n: AstNode): number {
 
 /** `PICKUP_AND_DEPLOY` -> `PickupAndDeploy`. */
 function pascal(constant: string): string {
-    return constant.toLowerCase().split('_').filter((s) => s).map((s) => s.charAt(0).toUpperCase() + s.slice(1)).join('');
+    return constant
+        .toLowerCase()
+        .split('_')
+        .filter((s) => s)
+        .map((s) => s.charAt(0).toUpperCase() + s.slice(1))
+        .join('');
 }

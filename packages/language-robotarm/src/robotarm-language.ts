@@ -1,7 +1,5 @@
 import type { ReferenceInfo, Scope } from 'langium';
-import type {
-    AdlDocumentValidator, AdlScopeProvider, AdlServices, BehaviorLanguage, LanguageRegistration
-} from '@maa/language-adl';
+import type { AdlDocumentValidator, AdlScopeProvider, AdlServices, BehaviorLanguage, LanguageRegistration } from '@maa/language-adl';
 import { ROBOTARM_DIAGNOSTICS } from './diagnostic-catalog/robotarm-diagnostics.js';
 import { RobotArmChecks } from './robotarm-checks.js';
 import { enclosingRobotArm, moveTargetsOf } from './robotarm-model.js';
@@ -19,10 +17,14 @@ const MOVE_TARGET = 'MoveArgument.target';
  */
 function install(services: AdlServices, unresolved: (name: string) => string): void {
     const scopes = services.references.ScopeProvider as AdlScopeProvider;
-    scopes.contributions.set(MOVE_TARGET, (ctx: ReferenceInfo): Scope => scopes.nodes(() => {
-        const body = enclosingRobotArm(ctx.container);
-        return body ? moveTargetsOf(body) : [];
-    }));
+    scopes.contributions.set(
+        MOVE_TARGET,
+        (ctx: ReferenceInfo): Scope =>
+            scopes.nodes(() => {
+                const body = enclosingRobotArm(ctx.container);
+                return body ? moveTargetsOf(body) : [];
+            }),
+    );
     const validator = services.validation.DocumentValidator as AdlDocumentValidator;
     validator.linkCodes.set(MOVE_TARGET, { code: RobotArmCodes.UnresolvedName, message: unresolved });
     const checks = new RobotArmChecks(services);
@@ -39,9 +41,13 @@ export const RobotArmLanguage: BehaviorLanguage = {
     astType: 'RobotArm',
     diagnostics: ROBOTARM_DIAGNOSTICS,
     register(services: AdlServices): void {
-        install(services, (name) => `'${name}' is neither a location of this robotarm block, nor a constant ('top', 'bottom'), nor an incoming port of the component.`);
+        install(
+            services,
+            (name) =>
+                `'${name}' is neither a location of this robotarm block, nor a constant ('top', 'bottom'), nor an incoming port of the component.`,
+        );
     },
-    registerLsp: registerRobotArmLsp
+    registerLsp: registerRobotArmLsp,
 };
 
 /**
@@ -53,5 +59,5 @@ export const RobotArmFileLanguage: LanguageRegistration = {
     register(services: AdlServices): void {
         install(services, (name) => `'${name}' is neither a location nor an input of this robot arm, nor a constant ('top', 'bottom').`);
     },
-    registerLsp: registerRobotArmLsp
+    registerLsp: registerRobotArmLsp,
 };

@@ -1,7 +1,16 @@
 import { AstUtils, type AstNode } from 'langium';
 import { allPorts, enclosingComponent, typeOfMCType, type PortInfo, type SymType } from '@maa/language-adl';
 import type {
-    ComponentType, GripperStep, Location, Move, MoveArgument, Port, Program, RobotArm, RobotArmDefinition, RobotArmInput
+    ComponentType,
+    GripperStep,
+    Location,
+    Move,
+    MoveArgument,
+    Port,
+    Program,
+    RobotArm,
+    RobotArmDefinition,
+    RobotArmInput,
 } from './generated/ast.js';
 
 /**
@@ -24,7 +33,7 @@ export const ROBOT_ARM_PROFILE = {
     /** The lift: from `bottom` (2 cm above the table) to `top` (30 cm). */
     height: { min: 0.02, max: 0.3 },
     /** The constants: heights the lift moves to while the base keeps its angle. */
-    constants: { top: 0.3, bottom: 0.02 } as const
+    constants: { top: 0.3, bottom: 0.02 } as const,
 } as const;
 
 export type RobotArmConstant = keyof typeof ROBOT_ARM_PROFILE.constants;
@@ -36,7 +45,7 @@ export const UNITS: Readonly<Record<string, { readonly dimension: Dimension; rea
     rad: { dimension: 'angle', toSI: 1 },
     mm: { dimension: 'height', toSI: 0.001 },
     cm: { dimension: 'height', toSI: 0.01 },
-    m: { dimension: 'height', toSI: 1 }
+    m: { dimension: 'height', toSI: 1 },
 };
 
 /**
@@ -151,10 +160,14 @@ export function operandOf(a: MoveArgument): MoveOperand {
     if (a.value !== undefined) return { kind: 'value', measure: parseMeasure(a.value), text: a.value, node: a };
     const target = a.target?.ref;
     switch (target?.$type) {
-        case 'Location': return { kind: 'location', location: target, node: a };
-        case 'RobotArmInput': return { kind: 'input', input: target, node: a };
-        case 'Port': return { kind: 'port', port: target, node: a };
-        default: return { kind: 'unresolved', name: a.target?.$refText ?? '', node: a };
+        case 'Location':
+            return { kind: 'location', location: target, node: a };
+        case 'RobotArmInput':
+            return { kind: 'input', input: target, node: a };
+        case 'Port':
+            return { kind: 'port', port: target, node: a };
+        default:
+            return { kind: 'unresolved', name: a.target?.$refText ?? '', node: a };
     }
 }
 
@@ -173,12 +186,18 @@ export function moveForm(move: Move): MoveForm {
     const ops = move.arguments.map(operandOf);
     const describe = (o: MoveOperand): string => {
         switch (o.kind) {
-            case 'constant': return `the constant '${o.constant}'`;
-            case 'location': return `the location '${o.location.name}'`;
-            case 'input': return `the input '${o.input.name}'`;
-            case 'port': return `the incoming port '${o.port.name}'`;
-            case 'value': return `the value '${o.node.$cstNode?.text ?? o.text}'`;
-            case 'unresolved': return `'${o.name}'`;
+            case 'constant':
+                return `the constant '${o.constant}'`;
+            case 'location':
+                return `the location '${o.location.name}'`;
+            case 'input':
+                return `the input '${o.input.name}'`;
+            case 'port':
+                return `the incoming port '${o.port.name}'`;
+            case 'value':
+                return `the value '${o.node.$cstNode?.text ?? o.text}'`;
+            case 'unresolved':
+                return `'${o.name}'`;
         }
     };
     if (ops.length === 1) {
@@ -186,23 +205,26 @@ export function moveForm(move: Move): MoveForm {
         if (o.kind === 'constant' || o.kind === 'location') return { kind: 'pose', operand: o };
         if (o.kind === 'unresolved') return { kind: 'ill-formed', reason: '', node: move };
         return {
-            kind: 'ill-formed', node: move,
-            reason: `'move' to ${describe(o)} lacks a height: a move goes to a location or a constant ('move toaster;', 'move top;') or to an angle and a height ('move angle height;', 'move 90deg 10cm;')`
+            kind: 'ill-formed',
+            node: move,
+            reason: `'move' to ${describe(o)} lacks a height: a move goes to a location or a constant ('move toaster;', 'move top;') or to an angle and a height ('move angle height;', 'move 90deg 10cm;')`,
         };
     }
     if (ops.length === 2) {
         const pose = ops.find((o) => o.kind === 'constant' || o.kind === 'location');
         if (pose) {
             return {
-                kind: 'ill-formed', node: pose.node,
-                reason: `${capitalize(describe(pose))} is a whole pose, not a joint value: move to it alone ('move ${pose.node.$cstNode?.text ?? ''};') or give an angle and a height`
+                kind: 'ill-formed',
+                node: pose.node,
+                reason: `${capitalize(describe(pose))} is a whole pose, not a joint value: move to it alone ('move ${pose.node.$cstNode?.text ?? ''};') or give an angle and a height`,
             };
         }
         return { kind: 'joints', angle: ops[0] as JointOperand, height: ops[1] as JointOperand };
     }
     return {
-        kind: 'ill-formed', node: move,
-        reason: `'move' takes one location or constant, or an angle and a height, but ${ops.length} arguments are given`
+        kind: 'ill-formed',
+        node: move,
+        reason: `'move' takes one location or constant, or an angle and a height, but ${ops.length} arguments are given`,
     };
 }
 
@@ -219,18 +241,24 @@ export type JointSource =
     /** The joint keeps its current value (the base angle on `move top;`/`move bottom;`). */
     | { readonly kind: 'keep' }
     /** The latest value of an input (standalone) or incoming port (embedded), in `unit` (INPUT_UNITS). */
-    | { readonly kind: 'input' | 'port'; readonly name: string; readonly node: RobotArmInput | Port; readonly unit: string; readonly toSI: number };
+    | {
+          readonly kind: 'input' | 'port';
+          readonly name: string;
+          readonly node: RobotArmInput | Port;
+          readonly unit: string;
+          readonly toSI: number;
+      };
 
 export type RobotArmStep =
     | { readonly kind: 'open' | 'close'; readonly node: GripperStep }
     | {
-        readonly kind: 'move';
-        readonly node: Move;
-        /** The location or constant moved to, if any. */
-        readonly target?: { readonly kind: 'location' | 'constant'; readonly name: string };
-        readonly angle: JointSource;
-        readonly height: JointSource;
-    };
+          readonly kind: 'move';
+          readonly node: Move;
+          /** The location or constant moved to, if any. */
+          readonly target?: { readonly kind: 'location' | 'constant'; readonly name: string };
+          readonly angle: JointSource;
+          readonly height: JointSource;
+      };
 
 /**
  * The steps of a program with their joint-space targets resolved (SI units). Ill-formed moves
@@ -256,12 +284,24 @@ export function moveTarget(move: Move): Extract<RobotArmStep, { kind: 'move' }> 
     if (form.kind === 'pose') {
         const o = form.operand;
         if (o.kind === 'constant') {
-            return { kind: 'move', node: move, target: { kind: 'constant', name: o.constant }, angle: { kind: 'keep' }, height: { kind: 'fixed', si: ROBOT_ARM_PROFILE.constants[o.constant] } };
+            return {
+                kind: 'move',
+                node: move,
+                target: { kind: 'constant', name: o.constant },
+                angle: { kind: 'keep' },
+                height: { kind: 'fixed', si: ROBOT_ARM_PROFILE.constants[o.constant] },
+            };
         }
         const angle = parseMeasure(o.location.angle)?.si;
         const height = parseMeasure(o.location.height)?.si;
         if (angle === undefined || height === undefined) return undefined;
-        return { kind: 'move', node: move, target: { kind: 'location', name: o.location.name }, angle: { kind: 'fixed', si: angle }, height: { kind: 'fixed', si: height } };
+        return {
+            kind: 'move',
+            node: move,
+            target: { kind: 'location', name: o.location.name },
+            angle: { kind: 'fixed', si: angle },
+            height: { kind: 'fixed', si: height },
+        };
     }
     const angle = jointSource(form.angle, 'angle');
     const height = jointSource(form.height, 'height');
@@ -285,7 +325,9 @@ function jointSource(o: JointOperand, dimension: Dimension): JointSource | undef
 
 /** The inputs (standalone) or incoming ports (embedded) that feed a move, in argument order. */
 export function feedersOf(move: Move): Array<RobotArmInput | Port> {
-    return move.arguments.map(operandOf).flatMap((o): Array<RobotArmInput | Port> => (o.kind === 'input' ? [o.input] : o.kind === 'port' ? [o.port] : []));
+    return move.arguments
+        .map(operandOf)
+        .flatMap((o): Array<RobotArmInput | Port> => (o.kind === 'input' ? [o.input] : o.kind === 'port' ? [o.port] : []));
 }
 
 /** The inputs or ports any program of a body reads (each once, in order of first use). */
@@ -295,7 +337,11 @@ export function feedersOfBody(body: RobotArmBody): Array<RobotArmInput | Port> {
     for (const p of programsOf(body)) {
         for (const s of p.steps) {
             if (s.$type !== 'Move') continue;
-            for (const f of feedersOf(s)) if (!seen.has(f)) { seen.add(f); out.push(f); }
+            for (const f of feedersOf(s))
+                if (!seen.has(f)) {
+                    seen.add(f);
+                    out.push(f);
+                }
         }
     }
     return out;
@@ -316,7 +362,7 @@ export const RobotArmProtocol = {
     statusPort: 'status',
     statusValues: ['IDLE', 'BUSY', 'DONE'] as const,
     /** A command constant that names no program and does nothing ("no command in this slice"). */
-    noCommand: 'NONE'
+    noCommand: 'NONE',
 } as const;
 
 export type RobotArmStatus = (typeof RobotArmProtocol.statusValues)[number];
@@ -348,12 +394,15 @@ export function protocolPorts(body: RobotArm): { cmd?: PortInfo; status?: PortIn
     const ports = allPorts(c as Parameters<typeof allPorts>[0]);
     return {
         cmd: ports.find((p) => p.name === RobotArmProtocol.commandPort),
-        status: ports.find((p) => p.name === RobotArmProtocol.statusPort)
+        status: ports.find((p) => p.name === RobotArmProtocol.statusPort),
     };
 }
 
 /** The command constants of an embedded body with the program each selects (for generators). */
 export function commandTable(body: RobotArm): Array<{ constant: string; program: Program | undefined }> {
     const constants = enumConstants(protocolPorts(body).cmd?.type) ?? [];
-    return constants.map((constant) => ({ constant, program: constant === RobotArmProtocol.noCommand ? undefined : programForCommand(body, constant) }));
+    return constants.map((constant) => ({
+        constant,
+        program: constant === RobotArmProtocol.noCommand ? undefined : programForCommand(body, constant),
+    }));
 }

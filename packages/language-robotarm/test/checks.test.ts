@@ -7,7 +7,10 @@ const PROTOCOL = 'in ArmCommand cmd, out ArmStatus status';
 /** An embedded robot arm `Arm.arc` with the protocol ports plus `ports`, and a program `Pickup` with `steps`. */
 function arm(ports: string, steps: string, extra = '', types = TYPES): Record<string, string> {
     const list = [PROTOCOL, ports].filter((p) => p).join(', ');
-    return { 'ArmTypes.cd': types, 'Arm.arc': `component Arm {\n  port ${list};\n  robotarm {\n${extra}    program Pickup { ${steps} }\n  }\n}` };
+    return {
+        'ArmTypes.cd': types,
+        'Arm.arc': `component Arm {\n  port ${list};\n  robotarm {\n${extra}    program Pickup { ${steps} }\n  }\n}`,
+    };
 }
 
 /** A standalone `R.ra` with the given body. */
@@ -50,13 +53,17 @@ describe('robotarm/move-not-numeric', () => {
         const found = await validate({
             ...arm('in int height', 'move angle height;'),
             'Base.arc': 'component Base {\n  port in boolean angle;\n}',
-            'Arm.arc': arm('in int height', 'move angle height;')['Arm.arc']!.replace('component Arm', 'component Arm extends Base')
+            'Arm.arc': arm('in int height', 'move angle height;')['Arm.arc']!.replace('component Arm', 'component Arm extends Base'),
         });
         expect(only(found, 'robotarm/move-not-numeric')).toEqual(['error@angle']);
     });
     test('valid: every numeric type, boxed or not', async () => {
         clean(await validate(arm('in double angle, in Integer height', 'move angle height;')));
-        clean(await validate(ra('  input long a;\n  input Double h;\n  input short s;\n  input float f;\n  program P { move a h; move s f; }')));
+        clean(
+            await validate(
+                ra('  input long a;\n  input Double h;\n  input short s;\n  input float f;\n  program P { move a h; move s f; }'),
+            ),
+        );
     });
     test('an unresolved input type is reported once, as such', async () => {
         const found = await validate(ra('  input Angle a;\n  program P { move a 10cm; }'));
@@ -77,14 +84,32 @@ describe('robotarm/unresolved-name', () => {
         expect(found.map((f) => f.code)).toEqual(['robotarm/unresolved-name', 'robotarm/unresolved-name']);
     });
     test('valid: locations, constants, ports', async () => {
-        clean(await validate(arm('in int angle, in int height', 'move top; move shelf; move angle height; move bottom;', '    location shelf 10deg 10cm;\n')));
+        clean(
+            await validate(
+                arm(
+                    'in int angle, in int height',
+                    'move top; move shelf; move angle height; move bottom;',
+                    '    location shelf 10deg 10cm;\n',
+                ),
+            ),
+        );
     });
 });
 
 describe('robotarm/move-arity', () => {
     test('a single joint value, a pose among joint values, and too many arguments', async () => {
-        const found = await validate(ra('  input int angle;\n  input int height;\n  location shelf 0deg 10cm;\n  program P {\n    move angle;\n    move 90deg;\n    move shelf height;\n    move angle top;\n    move angle height 10cm;\n  }'));
-        expect(only(found, 'robotarm/move-arity')).toEqual(['error@move angle;', 'error@move 90deg;', 'error@shelf', 'error@top', 'error@move angle height 10cm;']);
+        const found = await validate(
+            ra(
+                '  input int angle;\n  input int height;\n  location shelf 0deg 10cm;\n  program P {\n    move angle;\n    move 90deg;\n    move shelf height;\n    move angle top;\n    move angle height 10cm;\n  }',
+            ),
+        );
+        expect(only(found, 'robotarm/move-arity')).toEqual([
+            'error@move angle;',
+            'error@move 90deg;',
+            'error@shelf',
+            'error@top',
+            'error@move angle height 10cm;',
+        ]);
         expect(found[0]!.message).toContain('lacks a height');
         expect(found[2]!.message).toContain("move to it alone ('move shelf;')");
     });
@@ -93,15 +118,25 @@ describe('robotarm/move-arity', () => {
         expect(found.map((f) => f.code)).toEqual(['robotarm/unresolved-name']);
     });
     test('valid: one pose, or an angle and a height of any kind', async () => {
-        clean(await validate(ra('  input int angle;\n  input int height;\n  location shelf 0deg 10cm;\n  program P { move shelf; move top; move angle height; move 10deg height; move angle 10cm; move 1rad 0.1m; }')));
+        clean(
+            await validate(
+                ra(
+                    '  input int angle;\n  input int height;\n  location shelf 0deg 10cm;\n  program P { move shelf; move top; move angle height; move 10deg height; move angle 10cm; move 1rad 0.1m; }',
+                ),
+            ),
+        );
     });
 });
 
 describe('robotarm/duplicate-name', () => {
     test('two locations, an input and a location, two programs', async () => {
-        const found = await validate(ra('  input int a;\n  location a 0deg 10cm;\n  location b 0deg 10cm;\n  location b 10deg 10cm;\n  program P { move b; }\n  program P { move b; }'));
+        const found = await validate(
+            ra(
+                '  input int a;\n  location a 0deg 10cm;\n  location b 0deg 10cm;\n  location b 10deg 10cm;\n  program P { move b; }\n  program P { move b; }',
+            ),
+        );
         expect(found.filter((f) => f.code === 'robotarm/duplicate-name').map((f) => `${f.text}@${f.line}`)).toEqual(['a@3', 'b@5', 'P@7']);
-        expect(found.find((f) => f.line === 3)!.message).toContain("has the name of the input declared on line 2");
+        expect(found.find((f) => f.line === 3)!.message).toContain('has the name of the input declared on line 2');
     });
     test('embedded: a location with the name of an incoming port', async () => {
         const found = await validate(arm('in int shelf, in int height', 'move shelf;', '    location shelf 0deg 10cm;\n'));
@@ -110,7 +145,10 @@ describe('robotarm/duplicate-name', () => {
     });
     test('valid: a program and a location may share a name (different namespaces)', async () => {
         const found = await validate(ra('  location pick 0deg 10cm;\n  program pick { move pick; }'));
-        expect(found.map((f) => f.code), dump(found)).toEqual(['robotarm/naming-convention']);
+        expect(
+            found.map((f) => f.code),
+            dump(found),
+        ).toEqual(['robotarm/naming-convention']);
     });
 });
 
@@ -126,7 +164,9 @@ describe('robotarm/reserved-name', () => {
 
 describe('robotarm/invalid-unit', () => {
     test('values without unit and with an unknown unit', async () => {
-        const found = await validate(ra('  input int h;\n  location a 90 10cm;\n  location b 90deg 10km;\n  program P { move 90dx h; move 90 h; }'));
+        const found = await validate(
+            ra('  input int h;\n  location a 90 10cm;\n  location b 90deg 10km;\n  program P { move 90dx h; move 90 h; }'),
+        );
         expect(only(found, 'robotarm/invalid-unit')).toEqual(['error@90', 'error@10km', 'error@90dx', 'error@90 h']);
         expect(found.find((f) => f.text === '10km')!.message).toContain("Unknown unit 'km'");
         expect(found.find((f) => f.text === '90')!.message).toContain("e.g. '90deg'");
@@ -134,7 +174,13 @@ describe('robotarm/invalid-unit', () => {
         expect(hits(found, 'robotarm/move-arity')).toEqual([]);
     });
     test('valid: every unit', async () => {
-        clean(await validate(ra('  location a 90deg 10cm;\n  location b 1rad 100mm;\n  location c -1.5rad 0.25m;\n  program P { move a; move b; move c; move 1rad 50mm; }')));
+        clean(
+            await validate(
+                ra(
+                    '  location a 90deg 10cm;\n  location b 1rad 100mm;\n  location c -1.5rad 0.25m;\n  program P { move a; move b; move c; move 1rad 50mm; }',
+                ),
+            ),
+        );
     });
 });
 
@@ -150,14 +196,24 @@ describe('robotarm/unit-mismatch', () => {
 });
 
 describe('robotarm/joint-limit', () => {
-    test('values outside the reference arm\'s range', async () => {
-        const found = await validate(ra('  location a 181deg 10cm;\n  location b -3.2rad 10cm;\n  location c 0deg 1cm;\n  program P { move a; move b; move c; move 0deg 31cm; move 0deg 0.5m; }'));
+    test("values outside the reference arm's range", async () => {
+        const found = await validate(
+            ra(
+                '  location a 181deg 10cm;\n  location b -3.2rad 10cm;\n  location c 0deg 1cm;\n  program P { move a; move b; move c; move 0deg 31cm; move 0deg 0.5m; }',
+            ),
+        );
         expect(only(found, 'robotarm/joint-limit')).toEqual(['error@181deg', 'error@-3.2rad', 'error@1cm', 'error@31cm', 'error@0.5m']);
         expect(found[0]!.message).toContain('-180deg .. 180deg');
         expect(found[2]!.message).toContain('2cm .. 30cm');
     });
     test('valid: the limits themselves', async () => {
-        clean(await validate(ra('  location a 180deg 30cm;\n  location b -180deg 2cm;\n  location c 3.14rad 20mm;\n  program P { move a; move b; move c; move 0deg 0.3m; }')));
+        clean(
+            await validate(
+                ra(
+                    '  location a 180deg 30cm;\n  location b -180deg 2cm;\n  location c 3.14rad 20mm;\n  program P { move a; move b; move c; move 0deg 0.3m; }',
+                ),
+            ),
+        );
     });
 });
 
@@ -173,7 +229,9 @@ describe('robotarm/empty-program', () => {
 
 describe('robotarm/naming-convention', () => {
     test('robot arm and programs upper case, inputs and locations lower case', async () => {
-        const found = await validate(ra('  input int Angle;\n  location Shelf 0deg 10cm;\n  program pick { move Shelf; move Angle 10cm; }', 'r', 'r.ra'));
+        const found = await validate(
+            ra('  input int Angle;\n  location Shelf 0deg 10cm;\n  program pick { move Shelf; move Angle 10cm; }', 'r', 'r.ra'),
+        );
         expect(only(found, 'robotarm/naming-convention')).toEqual(['warning@r', 'warning@Angle', 'warning@Shelf', 'warning@pick']);
     });
     test('valid: the conventions', async () => {
@@ -216,28 +274,46 @@ describe('the port protocol', () => {
     });
 
     test('robotarm/command-without-program: every constant but NONE selects a program', async () => {
-        const found = await validate({ 'ArmTypes.cd': TYPES.replace('NONE, PICKUP', 'NONE, PICKUP, PARK, STOW'), 'Arm.arc': comp(PROTOCOL) });
+        const found = await validate({
+            'ArmTypes.cd': TYPES.replace('NONE, PICKUP', 'NONE, PICKUP, PARK, STOW'),
+            'Arm.arc': comp(PROTOCOL),
+        });
         expect(only(found, 'robotarm/command-without-program')).toEqual(['error@robotarm', 'error@robotarm']);
         expect(found.map((f) => f.message).join('\n')).toMatch(/'ArmCommand.PARK'[\s\S]*'ArmCommand.STOW'/);
     });
 
     test('robotarm/program-without-command: a program no constant selects (warning)', async () => {
-        const found = await validate({ 'ArmTypes.cd': TYPES, 'Arm.arc': comp(PROTOCOL, '    program Pickup { open; }\n    program Stow { close; }') });
+        const found = await validate({
+            'ArmTypes.cd': TYPES,
+            'Arm.arc': comp(PROTOCOL, '    program Pickup { open; }\n    program Stow { close; }'),
+        });
         expect(only(found, 'robotarm/program-without-command')).toEqual(['warning@Stow']);
         expect(found[0]!.message).toContain("add 'STOW' to ArmCommand");
     });
 
     test('constants select programs by the same name or by UPPER_SNAKE_CASE', async () => {
-        const types = 'classdiagram ArmTypes {\n  enum ArmCommand { NONE, PICKUP_AND_DEPLOY, Park, FETCH2_TOAST; }\n  enum ArmStatus { IDLE, BUSY, DONE, ERROR; }\n}';
-        clean(await validate({ 'ArmTypes.cd': types, 'Arm.arc': comp(PROTOCOL, '    program PickupAndDeploy { open; }\n    program Park { close; }\n    program Fetch2Toast { open; }') }));
+        const types =
+            'classdiagram ArmTypes {\n  enum ArmCommand { NONE, PICKUP_AND_DEPLOY, Park, FETCH2_TOAST; }\n  enum ArmStatus { IDLE, BUSY, DONE, ERROR; }\n}';
+        clean(
+            await validate({
+                'ArmTypes.cd': types,
+                'Arm.arc': comp(
+                    PROTOCOL,
+                    '    program PickupAndDeploy { open; }\n    program Park { close; }\n    program Fetch2Toast { open; }',
+                ),
+            }),
+        );
     });
 
     test('inherited protocol ports count; types may be qualified', async () => {
-        clean(await validate({
-            'arm/types/ArmTypes.cd': `package arm.types;\n${TYPES}`,
-            'arm/ArmBase.arc': 'package arm;\nimport arm.types.ArmTypes.*;\ncomponent ArmBase {\n  port in ArmCommand cmd, out arm.types.ArmStatus status;\n}',
-            'arm/Arm.arc': 'package arm;\ncomponent Arm extends ArmBase {\n  robotarm {\n    program Pickup { open; }\n  }\n}'
-        }));
+        clean(
+            await validate({
+                'arm/types/ArmTypes.cd': `package arm.types;\n${TYPES}`,
+                'arm/ArmBase.arc':
+                    'package arm;\nimport arm.types.ArmTypes.*;\ncomponent ArmBase {\n  port in ArmCommand cmd, out arm.types.ArmStatus status;\n}',
+                'arm/Arm.arc': 'package arm;\ncomponent Arm extends ArmBase {\n  robotarm {\n    program Pickup { open; }\n  }\n}',
+            }),
+        );
     });
 
     test('a standalone .ra file has no ports and no protocol checks', async () => {

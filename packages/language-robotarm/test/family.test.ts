@@ -25,7 +25,8 @@ function root(files: Record<string, string>): string {
     return dir;
 }
 
-const TYPES = 'package toast.types;\n\nclassdiagram Types {\n  enum ArmCommand { NONE, PICKUP_AND_DEPLOY; }\n  enum ArmStatus { IDLE, BUSY, DONE; }\n}\n';
+const TYPES =
+    'package toast.types;\n\nclassdiagram Types {\n  enum ArmCommand { NONE, PICKUP_AND_DEPLOY; }\n  enum ArmStatus { IDLE, BUSY, DONE; }\n}\n';
 const ARM = `package toast;\n\nimport toast.types.*;\n\n${LISTING_2}\n`;
 /** The arm controller as the composed robot uses it: its status feeds a sync automaton. */
 const SYNC_ARM = ARM.replace('out ArmStatus status', '<<sync>> out ArmStatus status');
@@ -69,12 +70,20 @@ describe('the language family', () => {
         const services = createMaaServices(NodeFileSystem);
         const ra = services.languages.get('ra');
         expect(ra?.LanguageMetaData.fileExtensions).toEqual(['.ra']);
-        expect(services.shared.ServiceRegistry.all.flatMap((s) => s.LanguageMetaData.fileExtensions)).toEqual(expect.arrayContaining(['.arc', '.cd', '.ra']));
+        expect(services.shared.ServiceRegistry.all.flatMap((s) => s.LanguageMetaData.fileExtensions)).toEqual(
+            expect.arrayContaining(['.arc', '.cd', '.ra']),
+        );
         expect(familyDiagnostics().map((c) => c.title)).toContain('RobotArm');
     });
 
     test('checkModelRoots checks a standalone .ra file and an embedded block together, without diagnostics', async () => {
-        const dir = root({ 'toast/types/Types.cd': TYPES, 'toast/ArmController.arc': SYNC_ARM, 'toast/ToastService.ra': RA, 'toast/Controller.arc': CONTROLLER, 'toast/Robot.arc': ROBOT });
+        const dir = root({
+            'toast/types/Types.cd': TYPES,
+            'toast/ArmController.arc': SYNC_ARM,
+            'toast/ToastService.ra': RA,
+            'toast/Controller.arc': CONTROLLER,
+            'toast/Robot.arc': ROBOT,
+        });
         const found = await checkModelRoots([{ root: dir }]);
         expect(found.map((d) => `${d.file}:${d.line} ${d.code} ${d.message}`)).toEqual([]);
     });
@@ -82,8 +91,13 @@ describe('the language family', () => {
     test('problems in both forms are reported with their codes, per file', async () => {
         const dir = root({
             'toast/types/Types.cd': TYPES,
-            'toast/ArmController.arc': ARM.replace('robotarm {', 'robotarm {\n    input int speed;').replace('move angle height', 'move angle hight'),
-            'toast/ToastService.ra': RA.replace('move angle height', 'move angle 45cm').replace('input int height;', 'input String height;\n  input String name;').replace('move top; open;', 'move top; move name 10cm; open;')
+            'toast/ArmController.arc': ARM.replace('robotarm {', 'robotarm {\n    input int speed;').replace(
+                'move angle height',
+                'move angle hight',
+            ),
+            'toast/ToastService.ra': RA.replace('move angle height', 'move angle 45cm')
+                .replace('input int height;', 'input String height;\n  input String name;')
+                .replace('move top; open;', 'move top; move name 10cm; open;'),
         });
         const found = await checkModelRoots([{ root: dir }]);
         const rel = (f: string): string => f.substring(dir.length + 1);
@@ -91,7 +105,7 @@ describe('the language family', () => {
             'toast/ArmController.arc:11 error robotarm/input-in-embedded',
             'toast/ArmController.arc:14 error robotarm/unresolved-name',
             'toast/ToastService.ra:9 error robotarm/move-not-numeric',
-            'toast/ToastService.ra:9 error robotarm/joint-limit'
+            'toast/ToastService.ra:9 error robotarm/joint-limit',
         ]);
     });
 

@@ -2,8 +2,19 @@ import { AstUtils } from 'langium';
 import { describe, expect, test } from 'vitest';
 import type { Move, RobotArm, RobotArmModel } from '../src/generated/ast.js';
 import {
-    commandConstantName, commandTable, feedersOf, feedersOfBody, INPUT_UNITS, parseMeasure, programForCommand, programSteps,
-    programsOf, protocolPorts, ROBOT_ARM_PROFILE, withinLimits, type RobotArmStep
+    commandConstantName,
+    commandTable,
+    feedersOf,
+    feedersOfBody,
+    INPUT_UNITS,
+    parseMeasure,
+    programForCommand,
+    programSteps,
+    programsOf,
+    protocolPorts,
+    ROBOT_ARM_PROFILE,
+    withinLimits,
+    type RobotArmStep,
 } from '../src/index.js';
 import { build } from './helpers.js';
 import { ARM_TYPES, LISTING_1, LISTING_2 } from './fixtures.js';
@@ -15,9 +26,12 @@ function show(s: RobotArmStep): string {
     if (s.kind !== 'move') return s.kind;
     const joint = (j: Extract<RobotArmStep, { kind: 'move' }>['angle']): string => {
         switch (j.kind) {
-            case 'fixed': return String(Math.round(j.si * 1e4) / 1e4);
-            case 'keep': return 'keep';
-            default: return `${j.kind}:${j.name}[${j.unit}]`;
+            case 'fixed':
+                return String(Math.round(j.si * 1e4) / 1e4);
+            case 'keep':
+                return 'keep';
+            default:
+                return `${j.kind}:${j.name}[${j.unit}]`;
         }
     };
     return `move ${joint(s.angle)} ${joint(s.height)}${s.target ? ` (${s.target.kind} ${s.target.name})` : ''}`;
@@ -46,7 +60,9 @@ describe('measures', () => {
 
 describe('programs as steps', () => {
     test('Listing 1: resolved joint-space targets and the inputs that feed moves', async () => {
-        const { docs: [doc] } = await build({ 'ToastService.ra': LISTING_1 });
+        const {
+            docs: [doc],
+        } = await build({ 'ToastService.ra': LISTING_1 });
         const r = (doc!.parseResult.value as RobotArmModel).robot!;
         const [program] = programsOf(r);
         expect(programSteps(program!).map(show)).toEqual([
@@ -56,7 +72,7 @@ describe('programs as steps', () => {
             'close',
             'move keep 0.3 (constant top)',
             'move input:angle[deg] input:height[cm]',
-            'open'
+            'open',
         ]);
         const joints = programSteps(program!)[5] as Extract<RobotArmStep, { kind: 'move' }>;
         expect(joints.angle.kind === 'input' && joints.angle.toSI).toBeCloseTo(Math.PI / 180);
@@ -67,15 +83,25 @@ describe('programs as steps', () => {
     });
 
     test('Listing 2: ports feed the moves; literal joint values and bottom', async () => {
-        const { docs } = await build({ 'ArmTypes.cd': ARM_TYPES, 'ArmController.arc': LISTING_2.replace('move angle height; open;', 'move angle height; open; move -90deg 25mm; move bottom;') });
+        const { docs } = await build({
+            'ArmTypes.cd': ARM_TYPES,
+            'ArmController.arc': LISTING_2.replace('move angle height; open;', 'move angle height; open; move -90deg 25mm; move bottom;'),
+        });
         const r = AstUtils.streamAst(docs[1]!.parseResult.value).find((n): n is RobotArm => n.$type === 'RobotArm')!;
         const steps = programSteps(programsOf(r)[0]!).map(show);
-        expect(steps.slice(5)).toEqual(['move port:angle[deg] port:height[cm]', 'open', `move ${Math.round(deg(-90) * 1e4) / 1e4} 0.025`, 'move keep 0.02 (constant bottom)']);
+        expect(steps.slice(5)).toEqual([
+            'move port:angle[deg] port:height[cm]',
+            'open',
+            `move ${Math.round(deg(-90) * 1e4) / 1e4} 0.025`,
+            'move keep 0.02 (constant bottom)',
+        ]);
         expect(feedersOfBody(r).map((f) => `${f.$type}:${f.name}`)).toEqual(['Port:angle', 'Port:height']);
     });
 
     test('ill-formed moves are left out', async () => {
-        const { docs: [doc] } = await build({ 'R.ra': 'robotarm R {\n  input int a;\n  program P { move a; move 10cm 10cm; open; }\n}' });
+        const {
+            docs: [doc],
+        } = await build({ 'R.ra': 'robotarm R {\n  input int a;\n  program P { move a; move 10cm 10cm; open; }\n}' });
         const r = (doc!.parseResult.value as RobotArmModel).robot!;
         expect(programSteps(programsOf(r)[0]!).map(show)).toEqual(['open']);
     });
@@ -91,7 +117,10 @@ describe('the port protocol', () => {
         const r = AstUtils.streamAst(docs[1]!.parseResult.value).find((n): n is RobotArm => n.$type === 'RobotArm')!;
         const { cmd, status } = protocolPorts(r);
         expect([cmd?.name, cmd?.direction, status?.name, status?.direction]).toEqual(['cmd', 'in', 'status', 'out']);
-        expect(commandTable(r).map((c) => `${c.constant}->${c.program?.name ?? '-'}`)).toEqual(['NONE->-', 'PICKUP_AND_DEPLOY->PickupAndDeploy']);
+        expect(commandTable(r).map((c) => `${c.constant}->${c.program?.name ?? '-'}`)).toEqual([
+            'NONE->-',
+            'PICKUP_AND_DEPLOY->PickupAndDeploy',
+        ]);
         expect(programForCommand(r, 'PickupAndDeploy')?.name).toBe('PickupAndDeploy');
         expect(programForCommand(r, 'FETCH')).toBeUndefined();
     });

@@ -5,18 +5,23 @@ import { inputsOf, locationsOf, programsOf } from '../src/index.js';
 import { build, dump, validate } from './helpers.js';
 import { ARM_TYPES, LISTING_1, LISTING_2 } from './fixtures.js';
 
-
 function noErrors(doc: LangiumDocument): void {
     expect(doc.parseResult.lexerErrors).toEqual([]);
     expect(doc.parseResult.parserErrors.map((e) => e.message)).toEqual([]);
 }
 
 function steps(p: Program): string[] {
-    return p.steps.map((s) => (s.$type === 'GripperStep' ? s.action : `move ${(s as Move).arguments.map((a) => a.constant ?? a.value ?? a.target?.$refText).join(' ')}`));
+    return p.steps.map((s) =>
+        s.$type === 'GripperStep'
+            ? s.action
+            : `move ${(s as Move).arguments.map((a) => a.constant ?? a.value ?? a.target?.$refText).join(' ')}`,
+    );
 }
 
 async function robotArmOf(body: string, ports = ''): Promise<RobotArm> {
-    const { docs: [doc] } = await build({ 'Comp.arc': `component Comp {\n${ports}\n  robotarm {\n${body}\n  }\n}` });
+    const {
+        docs: [doc],
+    } = await build({ 'Comp.arc': `component Comp {\n${ports}\n  robotarm {\n${body}\n  }\n}` });
     noErrors(doc!);
     return AstUtils.streamAst(doc!.parseResult.value).find((n): n is RobotArm => n.$type === 'RobotArm')!;
 }
@@ -25,7 +30,9 @@ describe('the paper', () => {
     test('Listing 1 parses as a standalone .ra file and has no diagnostics', async () => {
         const found = await validate({ 'ToastService.ra': LISTING_1 });
         expect(found, dump(found)).toEqual([]);
-        const { docs: [doc] } = await build({ 'ToastService.ra': LISTING_1 });
+        const {
+            docs: [doc],
+        } = await build({ 'ToastService.ra': LISTING_1 });
         noErrors(doc!);
         const model = doc!.parseResult.value as RobotArmModel;
         expect(model.$type).toBe('RobotArmModel');
@@ -63,13 +70,27 @@ describe('values with units', () => {
     location e .5rad 1e-1m;
     location f 0deg 25cm;`);
         expect(locationsOf(r).map((l: Location) => `${l.angle} ${l.height}`)).toEqual([
-            '120deg 20cm', '-30deg 0.2m', '1.5rad 100mm', '90deg 10cm', '.5rad 1e-1m', '0deg 25cm'
+            '120deg 20cm',
+            '-30deg 0.2m',
+            '1.5rad 100mm',
+            '90deg 10cm',
+            '.5rad 1e-1m',
+            '0deg 25cm',
         ]);
     });
 
     test('in moves: values, names, constants, mixed', async () => {
-        const r = await robotArmOf('    program P { move 90deg 10cm; move -45.5deg height; move angle 2.5cm; move bottom; move top; }', '  port in int angle, in int height;');
-        expect(steps(programsOf(r)[0]!)).toEqual(['move 90deg 10cm', 'move -45.5deg height', 'move angle 2.5cm', 'move bottom', 'move top']);
+        const r = await robotArmOf(
+            '    program P { move 90deg 10cm; move -45.5deg height; move angle 2.5cm; move bottom; move top; }',
+            '  port in int angle, in int height;',
+        );
+        expect(steps(programsOf(r)[0]!)).toEqual([
+            'move 90deg 10cm',
+            'move -45.5deg height',
+            'move angle 2.5cm',
+            'move bottom',
+            'move top',
+        ]);
     });
 
     test('a value without unit parses (the check reports it)', async () => {
@@ -94,9 +115,15 @@ describe('structure', () => {
     });
 
     test('inputs may have any type syntax of the family', async () => {
-        const { docs: [doc] } = await build({ 'R.ra': 'robotarm R {\n  input Double a;\n  input long b;\n  input java.lang.Integer c;\n}' });
+        const {
+            docs: [doc],
+        } = await build({ 'R.ra': 'robotarm R {\n  input Double a;\n  input long b;\n  input java.lang.Integer c;\n}' });
         noErrors(doc!);
-        expect(inputsOf((doc!.parseResult.value as RobotArmModel).robot!).map((i) => i.type.$cstNode?.text)).toEqual(['Double', 'long', 'java.lang.Integer']);
+        expect(inputsOf((doc!.parseResult.value as RobotArmModel).robot!).map((i) => i.type.$cstNode?.text)).toEqual([
+            'Double',
+            'long',
+            'java.lang.Integer',
+        ]);
     });
 
     test('syntax errors carry syntax codes', async () => {
@@ -108,7 +135,8 @@ describe('structure', () => {
 describe('soft keywords', () => {
     test('every RobotArm word stays usable as an identifier in components and class diagrams', async () => {
         const found = await validate({
-            'Types.cd': 'classdiagram Types {\n  class Pose { double rad; double deg; double m; double mm; double cm; }\n  enum Gripper { open, close; }\n}',
+            'Types.cd':
+                'classdiagram Types {\n  class Pose { double rad; double deg; double m; double mm; double cm; }\n  enum Gripper { open, close; }\n}',
             'Gripper.arc': `component Gripper {
   port in boolean open,
        in int top,
@@ -119,13 +147,15 @@ describe('soft keywords', () => {
     boolean close = open;
     m = top + bottom + move + location + program + input + robotarm + deg + rad + mm + cm;
   }
-}`
+}`,
         });
         expect(found, dump(found)).toEqual([]);
     });
 
     test('inside a body, words of the language are names where a name is expected', async () => {
-        const r = await robotArmOf('    location open 10deg 10cm;\n    location deg 20deg 10cm;\n    program P { move open; move deg; open; }');
+        const r = await robotArmOf(
+            '    location open 10deg 10cm;\n    location deg 20deg 10cm;\n    program P { move open; move deg; open; }',
+        );
         const moves = programsOf(r)[0]!.steps.filter((s): s is Move => s.$type === 'Move');
         expect(moves.map((m) => m.arguments[0]!.target?.ref?.$type)).toEqual(['Location', 'Location']);
     });
@@ -133,6 +163,9 @@ describe('soft keywords', () => {
     test('`top` and `bottom` after move are the constants', async () => {
         const r = await robotArmOf('    program P { move top; move bottom; }');
         const moves = programsOf(r)[0]!.steps as Move[];
-        expect(moves.map((m) => [m.arguments[0]!.constant, m.arguments[0]!.target])).toEqual([['top', undefined], ['bottom', undefined]]);
+        expect(moves.map((m) => [m.arguments[0]!.constant, m.arguments[0]!.target])).toEqual([
+            ['top', undefined],
+            ['bottom', undefined],
+        ]);
     });
 });

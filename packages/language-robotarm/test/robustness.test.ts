@@ -9,7 +9,11 @@ describe('partial models yield diagnostics, never a failing check', () => {
         for (let n = 0; n < LISTING_1.length; n += 3) {
             const found = await validate({ 'ToastService.ra': LISTING_1.substring(0, n) });
             for (const f of found) expect(f.code, `cut at ${n}: ${f.message}`).toMatch(/^(syntax|robotarm|arc|link)\//);
-            if (n > 10) expect(found.some((f) => f.code.startsWith('syntax/')), `cut at ${n}`).toBe(true);
+            if (n > 10)
+                expect(
+                    found.some((f) => f.code.startsWith('syntax/')),
+                    `cut at ${n}`,
+                ).toBe(true);
         }
     });
 

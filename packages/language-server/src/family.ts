@@ -10,7 +10,12 @@ import { ArcGeneratedModule, CdGeneratedModule, MaaGeneratedSharedModule } from 
  * into one grammar (one AST reflection) and one set of services with one shared scope.
  */
 export function createMaaServices(context: DefaultSharedCoreModuleContext): HostLanguageServices {
-    return createHostServices(context, { shared: MaaGeneratedSharedModule, arc: ArcGeneratedModule, cd: CdGeneratedModule }, BEHAVIOR_LANGUAGES, FAMILY_LANGUAGES);
+    return createHostServices(
+        context,
+        { shared: MaaGeneratedSharedModule, arc: ArcGeneratedModule, cd: CdGeneratedModule },
+        BEHAVIOR_LANGUAGES,
+        FAMILY_LANGUAGES,
+    );
 }
 
 /**
@@ -19,7 +24,12 @@ export function createMaaServices(context: DefaultSharedCoreModuleContext): Host
  * browser entry points and for tests of LSP features. Model roots come from the workspace folders.
  */
 export function createMaaLspServices(context: DefaultSharedModuleContext): HostLspServices {
-    return createHostLspServices(context, { shared: MaaGeneratedSharedModule, arc: ArcGeneratedModule, cd: CdGeneratedModule }, BEHAVIOR_LANGUAGES, FAMILY_LANGUAGES);
+    return createHostLspServices(
+        context,
+        { shared: MaaGeneratedSharedModule, arc: ArcGeneratedModule, cd: CdGeneratedModule },
+        BEHAVIOR_LANGUAGES,
+        FAMILY_LANGUAGES,
+    );
 }
 
 /**
@@ -37,7 +47,7 @@ export function createMaaLspServices(context: DefaultSharedModuleContext): HostL
  * component of the previous text.
  */
 export const MAA_SERVICE_REQUIREMENTS: Partial<ServiceRequirements> = {
-    DocumentSymbolProvider: DocumentState.Linked
+    DocumentSymbolProvider: DocumentState.Linked,
 };
 
 export function behaviorLanguages(): readonly string[] {

@@ -43,7 +43,7 @@ export async function serveWorkspace(dir: string): Promise<WorkspaceServer> {
     return {
         url: `http://127.0.0.1:${address.port}`,
         requests,
-        close: () => new Promise<void>((r) => server.close(() => r()))
+        close: () => new Promise<void>((r) => server.close(() => r())),
     };
 }
 

@@ -34,7 +34,8 @@ describe('HttpFileSystemProvider', () => {
         const fs = new HttpFileSystemProvider({ apiBase: `${server.url}/` });
         const top = await fs.readDirectory(URI.parse('file:///workspace/'));
         expect(top.map((n) => `${n.uri.toString()} ${n.isDirectory ? 'dir' : 'file'}`)).toEqual([
-            'file:///workspace/notes dir', 'file:///workspace/toast-service dir'
+            'file:///workspace/notes dir',
+            'file:///workspace/toast-service dir',
         ]);
         const toast = await fs.readDirectory(uri('toast-service/toast'));
         expect(toast.filter((n) => n.isFile).map((n) => n.uri.path)).toContain('/workspace/toast-service/toast/Controller.arc');
@@ -61,7 +62,7 @@ describe('HttpFileSystemProvider', () => {
         expect(fs.readFileSync(uri('toast-service/maa.json'))).toBe('{}\n');
     });
 
-    test('fails with the backend\'s message for a missing file and for anything outside the workspace', async () => {
+    test("fails with the backend's message for a missing file and for anything outside the workspace", async () => {
         const fs = new HttpFileSystemProvider({ apiBase: server.url });
         await expect(fs.readFile(uri('toast-service/Missing.arc'))).rejects.toThrow(/404 no file 'toast-service\/Missing.arc'/);
         await expect(fs.readFile(URI.parse('file:///etc/passwd'))).rejects.toThrow(/outside the workspace/);

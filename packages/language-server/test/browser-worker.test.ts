@@ -29,10 +29,16 @@ async function bundle(): Promise<{ code: string; builtins: string[] }> {
                 builtins.push(`${args.path} <- ${args.importer}`);
                 return { path: args.path, external: true };
             });
-        }
+        },
     };
     const result = await build({
-        entryPoints: [entry], bundle: true, platform: 'browser', format: 'esm', write: false, logLevel: 'silent', plugins: [guard]
+        entryPoints: [entry],
+        bundle: true,
+        platform: 'browser',
+        format: 'esm',
+        write: false,
+        logLevel: 'silent',
+        plugins: [guard],
     });
     return { code: result.outputFiles[0]!.text, builtins };
 }
@@ -64,7 +70,10 @@ async function until<T>(what: string, probe: () => T | undefined, timeout = 60_0
         const v = probe();
         if (v !== undefined) return v;
         if (Date.now() > deadline) throw new Error(`timed out waiting for ${what}; diagnostics for ${[...diagnostics.keys()].join(', ')}`);
-        await new Promise<void>((r) => { changed = r; setTimeout(r, 200); });
+        await new Promise<void>((r) => {
+            changed = r;
+            setTimeout(r, 200);
+        });
     }
 }
 
@@ -78,7 +87,10 @@ beforeAll(async () => {
     writeFileSync(script, bundled.code);
     const boot = join(dir, 'boot.mjs');
     // A Web Worker's scope: `self` is the port the page talks to; no `window`, no `document`.
-    writeFileSync(boot, `import { workerData } from 'node:worker_threads';\nglobalThis.self = workerData.port;\nawait import(${JSON.stringify(pathToFileURL(script).href)});\n`);
+    writeFileSync(
+        boot,
+        `import { workerData } from 'node:worker_threads';\nglobalThis.self = workerData.port;\nawait import(${JSON.stringify(pathToFileURL(script).href)});\n`,
+    );
     server = await serveWorkspace(dir);
 
     const channel = new MessageChannel();
@@ -99,7 +111,9 @@ beforeAll(async () => {
         changed();
     });
     worker = new Worker(boot, { workerData: { port: channel.port2 }, transferList: [channel.port2] });
-    worker.on('error', (e) => { throw e; });
+    worker.on('error', (e) => {
+        throw e;
+    });
 });
 
 afterAll(async () => {
@@ -116,13 +130,13 @@ describe('the browser entry', () => {
     });
 
     test('runs as a worker: the workspace over HTTP, diagnostics, generators and a diagram', async () => {
-        const init = await request('initialize', {
+        const init = (await request('initialize', {
             processId: null,
             rootUri: 'file:///workspace/',
             workspaceFolders: [{ uri: 'file:///workspace/', name: 'workspace' }],
             capabilities: {},
-            initializationOptions: { apiBase: server.url }
-        }) as { capabilities: Record<string, unknown> };
+            initializationOptions: { apiBase: server.url },
+        })) as { capabilities: Record<string, unknown> };
         expect(init.capabilities).toHaveProperty('completionProvider');
         notify('initialized', {});
 
@@ -140,10 +154,26 @@ describe('the browser entry', () => {
 
         notify('diagram/accept', {
             clientId: 'diagram-1',
-            action: { kind: 'requestModel', requestId: 'r1', options: { diagramType: 'maa-cc', sourceUri: `${ws}/toast/ToastServiceRobot.arc`, needsClientLayout: false } }
+            action: {
+                kind: 'requestModel',
+                requestId: 'r1',
+                options: { diagramType: 'maa-cc', sourceUri: `${ws}/toast/ToastServiceRobot.arc`, needsClientLayout: false },
+            },
         });
-        const answer = await until('the diagram', () => notifications.find((n) => n.method === 'diagram/accept')?.params as
-            { clientId: string; action: { kind: string; responseId?: string; newRoot: { children: Array<{ id: string; children: Array<Record<string, unknown>> }> } } } | undefined);
+        const answer = await until(
+            'the diagram',
+            () =>
+                notifications.find((n) => n.method === 'diagram/accept')?.params as
+                    | {
+                          clientId: string;
+                          action: {
+                              kind: string;
+                              responseId?: string;
+                              newRoot: { children: Array<{ id: string; children: Array<Record<string, unknown>> }> };
+                          };
+                      }
+                    | undefined,
+        );
         expect(answer.clientId).toBe('diagram-1');
         expect(answer.action.kind).toBe('setModel');
         expect(answer.action.responseId).toBe('r1');

@@ -34,7 +34,8 @@ function corpus(): FuzzCase[] {
         cases.push(...mutations(f.path, f.text, { seed: SEED, perKind: 10 }).filter((c) => c.name.startsWith('truncate')));
     }
     const rnd = random(SEED);
-    for (const path of ['A.arc', 'T.cd', 'R.ra', 'X.arcapp']) for (const depth of [100, 10_000]) cases.push(...pathological(path, depth, rnd));
+    for (const path of ['A.arc', 'T.cd', 'R.ra', 'X.arcapp'])
+        for (const depth of [100, 10_000]) cases.push(...pathological(path, depth, rnd));
     return cases;
 }
 

@@ -12,18 +12,42 @@ const states = (k: number): string => Array.from({ length: k }, (_, n) => `state
 /** Models by nesting depth: `k` levels of one construct in file A.<ext>. */
 /** `broken`: the nesting is a syntax error in that language anyway (error recovery at depth). */
 const CONSTRUCTS: Record<string, { file: string; model: (k: number) => string; broken?: true }> = {
-    'parentheses in a guard': { file: 'A.arc', model: (k) => arc(`  automaton {\n    initial state A;\n    A -> A [${'('.repeat(k)}i > 0${')'.repeat(k)}] / o = 1;\n  }`) },
+    'parentheses in a guard': {
+        file: 'A.arc',
+        model: (k) => arc(`  automaton {\n    initial state A;\n    A -> A [${'('.repeat(k)}i > 0${')'.repeat(k)}] / o = 1;\n  }`),
+    },
     'parentheses in compute': { file: 'A.arc', model: (k) => arc(`  compute { o = ${'('.repeat(k)}i${')'.repeat(k)}; }`) },
     'unary minus signs': { file: 'A.arc', model: (k) => arc(`  compute { o = ${'- '.repeat(k)}i; }`) },
     'nested blocks': { file: 'A.arc', model: (k) => arc(`  compute { ${'{ '.repeat(k)}o = 1;${' }'.repeat(k)} }`) },
     'nested states': { file: 'A.arc', model: (k) => arc(`  automaton {\n    initial ${states(k)}\n  }`) },
-    'nested ifs in an action': { file: 'A.arc', model: (k) => arc(`  automaton {\n    initial state A;\n    A -> A / { ${'if (i > 0) '.repeat(k)}o = 1; }\n  }`) },
-    'nested switch expressions': { file: 'A.arc', model: (k) => arc(`  compute { o = ${'switch (i) { default -> '.repeat(k)}0${'; }'.repeat(k)}; }`) },
+    'nested ifs in an action': {
+        file: 'A.arc',
+        model: (k) => arc(`  automaton {\n    initial state A;\n    A -> A / { ${'if (i > 0) '.repeat(k)}o = 1; }\n  }`),
+    },
+    'nested switch expressions': {
+        file: 'A.arc',
+        model: (k) => arc(`  compute { o = ${'switch (i) { default -> '.repeat(k)}0${'; }'.repeat(k)}; }`),
+    },
     'binary operators': { file: 'A.arc', model: (k) => arc(`  compute { o = i${' + i'.repeat(k)}; }`) },
-    'robot arm move arguments': { file: 'A.arc', model: (k) => arc(`  robotarm {\n    location L 10deg 5cm;\n    program P { move${' L'.repeat(k)}; }\n  }`) },
-    'braces in a class diagram': { file: 'T.cd', model: (k) => `classdiagram T {\n  class C { int x; ${'{ '.repeat(k)}${'} '.repeat(k)}}\n}\n`, broken: true },
-    'braces in a robot arm file': { file: 'R.ra', model: (k) => `robotarm R {\n  program P { ${'{ '.repeat(k)}${'} '.repeat(k)}move top; }\n}\n`, broken: true },
-    'braces in an application': { file: 'X.arcapp', model: (k) => `application X for A {\n  platform p { ${'{ '.repeat(k)}${'} '.repeat(k)}}\n}\n`, broken: true }
+    'robot arm move arguments': {
+        file: 'A.arc',
+        model: (k) => arc(`  robotarm {\n    location L 10deg 5cm;\n    program P { move${' L'.repeat(k)}; }\n  }`),
+    },
+    'braces in a class diagram': {
+        file: 'T.cd',
+        model: (k) => `classdiagram T {\n  class C { int x; ${'{ '.repeat(k)}${'} '.repeat(k)}}\n}\n`,
+        broken: true,
+    },
+    'braces in a robot arm file': {
+        file: 'R.ra',
+        model: (k) => `robotarm R {\n  program P { ${'{ '.repeat(k)}${'} '.repeat(k)}move top; }\n}\n`,
+        broken: true,
+    },
+    'braces in an application': {
+        file: 'X.arcapp',
+        model: (k) => `application X for A {\n  platform p { ${'{ '.repeat(k)}${'} '.repeat(k)}}\n}\n`,
+        broken: true,
+    },
 };
 
 function codes(doc: LangiumDocument): string[] {
@@ -77,9 +101,16 @@ describe.each(Object.entries(CONSTRUCTS))('%s', (_name, c) => {
         for (const depth of [k, k + 1, 10_000]) {
             const ws = await workspace({ [c.file]: c.model(depth), ...(c.file === 'X.arcapp' ? { 'A.arc': 'component A { }' } : {}) });
             const found = codes(ws.doc(c.file));
-            expect(found.filter((code) => code.startsWith('internal/')), `depth ${depth}`).toEqual([]);
+            expect(
+                found.filter((code) => code.startsWith('internal/')),
+                `depth ${depth}`,
+            ).toEqual([]);
             expect(found.filter((code) => code === 'syntax/too-deep').length, `depth ${depth}`).toBeLessThanOrEqual(1);
-            if (depth === k && !c.broken) expect(found.filter((code) => code.startsWith('syntax/')), `depth ${depth}`).toEqual([]);
+            if (depth === k && !c.broken)
+                expect(
+                    found.filter((code) => code.startsWith('syntax/')),
+                    `depth ${depth}`,
+                ).toEqual([]);
             await serveEverything(ws, c.file);
         }
     });
@@ -94,7 +125,11 @@ describe('diagrams of deeply nested models', () => {
             const client = new TestClient(ws.diagrams);
             const cc = await client.requestModel({ diagramType: 'maa-cc', sourceUri: ws.uri('A.arc'), needsClientLayout: false });
             expect(cc.children?.length ?? 0).toBeGreaterThan(0);
-            const automaton = await client.requestModel({ diagramType: 'maa-automaton', sourceUri: ws.uri('A.arc'), needsClientLayout: false });
+            const automaton = await client.requestModel({
+                diagramType: 'maa-automaton',
+                sourceUri: ws.uri('A.arc'),
+                needsClientLayout: false,
+            });
             expect(automaton.type).toBeDefined();
         }
     });

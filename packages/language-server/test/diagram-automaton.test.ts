@@ -20,13 +20,16 @@ describe('the automaton diagram', () => {
         const model = await automatonModel(ws, 'toast/Controller.arc');
         expect(model).toMatchObject({ type: 'graph', id: 'automaton:toast.Controller', component: 'toast.Controller' });
         expect(of(model, 'node:state').map((s) => `${s.id} ${String(s.name)} ${String(s.statePath)} ${String(s.initial)}`)).toEqual([
-            'state:Idle Idle Idle true', 'state:Loading Loading Loading false', 'state:Toasting Toasting Toasting false', 'state:Serving Serving Serving false'
+            'state:Idle Idle Idle true',
+            'state:Loading Loading Loading false',
+            'state:Toasting Toasting Toasting false',
+            'state:Serving Serving Serving false',
         ]);
         expect(of(model, 'edge:transition').map((t) => `${t.id}: ${String(t.label)}`)).toEqual([
             'tr:Idle->Loading: [distance < threshold] / { arm = ArmProgram.LOAD_BREAD; }',
             'tr:Loading->Toasting: [armStatus == ArmStatus.DONE] / { toaster = ToasterCmd.START; }',
             'tr:Toasting->Serving: [color == ToastColor.GOLDEN] / { toaster = ToasterCmd.STOP; arm = ArmProgram.PICKUP_AND_DEPLOY; }',
-            'tr:Serving->Idle: [armStatus == ArmStatus.DONE] / { served++; }'
+            'tr:Serving->Idle: [armStatus == ArmStatus.DONE] / { served++; }',
         ]);
         const idle = byId(model).get('tr:Idle->Loading')!;
         expect(idle).toMatchObject({ sourceId: 'state:Idle', targetId: 'state:Loading' });
@@ -67,7 +70,12 @@ component Modes {
         const ws = await diagramWorkspace(files);
         const model = await automatonModel(ws, 'toast/Modes.arc');
         const all = byId(model);
-        expect(of(model, 'node:state').map((s) => `${String(s.statePath)} ${String(s.initial)}`)).toEqual(['Off true', 'On false', 'On.Low true', 'On.High false']);
+        expect(of(model, 'node:state').map((s) => `${String(s.statePath)} ${String(s.initial)}`)).toEqual([
+            'Off true',
+            'On false',
+            'On.Low true',
+            'On.High false',
+        ]);
         const on = all.get('state:On')!;
         expect((on.children ?? []).filter((c) => c.type === 'node:state').map((c) => c.id)).toEqual(['state:On.Low', 'state:On.High']);
         expect(of(model, 'edge:transition').map((t) => `${t.id} ${t.sourceId}->${t.targetId} ${String(t.label)}`)).toEqual([
@@ -76,7 +84,7 @@ component Modes {
             'tr:Off->On state:Off->state:On [i > 0] / o = 1;',
             'tr:On->Off state:On->state:Off [i < 0]',
             'tr:On->Off#1 state:On->state:Off [i == 0]',
-            'tr:Off->On.High state:Off->state:On.High i'
+            'tr:Off->On.High state:Off->state:On.High i',
         ]);
         // A transition between substates belongs to their state (its route is in that frame).
         expect((on.children ?? []).map((c) => c.id)).toContain('tr:On.Low->On.High');

@@ -7,7 +7,11 @@ import { byId, diagramWorkspace, exampleFiles, TestClient, type DiagramWorkspace
 
 type Element = SModelElement & Record<string, unknown>;
 
-async function ccModel(ws: DiagramWorkspace, file = 'toast/ToastServiceRobot.arc', extra: Record<string, unknown> = {}): Promise<{ model: SModelRoot; client: TestClient }> {
+async function ccModel(
+    ws: DiagramWorkspace,
+    file = 'toast/ToastServiceRobot.arc',
+    extra: Record<string, unknown> = {},
+): Promise<{ model: SModelRoot; client: TestClient }> {
     const client = new TestClient(ws.diagrams);
     const model = await client.requestModel({ diagramType: 'maa-cc', sourceUri: ws.uri(file), needsClientLayout: false, ...extra });
     return { model, client };
@@ -48,12 +52,24 @@ describe('the C&C diagram of the ToastServiceRobot', () => {
         const { model } = await ccModel(ws);
         expect(model).toMatchObject({ type: 'graph', id: 'graph:toast.ToastServiceRobot', component: 'toast.ToastServiceRobot' });
         const root = child(model, 'root');
-        expect(root).toMatchObject({ type: 'node:component', name: 'ToastServiceRobot', componentType: 'toast.ToastServiceRobot', instancePath: '', behaviorKind: 'composed', composed: true, expanded: true });
+        expect(root).toMatchObject({
+            type: 'node:component',
+            name: 'ToastServiceRobot',
+            componentType: 'toast.ToastServiceRobot',
+            instancePath: '',
+            behaviorKind: 'composed',
+            composed: true,
+            expanded: true,
+        });
 
-        const instances = Object.fromEntries((root.children ?? []).filter((c) => c.type === 'node:component').map((c) => {
-            const n = c as Element;
-            return [n.instancePath, `${String(n.componentType)} ${String(n.behaviorKind)}`];
-        }));
+        const instances = Object.fromEntries(
+            (root.children ?? [])
+                .filter((c) => c.type === 'node:component')
+                .map((c) => {
+                    const n = c as Element;
+                    return [n.instancePath, `${String(n.componentType)} ${String(n.behaviorKind)}`];
+                }),
+        );
         expect(instances).toEqual({
             dist: 'toast.DistanceSensor handwritten',
             color: 'toast.ColorSensor handwritten',
@@ -61,17 +77,33 @@ describe('the C&C diagram of the ToastServiceRobot', () => {
             ctrl: 'toast.Controller automaton',
             toasterCtrl: 'toast.ToasterController automaton',
             toaster: 'toast.ToasterActuator handwritten',
-            arm: 'toast.ArmController robotarm'
+            arm: 'toast.ArmController robotarm',
         });
 
         const ctrl = child(root, 'root.ctrl');
         expect(ctrl).toMatchObject({ name: 'ctrl', composed: false, expanded: false });
-        expect(child(ctrl, 'root.ctrl:arm')).toMatchObject({ type: 'port', name: 'arm', direction: 'out', portType: 'ArmProgram', portPath: 'ctrl.arm' });
-        expect(child(ctrl, 'root.ctrl:distance')).toMatchObject({ type: 'port', direction: 'in', portType: 'int', portPath: 'ctrl.distance' });
+        expect(child(ctrl, 'root.ctrl:arm')).toMatchObject({
+            type: 'port',
+            name: 'arm',
+            direction: 'out',
+            portType: 'ArmProgram',
+            portPath: 'ctrl.arm',
+        });
+        expect(child(ctrl, 'root.ctrl:distance')).toMatchObject({
+            type: 'port',
+            direction: 'in',
+            portType: 'int',
+            portPath: 'ctrl.distance',
+        });
         expect(child(ctrl, 'root.ctrl#badge')).toMatchObject({ type: 'label:badge', text: 'automaton' });
         expect(child(child(root, 'root.arm'), 'root.arm#badge')).toMatchObject({ text: 'robotarm' });
-        expect((ctrl.children ?? []).filter((c) => c.type === 'port').map((c) => c.id)).toEqual(
-            ['root.ctrl:distance', 'root.ctrl:color', 'root.ctrl:armStatus', 'root.ctrl:toaster', 'root.ctrl:arm']);
+        expect((ctrl.children ?? []).filter((c) => c.type === 'port').map((c) => c.id)).toEqual([
+            'root.ctrl:distance',
+            'root.ctrl:color',
+            'root.ctrl:armStatus',
+            'root.ctrl:toaster',
+            'root.ctrl:arm',
+        ]);
 
         const connectors = of(model, 'edge:connector').map((e) => `${e.sourceId} -> ${e.targetId} (${String(e.sourcePortPath)})`);
         expect(connectors).toEqual([
@@ -82,7 +114,7 @@ describe('the C&C diagram of the ToastServiceRobot', () => {
             'root.ctrl:arm -> root.arm:cmd (ctrl.arm)',
             'root.plate:angle -> root.arm:angle (plate.angle)',
             'root.plate:height -> root.arm:height (plate.height)',
-            'root.arm:status -> root.ctrl:armStatus (arm.status)'
+            'root.arm:status -> root.ctrl:armStatus (arm.status)',
         ]);
         expect(of(model, 'edge:connector')[0]!.id).toBe('conn:root:dist.value->ctrl.distance');
         // Connectors are children of the component that declares them.
@@ -129,22 +161,35 @@ describe('the C&C diagram of the ToastServiceRobot', () => {
 
     test('marks the instance of a component with an error, and a port whose declaration has one', async () => {
         const files = exampleFiles();
-        files['toast/Controller.arc'] = files['toast/Controller.arc']!.replace('ToastColor.GOLDEN', 'ToastColor.GOLD').replace('in ToastColor color', 'in ToastColour color');
+        files['toast/Controller.arc'] = files['toast/Controller.arc']!.replace('ToastColor.GOLDEN', 'ToastColor.GOLD').replace(
+            'in ToastColor color',
+            'in ToastColour color',
+        );
         const ws = await diagramWorkspace(files);
         const { model } = await ccModel(ws);
         const severities = Object.fromEntries(of(model, 'node:component').map((n) => [n.id, n.severity]));
         expect(severities).toEqual({
-            root: undefined, 'root.dist': undefined, 'root.color': undefined, 'root.plate': undefined,
-            'root.ctrl': 'error', 'root.toasterCtrl': undefined, 'root.toaster': undefined, 'root.arm': undefined
+            root: undefined,
+            'root.dist': undefined,
+            'root.color': undefined,
+            'root.plate': undefined,
+            'root.ctrl': 'error',
+            'root.toasterCtrl': undefined,
+            'root.toaster': undefined,
+            'root.arm': undefined,
         });
-        const ports = of(model, 'port').filter((p) => p.severity !== undefined).map((p) => `${p.id} ${String(p.severity)}`);
+        const ports = of(model, 'port')
+            .filter((p) => p.severity !== undefined)
+            .map((p) => `${p.id} ${String(p.severity)}`);
         expect(ports).toEqual(['root.ctrl:color error']);
     });
 
     test('keeps the ids of everything but the renamed port and its connector when a port is renamed', async () => {
         const ws = await diagramWorkspace();
         const { model: before } = await ccModel(ws);
-        await ws.edit('toast/Controller.arc', (t) => t.replace('in int distance', 'in int range').replace('[distance < threshold]', '[range < threshold]'));
+        await ws.edit('toast/Controller.arc', (t) =>
+            t.replace('in int distance', 'in int range').replace('[distance < threshold]', '[range < threshold]'),
+        );
         await ws.edit('toast/ToastServiceRobot.arc', (t) => t.replace('-> ctrl.distance', '-> ctrl.range'));
         const { model: after } = await ccModel(ws);
         const idsBefore = new Set(byId(before).keys());
@@ -233,7 +278,7 @@ component Robot2 {
   plate.height -> arm.height;
   arm.status -> ctrl.armStatus;
 }
-`
+`,
     };
 }
 
@@ -244,13 +289,16 @@ describe('composed subcomponents in the C&C diagram', () => {
         const sensing = byId(model).get('root.sensing')!;
         expect(sensing).toMatchObject({ componentType: 'toast.Sensing', behaviorKind: 'composed', composed: true, expanded: false });
         expect((sensing.children ?? []).filter((c) => c.type === 'node:component')).toEqual([]);
-        expect((sensing.children ?? []).filter((c) => c.type === 'port').map((c) => c.id)).toEqual(['root.sensing:distance', 'root.sensing:color']);
+        expect((sensing.children ?? []).filter((c) => c.type === 'port').map((c) => c.id)).toEqual([
+            'root.sensing:distance',
+            'root.sensing:color',
+        ]);
         const sources = Object.fromEntries(of(model, 'edge:connector').map((e) => [e.id, e.sourcePortPath]));
         expect(sources).toMatchObject({
             'conn:root:sensing.distance->ctrl.distance': 'sensing.dist.value',
             'conn:root:sensing.color->ctrl.color': 'sensing.col.value',
             'conn:root:ctrl.toaster->relay.cmd': 'ctrl.toaster',
-            'conn:root:relay.lever->act.leverDown': 'relay.tc.leverDown'
+            'conn:root:relay.lever->act.leverDown': 'relay.tc.leverDown',
         });
     });
 
@@ -259,15 +307,25 @@ describe('composed subcomponents in the C&C diagram', () => {
         const { model } = await ccModel(ws, 'toast/Robot2.arc', { expanded: ['sensing', 'relay'] });
         const relay = byId(model).get('root.relay')!;
         expect(relay).toMatchObject({ composed: true, expanded: true });
-        expect(child(relay, 'root.relay.tc')).toMatchObject({ instancePath: 'relay.tc', componentType: 'toast.ToasterController', behaviorKind: 'automaton' });
-        expect(child(child(relay, 'root.relay.tc'), 'root.relay.tc:leverDown')).toMatchObject({ portPath: 'relay.tc.leverDown' });
-        const inner = (relay.children ?? []).filter((c) => c.type === 'edge:connector').map((c) => {
-            const e = c as Element;
-            return `${e.id} ${String(e.sourcePortPath)}`;
+        expect(child(relay, 'root.relay.tc')).toMatchObject({
+            instancePath: 'relay.tc',
+            componentType: 'toast.ToasterController',
+            behaviorKind: 'automaton',
         });
+        expect(child(child(relay, 'root.relay.tc'), 'root.relay.tc:leverDown')).toMatchObject({ portPath: 'relay.tc.leverDown' });
+        const inner = (relay.children ?? [])
+            .filter((c) => c.type === 'edge:connector')
+            .map((c) => {
+                const e = c as Element;
+                return `${e.id} ${String(e.sourcePortPath)}`;
+            });
         // The relay's in port carries what the controller sends: the chain is followed outwards too.
         expect(inner).toEqual(['conn:root.relay:cmd->tc.cmd ctrl.toaster', 'conn:root.relay:tc.leverDown->lever relay.tc.leverDown']);
-        expect(byId(model).get('conn:root.sensing:dist.value->distance')).toMatchObject({ sourceId: 'root.sensing.dist:value', targetId: 'root.sensing:distance', sourcePortPath: 'sensing.dist.value' });
+        expect(byId(model).get('conn:root.sensing:dist.value->distance')).toMatchObject({
+            sourceId: 'root.sensing.dist:value',
+            targetId: 'root.sensing:distance',
+            sourcePortPath: 'sensing.dist.value',
+        });
         expectPortsOnBorders(model);
         // Nested nodes lie inside their parent.
         const size = relay.size as { width: number; height: number };

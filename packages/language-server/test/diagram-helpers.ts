@@ -45,14 +45,20 @@ export async function diagramWorkspace(files: Readonly<Record<string, string>> =
         return d;
     };
     return {
-        family, diagrams, root, uri, doc,
+        family,
+        diagrams,
+        root,
+        uri,
+        doc,
         async edit(path, change) {
             const d = doc(path);
             const text = change(d.textDocument.getText());
             // As the editor's copy: the open documents win over the (here empty) file system.
-            shared.workspace.TextDocuments!.set(TextDocument.create(d.uri.toString(), d.textDocument.languageId, d.textDocument.version + 1, text));
+            shared.workspace.TextDocuments!.set(
+                TextDocument.create(d.uri.toString(), d.textDocument.languageId, d.textDocument.version + 1, text),
+            );
             await shared.workspace.DocumentBuilder.update([d.uri], []);
-        }
+        },
     };
 }
 
@@ -75,7 +81,10 @@ export class TestClient {
     readonly received: ActionMessage[] = [];
     private waiters: Array<() => void> = [];
 
-    constructor(private readonly diagrams: MaaDiagramServices, readonly clientId = `client-${++counter}`) {
+    constructor(
+        private readonly diagrams: MaaDiagramServices,
+        readonly clientId = `client-${++counter}`,
+    ) {
         diagrams.diagram.DiagramServerManager.onDidSend((m) => {
             if (m.clientId !== this.clientId) return;
             this.received.push(m);
@@ -87,7 +96,7 @@ export class TestClient {
         const before = this.received.length;
         await this.diagrams.diagram.DiagramServerManager.acceptAction({
             clientId: this.clientId,
-            action: { kind: 'requestModel', requestId: `req-${before}`, options } as ActionMessage['action']
+            action: { kind: 'requestModel', requestId: `req-${before}`, options } as ActionMessage['action'],
         });
         const answer = await this.next(before, (k) => k === 'setModel' || k === 'rejectRequest');
         if (answer.action.kind !== 'setModel') throw new Error(`rejected: ${JSON.stringify(answer.action)}`);
@@ -101,7 +110,10 @@ export class TestClient {
             const found = this.received.slice(from).find((m) => kind(m.action.kind));
             if (found) return found;
             if (Date.now() > deadline) throw new Error(`no matching action; got ${this.received.map((m) => m.action.kind).join(', ')}`);
-            await new Promise<void>((r) => { this.waiters.push(r); setTimeout(r, 100); });
+            await new Promise<void>((r) => {
+                this.waiters.push(r);
+                setTimeout(r, 100);
+            });
         }
     }
 }

@@ -9,8 +9,16 @@ import { EXPAND_TOGGLE_ROOM } from '../src/diagram/layout.js';
 import { byId, diagramWorkspace, exampleFiles, TestClient, type DiagramWorkspace } from './diagram-helpers.js';
 
 type Element = SModelElement & Record<string, unknown>;
-interface Box { x: number; y: number; width: number; height: number }
-interface Point { x: number; y: number }
+interface Box {
+    x: number;
+    y: number;
+    width: number;
+    height: number;
+}
+interface Point {
+    x: number;
+    y: number;
+}
 
 /** The C&C view of the example is at most this wide (it was about 2200 px before). */
 const CC_MAX_WIDTH = 1000;
@@ -34,7 +42,11 @@ function geometry(root: SModelRoot): { boxes: Map<string, Box>; routes: Map<stri
         const s = e.size as { width: number; height: number } | undefined;
         const here = p ? { x: origin.x + p.x, y: origin.y + p.y } : origin;
         if (p && s) boxes.set(e.id, { ...here, width: s.width, height: s.height });
-        if (isEdge) routes.set(e.id, ((e.routingPoints ?? []) as Point[]).map((q) => ({ x: origin.x + q.x, y: origin.y + q.y })));
+        if (isEdge)
+            routes.set(
+                e.id,
+                ((e.routingPoints ?? []) as Point[]).map((q) => ({ x: origin.x + q.x, y: origin.y + q.y })),
+            );
         for (const c of (e.children ?? []) as Element[]) {
             parents.set(c.id, e.id);
             walk(c, isEdge ? origin : here);
@@ -46,20 +58,39 @@ function geometry(root: SModelRoot): { boxes: Map<string, Box>; routes: Map<stri
 
 /** Whether two boxes overlap by more than `tolerance` pixels in both directions. */
 function overlap(a: Box, b: Box, tolerance = 0.5): boolean {
-    return a.x + a.width - tolerance > b.x && b.x + b.width - tolerance > a.x && a.y + a.height - tolerance > b.y && b.y + b.height - tolerance > a.y;
+    return (
+        a.x + a.width - tolerance > b.x &&
+        b.x + b.width - tolerance > a.x &&
+        a.y + a.height - tolerance > b.y &&
+        b.y + b.height - tolerance > a.y
+    );
 }
 
 /** Whether a segment passes through the inside of a box (shrunk by `inset`). */
 function crosses(a: Point, b: Point, box: Box, inset = 1): boolean {
-    const x0 = box.x + inset, x1 = box.x + box.width - inset, y0 = box.y + inset, y1 = box.y + box.height - inset;
+    const x0 = box.x + inset,
+        x1 = box.x + box.width - inset,
+        y0 = box.y + inset,
+        y1 = box.y + box.height - inset;
     if (x1 <= x0 || y1 <= y0) return false;
     // Liang–Barsky clipping of the segment against the box.
-    let t0 = 0, t1 = 1;
-    const dx = b.x - a.x, dy = b.y - a.y;
-    for (const [p, q] of [[-dx, a.x - x0], [dx, x1 - a.x], [-dy, a.y - y0], [dy, y1 - a.y]] as const) {
-        if (p === 0) { if (q < 0) return false; continue; }
+    let t0 = 0,
+        t1 = 1;
+    const dx = b.x - a.x,
+        dy = b.y - a.y;
+    for (const [p, q] of [
+        [-dx, a.x - x0],
+        [dx, x1 - a.x],
+        [-dy, a.y - y0],
+        [dy, y1 - a.y],
+    ] as const) {
+        if (p === 0) {
+            if (q < 0) return false;
+            continue;
+        }
         const r = q / p;
-        if (p < 0) t0 = Math.max(t0, r); else t1 = Math.min(t1, r);
+        if (p < 0) t0 = Math.max(t0, r);
+        else t1 = Math.min(t1, r);
         if (t0 > t1) return false;
     }
     return true;
@@ -76,7 +107,8 @@ function siblingOverlaps(root: SModelRoot): string[] {
         const nodes = ((parent.children ?? []) as Element[]).filter((c) => String(c.type).startsWith('node'));
         for (let i = 0; i < nodes.length; i++) {
             for (let j = i + 1; j < nodes.length; j++) {
-                const a = nodes[i]!, b = nodes[j]!;
+                const a = nodes[i]!,
+                    b = nodes[j]!;
                 const ba = { ...(a.position as Point), ...(a.size as { width: number; height: number }) };
                 const bb = { ...(b.position as Point), ...(b.size as { width: number; height: number }) };
                 if (overlap(ba, bb)) found.push(`${a.id} / ${b.id}`);
@@ -100,13 +132,17 @@ function automatonProblems(root: SModelRoot): string[] {
     const problems: string[] = [];
     for (const label of labels) {
         const box = boxes.get(label.id);
-        if (!box) { problems.push(`${label.id} has no box`); continue; }
+        if (!box) {
+            problems.push(`${label.id} has no box`);
+            continue;
+        }
         for (const state of states) {
             // A label of a transition inside a state lies within that state's box, rightly.
             if (isAncestor(parents, state.id, label.id)) continue;
             if (overlap(box, boxes.get(state.id)!)) problems.push(`${label.id} overlaps ${state.id}`);
         }
-        for (const other of labels) if (other.id < label.id && overlap(box, boxes.get(other.id)!)) problems.push(`${label.id} overlaps ${other.id}`);
+        for (const other of labels)
+            if (other.id < label.id && overlap(box, boxes.get(other.id)!)) problems.push(`${label.id} overlaps ${other.id}`);
         // Labels do not lie across other transitions' routes.
         for (const [edge, route] of routes) {
             if (edge === parents.get(label.id)) continue;
@@ -117,10 +153,14 @@ function automatonProblems(root: SModelRoot): string[] {
     for (const state of states.filter((s) => s.initial)) {
         const b = boxes.get(state.id)!;
         const marker = { x: b.x - 22, y: b.y + 8, width: 22, height: 12 };
-        for (const other of states) if (other.id !== state.id && !isAncestor(parents, other.id, state.id) && overlap(marker, boxes.get(other.id)!)) problems.push(`the marker of ${state.id} overlaps ${other.id}`);
-        for (const label of labels) if (overlap(marker, boxes.get(label.id)!)) problems.push(`the marker of ${state.id} overlaps ${label.id}`);
+        for (const other of states)
+            if (other.id !== state.id && !isAncestor(parents, other.id, state.id) && overlap(marker, boxes.get(other.id)!))
+                problems.push(`the marker of ${state.id} overlaps ${other.id}`);
+        for (const label of labels)
+            if (overlap(marker, boxes.get(label.id)!)) problems.push(`the marker of ${state.id} overlaps ${label.id}`);
         for (const [edge, route] of routes) {
-            for (let i = 1; i < route.length; i++) if (crosses(route[i - 1]!, route[i]!, marker, 0.5)) problems.push(`${edge} crosses the marker of ${state.id}`);
+            for (let i = 1; i < route.length; i++)
+                if (crosses(route[i - 1]!, route[i]!, marker, 0.5)) problems.push(`${edge} crosses the marker of ${state.id}`);
         }
     }
     return problems;
@@ -142,12 +182,17 @@ function componentProblems(root: SModelRoot): string[] {
             const s = c.size as { width: number; height: number };
             const centre = p.x + s.width / 2;
             const border = c.direction === 'in' ? 0 : size.width;
-            if (Math.abs(centre - border) > 0.5) problems.push(`${c.id} (${String(c.direction)}) is off its border: ${centre} vs ${border}`);
+            if (Math.abs(centre - border) > 0.5)
+                problems.push(`${c.id} (${String(c.direction)}) is off its border: ${centre} vs ${border}`);
             if (p.y < 0 || p.y + s.height > size.height) problems.push(`${c.id} is above or below its node`);
             for (const l of (c.children ?? []) as Element[]) texts.push({ id: l.id, box: boxes.get(l.id)! });
         }
         for (const t of texts) {
-            const inside = t.box.x >= box.x && t.box.y >= box.y && t.box.x + t.box.width <= box.x + box.width && t.box.y + t.box.height <= box.y + box.height;
+            const inside =
+                t.box.x >= box.x &&
+                t.box.y >= box.y &&
+                t.box.x + t.box.width <= box.x + box.width &&
+                t.box.y + t.box.height <= box.y + box.height;
             if (!inside) problems.push(`${t.id} sticks out of ${node.id}`);
             for (const u of texts) if (u.id < t.id && overlap(t.box, u.box)) problems.push(`${t.id} overlaps ${u.id}`);
             // Labels of a node are not covered by its children.
@@ -162,15 +207,20 @@ function componentProblems(root: SModelRoot): string[] {
         const ends = new Set<string>();
         for (const end of [String(edge.sourceId), String(edge.targetId)]) {
             const nodeId = end.split(':')[0]!;
-            for (let id = nodeId; ; id = id.slice(0, id.lastIndexOf('.'))) { ends.add(id); if (!id.includes('.')) break; }
+            for (let id = nodeId; ; id = id.slice(0, id.lastIndexOf('.'))) {
+                ends.add(id);
+                if (!id.includes('.')) break;
+            }
         }
         for (const node of nodesOf(root, 'node:component')) {
             if (ends.has(node.id)) continue;
-            for (let i = 1; i < route.length; i++) if (crosses(route[i - 1]!, route[i]!, boxes.get(node.id)!)) problems.push(`${edge.id} crosses ${node.id}`);
+            for (let i = 1; i < route.length; i++)
+                if (crosses(route[i - 1]!, route[i]!, boxes.get(node.id)!)) problems.push(`${edge.id} crosses ${node.id}`);
         }
         // Nor through a label.
         for (const label of [...all.values()].filter((e) => String(e.type).startsWith('label'))) {
-            for (let i = 1; i < route.length; i++) if (crosses(route[i - 1]!, route[i]!, boxes.get(label.id)!)) problems.push(`${edge.id} crosses ${label.id}`);
+            for (let i = 1; i < route.length; i++)
+                if (crosses(route[i - 1]!, route[i]!, boxes.get(label.id)!)) problems.push(`${edge.id} crosses ${label.id}`);
         }
         if (!all.has(String(edge.sourceId))) problems.push(`${edge.id} has no source`);
     }
@@ -193,7 +243,10 @@ function moved(before: Map<string, Point>, after: Map<string, Point>, except: re
 }
 
 describe('the automaton layout', () => {
-    for (const [name, file] of [['toast.Controller', 'toast/Controller.arc'], ['toast.ToasterController', 'toast/ToasterController.arc']] as const) {
+    for (const [name, file] of [
+        ['toast.Controller', 'toast/Controller.arc'],
+        ['toast.ToasterController', 'toast/ToasterController.arc'],
+    ] as const) {
         test(`of ${name}: no overlapping states, no transition label over a state, a label or a route, room for the initial marker`, async () => {
             const ws = await diagramWorkspace();
             const m = await model(ws, 'maa-automaton', file);
@@ -297,7 +350,9 @@ component Modes {
     test('keeps its ids and the positions of the states when a guard is edited', async () => {
         const ws = await diagramWorkspace();
         const before = await model(ws, 'maa-automaton', 'toast/Controller.arc');
-        await ws.edit('toast/Controller.arc', (t) => t.replace('[armStatus == ArmStatus.DONE] / { served++; }', '[armStatus == ArmStatus.DONE && served >= 0] / { served++; }'));
+        await ws.edit('toast/Controller.arc', (t) =>
+            t.replace('[armStatus == ArmStatus.DONE] / { served++; }', '[armStatus == ArmStatus.DONE && served >= 0] / { served++; }'),
+        );
         const after = await model(ws, 'maa-automaton', 'toast/Controller.arc');
         expect([...byId(after).keys()]).toEqual([...byId(before).keys()]);
         expect(byId(after).get('tr:Serving->Idle')!.label).toBe('[armStatus == ArmStatus.DONE && served >= 0] / { served++; }');
@@ -362,7 +417,7 @@ component Robot2 {
   plate.height -> arm.height;
   arm.status -> ctrl.armStatus;
 }
-`
+`,
         };
         const ws = await diagramWorkspace(files);
         const closed = await model(ws, 'maa-cc', 'toast/Robot2.arc');
@@ -378,12 +433,13 @@ component Robot2 {
         expect(componentProblems(sensing)).toEqual([]);
     });
 
-    test('keeps room right of a composed subcomponent\'s type for the expand/collapse button', async () => {
+    test("keeps room right of a composed subcomponent's type for the expand/collapse button", async () => {
         // A type name longer than instance name and badge together: the type row sets the width.
         const files = {
             ...exampleFiles(),
-            'toast/DistanceSensingAssemblyUnit.arc': 'package toast;\n\ncomponent DistanceSensingAssemblyUnit {\n  port out int distance;\n  DistanceSensor dist;\n  dist.value -> distance;\n}\n',
-            'toast/Robot3.arc': 'package toast;\n\ncomponent Robot3 {\n  DistanceSensingAssemblyUnit u;\n}\n'
+            'toast/DistanceSensingAssemblyUnit.arc':
+                'package toast;\n\ncomponent DistanceSensingAssemblyUnit {\n  port out int distance;\n  DistanceSensor dist;\n  dist.value -> distance;\n}\n',
+            'toast/Robot3.arc': 'package toast;\n\ncomponent Robot3 {\n  DistanceSensingAssemblyUnit u;\n}\n',
         };
         const ws = await diagramWorkspace(files);
         for (const expanded of [[], ['u']]) {
@@ -398,7 +454,9 @@ component Robot2 {
     test('keeps ids and the positions of the other instances when a port is renamed', async () => {
         const ws = await diagramWorkspace();
         const before = await model(ws, 'maa-cc', 'toast/ToastServiceRobot.arc');
-        await ws.edit('toast/Controller.arc', (t) => t.replace('in int distance', 'in int dist').replace('[distance < threshold]', '[dist < threshold]'));
+        await ws.edit('toast/Controller.arc', (t) =>
+            t.replace('in int distance', 'in int dist').replace('[distance < threshold]', '[dist < threshold]'),
+        );
         await ws.edit('toast/ToastServiceRobot.arc', (t) => t.replace('-> ctrl.distance', '-> ctrl.dist'));
         const after = await model(ws, 'maa-cc', 'toast/ToastServiceRobot.arc');
         const renamed = (id: string): string => id.replace('ctrl:distance', 'ctrl:dist').replace('ctrl.distance', 'ctrl.dist');

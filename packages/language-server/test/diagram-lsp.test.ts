@@ -8,8 +8,16 @@ import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import {
-    DidChangeTextDocumentNotification, DidOpenTextDocumentNotification, InitializedNotification, InitializeRequest, NotificationType,
-    PublishDiagnosticsNotification, StreamMessageReader, StreamMessageWriter, createProtocolConnection, type ProtocolConnection
+    DidChangeTextDocumentNotification,
+    DidOpenTextDocumentNotification,
+    InitializedNotification,
+    InitializeRequest,
+    NotificationType,
+    PublishDiagnosticsNotification,
+    StreamMessageReader,
+    StreamMessageWriter,
+    createProtocolConnection,
+    type ProtocolConnection,
 } from 'vscode-languageserver-protocol/node.js';
 import type { ActionMessage, SModelElement, SModelRoot } from 'sprotty-protocol';
 import { allElements } from '../src/diagram/index.js';
@@ -30,7 +38,8 @@ async function until<T>(what: string, probe: () => T | undefined, timeout = 60_0
     for (;;) {
         const v = probe();
         if (v !== undefined) return v;
-        if (Date.now() > deadline) throw new Error(`timed out waiting for ${what}; got ${received.map((m) => m.action.kind).join(', ')}\n${stderr}`);
+        if (Date.now() > deadline)
+            throw new Error(`timed out waiting for ${what}; got ${received.map((m) => m.action.kind).join(', ')}\n${stderr}`);
         await new Promise((r) => setTimeout(r, 100));
     }
 }
@@ -46,10 +55,16 @@ beforeAll(() => {
     tmp = mkdtempSync(join(tmpdir(), 'maa-diagram-lsp-'));
     cpSync(EXAMPLE, tmp, { recursive: true });
     proc = spawn(process.execPath, [serverMain, '--stdio'], { stdio: 'pipe' });
-    proc.stderr.on('data', (chunk: Buffer) => { stderr += chunk.toString(); });
+    proc.stderr.on('data', (chunk: Buffer) => {
+        stderr += chunk.toString();
+    });
     connection = createProtocolConnection(new StreamMessageReader(proc.stdout), new StreamMessageWriter(proc.stdin));
-    connection.onNotification(DiagramAccept, (m) => { received.push(m); });
-    connection.onNotification(PublishDiagnosticsNotification.type, (p) => { published.add(p.uri); });
+    connection.onNotification(DiagramAccept, (m) => {
+        received.push(m);
+    });
+    connection.onNotification(PublishDiagnosticsNotification.type, (p) => {
+        published.add(p.uri);
+    });
     connection.listen();
 });
 
@@ -62,18 +77,27 @@ afterAll(() => {
 describe('the diagram server of maa-language-server', () => {
     test('answers a model request and updates the diagram after an edit', async () => {
         const root = pathToFileURL(tmp).toString();
-        await connection.sendRequest(InitializeRequest.type, { processId: process.pid, rootUri: root, workspaceFolders: [{ uri: root, name: 'ws' }], capabilities: {} });
+        await connection.sendRequest(InitializeRequest.type, {
+            processId: process.pid,
+            rootUri: root,
+            workspaceFolders: [{ uri: root, name: 'ws' }],
+            capabilities: {},
+        });
         await connection.sendNotification(InitializedNotification.type, {});
         const source = pathToFileURL(join(tmp, 'toast/ToastServiceRobot.arc')).toString();
         await until('the start-up checks', () => (published.has(source) ? true : undefined));
 
         await connection.sendNotification(DiagramAccept, {
             clientId: 'c1',
-            action: { kind: 'requestModel', requestId: 'req1', options: { diagramType: 'maa-cc', sourceUri: source, needsClientLayout: false } } as ActionMessage['action']
+            action: {
+                kind: 'requestModel',
+                requestId: 'req1',
+                options: { diagramType: 'maa-cc', sourceUri: source, needsClientLayout: false },
+            } as ActionMessage['action'],
         });
         const set = await until('setModel', () => received.find((m) => m.action.kind === 'setModel'));
         expect(set.clientId).toBe('c1');
-        const model = (set.action as unknown as { newRoot: SModelRoot; responseId: string });
+        const model = set.action as unknown as { newRoot: SModelRoot; responseId: string };
         expect(model.responseId).toBe('req1');
         expect(model.newRoot).toMatchObject({ type: 'graph', component: 'toast.ToastServiceRobot' });
         expect(element(model.newRoot, 'root.ctrl')).toMatchObject({ behaviorKind: 'automaton' });
@@ -82,13 +106,20 @@ describe('the diagram server of maa-language-server', () => {
 
         const controller = pathToFileURL(join(tmp, 'toast/Controller.arc')).toString();
         const text = readFileSync(join(tmp, 'toast/Controller.arc'), 'utf8');
-        await connection.sendNotification(DidOpenTextDocumentNotification.type, { textDocument: { uri: controller, languageId: 'arc', version: 1, text } });
+        await connection.sendNotification(DidOpenTextDocumentNotification.type, {
+            textDocument: { uri: controller, languageId: 'arc', version: 1, text },
+        });
         await connection.sendNotification(DidChangeTextDocumentNotification.type, {
             textDocument: { uri: controller, version: 2 },
-            contentChanges: [{ text: text.replace('ToastColor.GOLDEN', 'ToastColor.GOLD') }]
+            contentChanges: [{ text: text.replace('ToastColor.GOLDEN', 'ToastColor.GOLD') }],
         });
-        const update = await until('an update marking ctrl', () => received.find((m) => m.action.kind === 'updateModel'
-            && element((m.action as unknown as { newRoot: SModelRoot }).newRoot, 'root.ctrl').severity === 'error'));
+        const update = await until('an update marking ctrl', () =>
+            received.find(
+                (m) =>
+                    m.action.kind === 'updateModel' &&
+                    element((m.action as unknown as { newRoot: SModelRoot }).newRoot, 'root.ctrl').severity === 'error',
+            ),
+        );
         expect(update.clientId).toBe('c1');
         expect((update.action as unknown as { animate: boolean }).animate).toBe(true);
     });

@@ -36,10 +36,15 @@ describe('the automaton view of a mode automaton', () => {
         const model = await client.requestModel({ diagramType: 'maa-automaton', sourceUri: ws.uri('Shift.arc'), needsClientLayout: false });
         const all = [...byId(model).values()] as Element[];
         // statePath is the mode's name: the IDE highlights the current mode of a run like a state
-        expect(all.filter((e) => e.type === 'node:state').map((s) => `${s.id} ${String(s.statePath)} ${String(s.initial)}`))
-            .toEqual(['state:Up Up true', 'state:Down Down false']);
-        expect(all.filter((e) => e.type === 'edge:transition').map((t) => `${t.id}: ${String(t.label)}`))
-            .toEqual(['tr:Up->Down: flip [flip]', 'tr:Down->Up: Tick', 'tr:Down->Up#1: [i > 0]']);
+        expect(all.filter((e) => e.type === 'node:state').map((s) => `${s.id} ${String(s.statePath)} ${String(s.initial)}`)).toEqual([
+            'state:Up Up true',
+            'state:Down Down false',
+        ]);
+        expect(all.filter((e) => e.type === 'edge:transition').map((t) => `${t.id}: ${String(t.label)}`)).toEqual([
+            'tr:Up->Down: flip [flip]',
+            'tr:Down->Up: Tick',
+            'tr:Down->Up#1: [i > 0]',
+        ]);
         for (const e of all.filter((x) => x.type !== 'graph')) expect(e.trace, e.id).toMatch(/Shift\.arc\?\d+/);
         for (const s of all.filter((x) => x.type === 'node:state')) expect(s.position, s.id).toBeDefined();
     });

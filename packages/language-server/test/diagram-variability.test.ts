@@ -49,7 +49,11 @@ describe('variation points in the C&C diagram', () => {
     test('by default every variation point is shown and the graph lists the features', async () => {
         const ws = await diagramWorkspace({ 'Room.arc': ROOM });
         const client = new TestClient(ws.diagrams);
-        const model = await client.requestModel({ diagramType: 'maa-cc', sourceUri: ws.uri('Room.arc'), needsClientLayout: false }) as Element;
+        const model = (await client.requestModel({
+            diagramType: 'maa-cc',
+            sourceUri: ws.uri('Room.arc'),
+            needsClientLayout: false,
+        })) as Element;
         expect(model.features).toEqual(['dim', 'eco']);
         expect(model.configuration).toBeUndefined();
         expect(model.configurationRejected).toBeUndefined();
@@ -63,7 +67,7 @@ describe('variation points in the C&C diagram', () => {
         const ws = await diagramWorkspace({ 'Room.arc': ROOM });
         const client = new TestClient(ws.diagrams);
         const base = { diagramType: 'maa-cc', sourceUri: ws.uri('Room.arc'), needsClientLayout: false };
-        const eco = await client.requestModel({ ...base, features: { dim: false, eco: true } }) as Element;
+        const eco = (await client.requestModel({ ...base, features: { dim: false, eco: true } })) as Element;
         expect(eco.configuration).toEqual({ dim: false, eco: true });
         let elements = [...byId(eco).values()] as Element[];
         expect(elements.some((e) => e.type === 'node:component' && e.name === 'doubler')).toBe(false);
@@ -72,7 +76,7 @@ describe('variation points in the C&C diagram', () => {
         expect(edges.map((e) => e.variationPoint)).toEqual(['!(dim) && eco']);
 
         // `dim` wins over `eco` (else varif): eco's value is not asked, the first admitted configuration's is shown.
-        const dim = await client.requestModel({ ...base, features: { dim: true } }) as Element;
+        const dim = (await client.requestModel({ ...base, features: { dim: true } })) as Element;
         expect(dim.configuration).toEqual({ dim: true, eco: false });
         elements = [...byId(dim).values()] as Element[];
         expect(elements.some((e) => e.type === 'node:component' && e.name === 'doubler')).toBe(true);
@@ -86,16 +90,16 @@ describe('variation points in the C&C diagram', () => {
         const ws = await diagramWorkspace({ 'Room.arc': text });
         const client = new TestClient(ws.diagrams);
         const base = { diagramType: 'maa-cc', sourceUri: ws.uri('Room.arc'), needsClientLayout: false };
-        const rejected = await client.requestModel({ ...base, features: { dim: true, eco: false } }) as Element;
+        const rejected = (await client.requestModel({ ...base, features: { dim: true, eco: false } })) as Element;
         expect(rejected.configurationRejected).toBe(true);
         expect(rejected.configuration).toBeUndefined();
         expect(([...byId(rejected).values()] as Element[]).filter((e) => e.type === 'edge:connector')).toHaveLength(4);
         // Only `dim` asked: the constraint makes `eco` true.
-        const admitted = await client.requestModel({ ...base, features: { dim: true } }) as Element;
+        const admitted = (await client.requestModel({ ...base, features: { dim: true } })) as Element;
         expect(admitted.configuration).toEqual({ dim: true, eco: true });
     });
 
-    test('a subcomponent\'s variation points follow its own feature binding in the shown configuration', async () => {
+    test("a subcomponent's variation points follow its own feature binding in the shown configuration", async () => {
         const text = `component House {
   feature bright;
   port in int level;
@@ -118,8 +122,8 @@ describe('variation points in the C&C diagram', () => {
         const client = new TestClient(ws.diagrams);
         const base = { diagramType: 'maa-cc', sourceUri: ws.uri('House.arc'), needsClientLayout: false };
         const hasLimit = (m: Element): boolean => ([...byId(m).values()] as Element[]).some((e) => e.type === 'port' && e.name === 'limit');
-        expect(hasLimit(await client.requestModel(base) as Element)).toBe(true);
-        expect(hasLimit(await client.requestModel({ ...base, features: { bright: true } }) as Element)).toBe(true);
-        expect(hasLimit(await client.requestModel({ ...base, features: { bright: false } }) as Element)).toBe(false);
+        expect(hasLimit((await client.requestModel(base)) as Element)).toBe(true);
+        expect(hasLimit((await client.requestModel({ ...base, features: { bright: true } })) as Element)).toBe(true);
+        expect(hasLimit((await client.requestModel({ ...base, features: { bright: false } })) as Element)).toBe(false);
     });
 });

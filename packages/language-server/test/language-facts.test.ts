@@ -14,7 +14,9 @@ const here = dirname(fileURLToPath(import.meta.url));
 const WORD = /^[A-Za-z_]\w*$/;
 
 /** Every composed grammar of the family (one per file language; each holds the rules it uses). */
-const composed: Grammar[] = Object.values(grammars).filter((g): g is () => Grammar => typeof g === 'function').map((g) => g());
+const composed: Grammar[] = Object.values(grammars)
+    .filter((g): g is () => Grammar => typeof g === 'function')
+    .map((g) => g());
 
 function keywordsOf(rule: GrammarAST.AbstractRule): string[] {
     if (GrammarAST.isTerminalRule(rule)) return [];
@@ -37,14 +39,18 @@ function collect(rule: GrammarAST.AbstractRule): string[] {
     return words;
 }
 
-const factKeywords = new Set([...LANGUAGE_FACTS.softKeywords, ...LANGUAGE_FACTS.languages.flatMap((l) => [...l.keywords, ...l.softKeywords])]);
+const factKeywords = new Set([
+    ...LANGUAGE_FACTS.softKeywords,
+    ...LANGUAGE_FACTS.languages.flatMap((l) => [...l.keywords, ...l.softKeywords]),
+]);
 
 describe('language facts of the family', () => {
     test('every word keyword of the composed grammar is in the facts', () => {
         expect(composed.length).toBeGreaterThan(0);
         const missing = new Set<string>();
         for (const grammar of composed) {
-            for (const rule of grammar.rules) for (const word of keywordsOf(rule)) if (!factKeywords.has(word)) missing.add(`${grammar.name}.${rule.name}: ${word}`);
+            for (const rule of grammar.rules)
+                for (const word of keywordsOf(rule)) if (!factKeywords.has(word)) missing.add(`${grammar.name}.${rule.name}: ${word}`);
         }
         expect([...missing]).toEqual([]);
     });
@@ -80,7 +86,9 @@ describe('language facts of the family', () => {
         const running = services.shared.ServiceRegistry.all
             .map((s) => ({ id: s.LanguageMetaData.languageId, fileExtensions: [...s.LanguageMetaData.fileExtensions].sort() }))
             .sort((a, b) => a.id.localeCompare(b.id));
-        const facts = LANGUAGE_FACTS.languages.filter((l) => l.kind === 'file').map((l) => ({ id: l.id, fileExtensions: [...l.fileExtensions] }));
+        const facts = LANGUAGE_FACTS.languages
+            .filter((l) => l.kind === 'file')
+            .map((l) => ({ id: l.id, fileExtensions: [...l.fileExtensions] }));
         expect(facts).toEqual(running);
     });
 

@@ -17,7 +17,7 @@ describe('.arcapp generator names', () => {
     test('go to definition opens the manifest at the generator name', async () => {
         const manifests = [
             { name: 'demo.Components', kind: 'component', output: { gpl: 'python', rte: 'demo-rte' }, entry: 'c.js' },
-            { name: 'demo.DataTypes', kind: 'datatype', output: { gpl: 'python' }, entry: 'd.js' }
+            { name: 'demo.DataTypes', kind: 'datatype', output: { gpl: 'python' }, entry: 'd.js' },
         ];
         const pkgDir = join(dir, 'node_modules', 'demo-generators');
         mkdirSync(pkgDir, { recursive: true });
@@ -31,7 +31,7 @@ describe('.arcapp generator names', () => {
         const fsys = {
             existsSync: (u: URI) => existsSync(u.fsPath),
             readFileSync: (u: URI) => readFileSync(u.fsPath, 'utf8'),
-            readDirectorySync: (u: URI) => readdirSync(u.fsPath).map((n) => ({ uri: URI.file(join(u.fsPath, n)) }))
+            readDirectorySync: (u: URI) => readdirSync(u.fsPath).map((n) => ({ uri: URI.file(join(u.fsPath, n)) })),
         };
         configureGeneratorRegistry(services.shared, discoverGenerators(fsys, URI.file(dir)));
         services.shared.maa.ModelRoots.setRoots([URI.file(dir)]);
@@ -45,18 +45,23 @@ describe('.arcapp generator names', () => {
         const offset = appText.indexOf('demo.DataTypes') + 6;
         const links = await arcapp.lsp.DefinitionProvider.getDefinition(app, {
             textDocument: { uri: app.uri.toString() },
-            position: app.textDocument.positionAt(offset)
+            position: app.textDocument.positionAt(offset),
         });
         expect(links).toHaveLength(1);
         const link = links![0]!;
         expect(URI.parse(link.targetUri).fsPath).toBe(join(pkgDir, 'package.json'));
         const lines = pkgJson.split('\n');
-        expect(lines[link.targetSelectionRange.start.line]!.substring(link.targetSelectionRange.start.character, link.targetSelectionRange.end.character)).toBe('demo.DataTypes');
+        expect(
+            lines[link.targetSelectionRange.start.line]!.substring(
+                link.targetSelectionRange.start.character,
+                link.targetSelectionRange.end.character,
+            ),
+        ).toBe('demo.DataTypes');
 
         // Component names still go to the component's declaration.
         const compLinks = await arcapp.lsp.DefinitionProvider.getDefinition(app, {
             textDocument: { uri: app.uri.toString() },
-            position: app.textDocument.positionAt(appText.indexOf('Robot') + 1)
+            position: app.textDocument.positionAt(appText.indexOf('Robot') + 1),
         });
         expect(compLinks?.[0]?.targetUri).toBe(robot.uri.toString());
     });

@@ -10,7 +10,11 @@ import { MessageChannel } from 'node:worker_threads';
 import { URI } from 'langium';
 import { afterAll, beforeAll, describe, expect, test, vi } from 'vitest';
 import {
-    BrowserMessageReader, BrowserMessageWriter, createProtocolConnection, type Diagnostic, type ProtocolConnection
+    BrowserMessageReader,
+    BrowserMessageWriter,
+    createProtocolConnection,
+    type Diagnostic,
+    type ProtocolConnection,
 } from 'vscode-languageserver-protocol/browser.js';
 import { startBrowserLanguageServer, type BrowserLanguageServer } from '../src/browser/server.js';
 import { serveWorkspace, type WorkspaceServer } from './browser-helpers.js';
@@ -37,7 +41,10 @@ async function until<T>(what: string, probe: () => T | undefined, timeout = 60_0
         if (v !== undefined) return v;
         if (Date.now() > deadline) throw new Error(`timed out waiting for ${what}; published: ${JSON.stringify(published.slice(-4))}`);
         // Woken by the next notification; the timer only bounds a wait for a condition on state.
-        await new Promise<void>((r) => { wake = r; setTimeout(r, 250); });
+        await new Promise<void>((r) => {
+            wake = r;
+            setTimeout(r, 250);
+        });
     }
 }
 
@@ -48,7 +55,7 @@ async function closeAndAsk(uri: string): Promise<boolean> {
         await connection.sendNotification('textDocument/didClose', { textDocument: { uri } });
         const answer = await until(`the listing asked about ${uri}`, () => {
             const i = exists.mock.calls.findIndex(([u]) => u.toString() === uri);
-            return i >= 0 ? exists.mock.results[i]!.value as Promise<boolean> : undefined;
+            return i >= 0 ? (exists.mock.results[i]!.value as Promise<boolean>) : undefined;
         });
         return await answer;
     } finally {
@@ -63,7 +70,9 @@ beforeAll(async () => {
     writeFileSync(join(dir, 'p', 'User.arc'), 'package p;\n\ncomponent User {\n  Fresh f;\n}\n');
     http = await serveWorkspace(dir);
     channel = new MessageChannel();
-    server = startBrowserLanguageServer(channel.port2 as unknown as ConstructorParameters<typeof BrowserMessageReader>[0], { apiBase: http.url });
+    server = startBrowserLanguageServer(channel.port2 as unknown as ConstructorParameters<typeof BrowserMessageReader>[0], {
+        apiBase: http.url,
+    });
     const port = channel.port1 as unknown as ConstructorParameters<typeof BrowserMessageReader>[0];
     connection = createProtocolConnection(new BrowserMessageReader(port), new BrowserMessageWriter(port));
     connection.onNotification('textDocument/publishDiagnostics', (p: { uri: string; diagnostics: Diagnostic[] }) => {
@@ -72,7 +81,10 @@ beforeAll(async () => {
     });
     connection.listen();
     await connection.sendRequest('initialize', {
-        processId: null, rootUri: 'file:///workspace/', workspaceFolders: [{ uri: 'file:///workspace/', name: 'workspace' }], capabilities: {}
+        processId: null,
+        rootUri: 'file:///workspace/',
+        workspaceFolders: [{ uri: 'file:///workspace/', name: 'workspace' }],
+        capabilities: {},
     });
     await connection.sendNotification('initialized', {});
     await until('the workspace build', () => latest(USER));
@@ -92,14 +104,14 @@ describe('closing documents in the browser language server', () => {
         const before = server.family.shared.workspace.LangiumDocuments.all.count();
         const fresh = `${WS}/Fresh.arc`;
         await connection.sendNotification('textDocument/didOpen', {
-            textDocument: { uri: fresh, languageId: 'arc', version: 1, text: 'package p;\n\ncomponent Fresh {\n  port in Missing m;\n}\n' }
+            textDocument: { uri: fresh, languageId: 'arc', version: 1, text: 'package p;\n\ncomponent Fresh {\n  port in Missing m;\n}\n' },
         });
-        await until('the errors of the unsaved document', () => codes(fresh).includes('arc/unresolved-type') ? true : undefined);
-        await until('User.arc linked to it', () => !codes(USER).includes('arc/missing-component-type') ? true : undefined);
+        await until('the errors of the unsaved document', () => (codes(fresh).includes('arc/unresolved-type') ? true : undefined));
+        await until('User.arc linked to it', () => (!codes(USER).includes('arc/missing-component-type') ? true : undefined));
 
         expect(await closeAndAsk(fresh)).toBe(false);
-        await until('its diagnostics cleared', () => latest(fresh)?.length === 0 ? true : undefined);
-        await until('User.arc unresolved again', () => codes(USER).includes('arc/missing-component-type') ? true : undefined);
+        await until('its diagnostics cleared', () => (latest(fresh)?.length === 0 ? true : undefined));
+        await until('User.arc unresolved again', () => (codes(USER).includes('arc/missing-component-type') ? true : undefined));
         expect(has(fresh)).toBe(false);
         expect(server.family.shared.workspace.LangiumDocuments.all.count()).toBe(before);
     });

@@ -16,14 +16,17 @@ classdiagram Shapes {
 function model(body: string): Record<string, string> {
     return {
         't/Shapes.cd': SHAPES,
-        'Foo.arc': `import t.Shapes.*;\nimport java.util.*;\n\ncomponent Foo(Rect r) {\n  port in int x;\n${body}\n}\n`
+        'Foo.arc': `import t.Shapes.*;\nimport java.util.*;\n\ncomponent Foo(Rect r) {\n  port in int x;\n${body}\n}\n`,
     };
 }
 
 async function labelsAt(files: Record<string, string>): Promise<string[]> {
     const ws = await workspace(files);
     const doc = ws.doc('Foo.arc');
-    const list = await lspServices().Arc.lsp.CompletionProvider!.getCompletion(doc, { textDocument: { uri: doc.uri.toString() }, position: ws.position('Foo.arc') });
+    const list = await lspServices().Arc.lsp.CompletionProvider!.getCompletion(doc, {
+        textDocument: { uri: doc.uri.toString() },
+        position: ws.position('Foo.arc'),
+    });
     return (list?.items ?? []).map((i) => i.label);
 }
 
@@ -50,19 +53,21 @@ describe('formatting an enum with methods', () => {
     test('constants, then methods after the semicolon', async () => {
         await expectFormatting(lspServices().Cd)({
             before: 'package t;\nclassdiagram E {\n  enum Level {LOW ,HIGH ;int rank( ) ;  static Level parse(String s);}\n}\n',
-            after: 'package t;\n\nclassdiagram E {\n  enum Level { LOW, HIGH; int rank(); static Level parse(String s); }\n}\n'
+            after: 'package t;\n\nclassdiagram E {\n  enum Level { LOW, HIGH; int rank(); static Level parse(String s); }\n}\n',
         });
     });
 });
 
 describe('completion of members after a value', () => {
-    test('after an enum constant: the enum\'s methods', async () => {
+    test("after an enum constant: the enum's methods", async () => {
         expect(await labelsAt(model('  int c = Color.RED.<|>;'))).toContain('code');
     });
     test('after a class-diagram value: its attributes and methods', async () => {
         expect(await labelsAt(model('  double a = r.<|>;'))).toEqual(expect.arrayContaining(['w', 'area']));
     });
-    test('after a Map: the JDK library\'s methods', async () => {
-        expect(await labelsAt(model('  Map<String, Integer> mp = HashMap.HashMap();\n  boolean b = mp.<|>;'))).toEqual(expect.arrayContaining(['containsKey', 'getOrDefault', 'keySet']));
+    test("after a Map: the JDK library's methods", async () => {
+        expect(await labelsAt(model('  Map<String, Integer> mp = HashMap.HashMap();\n  boolean b = mp.<|>;'))).toEqual(
+            expect.arrayContaining(['containsKey', 'getOrDefault', 'keySet']),
+        );
     });
 });

@@ -9,7 +9,10 @@ import { lspServices, TYPES_CD, workspace } from './lsp-helpers.js';
 async function complete(files: Record<string, string>, path: string): Promise<CompletionItem[]> {
     const ws = await workspace(files);
     const doc = ws.doc(path);
-    const list = await lspServices().Arc.lsp.CompletionProvider.getCompletion(doc, { textDocument: { uri: doc.uri.toString() }, position: ws.position(path) });
+    const list = await lspServices().Arc.lsp.CompletionProvider.getCompletion(doc, {
+        textDocument: { uri: doc.uri.toString() },
+        position: ws.position(path),
+    });
     return list?.items ?? [];
 }
 
@@ -32,29 +35,40 @@ ${extra}
 ${automatonBody}
   }
 }
-`
+`,
     };
 }
 
 describe('completion inside embedded automata', () => {
-    test('a guard offers the component\'s ports, fields and parameters first', async () => {
-        const items = await complete(controller('    initial state Idle;\n    Idle -> Idle [<|>] / { cycles++; };'), 'toast/Controller.arc');
+    test("a guard offers the component's ports, fields and parameters first", async () => {
+        const items = await complete(
+            controller('    initial state Idle;\n    Idle -> Idle [<|>] / { cycles++; };'),
+            'toast/Controller.arc',
+        );
         const names = labels(items);
         for (const n of ['distance', 'color', 'toaster', 'cycles', 'threshold']) expect(names).toContain(n);
         const distance = items.find((i) => i.label === 'distance')!;
         expect(distance.detail).toBe('in int');
         // Component members sort before types and keywords.
         const sorted = [...items].sort((a, b) => (a.sortText ?? '').localeCompare(b.sortText ?? ''));
-        expect(sorted.slice(0, 5).map((i) => i.label).sort()).toEqual(['color', 'cycles', 'distance', 'threshold', 'toaster']);
+        expect(
+            sorted
+                .slice(0, 5)
+                .map((i) => i.label)
+                .sort(),
+        ).toEqual(['color', 'cycles', 'distance', 'threshold', 'toaster']);
     });
 
     test('a partial name in a guard narrows to the matching port', async () => {
-        const items = await complete(controller('    initial state Idle;\n    Idle -> Idle [dist<|>] / { cycles++; };'), 'toast/Controller.arc');
+        const items = await complete(
+            controller('    initial state Idle;\n    Idle -> Idle [dist<|>] / { cycles++; };'),
+            'toast/Controller.arc',
+        );
         expect(labels(items)).toContain('distance');
         expect(labels(items)).not.toContain('color');
     });
 
-    test('an action offers the component\'s ports', async () => {
+    test("an action offers the component's ports", async () => {
         const items = await complete(controller('    initial state Idle;\n    Idle -> Idle / { to<|> };'), 'toast/Controller.arc');
         expect(labels(items)).toContain('toaster');
     });
@@ -68,15 +82,24 @@ describe('completion inside embedded automata', () => {
         expect(names).toContain('Tick');
     });
 
-    test('the target of a transition offers the automaton\'s states, substates included', async () => {
-        const items = await complete(controller('    initial state Idle;\n    state Busy { initial state Inner; };\n    Idle -> <|>'), 'toast/Controller.arc');
+    test("the target of a transition offers the automaton's states, substates included", async () => {
+        const items = await complete(
+            controller('    initial state Idle;\n    state Busy { initial state Inner; };\n    Idle -> <|>'),
+            'toast/Controller.arc',
+        );
         expect(labels(items)).toEqual(expect.arrayContaining(['Idle', 'Busy', 'Inner']));
     });
 
     test('enum constants after `Type.` in a guard and in an action', async () => {
-        const guard = await complete(controller('    initial state Idle;\n    Idle -> Idle [color == ToastColor.<|>];'), 'toast/Controller.arc');
+        const guard = await complete(
+            controller('    initial state Idle;\n    Idle -> Idle [color == ToastColor.<|>];'),
+            'toast/Controller.arc',
+        );
         expect(labels(guard)).toEqual(['WHITE', 'GOLDEN', 'BURNT']);
-        const action = await complete(controller('    initial state Idle;\n    Idle -> Idle / { toaster = ToasterCmd.S<|>; };'), 'toast/Controller.arc');
+        const action = await complete(
+            controller('    initial state Idle;\n    Idle -> Idle / { toaster = ToasterCmd.S<|>; };'),
+            'toast/Controller.arc',
+        );
         expect(labels(action)).toEqual(expect.arrayContaining(['START', 'STOP']));
     });
 
@@ -90,10 +113,13 @@ describe('completion inside embedded automata', () => {
 
 describe('completion in the host language', () => {
     test('port types: class-diagram types by simple name, primitive types as keywords', async () => {
-        const items = await complete({
-            'toast/types/Types.cd': TYPES_CD,
-            'toast/A.arc': 'package toast;\n\nimport toast.types.*;\n\ncomponent A {\n  port in <|>\n}\n'
-        }, 'toast/A.arc');
+        const items = await complete(
+            {
+                'toast/types/Types.cd': TYPES_CD,
+                'toast/A.arc': 'package toast;\n\nimport toast.types.*;\n\ncomponent A {\n  port in <|>\n}\n',
+            },
+            'toast/A.arc',
+        );
         const names = labels(items);
         expect(names).toEqual(expect.arrayContaining(['ToastColor', 'JointTarget', 'int', 'boolean', 'String']));
         expect(names.filter((n) => n.includes('.'))).toEqual([]);
@@ -102,34 +128,46 @@ describe('completion in the host language', () => {
     test('a type from another package is offered with its import', async () => {
         const ws = await workspace({
             'toast/types/Types.cd': TYPES_CD,
-            'toast/A.arc': 'package toast;\n\ncomponent A {\n  port in Toa<|>\n}\n'
+            'toast/A.arc': 'package toast;\n\ncomponent A {\n  port in Toa<|>\n}\n',
         });
         const doc = ws.doc('toast/A.arc');
-        const list = await lspServices().Arc.lsp.CompletionProvider.getCompletion(doc, { textDocument: { uri: doc.uri.toString() }, position: ws.position('toast/A.arc') });
+        const list = await lspServices().Arc.lsp.CompletionProvider.getCompletion(doc, {
+            textDocument: { uri: doc.uri.toString() },
+            position: ws.position('toast/A.arc'),
+        });
         const item = list!.items.find((i) => i.label === 'ToastColor')!;
         expect(item.detail).toBe('toast.types.ToastColor (import)');
-        expect(item.additionalTextEdits).toEqual([{ range: { start: { line: 0, character: 14 }, end: { line: 0, character: 14 } }, newText: '\n\nimport toast.types.ToastColor;' }]);
+        expect(item.additionalTextEdits).toEqual([
+            {
+                range: { start: { line: 0, character: 14 }, end: { line: 0, character: 14 } },
+                newText: '\n\nimport toast.types.ToastColor;',
+            },
+        ]);
     });
 
     test('subcomponent types offer the components of the model root; connectors the ports of subcomponents', async () => {
         const files = {
             'toast/Sensor.arc': 'package toast;\n\ncomponent Sensor {\n  port out int value;\n}\n',
-            'toast/Robot.arc': 'package toast;\n\ncomponent Robot {\n  port out int o;\n  Sen<|>\n}\n'
+            'toast/Robot.arc': 'package toast;\n\ncomponent Robot {\n  port out int o;\n  Sen<|>\n}\n',
         };
         expect(labels(await complete(files, 'toast/Robot.arc'))).toContain('Sensor');
-        const connector = await complete({
-            'toast/Sensor.arc': files['toast/Sensor.arc'],
-            'toast/Robot.arc': 'package toast;\n\ncomponent Robot {\n  port out int o;\n  Sensor s;\n  s.<|>\n}\n'
-        }, 'toast/Robot.arc');
+        const connector = await complete(
+            {
+                'toast/Sensor.arc': files['toast/Sensor.arc'],
+                'toast/Robot.arc': 'package toast;\n\ncomponent Robot {\n  port out int o;\n  Sensor s;\n  s.<|>\n}\n',
+            },
+            'toast/Robot.arc',
+        );
         expect(labels(connector)).toEqual(['value']);
     });
 
-    test('Langium\'s expectCompletion helper: keywords at the start of a file', async () => {
+    test("Langium's expectCompletion helper: keywords at the start of a file", async () => {
         await expectCompletion(lspServices().Arc)({
             text: '<|>',
             index: 0,
-            assert: (list: CompletionList) => expect(list.items.map((i) => i.label)).toEqual(expect.arrayContaining(['package', 'import', 'component'])),
-            disposeAfterCheck: true
+            assert: (list: CompletionList) =>
+                expect(list.items.map((i) => i.label)).toEqual(expect.arrayContaining(['package', 'import', 'component'])),
+            disposeAfterCheck: true,
         });
     });
 });

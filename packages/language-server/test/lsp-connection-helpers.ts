@@ -6,8 +6,15 @@ import { startLanguageServer } from 'langium/lsp';
 import { NodeFileSystem } from 'langium/node';
 import { createConnection, ProposedFeatures } from 'vscode-languageserver/node.js';
 import {
-    createProtocolConnection, InitializedNotification, InitializeRequest, LogMessageNotification, PublishDiagnosticsNotification,
-    StreamMessageReader, StreamMessageWriter, type Diagnostic, type ProtocolConnection
+    createProtocolConnection,
+    InitializedNotification,
+    InitializeRequest,
+    LogMessageNotification,
+    PublishDiagnosticsNotification,
+    StreamMessageReader,
+    StreamMessageWriter,
+    type Diagnostic,
+    type ProtocolConnection,
 } from 'vscode-languageserver-protocol/node.js';
 import type { HostLspServices } from '@maa/language-adl';
 import { createMaaLspServices, MAA_SERVICE_REQUIREMENTS } from '../src/family.js';
@@ -51,7 +58,10 @@ export async function startInProcess(folderUri: string): Promise<InProcessServer
     client.onRequest('workspace/configuration', () => []);
     client.listen();
     await client.sendRequest(InitializeRequest.type, {
-        processId: null, rootUri: folderUri, workspaceFolders: [{ uri: folderUri, name: 'ws' }], capabilities: {}
+        processId: null,
+        rootUri: folderUri,
+        workspaceFolders: [{ uri: folderUri, name: 'ws' }],
+        capabilities: {},
     });
     await client.sendNotification(InitializedNotification.type, {});
     await family.shared.workspace.WorkspaceManager.ready;
@@ -67,9 +77,13 @@ export async function startInProcess(folderUri: string): Promise<InProcessServer
             for (;;) {
                 const v = probe();
                 if (v !== undefined) return v;
-                if (Date.now() > deadline) throw new Error(`timed out waiting for ${what}; published: ${JSON.stringify(published.slice(-5))}`);
+                if (Date.now() > deadline)
+                    throw new Error(`timed out waiting for ${what}; published: ${JSON.stringify(published.slice(-5))}`);
                 // Wakes on the next notification; the timer only bounds a wait for a condition on state.
-                await new Promise<void>((r) => { wake = r; setTimeout(r, 250); });
+                await new Promise<void>((r) => {
+                    wake = r;
+                    setTimeout(r, 250);
+                });
             }
         },
         dispose() {
@@ -77,6 +91,6 @@ export async function startInProcess(folderUri: string): Promise<InProcessServer
             connection.dispose();
             toServer.end();
             toClient.end();
-        }
+        },
     };
 }

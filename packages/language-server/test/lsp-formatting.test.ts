@@ -60,7 +60,7 @@ component Messy<T extends Number>(int threshold = 30, T b) extends Base(1) {
   }
 }
 `,
-            disposeAfterCheck: true
+            disposeAfterCheck: true,
         });
     });
 
@@ -99,22 +99,33 @@ Idle->Busy[i<2]/{ o = 2; };
   }
 }
 `,
-            disposeAfterCheck: true
+            disposeAfterCheck: true,
         });
     });
 
-    test('the client\'s tab size does not change the two-space style; range formatting formats only the range', async () => {
+    test("the client's tab size does not change the two-space style; range formatting formats only the range", async () => {
         const ws = await workspace({ 'toast/R.arc': 'package toast;\n\ncomponent R {\nport in int a;\n    port in int b;\n}\n' });
         const doc = ws.doc('toast/R.arc');
         const formatter = servicesOf(doc).lsp.Formatter!;
-        const all = await formatter.formatDocument(doc, { textDocument: { uri: doc.uri.toString() }, options: { tabSize: 8, insertSpaces: false } });
+        const all = await formatter.formatDocument(doc, {
+            textDocument: { uri: doc.uri.toString() },
+            options: { tabSize: 8, insertSpaces: false },
+        });
         expect(applyEdits(doc, all)).toBe('package toast;\n\ncomponent R {\n  port in int a;\n  port in int b;\n}\n');
-        const range = await formatter.formatDocumentRange(doc, { textDocument: { uri: doc.uri.toString() }, options: { tabSize: 2, insertSpaces: true }, range: { start: { line: 4, character: 0 }, end: { line: 4, character: 18 } } });
+        const range = await formatter.formatDocumentRange(doc, {
+            textDocument: { uri: doc.uri.toString() },
+            options: { tabSize: 2, insertSpaces: true },
+            range: { start: { line: 4, character: 0 }, end: { line: 4, character: 18 } },
+        });
         expect(applyEdits(doc, range)).toBe('package toast;\n\ncomponent R {\nport in int a;\n  port in int b;\n}\n');
     });
 
     test('a document with syntax errors is left alone', async () => {
-        await format()({ before: 'component A {\nport in int ;\n}\n', after: 'component A {\nport in int ;\n}\n', disposeAfterCheck: true });
+        await format()({
+            before: 'component A {\nport in int ;\n}\n',
+            after: 'component A {\nport in int ;\n}\n',
+            disposeAfterCheck: true,
+        });
     });
 });
 
@@ -123,7 +134,7 @@ describe('formatting .cd', () => {
         await expectFormatting(lspServices().Cd)({
             before: 'package toast.types;\nclassdiagram Types{\nenum ToastColor{WHITE,GOLDEN , BURNT;}\n    class Pair<A,B> extends Base{ A first; B  second;\ndouble[] values;\n}\n}\n',
             after: 'package toast.types;\n\nclassdiagram Types {\n  enum ToastColor { WHITE, GOLDEN, BURNT; }\n  class Pair<A, B> extends Base {\n    A first;\n    B second;\n    double[] values;\n  }\n}\n',
-            disposeAfterCheck: true
+            disposeAfterCheck: true,
         });
     });
 });
@@ -146,7 +157,10 @@ describe('formatting is idempotent on the examples', () => {
         const text = readFileSync(file, 'utf8');
         const ws = await workspace({ [relative(examples, file)]: text });
         const doc = ws.doc(relative(examples, file));
-        const edits = await servicesOf(doc).lsp.Formatter!.formatDocument(doc, { textDocument: { uri: doc.uri.toString() }, options: { tabSize: 2, insertSpaces: true } });
+        const edits = await servicesOf(doc).lsp.Formatter!.formatDocument(doc, {
+            textDocument: { uri: doc.uri.toString() },
+            options: { tabSize: 2, insertSpaces: true },
+        });
         expect(applyEdits(doc, edits)).toBe(text);
     });
 });

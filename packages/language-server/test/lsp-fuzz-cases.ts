@@ -61,15 +61,43 @@ export function pathologicalCases(): FuzzCase[] {
     const comment = `/*${' the toaster toasts the toast;'.repeat(50_000)} */\n`;
     const components = Array.from({ length: 40_000 }, (_, i) => `component C${i} { port in int a, out int b; }\n`).join('');
     return [
-        { description: `guard with ${DEPTH} nested parentheses`, ext: 'arc', text: automaton(`    initial state Idle;\n    Idle -> Idle [${open}distance < 1${close}];`) },
-        { description: `guard with ${DEPTH} unclosed parentheses`, ext: 'arc', text: automaton(`    initial state Idle;\n    Idle -> Idle [${open}distance < 1];`) },
-        { description: `guard with ${DEPTH} unary minus signs`, ext: 'arc', text: automaton(`    initial state Idle;\n    Idle -> Idle [distance < ${'-'.repeat(DEPTH)}1];`) },
-        { description: `action with ${DEPTH} logical negations`, ext: 'arc', text: automaton(`    initial state Idle;\n    Idle -> Idle / { out1 = ${'!'.repeat(DEPTH)}true ? 1 : 0; };`) },
+        {
+            description: `guard with ${DEPTH} nested parentheses`,
+            ext: 'arc',
+            text: automaton(`    initial state Idle;\n    Idle -> Idle [${open}distance < 1${close}];`),
+        },
+        {
+            description: `guard with ${DEPTH} unclosed parentheses`,
+            ext: 'arc',
+            text: automaton(`    initial state Idle;\n    Idle -> Idle [${open}distance < 1];`),
+        },
+        {
+            description: `guard with ${DEPTH} unary minus signs`,
+            ext: 'arc',
+            text: automaton(`    initial state Idle;\n    Idle -> Idle [distance < ${'-'.repeat(DEPTH)}1];`),
+        },
+        {
+            description: `action with ${DEPTH} logical negations`,
+            ext: 'arc',
+            text: automaton(`    initial state Idle;\n    Idle -> Idle / { out1 = ${'!'.repeat(DEPTH)}true ? 1 : 0; };`),
+        },
         { description: `${DEPTH} nested states`, ext: 'arc', text: automaton(`    ${states(DEPTH)}\n    initial state Idle;`) },
-        { description: `${DEPTH} nested blocks in an action`, ext: 'arc', text: automaton(`    initial state Idle;\n    Idle -> Idle / ${'{ '.repeat(DEPTH)}out1 = 1;${' }'.repeat(DEPTH)};`) },
-        { description: `${DEPTH} nested type arguments in a class diagram`, ext: 'cd', text: `package toast.types;\n\nclassdiagram D {\n  class C {\n    ${'List<'.repeat(DEPTH)}int${'>'.repeat(DEPTH)} x;\n  }\n}\n` },
-        { description: 'a component with 10,000 ports after a comment of 1.5 MB', ext: 'arc', text: `package toast;\n\n${comment}component Huge {\n  port\n${ports};\n}\n` },
-        { description: '40,000 components in one file of 1.8 MB, twice', ext: 'arc', text: `package toast;\n\n${components}${components}` }
+        {
+            description: `${DEPTH} nested blocks in an action`,
+            ext: 'arc',
+            text: automaton(`    initial state Idle;\n    Idle -> Idle / ${'{ '.repeat(DEPTH)}out1 = 1;${' }'.repeat(DEPTH)};`),
+        },
+        {
+            description: `${DEPTH} nested type arguments in a class diagram`,
+            ext: 'cd',
+            text: `package toast.types;\n\nclassdiagram D {\n  class C {\n    ${'List<'.repeat(DEPTH)}int${'>'.repeat(DEPTH)} x;\n  }\n}\n`,
+        },
+        {
+            description: 'a component with 10,000 ports after a comment of 1.5 MB',
+            ext: 'arc',
+            text: `package toast;\n\n${comment}component Huge {\n  port\n${ports};\n}\n`,
+        },
+        { description: '40,000 components in one file of 1.8 MB, twice', ext: 'arc', text: `package toast;\n\n${components}${components}` },
     ];
 }
 
@@ -78,8 +106,43 @@ function tokens(text: string): string[] {
     return text.match(/[A-Za-z_$][\w$]*|\d+(?:\.\d+)?|\s+|[^\s\w$]/g) ?? [];
 }
 
-const INSERTS = ['{', '}', '(', ')', '[', ']', ';', ',', '.', '->', '<<', '>>', '/', 'state', 'initial', 'component', 'port', 'in', 'out',
-    'automaton', 'package', 'import', 'enum', 'class', 'move', 'location', 'program', 'robotarm', 'platform', 'application', '"', "'", '/*', '//', '\n'];
+const INSERTS = [
+    '{',
+    '}',
+    '(',
+    ')',
+    '[',
+    ']',
+    ';',
+    ',',
+    '.',
+    '->',
+    '<<',
+    '>>',
+    '/',
+    'state',
+    'initial',
+    'component',
+    'port',
+    'in',
+    'out',
+    'automaton',
+    'package',
+    'import',
+    'enum',
+    'class',
+    'move',
+    'location',
+    'program',
+    'robotarm',
+    'platform',
+    'application',
+    '"',
+    "'",
+    '/*',
+    '//',
+    '\n',
+];
 
 /** One random mutation of a model file. */
 export function mutation(random: Random, source: SourceFile): FuzzCase {
@@ -124,7 +187,12 @@ export function randomText(random: Random): FuzzCase {
     let text = '';
     for (let i = 0; i < length; i++) {
         const r = random.next();
-        text += r < 0.8 ? String.fromCharCode(random.int(256)) : r < 0.95 ? random.pick(INSERTS) : String.fromCodePoint(0x100 + random.int(0x1_0000 - 0x100));
+        text +=
+            r < 0.8
+                ? String.fromCharCode(random.int(256))
+                : r < 0.95
+                  ? random.pick(INSERTS)
+                  : String.fromCodePoint(0x100 + random.int(0x1_0000 - 0x100));
     }
     const ext = random.pick(['arc', 'cd', 'ra', 'arcapp']);
     return { description: `${length} random characters as .${ext}`, ext, text };
@@ -143,7 +211,13 @@ export function corpus(random: Random, sources: readonly SourceFile[], count: nu
     const out = pathologicalCases();
     for (let i = 0; i < count; i++) {
         const r = random.next();
-        out.push(r < 0.15 ? randomText(random) : r < 0.25 ? splice(random, random.pick(sources), random.pick(sources)) : mutation(random, random.pick(sources)));
+        out.push(
+            r < 0.15
+                ? randomText(random)
+                : r < 0.25
+                  ? splice(random, random.pick(sources), random.pick(sources))
+                  : mutation(random, random.pick(sources)),
+        );
     }
     return out;
 }

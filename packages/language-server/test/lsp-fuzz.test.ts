@@ -16,11 +16,36 @@ import { dirname, join, relative, resolve, sep } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import {
-    CodeActionRequest, CompletionRequest, createProtocolConnection, DefinitionRequest, DidChangeTextDocumentNotification, DidCloseTextDocumentNotification,
-    DidOpenTextDocumentNotification, DocumentFormattingRequest, DocumentHighlightRequest, DocumentSymbolRequest, ErrorCodes, ExitNotification,
-    FoldingRangeRequest, HoverRequest, InitializedNotification, InitializeRequest, LogMessageNotification, PrepareRenameRequest, PublishDiagnosticsNotification, ReferencesRequest,
-    RenameRequest, ResponseError, LSPErrorCodes, SemanticTokensRequest, ShutdownRequest, StreamMessageReader, StreamMessageWriter, type Diagnostic, type Position,
-    type ProtocolConnection
+    CodeActionRequest,
+    CompletionRequest,
+    createProtocolConnection,
+    DefinitionRequest,
+    DidChangeTextDocumentNotification,
+    DidCloseTextDocumentNotification,
+    DidOpenTextDocumentNotification,
+    DocumentFormattingRequest,
+    DocumentHighlightRequest,
+    DocumentSymbolRequest,
+    ErrorCodes,
+    ExitNotification,
+    FoldingRangeRequest,
+    HoverRequest,
+    InitializedNotification,
+    InitializeRequest,
+    LogMessageNotification,
+    PrepareRenameRequest,
+    PublishDiagnosticsNotification,
+    ReferencesRequest,
+    RenameRequest,
+    ResponseError,
+    LSPErrorCodes,
+    SemanticTokensRequest,
+    ShutdownRequest,
+    StreamMessageReader,
+    StreamMessageWriter,
+    type Diagnostic,
+    type Position,
+    type ProtocolConnection,
 } from 'vscode-languageserver-protocol/node.js';
 import { corpus, pathologicalCases, Random, type FuzzCase, type SourceFile } from './lsp-fuzz-cases.js';
 
@@ -69,7 +94,10 @@ async function diagnosticsAfter(uri: string, seen: number, what: string): Promis
         if (exited) throw new FuzzFailure(`${what}: the server exited (${exited})`);
         if (Date.now() > deadline) throw new FuzzFailure(`${what}: no diagnostics within ${DIAGNOSTICS_BOUND_MS} ms`);
         // Woken by the next notification; the timer only re-checks the deadline.
-        await new Promise<void>((r) => { wake = r; setTimeout(r, 1000); });
+        await new Promise<void>((r) => {
+            wake = r;
+            setTimeout(r, 1000);
+        });
     }
 }
 
@@ -77,7 +105,9 @@ function modelFiles(dir: string): SourceFile[] {
     return readdirSync(dir).flatMap((name) => {
         const path = join(dir, name);
         if (statSync(path).isDirectory()) return modelFiles(path);
-        return /\.(arc|cd|ra|arcapp)$/.test(name) ? [{ path: relative(example, path).split(sep).join('/'), text: readFileSync(path, 'utf8') }] : [];
+        return /\.(arc|cd|ra|arcapp)$/.test(name)
+            ? [{ path: relative(example, path).split(sep).join('/'), text: readFileSync(path, 'utf8') }]
+            : [];
     });
 }
 
@@ -95,7 +125,12 @@ function positionAt(text: string, offset: number): Position {
 const NEW_NAMES = ['renamed', 'x2', '', 'a b', '1abc', 'component', 'state', 'ä', '$ok_1'];
 
 /** One request of a random kind at a random position (sometimes past the end of the text). */
-function randomRequest(random: Random, uri: string, text: string, diagnostics: Diagnostic[]): { name: string; send: () => Promise<unknown> } {
+function randomRequest(
+    random: Random,
+    uri: string,
+    text: string,
+    diagnostics: Diagnostic[],
+): { name: string; send: () => Promise<unknown> } {
     const offset = random.next() < 0.05 ? text.length + 10 : random.int(text.length + 1);
     const position = random.next() < 0.03 ? { line: 100_000, character: 3 } : positionAt(text, Math.min(offset, text.length));
     const textDocument = { uri };
@@ -104,21 +139,44 @@ function randomRequest(random: Random, uri: string, text: string, diagnostics: D
         { name: `completion at ${at}`, send: () => connection.sendRequest(CompletionRequest.type, { textDocument, position }) },
         { name: `hover at ${at}`, send: () => connection.sendRequest(HoverRequest.type, { textDocument, position }) },
         { name: `definition at ${at}`, send: () => connection.sendRequest(DefinitionRequest.type, { textDocument, position }) },
-        { name: `references at ${at}`, send: () => connection.sendRequest(ReferencesRequest.type, { textDocument, position, context: { includeDeclaration: random.next() < 0.5 } }) },
-        { name: `documentHighlight at ${at}`, send: () => connection.sendRequest(DocumentHighlightRequest.type, { textDocument, position }) },
+        {
+            name: `references at ${at}`,
+            send: () =>
+                connection.sendRequest(ReferencesRequest.type, {
+                    textDocument,
+                    position,
+                    context: { includeDeclaration: random.next() < 0.5 },
+                }),
+        },
+        {
+            name: `documentHighlight at ${at}`,
+            send: () => connection.sendRequest(DocumentHighlightRequest.type, { textDocument, position }),
+        },
         { name: `prepareRename at ${at}`, send: () => connection.sendRequest(PrepareRenameRequest.type, { textDocument, position }) },
         (() => {
             const newName = random.pick(NEW_NAMES);
-            return { name: `rename at ${at} to '${newName}'`, send: () => connection.sendRequest(RenameRequest.type, { textDocument, position, newName }) };
+            return {
+                name: `rename at ${at} to '${newName}'`,
+                send: () => connection.sendRequest(RenameRequest.type, { textDocument, position, newName }),
+            };
         })(),
-        { name: 'formatting', send: () => connection.sendRequest(DocumentFormattingRequest.type, { textDocument, options: { tabSize: 2, insertSpaces: true } }) },
+        {
+            name: 'formatting',
+            send: () =>
+                connection.sendRequest(DocumentFormattingRequest.type, { textDocument, options: { tabSize: 2, insertSpaces: true } }),
+        },
         {
             name: `codeAction at ${at}`,
-            send: () => connection.sendRequest(CodeActionRequest.type, { textDocument, range: { start: position, end: position }, context: { diagnostics: diagnostics.slice(0, 5) } })
+            send: () =>
+                connection.sendRequest(CodeActionRequest.type, {
+                    textDocument,
+                    range: { start: position, end: position },
+                    context: { diagnostics: diagnostics.slice(0, 5) },
+                }),
         },
         { name: 'semanticTokens', send: () => connection.sendRequest(SemanticTokensRequest.type, { textDocument }) },
         { name: 'documentSymbol', send: () => connection.sendRequest(DocumentSymbolRequest.type, { textDocument }) },
-        { name: 'foldingRange', send: () => connection.sendRequest(FoldingRangeRequest.type, { textDocument }) }
+        { name: 'foldingRange', send: () => connection.sendRequest(FoldingRangeRequest.type, { textDocument }) },
     ];
     return random.pick(kinds);
 }
@@ -128,8 +186,13 @@ beforeAll(async () => {
     tmp = mkdtempSync(join(tmpdir(), 'maa-lsp-fuzz-'));
     cpSync(example, join(tmp, 'toast-service'), { recursive: true });
     proc = spawn(process.execPath, [serverMain, '--stdio'], { stdio: 'pipe' });
-    proc.stderr.on('data', (chunk: Buffer) => { stderr = (stderr + chunk.toString()).slice(-20_000); });
-    proc.on('exit', (code, signal) => { exited = `code ${code}, signal ${signal}`; wake(); });
+    proc.stderr.on('data', (chunk: Buffer) => {
+        stderr = (stderr + chunk.toString()).slice(-20_000);
+    });
+    proc.on('exit', (code, signal) => {
+        exited = `code ${code}, signal ${signal}`;
+        wake();
+    });
     connection = createProtocolConnection(new StreamMessageReader(proc.stdout), new StreamMessageWriter(proc.stdin));
     connection.onNotification(PublishDiagnosticsNotification.type, (p) => {
         const before = published.get(p.uri)?.count ?? 0;
@@ -137,13 +200,20 @@ beforeAll(async () => {
         wake();
     });
     // The server's console goes to the client's log: kept with stderr for failure messages.
-    connection.onNotification(LogMessageNotification.type, (p) => { stderr = (stderr + p.message + '\n').slice(-20_000); });
+    connection.onNotification(LogMessageNotification.type, (p) => {
+        stderr = `${stderr + p.message}\n`.slice(-20_000);
+    });
     // Requests of the server to the client (none with the capabilities sent, but answered if any).
     connection.onRequest('client/registerCapability', () => null);
     connection.onRequest('workspace/configuration', () => []);
     connection.listen();
     const root = pathToFileURL(tmp).toString();
-    await connection.sendRequest(InitializeRequest.type, { processId: process.pid, rootUri: root, workspaceFolders: [{ uri: root, name: 'fuzz' }], capabilities: {} });
+    await connection.sendRequest(InitializeRequest.type, {
+        processId: process.pid,
+        rootUri: root,
+        workspaceFolders: [{ uri: root, name: 'fuzz' }],
+        capabilities: {},
+    });
     await connection.sendNotification(InitializedNotification.type, {});
 });
 
@@ -165,7 +235,9 @@ describe('the language server under fuzzed input', () => {
         const cases = corpus(random, sources, CASES);
         const failures: string[] = [];
         const answers = new Map<string, number>();
-        const count = (kind: string): void => { answers.set(kind, (answers.get(kind) ?? 0) + 1); };
+        const count = (kind: string): void => {
+            answers.set(kind, (answers.get(kind) ?? 0) + 1);
+        };
         let lateRequests = 0;
         const versions = new Map<string, number>();
         const openExamples = new Set<string>();
@@ -194,15 +266,23 @@ describe('the language server under fuzzed input', () => {
             const version = (versions.get(uri) ?? 0) + 1;
             versions.set(uri, version);
             if (overExample && openExamples.has(uri)) {
-                await connection.sendNotification(DidChangeTextDocumentNotification.type, { textDocument: { uri, version }, contentChanges: [{ text: c.text }] });
+                await connection.sendNotification(DidChangeTextDocumentNotification.type, {
+                    textDocument: { uri, version },
+                    contentChanges: [{ text: c.text }],
+                });
             } else {
-                await connection.sendNotification(DidOpenTextDocumentNotification.type, { textDocument: { uri, languageId: c.ext, version, text: c.text } });
+                await connection.sendNotification(DidOpenTextDocumentNotification.type, {
+                    textDocument: { uri, languageId: c.ext, version, text: c.text },
+                });
                 if (overExample) openExamples.add(uri);
             }
             let diagnostics: Diagnostic[] = [];
             try {
                 diagnostics = await diagnosticsAfter(uri, seen, 'diagnostics');
-                if (index < pathologicalCount) pathological.push(`  ${c.description}: ${[...new Set(diagnostics.map((d) => String(d.code)))].slice(0, 4).join(', ') || 'no diagnostics'}`);
+                if (index < pathologicalCount)
+                    pathological.push(
+                        `  ${c.description}: ${[...new Set(diagnostics.map((d) => String(d.code)))].slice(0, 4).join(', ') || 'no diagnostics'}`,
+                    );
             } catch (e) {
                 fail(index, c, 'diagnostics', (e as Error).message);
                 continue;
@@ -217,7 +297,11 @@ describe('the language server under fuzzed input', () => {
                         count(`error ${e.code}`);
                         if (e.code === ErrorCodes.InternalError) fail(index, c, request.name, `internal error -32603: ${e.message}`);
                         // A refusal of a feature that threw (guarded): allowed, but reported.
-                        if (e.code === LSPErrorCodes.RequestFailed && !e.message.includes('not a valid name') && !e.message.includes('cannot be renamed')) {
+                        if (
+                            e.code === LSPErrorCodes.RequestFailed &&
+                            !e.message.includes('not a valid name') &&
+                            !e.message.includes('cannot be renamed')
+                        ) {
                             refused.push(`case ${index} (${c.description.slice(0, 80)}), ${request.name}: ${e.message.split('\n')[0]}`);
                         }
                     } else {
@@ -234,22 +318,29 @@ describe('the language server under fuzzed input', () => {
                         () => count('result'),
                         (e: unknown) => {
                             if (!(e instanceof ResponseError)) fail(index, c, `${late.name} after close`, (e as Error).message);
-                            else if (e.code === ErrorCodes.InternalError) fail(index, c, `${late.name} after close`, `internal error -32603: ${e.message}`);
+                            else if (e.code === ErrorCodes.InternalError)
+                                fail(index, c, `${late.name} after close`, `internal error -32603: ${e.message}`);
                             else count(`error ${e.code}`);
-                        });
+                        },
+                    );
                     lateRequests++;
                 }
             }
             durations.push({ ms: Math.round(performance.now() - caseStarted), what: `case ${index} (${c.description.slice(0, 80)})` });
         }
         if (exited) failures.push(`seed ${SEED}: the server exited (${exited})`);
-        console.info(`lsp fuzz, seed ${SEED}: ${cases.length} cases in ${Math.round(performance.now() - started)} ms; pathological cases:\n${pathological.join('\n')}`);
+        console.info(
+            `lsp fuzz, seed ${SEED}: ${cases.length} cases in ${Math.round(performance.now() - started)} ms; pathological cases:\n${pathological.join('\n')}`,
+        );
         const summary = [...answers].map(([k, n]) => `${k}: ${n}`).join(', ');
         expect(failures, `${failures.join('\n')}\nanswers: ${summary}\nserver stderr (tail):\n${stderr.slice(-4000)}`).toEqual([]);
         expect(exited).toBeUndefined();
         // Every case got its requests answered (results or clean refusals).
         expect([...answers.values()].reduce((a, b) => a + b, 0)).toBe(cases.length * REQUESTS_PER_CASE + lateRequests);
-        const slowest = durations.sort((a, b) => b.ms - a.ms).slice(0, 3).map((d) => `${d.what}: ${d.ms} ms`);
+        const slowest = durations
+            .sort((a, b) => b.ms - a.ms)
+            .slice(0, 3)
+            .map((d) => `${d.what}: ${d.ms} ms`);
         console.info(`lsp fuzz answers: ${summary}; slowest cases (diagnostics and requests): ${slowest.join('; ')}`);
         if (refused.length > 0) console.info(`features that failed and were refused (RequestFailed):\n${refused.join('\n')}`);
     }, 600_000);

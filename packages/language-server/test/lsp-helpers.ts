@@ -70,7 +70,7 @@ export async function workspace(files: Readonly<Record<string, string>>): Promis
             const offset = cursors.get(path);
             if (offset === undefined) throw new Error(`no cursor in ${path}`);
             return doc(path).textDocument.positionAt(offset);
-        }
+        },
     };
 }
 
@@ -86,7 +86,8 @@ export function applyWorkspaceEdit(ws: Workspace, edit: WorkspaceEdit | undefine
     const byUri = new Map<string, TextEdit[]>();
     for (const [uri, edits] of Object.entries(edit.changes ?? {})) byUri.set(uri, [...edits]);
     for (const change of edit.documentChanges ?? []) {
-        if ('textDocument' in change) byUri.set(change.textDocument.uri, [...(byUri.get(change.textDocument.uri) ?? []), ...change.edits as TextEdit[]]);
+        if ('textDocument' in change)
+            byUri.set(change.textDocument.uri, [...(byUri.get(change.textDocument.uri) ?? []), ...(change.edits as TextEdit[])]);
     }
     for (const [path, doc] of ws.docs) {
         const edits = byUri.get(doc.uri.toString());
@@ -137,7 +138,10 @@ export async function semanticTokensOf(doc: LangiumDocument): Promise<SemanticTo
             line,
             text: doc.textDocument.getText({ start: { line, character: char }, end: { line, character: char + length } }),
             type: types.find(([, v]) => v === type)?.[0] ?? '?',
-            modifiers: modifiers.filter(([, v]) => (mods & v) !== 0).map(([k]) => k).sort()
+            modifiers: modifiers
+                .filter(([, v]) => (mods & v) !== 0)
+                .map(([k]) => k)
+                .sort(),
         });
     }
     return out;

@@ -10,8 +10,13 @@ import { pathToFileURL } from 'node:url';
 import { DocumentState, URI } from 'langium';
 import { afterAll, beforeAll, describe, expect, test, vi } from 'vitest';
 import {
-    DefinitionRequest, DidChangeTextDocumentNotification, DidCloseTextDocumentNotification, DidOpenTextDocumentNotification, HoverRequest,
-    LSPErrorCodes, ResponseError
+    DefinitionRequest,
+    DidChangeTextDocumentNotification,
+    DidCloseTextDocumentNotification,
+    DidOpenTextDocumentNotification,
+    HoverRequest,
+    LSPErrorCodes,
+    ResponseError,
 } from 'vscode-languageserver-protocol/node.js';
 import { startInProcess, type InProcessServer } from './lsp-connection-helpers.js';
 
@@ -65,30 +70,45 @@ describe('documents that were never saved', () => {
         const before = documentCount();
 
         const fresh = uri('Fresh.arc');
-        await server.client.sendNotification(DidOpenTextDocumentNotification.type, { textDocument: { uri: fresh, languageId: 'arc', version: 1, text: FRESH } });
-        await server.until('the errors of the unsaved document', () => codes(fresh).includes('arc/unresolved-type') ? true : undefined);
+        await server.client.sendNotification(DidOpenTextDocumentNotification.type, {
+            textDocument: { uri: fresh, languageId: 'arc', version: 1, text: FRESH },
+        });
+        await server.until('the errors of the unsaved document', () => (codes(fresh).includes('arc/unresolved-type') ? true : undefined));
         // It resolves A from disk and makes User's subcomponent type resolve.
         expect(codes(fresh)).not.toContain('arc/missing-component-type');
-        await server.until('User.arc linked to the unsaved document', () => !codes(uri('User.arc')).includes('arc/missing-component-type') ? true : undefined);
+        await server.until('User.arc linked to the unsaved document', () =>
+            !codes(uri('User.arc')).includes('arc/missing-component-type') ? true : undefined,
+        );
         expect(documentCount()).toBe(before + 1);
 
         await server.client.sendNotification(DidCloseTextDocumentNotification.type, { textDocument: { uri: fresh } });
-        await server.until('the diagnostics of the closed document cleared', () => server.latest(fresh)?.length === 0 ? true : undefined);
-        await server.until('User.arc unresolved again', () => codes(uri('User.arc')).includes('arc/missing-component-type') ? true : undefined);
+        await server.until('the diagnostics of the closed document cleared', () => (server.latest(fresh)?.length === 0 ? true : undefined));
+        await server.until('User.arc unresolved again', () =>
+            codes(uri('User.arc')).includes('arc/missing-component-type') ? true : undefined,
+        );
         expect(documentCount()).toBe(before);
         expect(server.family.shared.workspace.LangiumDocuments.hasDocument(URI.parse(fresh))).toBe(false);
 
         // Edits of other files never bring its errors back.
         const mark = server.published.length;
-        await server.client.sendNotification(DidOpenTextDocumentNotification.type, { textDocument: { uri: uri('A.arc'), languageId: 'arc', version: 1, text: A } });
+        await server.client.sendNotification(DidOpenTextDocumentNotification.type, {
+            textDocument: { uri: uri('A.arc'), languageId: 'arc', version: 1, text: A },
+        });
         for (let version = 2; version <= 4; version++) {
             await server.client.sendNotification(DidChangeTextDocumentNotification.type, {
-                textDocument: { uri: uri('A.arc'), version }, contentChanges: [{ text: A.replace('int x', `int x${version}`) }]
+                textDocument: { uri: uri('A.arc'), version },
+                contentChanges: [{ text: A.replace('int x', `int x${version}`) }],
             });
         }
-        await server.until('the last edit of A.arc validated', () => server.published.slice(mark).some((p) => p.uri === uri('A.arc')) &&
-            server.family.shared.workspace.LangiumDocuments.getDocument(URI.parse(uri('A.arc')))?.textDocument.getText().includes('x4') &&
-            server.family.shared.workspace.LangiumDocuments.getDocument(URI.parse(uri('A.arc')))!.state === DocumentState.Validated ? true : undefined);
+        await server.until('the last edit of A.arc validated', () =>
+            server.published.slice(mark).some((p) => p.uri === uri('A.arc')) &&
+            server.family.shared.workspace.LangiumDocuments.getDocument(URI.parse(uri('A.arc')))
+                ?.textDocument.getText()
+                .includes('x4') &&
+            server.family.shared.workspace.LangiumDocuments.getDocument(URI.parse(uri('A.arc')))!.state === DocumentState.Validated
+                ? true
+                : undefined,
+        );
         expect(server.published.slice(mark).filter((p) => p.uri === fresh)).toEqual([]);
         expect(documentCount()).toBe(before);
     });
@@ -101,7 +121,7 @@ describe('documents that were never saved', () => {
             // The close handler asks the file system; its answer decides.
             const asked = await server.until('the file system asked about A.arc', () => {
                 const i = exists.mock.calls.findIndex(([u]) => u.toString() === a);
-                return i >= 0 ? exists.mock.results[i]!.value as Promise<boolean> : undefined;
+                return i >= 0 ? (exists.mock.results[i]!.value as Promise<boolean>) : undefined;
             });
             expect(await asked).toBe(true);
             await new Promise((r) => setImmediate(r));
@@ -120,25 +140,37 @@ describe('documents that were never saved', () => {
 describe('features that throw', () => {
     test('a request whose feature throws is refused with RequestFailed (not an internal error), logged once; the next request is served', async () => {
         const user = uri('User.arc');
-        await server.client.sendNotification(DidOpenTextDocumentNotification.type, { textDocument: { uri: user, languageId: 'arc', version: 1, text: USER.replace('Fresh f', 'Missing f') } });
-        await server.until('User.arc with Missing', () => (server.latest(user) ?? []).some((d) => d.message.includes('Missing')) ? true : undefined);
+        await server.client.sendNotification(DidOpenTextDocumentNotification.type, {
+            textDocument: { uri: user, languageId: 'arc', version: 1, text: USER.replace('Fresh f', 'Missing f') },
+        });
+        await server.until('User.arc with Missing', () =>
+            (server.latest(user) ?? []).some((d) => d.message.includes('Missing')) ? true : undefined,
+        );
         // A contribution with a bug: names that are not cross-references resolve through it.
         const resolvers = server.family.Arc.references.References.nameResolvers;
-        const broken = (): never => { throw new Error('resolver bug'); };
+        const broken = (): never => {
+            throw new Error('resolver bug');
+        };
         resolvers.unshift(broken);
         try {
             const at = { textDocument: { uri: user }, position: { line: 3, character: 4 } };
             for (let i = 0; i < 3; i++) {
                 const answer = server.client.sendRequest(DefinitionRequest.type, at);
                 await expect(answer).rejects.toBeInstanceOf(ResponseError);
-                await expect(answer).rejects.toMatchObject({ code: LSPErrorCodes.RequestFailed, message: expect.stringContaining('resolver bug') });
+                await expect(answer).rejects.toMatchObject({
+                    code: LSPErrorCodes.RequestFailed,
+                    message: expect.stringContaining('resolver bug'),
+                });
             }
-            await server.until('the failure logged', () => server.logs.some((l) => l.includes('resolver bug')) ? true : undefined);
+            await server.until('the failure logged', () => (server.logs.some((l) => l.includes('resolver bug')) ? true : undefined));
             expect(server.logs.filter((l) => l.includes('resolver bug'))).toHaveLength(1);
         } finally {
             resolvers.splice(resolvers.indexOf(broken), 1);
         }
-        const hover = await server.client.sendRequest(HoverRequest.type, { textDocument: { uri: user }, position: { line: 2, character: 12 } });
+        const hover = await server.client.sendRequest(HoverRequest.type, {
+            textDocument: { uri: user },
+            position: { line: 2, character: 12 },
+        });
         expect(JSON.stringify(hover)).toContain('User');
     });
 
@@ -152,10 +184,20 @@ describe('features that throw', () => {
             }
         });
         try {
-            await server.client.sendNotification(DidChangeTextDocumentNotification.type, { textDocument: { uri: user, version: 2 }, contentChanges: [{ text: USER.replace('Fresh f', 'Other f') }] });
-            await server.until('the build failure logged', () => server.logs.some((l) => l.includes('build phase bug')) ? true : undefined);
-            await server.client.sendNotification(DidChangeTextDocumentNotification.type, { textDocument: { uri: user, version: 3 }, contentChanges: [{ text: USER.replace('Fresh f', 'Third f') }] });
-            await server.until('the next edit validated', () => (server.latest(user) ?? []).some((d) => d.message.includes('Third')) ? true : undefined);
+            await server.client.sendNotification(DidChangeTextDocumentNotification.type, {
+                textDocument: { uri: user, version: 2 },
+                contentChanges: [{ text: USER.replace('Fresh f', 'Other f') }],
+            });
+            await server.until('the build failure logged', () =>
+                server.logs.some((l) => l.includes('build phase bug')) ? true : undefined,
+            );
+            await server.client.sendNotification(DidChangeTextDocumentNotification.type, {
+                textDocument: { uri: user, version: 3 },
+                contentChanges: [{ text: USER.replace('Fresh f', 'Third f') }],
+            });
+            await server.until('the next edit validated', () =>
+                (server.latest(user) ?? []).some((d) => d.message.includes('Third')) ? true : undefined,
+            );
         } finally {
             listener.dispose();
         }

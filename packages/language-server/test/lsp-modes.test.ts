@@ -69,7 +69,7 @@ describe('formatting', () => {
     final state T;
   }
 }
-`
+`,
         });
     });
 });
@@ -78,7 +78,10 @@ describe('navigation', () => {
     test('hover on a mode names its role, subcomponents and transitions', async () => {
         const ws = await workspace({ 'Pass.arc': PASS, 'Switch.arc': SWITCH.replace('    Up -> Down', '    U<|>p -> Down') });
         const doc = ws.doc('Switch.arc');
-        const hover = await servicesOf(doc).lsp.HoverProvider!.getHoverContent(doc, { textDocument: { uri: doc.uri.toString() }, position: ws.position('Switch.arc') });
+        const hover = await servicesOf(doc).lsp.HoverProvider!.getHoverContent(doc, {
+            textDocument: { uri: doc.uri.toString() },
+            position: ws.position('Switch.arc'),
+        });
         const value = (hover?.contents as { value: string } | undefined)?.value ?? '';
         expect(value).toContain('initial mode Up');
         expect(value).toContain('Initial mode of the sync mode automaton of `Switch`');
@@ -89,8 +92,14 @@ describe('navigation', () => {
     test('the outline lists the mode automaton, its modes with their subcomponents, and the transitions', async () => {
         const ws = await workspace({ 'Pass.arc': PASS, 'Switch.arc': SWITCH });
         const doc = ws.doc('Switch.arc');
-        const symbols = (await servicesOf(doc).lsp.DocumentSymbolProvider!.getSymbols(doc, { textDocument: { uri: doc.uri.toString() } })) as DocumentSymbol[];
-        const flat = (list: DocumentSymbol[], depth = 0): string[] => list.flatMap((s) => [`${'  '.repeat(depth)}${s.name}${s.detail ? ` (${s.detail})` : ''}`, ...flat(s.children ?? [], depth + 1)]);
+        const symbols = (await servicesOf(doc).lsp.DocumentSymbolProvider!.getSymbols(doc, {
+            textDocument: { uri: doc.uri.toString() },
+        })) as DocumentSymbol[];
+        const flat = (list: DocumentSymbol[], depth = 0): string[] =>
+            list.flatMap((s) => [
+                `${'  '.repeat(depth)}${s.name}${s.detail ? ` (${s.detail})` : ''}`,
+                ...flat(s.children ?? [], depth + 1),
+            ]);
         const outline = flat(symbols).join('\n');
         expect(outline).toContain('mode automaton (sync)');
         expect(outline).toMatch(/Up \(initial\)\n\s+p/);
@@ -111,12 +120,19 @@ describe('navigation', () => {
     test('completion offers the modes at a transition target; renaming a mode renames its transitions', async () => {
         const ws = await workspace({ 'Pass.arc': PASS, 'Switch.arc': SWITCH.replace('    Down -> Up [i > 0];', '    Down -> <|>') });
         const doc = ws.doc('Switch.arc');
-        const items = await servicesOf(doc).lsp.CompletionProvider!.getCompletion(doc, { textDocument: { uri: doc.uri.toString() }, position: ws.position('Switch.arc') });
+        const items = await servicesOf(doc).lsp.CompletionProvider!.getCompletion(doc, {
+            textDocument: { uri: doc.uri.toString() },
+            position: ws.position('Switch.arc'),
+        });
         expect(items?.items.map((x) => x.label)).toEqual(expect.arrayContaining(['Up', 'Down']));
 
         const ws2 = await workspace({ 'Pass.arc': PASS, 'Switch.arc': SWITCH.replace('initial mode Up', 'initial mode U<|>p') });
         const doc2 = ws2.doc('Switch.arc');
-        const edit = await servicesOf(doc2).lsp.RenameProvider!.rename(doc2, { textDocument: { uri: doc2.uri.toString() }, position: ws2.position('Switch.arc'), newName: 'Forward' });
+        const edit = await servicesOf(doc2).lsp.RenameProvider!.rename(doc2, {
+            textDocument: { uri: doc2.uri.toString() },
+            position: ws2.position('Switch.arc'),
+            newName: 'Forward',
+        });
         const edits = Object.values(edit?.changes ?? {}).flat();
         expect(edits.length).toBe(3);
         expect(edits.every((e) => e.newText === 'Forward')).toBe(true);
@@ -128,7 +144,9 @@ describe('diagram', () => {
         const ws = await diagramWorkspace({ 'Pass.arc': PASS, 'Switch.arc': SWITCH });
         const client = new TestClient(ws.diagrams);
         const model = await client.requestModel({ diagramType: 'maa-cc', sourceUri: ws.uri('Switch.arc'), needsClientLayout: false });
-        const elements = [...byId(model).values()] as Array<SModelElement & { name?: string; mode?: string; composed?: boolean; sourceId?: string; targetId?: string }>;
+        const elements = [...byId(model).values()] as Array<
+            SModelElement & { name?: string; mode?: string; composed?: boolean; sourceId?: string; targetId?: string }
+        >;
         const root = elements.find((e) => e.type === 'node:component' && e.name === 'Switch');
         expect(root?.composed).toBe(true);
         const subs = elements.filter((e) => e.type === 'node:component' && e.name !== 'Switch').map((e) => `${e.name}@${e.mode}`);

@@ -53,7 +53,8 @@ function offsetOf(ws: Workspace, path: string, text: string, n = 0): number {
 async function definitionAt(ws: Workspace, path: string, text: string, n = 0): Promise<{ path: string; text: string }[]> {
     const doc = ws.doc(path);
     const position = doc.textDocument.positionAt(offsetOf(ws, path, text, n) + 1);
-    const links = await servicesOf(doc).lsp.DefinitionProvider!.getDefinition(doc, { textDocument: { uri: doc.uri.toString() }, position }) ?? [];
+    const links =
+        (await servicesOf(doc).lsp.DefinitionProvider!.getDefinition(doc, { textDocument: { uri: doc.uri.toString() }, position })) ?? [];
     return links.map((l) => {
         const target = [...ws.docs].find(([, d]) => d.uri.toString() === l.targetUri);
         return { path: target?.[0] ?? l.targetUri, text: target ? textAt(target[1], l.targetSelectionRange) : '' };
@@ -63,22 +64,31 @@ async function definitionAt(ws: Workspace, path: string, text: string, n = 0): P
 async function referencesAt(ws: Workspace, path: string, text: string, n = 0): Promise<string[]> {
     const doc = ws.doc(path);
     const position = doc.textDocument.positionAt(offsetOf(ws, path, text, n) + 1);
-    const locations: Location[] = await servicesOf(doc).lsp.ReferencesProvider!.findReferences(doc, { textDocument: { uri: doc.uri.toString() }, position, context: { includeDeclaration: true } });
-    return locations.map((l) => {
-        const [p, d] = [...ws.docs].find(([, x]) => x.uri.toString() === l.uri)!;
-        return `${p}:${l.range.start.line + 1}:${textAt(d, l.range)}`;
-    }).sort();
+    const locations: Location[] = await servicesOf(doc).lsp.ReferencesProvider!.findReferences(doc, {
+        textDocument: { uri: doc.uri.toString() },
+        position,
+        context: { includeDeclaration: true },
+    });
+    return locations
+        .map((l) => {
+            const [p, d] = [...ws.docs].find(([, x]) => x.uri.toString() === l.uri)!;
+            return `${p}:${l.range.start.line + 1}:${textAt(d, l.range)}`;
+        })
+        .sort();
 }
 
 async function hoverAt(ws: Workspace, path: string, text: string, n = 0): Promise<string> {
     const doc = ws.doc(path);
     const position = doc.textDocument.positionAt(offsetOf(ws, path, text, n) + 1);
-    const hover: Hover | undefined = await servicesOf(doc).lsp.HoverProvider!.getHoverContent(doc, { textDocument: { uri: doc.uri.toString() }, position });
+    const hover: Hover | undefined = await servicesOf(doc).lsp.HoverProvider!.getHoverContent(doc, {
+        textDocument: { uri: doc.uri.toString() },
+        position,
+    });
     return hover ? (hover.contents as { value: string }).value : '';
 }
 
 describe('go to definition', () => {
-    test('from names inside an embedded automaton to the component\'s ports, fields, parameters and states', async () => {
+    test("from names inside an embedded automaton to the component's ports, fields, parameters and states", async () => {
         const ws = await workspace(FILES);
         const c = 'toast/Controller.arc';
         // A guard name and an event name land on the port declaration.
@@ -101,12 +111,12 @@ describe('go to definition', () => {
         expect(await definitionAt(ws, r, 'ctrl.')).toEqual([{ path: r, text: 'ctrl' }]);
     });
 
-    test('Langium\'s expectGoToDefinition: an event in a single document', async () => {
+    test("Langium's expectGoToDefinition: an event in a single document", async () => {
         await expectGoToDefinition(lspServices().Arc)({
             text: 'component A {\n  port in int <|x|>;\n  automaton {\n    initial state S;\n    S -> S <|>x;\n  }\n}\n',
             index: 0,
             rangeIndex: 0,
-            disposeAfterCheck: true
+            disposeAfterCheck: true,
         });
     });
 });
@@ -119,13 +129,13 @@ describe('find references', () => {
             'toast/Controller.arc:17:distance',
             'toast/Controller.arc:7:distance',
             'toast/Robot.arc:7:distance',
-            'toast/Robot.arc:7:distance'
+            'toast/Robot.arc:7:distance',
         ]);
         expect(await referencesAt(ws, 'toast/Controller.arc', 'toaster;')).toEqual([
             'toast/Controller.arc:13:toaster',
             'toast/Controller.arc:17:toaster',
             'toast/Controller.arc:18:toaster',
-            'toast/Controller.arc:9:toaster'
+            'toast/Controller.arc:9:toaster',
         ]);
     });
 
@@ -134,15 +144,15 @@ describe('find references', () => {
         expect(await referencesAt(ws, 'toast/types/Types.cd', 'STOP')).toEqual([
             'toast/Controller.arc:13:STOP',
             'toast/Controller.arc:18:STOP',
-            'toast/types/Types.cd:5:STOP'
+            'toast/types/Types.cd:5:STOP',
         ]);
     });
 
-    test('Langium\'s expectFindReferences: a state', async () => {
+    test("Langium's expectFindReferences: a state", async () => {
         await expectFindReferences(lspServices().Arc)({
             text: 'component A {\n  automaton {\n    initial state <|<|>S|>;\n    <|S|> -> <|S|>;\n  }\n}\n',
             includeDeclaration: true,
-            disposeAfterCheck: true
+            disposeAfterCheck: true,
         });
     });
 });
@@ -180,12 +190,12 @@ describe('hover', () => {
         expect(await hoverAt(ws, 'toast/Controller.arc', 'GOLDEN')).toContain('ToastColor.GOLDEN');
     });
 
-    test('Langium\'s expectHover on a field', async () => {
+    test("Langium's expectHover on a field", async () => {
         await expectHover(lspServices().Arc)({
             text: 'component A {\n  // how often\n  int cycles = 0;\n  compute { <|>cycles++; }\n}\n',
             index: 0,
             hover: /int cycles = 0[\s\S]*Field of component `A`[\s\S]*how often/,
-            disposeAfterCheck: true
+            disposeAfterCheck: true,
         });
     });
 });
@@ -195,7 +205,10 @@ describe('document symbols, folding, highlighting', () => {
         const ws = await workspace(FILES);
         const doc = ws.doc('toast/Controller.arc');
         const symbols = await servicesOf(doc).lsp.DocumentSymbolProvider!.getSymbols(doc, { textDocument: { uri: doc.uri.toString() } });
-        const print = (s: DocumentSymbol, depth = 0): string[] => [`${'  '.repeat(depth)}${s.name}${s.detail ? ` : ${s.detail}` : ''}`, ...(s.children ?? []).flatMap((c) => print(c, depth + 1))];
+        const print = (s: DocumentSymbol, depth = 0): string[] => [
+            `${'  '.repeat(depth)}${s.name}${s.detail ? ` : ${s.detail}` : ''}`,
+            ...(s.children ?? []).flatMap((c) => print(c, depth + 1)),
+        ];
         expect(symbols.flatMap((s) => print(s))).toEqual([
             'Controller : (int threshold = 30)',
             '  threshold : int',
@@ -207,28 +220,45 @@ describe('document symbols, folding, highlighting', () => {
             '    Idle : initial',
             '    Toasting',
             '    Idle -> Toasting : [distance < threshold] distance',
-            '    Toasting -> Idle : [color == ToastColor.GOLDEN] color'
+            '    Toasting -> Idle : [color == ToastColor.GOLDEN] color',
         ]);
     });
 
-    test('Langium\'s expectSymbols on a class diagram: types with their constants and attributes', async () => {
+    test("Langium's expectSymbols on a class diagram: types with their constants and attributes", async () => {
         const flat = (sym: DocumentSymbol): string[] => [sym.name, ...(sym.children ?? []).flatMap(flat)];
         await expectSymbols(lspServices().Cd)({
             text: TYPES_CD,
-            assert: (symbols) => expect(symbols.flatMap(flat)).toEqual(['Types', 'ToastColor', 'WHITE', 'GOLDEN', 'BURNT', 'ToasterCmd', 'START', 'STOP', 'JointTarget', 'speed']),
-            disposeAfterCheck: true
+            assert: (symbols) =>
+                expect(symbols.flatMap(flat)).toEqual([
+                    'Types',
+                    'ToastColor',
+                    'WHITE',
+                    'GOLDEN',
+                    'BURNT',
+                    'ToasterCmd',
+                    'START',
+                    'STOP',
+                    'JointTarget',
+                    'speed',
+                ]),
+            disposeAfterCheck: true,
         });
     });
 
     test('folding: component body, automaton, hierarchical state, imports and comment runs', async () => {
         const ws = await workspace({
             ...FILES,
-            'toast/F.arc': 'package toast;\n\nimport toast.types.*;\nimport toast.types.Types.*;\n\n// one\n// two\n// three\ncomponent F {\n  port in int a;\n  automaton {\n    initial state S {\n      initial state T;\n    };\n  }\n}\n'
+            'toast/F.arc':
+                'package toast;\n\nimport toast.types.*;\nimport toast.types.Types.*;\n\n// one\n// two\n// three\ncomponent F {\n  port in int a;\n  automaton {\n    initial state S {\n      initial state T;\n    };\n  }\n}\n',
         });
         const doc = ws.doc('toast/F.arc');
         const ranges = await servicesOf(doc).lsp.FoldingRangeProvider!.getFoldingRanges(doc, { textDocument: { uri: doc.uri.toString() } });
         expect(ranges.map((r) => `${r.startLine}-${r.endLine}${r.kind ? ` ${r.kind}` : ''}`)).toEqual([
-            '2-3 imports', '5-7 comment', '8-14', '10-13', '11-12'
+            '2-3 imports',
+            '5-7 comment',
+            '8-14',
+            '10-13',
+            '11-12',
         ]);
     });
 
@@ -237,15 +267,27 @@ describe('document symbols, folding, highlighting', () => {
         const highlight = highlightHelper(lspServices().Arc);
         const tokens = await highlight(
             'package toast;\nimport toast.types.*;\ncomponent <|Hl|>(int <|limit|>) {\n  port in <|ToastColor|> <|c|>, out int <|o|>;\n  int <|n|> = 0;\n  <|Hl|> <|inner|>;\n' +
-            '  automaton {\n    initial state <|S|>;\n    <|S|> -> S [<|c|> == ToastColor.<|GOLDEN|> && <|n|> < <|limit|>] / { <|o|> = 1; };\n  }\n}\n',
-            { documentUri: `${ws.root.toString()}/toast/Hl.arc` }
+                '  automaton {\n    initial state <|S|>;\n    <|S|> -> S [<|c|> == ToastColor.<|GOLDEN|> && <|n|> < <|limit|>] / { <|o|> = 1; };\n  }\n}\n',
+            { documentUri: `${ws.root.toString()}/toast/Hl.arc` },
         );
         const expected: Array<[number, string]> = [
-            [0, SemanticTokenTypes.class], [1, SemanticTokenTypes.parameter], [2, SemanticTokenTypes.enum], [3, SemanticTokenTypes.property],
-            [4, SemanticTokenTypes.property], [5, SemanticTokenTypes.variable], [6, SemanticTokenTypes.class], [7, SemanticTokenTypes.variable],
-            [8, SemanticTokenTypes.namespace], [9, SemanticTokenTypes.namespace], [10, SemanticTokenTypes.property], [11, SemanticTokenTypes.enumMember],
-            [12, SemanticTokenTypes.variable], [13, SemanticTokenTypes.parameter], [14, SemanticTokenTypes.property]
+            [0, SemanticTokenTypes.class],
+            [1, SemanticTokenTypes.parameter],
+            [2, SemanticTokenTypes.enum],
+            [3, SemanticTokenTypes.property],
+            [4, SemanticTokenTypes.property],
+            [5, SemanticTokenTypes.variable],
+            [6, SemanticTokenTypes.class],
+            [7, SemanticTokenTypes.variable],
+            [8, SemanticTokenTypes.namespace],
+            [9, SemanticTokenTypes.namespace],
+            [10, SemanticTokenTypes.property],
+            [11, SemanticTokenTypes.enumMember],
+            [12, SemanticTokenTypes.variable],
+            [13, SemanticTokenTypes.parameter],
+            [14, SemanticTokenTypes.property],
         ];
-        for (const [rangeIndex, tokenType] of expected) expectSemanticToken(tokens, { rangeIndex, tokenType: tokenType as SemanticTokenTypes });
+        for (const [rangeIndex, tokenType] of expected)
+            expectSemanticToken(tokens, { rangeIndex, tokenType: tokenType as SemanticTokenTypes });
     });
 });

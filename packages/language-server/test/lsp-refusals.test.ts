@@ -49,7 +49,11 @@ function positionOf(doc: LangiumDocument, text: string, delta = 1): { line: numb
 
 async function renameAt(ws: Workspace, path: string, text: string, newName: string): Promise<WorkspaceEdit | undefined> {
     const doc = ws.doc(path);
-    return servicesOf(doc).lsp.RenameProvider!.rename(doc, { textDocument: { uri: doc.uri.toString() }, position: positionOf(doc, text), newName });
+    return servicesOf(doc).lsp.RenameProvider!.rename(doc, {
+        textDocument: { uri: doc.uri.toString() },
+        position: positionOf(doc, text),
+        newName,
+    });
 }
 
 /** The error a rename is refused with (fails when the rename is not refused). */
@@ -69,7 +73,7 @@ describe('rename refuses names that a language cannot parse', () => {
         ['a b', /starts with a letter/],
         ['1abc', /starts with a letter/],
         ['x-y', /starts with a letter/],
-        ['component', /'component' is a keyword of \.arc files/]
+        ['component', /'component' is a keyword of \.arc files/],
     ])('%j is refused with InvalidParams', async (newName, reason) => {
         const ws = await workspace(FILES);
         const e = await refusal(ws, 'toast/Robot.arc', 'distance;', newName);
@@ -129,7 +133,9 @@ describe('generator names of the unmodified TR.arcapp', () => {
     const setup = (async () => {
         const services = createMaaLspServices(NodeFileSystem);
         services.shared.maa.ModelRoots.setRoots([URI.file(example)]);
-        const docs = await Promise.all(modelFiles(example).map((f) => services.shared.workspace.LangiumDocuments.getOrCreateDocument(URI.file(f))));
+        const docs = await Promise.all(
+            modelFiles(example).map((f) => services.shared.workspace.LangiumDocuments.getOrCreateDocument(URI.file(f))),
+        );
         await services.shared.workspace.DocumentBuilder.build([...builtinDocuments(services.shared), ...docs], { validation: true });
         const app = docs.find((d) => d.uri.path.endsWith('/TR.arcapp'))!;
         return { services, app, arcapp: services.shared.ServiceRegistry.getServices(app.uri) as AdlLspServices };
@@ -149,16 +155,29 @@ describe('generator names of the unmodified TR.arcapp', () => {
         expect(arcapp.lsp.RenameProvider.prepareRename(app, params(app, 'timesync.Components'))).toBeUndefined();
         const refused = arcapp.lsp.RenameProvider.rename(app, { ...params(app, 'timesync.Components'), newName: 'other' });
         await expect(refused).rejects.toBeInstanceOf(ResponseError);
-        await expect(refused).rejects.toMatchObject({ code: LSPErrorCodes.RequestFailed, message: expect.stringMatching(/'timesync\.Components' .* cannot be renamed/) });
+        await expect(refused).rejects.toMatchObject({
+            code: LSPErrorCodes.RequestFailed,
+            message: expect.stringMatching(/'timesync\.Components' .* cannot be renamed/),
+        });
     });
 
     test('references are the uses of the generator in the documents', async () => {
         const { app, arcapp } = await setup;
         for (const includeDeclaration of [true, false]) {
-            const refs = await arcapp.lsp.ReferencesProvider!.findReferences(app, { ...params(app, 'timesync.Components'), context: { includeDeclaration } });
-            expect(refs.map((r) => `${relative(example, URI.parse(r.uri).fsPath)}:${r.range.start.line + 1} ${app.textDocument.getText(r.range)}`)).toEqual(['TR.arcapp:11 timesync.Components']);
+            const refs = await arcapp.lsp.ReferencesProvider!.findReferences(app, {
+                ...params(app, 'timesync.Components'),
+                context: { includeDeclaration },
+            });
+            expect(
+                refs.map(
+                    (r) => `${relative(example, URI.parse(r.uri).fsPath)}:${r.range.start.line + 1} ${app.textDocument.getText(r.range)}`,
+                ),
+            ).toEqual(['TR.arcapp:11 timesync.Components']);
         }
-        const ros = await arcapp.lsp.ReferencesProvider!.findReferences(app, { ...params(app, 'ros2.DataTypes'), context: { includeDeclaration: true } });
+        const ros = await arcapp.lsp.ReferencesProvider!.findReferences(app, {
+            ...params(app, 'ros2.DataTypes'),
+            context: { includeDeclaration: true },
+        });
         expect(ros.map((r) => r.range.start.line + 1)).toEqual([8]);
     });
 
@@ -172,7 +191,9 @@ describe('generator names of the unmodified TR.arcapp', () => {
         const { app, arcapp } = await setup;
         const component = { textDocument: { uri: app.uri.toString() }, position: positionOf(app, 'ToastServiceRobot {') };
         const refs = await arcapp.lsp.ReferencesProvider!.findReferences(app, { ...component, context: { includeDeclaration: true } });
-        expect(refs.map((r) => relative(example, URI.parse(r.uri).fsPath))).toEqual(expect.arrayContaining(['TR.arcapp', join('toast', 'ToastServiceRobot.arc')]));
+        expect(refs.map((r) => relative(example, URI.parse(r.uri).fsPath))).toEqual(
+            expect.arrayContaining(['TR.arcapp', join('toast', 'ToastServiceRobot.arc')]),
+        );
         expect(arcapp.lsp.RenameProvider.prepareRename(app, component)).toBeDefined();
     });
 });

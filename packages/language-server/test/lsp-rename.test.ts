@@ -50,17 +50,26 @@ component Factory extends toast.Controller {
 }
 `;
 
-const FILES = { 'toast/types/Types.cd': TYPES_CD, 'toast/Controller.arc': CONTROLLER, 'toast/Robot.arc': ROBOT, 'plant/Factory.arc': FACTORY };
+const FILES = {
+    'toast/types/Types.cd': TYPES_CD,
+    'toast/Controller.arc': CONTROLLER,
+    'toast/Robot.arc': ROBOT,
+    'plant/Factory.arc': FACTORY,
+};
 
 async function renameAt(ws: Workspace, path: string, text: string, newName: string): Promise<WorkspaceEdit | undefined> {
     const doc = ws.doc(path);
     const offset = doc.textDocument.getText().indexOf(text);
     if (offset < 0) throw new Error(`'${text}' not in ${path}`);
-    return servicesOf(doc).lsp.RenameProvider!.rename(doc, { textDocument: { uri: doc.uri.toString() }, position: doc.textDocument.positionAt(offset + 1), newName });
+    return servicesOf(doc).lsp.RenameProvider!.rename(doc, {
+        textDocument: { uri: doc.uri.toString() },
+        position: doc.textDocument.positionAt(offset + 1),
+        newName,
+    });
 }
 
 describe('rename', () => {
-    test('a port: its declaration, the automaton\'s guards, events and actions, connectors in other files', async () => {
+    test("a port: its declaration, the automaton's guards, events and actions, connectors in other files", async () => {
         const ws = await workspace(FILES);
         const after = applyWorkspaceEdit(ws, await renameAt(ws, 'toast/Controller.arc', 'distance,', 'range'));
         expect(Object.keys(after).sort()).toEqual(['toast/Controller.arc', 'toast/Robot.arc']);
@@ -112,7 +121,7 @@ describe('rename', () => {
         expect(after['toast/Robot.arc']).toContain('import toast.Brain;');
     });
 
-    test('a component from a subcomponent\'s type; a file rename when the client supports it', async () => {
+    test("a component from a subcomponent's type; a file rename when the client supports it", async () => {
         const ws = await workspace(FILES);
         const edit = await renameAt(ws, 'toast/Robot.arc', 'Controller ctrl', 'Brain');
         const after = applyWorkspaceEdit(ws, edit);
@@ -142,16 +151,21 @@ describe('rename', () => {
     });
 
     // Only when the RobotArm language is part of the family (packages/language-server, `maa.family`).
-    test.runIf(behaviorLanguages().some((l) => /robot/i.test(l)))('a port used in an embedded RobotArm block (`move angle height`) and in another file', async () => {
-        const ws = await workspace({
-            'toast/Arm.arc': 'package toast;\n\ncomponent Arm {\n  port in int angle,\n       in int height;\n  robotarm {\n    program Deliver {\n      move angle height;\n    }\n  }\n}\n',
-            'toast/Cell.arc': 'package toast;\n\ncomponent Cell {\n  port in int a, in int h;\n  Arm arm;\n  a -> arm.angle;\n  h -> arm.height;\n}\n'
-        });
-        const after = applyWorkspaceEdit(ws, await renameAt(ws, 'toast/Arm.arc', 'angle,', 'joint'));
-        expect(after['toast/Arm.arc']).toContain('port in int joint,');
-        expect(after['toast/Arm.arc']).toContain('move joint height;');
-        expect(after['toast/Cell.arc']).toContain('a -> arm.joint;');
-    });
+    test.runIf(behaviorLanguages().some((l) => /robot/i.test(l)))(
+        'a port used in an embedded RobotArm block (`move angle height`) and in another file',
+        async () => {
+            const ws = await workspace({
+                'toast/Arm.arc':
+                    'package toast;\n\ncomponent Arm {\n  port in int angle,\n       in int height;\n  robotarm {\n    program Deliver {\n      move angle height;\n    }\n  }\n}\n',
+                'toast/Cell.arc':
+                    'package toast;\n\ncomponent Cell {\n  port in int a, in int h;\n  Arm arm;\n  a -> arm.angle;\n  h -> arm.height;\n}\n',
+            });
+            const after = applyWorkspaceEdit(ws, await renameAt(ws, 'toast/Arm.arc', 'angle,', 'joint'));
+            expect(after['toast/Arm.arc']).toContain('port in int joint,');
+            expect(after['toast/Arm.arc']).toContain('move joint height;');
+            expect(after['toast/Cell.arc']).toContain('a -> arm.joint;');
+        },
+    );
 
     test('invalid names are refused; built-in library elements cannot be renamed', async () => {
         const ws = await workspace({ ...FILES, 'toast/S.arc': 'package toast;\n\ncomponent S {\n  port in String s;\n}\n' });
@@ -159,20 +173,28 @@ describe('rename', () => {
         expect(await renameAt(ws, 'toast/S.arc', 'String', 'Text')).toBeUndefined();
         const doc = ws.doc('toast/S.arc');
         const at = doc.textDocument.positionAt(doc.textDocument.getText().indexOf('String') + 1);
-        expect(servicesOf(doc).lsp.RenameProvider!.prepareRename(doc, { textDocument: { uri: doc.uri.toString() }, position: at })).toBeUndefined();
+        expect(
+            servicesOf(doc).lsp.RenameProvider!.prepareRename(doc, { textDocument: { uri: doc.uri.toString() }, position: at }),
+        ).toBeUndefined();
     });
 
     test('renaming a top-level component renames its file when the client supports file renames', async () => {
         const ws = await workspace(FILES);
         const provider = servicesOf(ws.doc('toast/Controller.arc')).lsp.RenameProvider;
-        const component = (ws.doc('toast/Controller.arc').parseResult.value as unknown as { component: Parameters<typeof provider.renameElement>[0] }).component;
+        const component = (
+            ws.doc('toast/Controller.arc').parseResult.value as unknown as { component: Parameters<typeof provider.renameElement>[0] }
+        ).component;
         // Simulate a client with `workspace.workspaceEdit.resourceOperations: ['rename']`.
         (provider as unknown as { canRenameFiles: boolean }).canRenameFiles = true;
         try {
             const edit = provider.renameElement(component, 'Brain');
             const changes = edit.documentChanges ?? [];
             const rename = changes.find((c) => 'kind' in c && c.kind === 'rename');
-            expect(rename).toEqual({ kind: 'rename', oldUri: ws.doc('toast/Controller.arc').uri.toString(), newUri: ws.doc('toast/Controller.arc').uri.toString().replace('Controller.arc', 'Brain.arc') });
+            expect(rename).toEqual({
+                kind: 'rename',
+                oldUri: ws.doc('toast/Controller.arc').uri.toString(),
+                newUri: ws.doc('toast/Controller.arc').uri.toString().replace('Controller.arc', 'Brain.arc'),
+            });
             // The text edits come first (they address the old file name).
             expect(changes.indexOf(rename!)).toBe(changes.length - 1);
             expect(applyWorkspaceEdit(ws, edit)['toast/Robot.arc']).toContain('  Brain ctrl;');

@@ -9,8 +9,15 @@ import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { afterAll, describe, expect, test } from 'vitest';
 import {
-    createProtocolConnection, DidOpenTextDocumentNotification, DocumentSymbolRequest, InitializedNotification, InitializeRequest, LogMessageNotification,
-    StreamMessageReader, StreamMessageWriter, type ProtocolConnection
+    createProtocolConnection,
+    DidOpenTextDocumentNotification,
+    DocumentSymbolRequest,
+    InitializedNotification,
+    InitializeRequest,
+    LogMessageNotification,
+    StreamMessageReader,
+    StreamMessageWriter,
+    type ProtocolConnection,
 } from 'vscode-languageserver-protocol/node.js';
 
 const here = dirname(fileURLToPath(import.meta.url));
@@ -46,32 +53,52 @@ describe('maa-language-server over stdio', () => {
         const flag = join(tmp, 'go');
         writeFileSync(plant, PLANT);
         writeFileSync(join(tmp, 'A.arc'), 'component A {\n  port in int x;\n}\n');
-        const server = spawn(process.execPath, ['--import', pathToFileURL(plant).href, serverMain, '--stdio'], { stdio: 'pipe', env: { ...process.env, MAA_PLANT_FLAG: flag } });
+        const server = spawn(process.execPath, ['--import', pathToFileURL(plant).href, serverMain, '--stdio'], {
+            stdio: 'pipe',
+            env: { ...process.env, MAA_PLANT_FLAG: flag },
+        });
         proc = server;
         let exited: string | undefined;
-        server.on('exit', (code, signal) => { exited = `code ${code}, signal ${signal}`; });
+        server.on('exit', (code, signal) => {
+            exited = `code ${code}, signal ${signal}`;
+        });
         const client = createProtocolConnection(new StreamMessageReader(server.stdout), new StreamMessageWriter(server.stdin));
         connection = client;
         const logs: string[] = [];
         let wake: () => void = () => undefined;
-        client.onNotification(LogMessageNotification.type, (p) => { logs.push(p.message); wake(); });
+        client.onNotification(LogMessageNotification.type, (p) => {
+            logs.push(p.message);
+            wake();
+        });
         client.listen();
         const root = pathToFileURL(tmp).toString();
-        await client.sendRequest(InitializeRequest.type, { processId: process.pid, rootUri: root, workspaceFolders: [{ uri: root, name: 'ws' }], capabilities: {} });
+        await client.sendRequest(InitializeRequest.type, {
+            processId: process.pid,
+            rootUri: root,
+            workspaceFolders: [{ uri: root, name: 'ws' }],
+            capabilities: {},
+        });
         await client.sendNotification(InitializedNotification.type, {});
 
         writeFileSync(flag, '');
         const deadline = Date.now() + 60_000;
-        while (!(logs.some((l) => l.includes('planted uncaught exception')) && logs.some((l) => l.includes('planted unhandled rejection')))) {
+        while (
+            !(logs.some((l) => l.includes('planted uncaught exception')) && logs.some((l) => l.includes('planted unhandled rejection')))
+        ) {
             if (exited) throw new Error(`the server exited (${exited}); log:\n${logs.join('\n')}`);
             if (Date.now() > deadline) throw new Error(`the planted failures were not logged; log:\n${logs.join('\n')}`);
-            await new Promise<void>((r) => { wake = r; setTimeout(r, 250); });
+            await new Promise<void>((r) => {
+                wake = r;
+                setTimeout(r, 250);
+            });
         }
         expect(logs.find((l) => l.includes('planted uncaught exception'))).toContain('uncaught exception (the server goes on)');
         expect(logs.find((l) => l.includes('planted unhandled rejection'))).toContain('unhandled rejection (the server goes on)');
 
         const uri = pathToFileURL(join(tmp, 'A.arc')).toString();
-        await client.sendNotification(DidOpenTextDocumentNotification.type, { textDocument: { uri, languageId: 'arc', version: 1, text: 'component A {\n  port in int x;\n}\n' } });
+        await client.sendNotification(DidOpenTextDocumentNotification.type, {
+            textDocument: { uri, languageId: 'arc', version: 1, text: 'component A {\n  port in int x;\n}\n' },
+        });
         const outline = await client.sendRequest(DocumentSymbolRequest.type, { textDocument: { uri } });
         expect(JSON.stringify(outline)).toContain('"name":"A"');
         expect(exited).toBeUndefined();

@@ -9,10 +9,26 @@ import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import {
-    CodeActionRequest, CompletionRequest, DefinitionRequest, DidOpenTextDocumentNotification, DocumentFormattingRequest, ExitNotification,
-    HoverRequest, InitializedNotification, InitializeRequest, PublishDiagnosticsNotification, ShutdownRequest,
-    StreamMessageReader, StreamMessageWriter, createProtocolConnection, type CompletionItem, type CompletionList, type Diagnostic,
-    type InitializeResult, type ProtocolConnection, type PublishDiagnosticsParams
+    CodeActionRequest,
+    CompletionRequest,
+    DefinitionRequest,
+    DidOpenTextDocumentNotification,
+    DocumentFormattingRequest,
+    ExitNotification,
+    HoverRequest,
+    InitializedNotification,
+    InitializeRequest,
+    PublishDiagnosticsNotification,
+    ShutdownRequest,
+    StreamMessageReader,
+    StreamMessageWriter,
+    createProtocolConnection,
+    type CompletionItem,
+    type CompletionList,
+    type Diagnostic,
+    type InitializeResult,
+    type ProtocolConnection,
+    type PublishDiagnosticsParams,
 } from 'vscode-languageserver-protocol/node.js';
 
 const here = dirname(fileURLToPath(import.meta.url));
@@ -74,7 +90,10 @@ async function diagnosticsFor(uri: string, until: (d: Diagnostic[]) => boolean, 
         const d = diagnostics.get(uri);
         if (d && until(d)) return d;
         if (Date.now() > deadline) throw new Error(`no matching diagnostics for ${uri}: ${JSON.stringify(d)}\nserver stderr:\n${stderr}`);
-        await new Promise<void>((r) => { waiters.push(r); setTimeout(r, 200); });
+        await new Promise<void>((r) => {
+            waiters.push(r);
+            setTimeout(r, 200);
+        });
     }
 }
 
@@ -86,11 +105,13 @@ beforeAll(() => {
         writeFileSync(join(tmp, path), text);
     }
     proc = spawn(process.execPath, [serverMain, '--stdio'], { stdio: 'pipe' });
-    proc.stderr.on('data', (chunk: Buffer) => { stderr += chunk.toString(); });
+    proc.stderr.on('data', (chunk: Buffer) => {
+        stderr += chunk.toString();
+    });
     connection = createProtocolConnection(new StreamMessageReader(proc.stdout), new StreamMessageWriter(proc.stdin));
     connection.onNotification(PublishDiagnosticsNotification.type, (p: PublishDiagnosticsParams) => {
         diagnostics.set(p.uri, p.diagnostics);
-        waiters.splice(0).forEach((w) => w());
+        for (const w of waiters.splice(0)) w();
     });
     connection.listen();
 });
@@ -120,28 +141,40 @@ describe('maa-language-server over stdio', () => {
             processId: process.pid,
             rootUri: pathToFileURL(tmp).toString(),
             workspaceFolders: [{ uri: pathToFileURL(tmp).toString(), name: 'ws' }],
-            capabilities: { textDocument: { publishDiagnostics: { relatedInformation: true } } }
+            capabilities: { textDocument: { publishDiagnostics: { relatedInformation: true } } },
         });
         const c = result.capabilities;
         expect(c.completionProvider?.triggerCharacters).toContain('.');
-        for (const feature of ['hoverProvider', 'definitionProvider', 'referencesProvider', 'documentSymbolProvider', 'foldingRangeProvider',
-            'documentFormattingProvider', 'documentRangeFormattingProvider', 'codeActionProvider'] as const) {
+        for (const feature of [
+            'hoverProvider',
+            'definitionProvider',
+            'referencesProvider',
+            'documentSymbolProvider',
+            'foldingRangeProvider',
+            'documentFormattingProvider',
+            'documentRangeFormattingProvider',
+            'codeActionProvider',
+        ] as const) {
             expect(c[feature], feature).toBeTruthy();
         }
         expect(c.renameProvider).toEqual({ prepareProvider: true });
         const legend = (c.semanticTokensProvider as { legend: { tokenTypes: string[] } }).legend;
-        expect(legend.tokenTypes).toEqual(expect.arrayContaining(['class', 'property', 'parameter', 'variable', 'enumMember', 'namespace']));
+        expect(legend.tokenTypes).toEqual(
+            expect.arrayContaining(['class', 'property', 'parameter', 'variable', 'enumMember', 'namespace']),
+        );
         await connection.sendNotification(InitializedNotification.type, {});
     });
 
-    test('the workspace\'s files are checked at start-up', async () => {
+    test("the workspace's files are checked at start-up", async () => {
         const clean = await diagnosticsFor(fileUri('toast/Controller.arc'), () => true);
         expect(clean).toEqual([]);
     });
 
     test('didOpen -> publishDiagnostics with stable codes', async () => {
         const uri = fileUri('toast/Controller.arc');
-        await connection.sendNotification(DidOpenTextDocumentNotification.type, { textDocument: { uri, languageId: 'arc', version: 1, text: EDITED } });
+        await connection.sendNotification(DidOpenTextDocumentNotification.type, {
+            textDocument: { uri, languageId: 'arc', version: 1, text: EDITED },
+        });
         const found = await diagnosticsFor(uri, (d) => d.length > 0);
         expect(found.map((d) => d.code).sort()).toEqual(['arc/naming-convention', 'automaton/missing-state', 'expr/unresolved-name']);
         const missing = found.find((d) => d.code === 'automaton/missing-state')!;
@@ -149,14 +182,20 @@ describe('maa-language-server over stdio', () => {
         expect(missing.severity).toBe(1);
     });
 
-    test('completion in a guard of the embedded automaton offers the component\'s ports', async () => {
+    test("completion in a guard of the embedded automaton offers the component's ports", async () => {
         const uri = fileUri('toast/Controller.arc');
-        const result = await connection.sendRequest(CompletionRequest.type, { textDocument: { uri }, position: { line: 10, character: 22 } }) as CompletionList | CompletionItem[];
+        const result = (await connection.sendRequest(CompletionRequest.type, {
+            textDocument: { uri },
+            position: { line: 10, character: 22 },
+        })) as CompletionList | CompletionItem[];
         const items = Array.isArray(result) ? result : result.items;
         const labels = items.map((i) => i.label);
         expect(labels).toContain('distance');
         expect(labels).not.toContain('threshold'); // filtered: does not match `dist`
-        const all = await connection.sendRequest(CompletionRequest.type, { textDocument: { uri }, position: { line: 10, character: 18 } }) as CompletionList;
+        const all = (await connection.sendRequest(CompletionRequest.type, {
+            textDocument: { uri },
+            position: { line: 10, character: 18 },
+        })) as CompletionList;
         expect(all.items.map((i) => i.label)).toEqual(expect.arrayContaining(['distance', 'threshold', 'Toaster']));
     });
 
@@ -165,20 +204,26 @@ describe('maa-language-server over stdio', () => {
         const hover = await connection.sendRequest(HoverRequest.type, { textDocument: { uri }, position: { line: 10, character: 63 } });
         // `START` in `ToasterCmd.START`: a member access, resolved through the expression typer.
         expect(JSON.stringify(hover?.contents)).toContain('Constant of enumeration `ToasterCmd`');
-        const links = await connection.sendRequest(DefinitionRequest.type, { textDocument: { uri }, position: { line: 10, character: 63 } }) as Array<{ targetUri: string }>;
+        const links = (await connection.sendRequest(DefinitionRequest.type, {
+            textDocument: { uri },
+            position: { line: 10, character: 63 },
+        })) as Array<{ targetUri: string }>;
         expect(links.map((l) => l.targetUri)).toEqual([fileUri('toast/types/Types.cd')]);
     });
 
     test('code actions for the published diagnostics; formatting', async () => {
         const uri = fileUri('toast/Controller.arc');
         const d = await diagnosticsFor(uri, (x) => x.length > 0);
-        const actions = await connection.sendRequest(CodeActionRequest.type, {
+        const actions = (await connection.sendRequest(CodeActionRequest.type, {
             textDocument: { uri },
             range: d[0]!.range,
-            context: { diagnostics: d }
-        }) as Array<{ title: string }>;
+            context: { diagnostics: d },
+        })) as Array<{ title: string }>;
         expect(actions.map((a) => a.title)).toEqual(expect.arrayContaining(["Rename 'Toaster' to 'toaster'", "Create state 'Busy'"]));
-        const edits = await connection.sendRequest(DocumentFormattingRequest.type, { textDocument: { uri }, options: { tabSize: 4, insertSpaces: true } });
+        const edits = await connection.sendRequest(DocumentFormattingRequest.type, {
+            textDocument: { uri },
+            options: { tabSize: 4, insertSpaces: true },
+        });
         expect(edits).toEqual([]);
     });
 

@@ -43,9 +43,11 @@ describe('bare enum constants as case labels in the editor', () => {
         const ws = await workspace(FILES);
         const doc = ws.doc('toast/Toaster.arc');
         const { uri, position } = positionOf(ws, 'toast/Toaster.arc', 'GOLDEN,');
-        const links = await servicesOf(doc).lsp.DefinitionProvider!.getDefinition(doc, { textDocument: { uri }, position }) ?? [];
+        const links = (await servicesOf(doc).lsp.DefinitionProvider!.getDefinition(doc, { textDocument: { uri }, position })) ?? [];
         const cd = ws.doc('toast/types/Types.cd');
-        expect(links.map((l) => `${l.targetUri === cd.uri.toString() ? 'Types.cd' : l.targetUri}:${textAt(cd, l.targetSelectionRange)}`)).toEqual(['Types.cd:GOLDEN']);
+        expect(
+            links.map((l) => `${l.targetUri === cd.uri.toString() ? 'Types.cd' : l.targetUri}:${textAt(cd, l.targetSelectionRange)}`),
+        ).toEqual(['Types.cd:GOLDEN']);
     });
 
     test('hover on a label describes the enum constant', async () => {
@@ -61,7 +63,11 @@ describe('bare enum constants as case labels in the editor', () => {
         const cd = ws.doc('toast/types/Types.cd');
         const rename = async (text: string, newName: string): Promise<Record<string, string>> => {
             const { uri, position } = positionOf(ws, 'toast/types/Types.cd', text);
-            const edit: WorkspaceEdit | undefined = await servicesOf(cd).lsp.RenameProvider!.rename(cd, { textDocument: { uri }, position, newName });
+            const edit: WorkspaceEdit | undefined = await servicesOf(cd).lsp.RenameProvider!.rename(cd, {
+                textDocument: { uri },
+                position,
+                newName,
+            });
             return applyWorkspaceEdit(ws, edit);
         };
         const golden = await rename('GOLDEN', 'TOASTED');
@@ -72,7 +78,14 @@ describe('bare enum constants as case labels in the editor', () => {
         // Renaming from a bare label works too.
         const doc = ws.doc('toast/Toaster.arc');
         const at = positionOf(ws, 'toast/Toaster.arc', 'WHITE:');
-        const fromLabel = applyWorkspaceEdit(ws, await servicesOf(doc).lsp.RenameProvider!.rename(doc, { textDocument: { uri: at.uri }, position: at.position, newName: 'PALE' }));
+        const fromLabel = applyWorkspaceEdit(
+            ws,
+            await servicesOf(doc).lsp.RenameProvider!.rename(doc, {
+                textDocument: { uri: at.uri },
+                position: at.position,
+                newName: 'PALE',
+            }),
+        );
         expect(fromLabel['toast/Toaster.arc']).toContain('      case PALE:\n');
         expect(fromLabel['toast/types/Types.cd']).toContain('enum ToastColor { PALE, GOLDEN, BURNT; }');
     });
@@ -80,10 +93,13 @@ describe('bare enum constants as case labels in the editor', () => {
     test('completion after case offers the constants of the selector enum (and no port names)', async () => {
         const ws = await workspace({
             'toast/types/Types.cd': TYPES_CD,
-            'toast/Toaster.arc': TOASTER.replace('      case GOLDEN, ToastColor.BURNT:', '      case <|>')
+            'toast/Toaster.arc': TOASTER.replace('      case GOLDEN, ToastColor.BURNT:', '      case <|>'),
         });
         const doc = ws.doc('toast/Toaster.arc');
-        const list = await lspServices().Arc.lsp.CompletionProvider.getCompletion(doc, { textDocument: { uri: doc.uri.toString() }, position: ws.position('toast/Toaster.arc') });
+        const list = await lspServices().Arc.lsp.CompletionProvider.getCompletion(doc, {
+            textDocument: { uri: doc.uri.toString() },
+            position: ws.position('toast/Toaster.arc'),
+        });
         const labels = (list?.items ?? []).map((i) => i.label);
         expect(labels).toEqual(expect.arrayContaining(['WHITE', 'GOLDEN', 'BURNT']));
         expect(labels).not.toContain('color');
@@ -91,16 +107,25 @@ describe('bare enum constants as case labels in the editor', () => {
     });
 
     test('in a switch expression too: completion after case offers the constants, definition reaches them', async () => {
-        const expr = TOASTER.replace(/    switch \(color\) \{[\s\S]*?\n    \}\n/, '    level = switch (color) { case WHITE -> 1; case <|> };\n');
+        const expr = TOASTER.replace(
+            / {4}switch \(color\) \{[\s\S]*?\n {4}\}\n/,
+            '    level = switch (color) { case WHITE -> 1; case <|> };\n',
+        );
         const ws = await workspace({ 'toast/types/Types.cd': TYPES_CD, 'toast/Toaster.arc': expr });
         const doc = ws.doc('toast/Toaster.arc');
-        const list = await lspServices().Arc.lsp.CompletionProvider.getCompletion(doc, { textDocument: { uri: doc.uri.toString() }, position: ws.position('toast/Toaster.arc') });
+        const list = await lspServices().Arc.lsp.CompletionProvider.getCompletion(doc, {
+            textDocument: { uri: doc.uri.toString() },
+            position: ws.position('toast/Toaster.arc'),
+        });
         expect((list?.items ?? []).map((i) => i.label)).toEqual(expect.arrayContaining(['WHITE', 'GOLDEN', 'BURNT']));
-        const ok = await workspace({ 'toast/types/Types.cd': TYPES_CD, 'toast/Toaster.arc': expr.replace('case <|> }', 'case GOLDEN, BURNT -> 2; }') });
+        const ok = await workspace({
+            'toast/types/Types.cd': TYPES_CD,
+            'toast/Toaster.arc': expr.replace('case <|> }', 'case GOLDEN, BURNT -> 2; }'),
+        });
         const d = ok.doc('toast/Toaster.arc');
         expect(d.diagnostics ?? []).toEqual([]);
         const { uri, position } = positionOf(ok, 'toast/Toaster.arc', 'BURNT ->');
-        const links = await servicesOf(d).lsp.DefinitionProvider!.getDefinition(d, { textDocument: { uri }, position }) ?? [];
+        const links = (await servicesOf(d).lsp.DefinitionProvider!.getDefinition(d, { textDocument: { uri }, position })) ?? [];
         expect(links.map((l) => textAt(ok.doc('toast/types/Types.cd'), l.targetSelectionRange))).toEqual(['BURNT']);
     });
 });

@@ -28,13 +28,14 @@ describe('switch expressions in the editor', () => {
     };
   }
 }
-`
+`,
         });
     });
 
     test('semantic tokens: yield is a keyword in a yield statement and a variable where it names one; no diagnostics', async () => {
         const ws = await workspace({
-            'F.arc': 'component F {\n  port in int i, out int o;\n  compute {\n    int yield = 2;\n    o = switch (i) {\n      case 1 -> {\n        yield yield + 1;\n      }\n      default -> yield;\n    };\n  }\n}\n'
+            'F.arc':
+                'component F {\n  port in int i, out int o;\n  compute {\n    int yield = 2;\n    o = switch (i) {\n      case 1 -> {\n        yield yield + 1;\n      }\n      default -> yield;\n    };\n  }\n}\n',
         });
         const doc = ws.doc('F.arc');
         expect(doc.diagnostics ?? []).toEqual([]);
@@ -47,7 +48,7 @@ describe('switch expressions in the editor', () => {
 
     test('diagnostics of the composed family: a switch expression that is not exhaustive', async () => {
         const ws = await workspace({
-            'F.arc': 'component F {\n  port in int i, out int o;\n  compute {\n    o = switch (i) { case 1 -> 10; };\n  }\n}\n'
+            'F.arc': 'component F {\n  port in int i, out int o;\n  compute {\n    o = switch (i) { case 1 -> 10; };\n  }\n}\n',
         });
         const doc = ws.doc('F.arc');
         expect((doc.diagnostics ?? []).map((d) => d.code)).toEqual(['statement/switch-not-exhaustive']);

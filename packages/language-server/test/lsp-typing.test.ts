@@ -19,7 +19,12 @@ import { MessageChannel } from 'node:worker_threads';
 import { DocumentState, URI, type AstNode, type LangiumDocument } from 'langium';
 import { afterAll, beforeAll, describe, expect, test, vi, type MockInstance } from 'vitest';
 import {
-    BrowserMessageReader, BrowserMessageWriter, createProtocolConnection, type Diagnostic, type DocumentSymbol, type ProtocolConnection
+    BrowserMessageReader,
+    BrowserMessageWriter,
+    createProtocolConnection,
+    type Diagnostic,
+    type DocumentSymbol,
+    type ProtocolConnection,
 } from 'vscode-languageserver-protocol/browser.js';
 import { startBrowserLanguageServer, type BrowserLanguageServer } from '../src/browser/server.js';
 import { serveWorkspace, type WorkspaceServer } from './browser-helpers.js';
@@ -77,16 +82,23 @@ function robotDocument(): LangiumDocument {
  * for that change and not rebuilt it yet. Resolves with the outline.
  */
 async function keystroke(change: (text: string) => string): Promise<DocumentSymbol[]> {
-    const entered = new Promise<void>((r) => { gate.entered = r; });
+    const entered = new Promise<void>((r) => {
+        gate.entered = r;
+    });
     gate.closed = true;
     text = change(text);
-    await client().sendNotification('textDocument/didChange', { textDocument: { uri: ROBOT, version: ++version }, contentChanges: [{ text }] });
+    await client().sendNotification('textDocument/didChange', {
+        textDocument: { uri: ROBOT, version: ++version },
+        contentChanges: [{ text }],
+    });
     await entered;
     expect(robotDocument().state).toBe(DocumentState.Changed);
     const outline = client().sendRequest('textDocument/documentSymbol', { textDocument: { uri: ROBOT } }) as Promise<DocumentSymbol[]>;
     // The server handles messages in order: once an unknown request is answered, the outline
     // request has been received and waits for the document state its handler requires.
-    await client().sendRequest('maa/test-barrier').catch(() => undefined);
+    await client()
+        .sendRequest('maa/test-barrier')
+        .catch(() => undefined);
     gate.closed = false;
     gate.open();
     return outline;
@@ -102,7 +114,7 @@ function applicationTarget(): { linked: AstNode | undefined; current: AstNode | 
     const root = app.parseResult.value as AstNode & { application?: { component: { ref?: AstNode } } };
     return {
         linked: root.application?.component.ref,
-        current: (robotDocument().parseResult.value as AstNode & { component?: AstNode }).component
+        current: (robotDocument().parseResult.value as AstNode & { component?: AstNode }).component,
     };
 }
 
@@ -111,17 +123,25 @@ beforeAll(async () => {
     cpSync(EXAMPLE, join(dir, 'toast-service'), { recursive: true });
     http = await serveWorkspace(dir);
     channel = new MessageChannel();
-    server = startBrowserLanguageServer(channel.port2 as unknown as ConstructorParameters<typeof BrowserMessageReader>[0], { apiBase: http.url });
+    server = startBrowserLanguageServer(channel.port2 as unknown as ConstructorParameters<typeof BrowserMessageReader>[0], {
+        apiBase: http.url,
+    });
     server.family.shared.workspace.DocumentBuilder.onUpdate(async (changed) => {
         if (!gate.closed || !changed.some((u) => u.toString() === ROBOT)) return;
-        const held = new Promise<void>((r) => { gate.open = r; });
+        const held = new Promise<void>((r) => {
+            gate.open = r;
+        });
         gate.entered();
         await held;
     });
     const port = channel.port1 as unknown as ConstructorParameters<typeof BrowserMessageReader>[0];
     connection = createProtocolConnection(new BrowserMessageReader(port), new BrowserMessageWriter(port));
-    connection.onNotification('textDocument/publishDiagnostics', (p: { uri: string; diagnostics: Diagnostic[] }) => { diagnostics.set(p.uri, p.diagnostics); });
-    connection.onNotification('diagram/accept', (m: { action: { kind: string } }) => { diagramActions.push(m.action.kind); });
+    connection.onNotification('textDocument/publishDiagnostics', (p: { uri: string; diagnostics: Diagnostic[] }) => {
+        diagnostics.set(p.uri, p.diagnostics);
+    });
+    connection.onNotification('diagram/accept', (m: { action: { kind: string } }) => {
+        diagramActions.push(m.action.kind);
+    });
     connection.listen();
 
     await connection.sendRequest('initialize', {
@@ -129,7 +149,7 @@ beforeAll(async () => {
         rootUri: 'file:///workspace/',
         workspaceFolders: [{ uri: 'file:///workspace/', name: 'workspace' }],
         capabilities: {},
-        initializationOptions: { apiBase: http.url }
+        initializationOptions: { apiBase: http.url },
     });
     await connection.sendNotification('initialized', {});
     await until('the workspace build', () => diagnostics.get(ROBOT) && diagnostics.get(APP));
@@ -140,11 +160,13 @@ beforeAll(async () => {
     for (const [path, content] of Object.entries(exampleFiles(join(dir, 'toast-service')))) {
         const uri = `${WS}/${path}`;
         if (uri === ROBOT) continue;
-        await connection.sendNotification('textDocument/didOpen', { textDocument: { uri, languageId: path.substring(path.lastIndexOf('.') + 1), version: 1, text: content } });
+        await connection.sendNotification('textDocument/didOpen', {
+            textDocument: { uri, languageId: path.substring(path.lastIndexOf('.') + 1), version: 1, text: content },
+        });
     }
     await connection.sendNotification('diagram/accept', {
         clientId: 'diagram-1',
-        action: { kind: 'requestModel', requestId: 'r1', options: { diagramType: 'maa-cc', sourceUri: ROBOT, needsClientLayout: false } }
+        action: { kind: 'requestModel', requestId: 'r1', options: { diagramType: 'maa-cc', sourceUri: ROBOT, needsClientLayout: false } },
     });
     await until('the diagram', () => (diagramActions.includes('setModel') ? true : undefined));
     await server.family.shared.workspace.DocumentBuilder.waitUntil(DocumentState.Validated, URI.parse(APP));
@@ -204,7 +226,8 @@ describe('typing in ToastServiceRobot.arc (browser language server, diagram open
         expect(symbolsNamed(outline, 'spare').map((s) => s.detail)).toEqual(['ArmC']);
         // The document is still checked as before: the type being typed is reported unresolved.
         const robot = await until('the unresolved type reported', () =>
-            diagnostics.get(ROBOT)?.some((d) => d.code === 'arc/missing-component-type') ? diagnostics.get(ROBOT) : undefined);
+            diagnostics.get(ROBOT)?.some((d) => d.code === 'arc/missing-component-type') ? diagnostics.get(ROBOT) : undefined,
+        );
         expect(robot.map((d) => `${d.range.start.line + 1} ${d.code}`)).toEqual(['19 arc/missing-component-type']);
         await server.family.shared.workspace.DocumentBuilder.waitUntil(DocumentState.Validated, URI.parse(APP));
         const target = applicationTarget();

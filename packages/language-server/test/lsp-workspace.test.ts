@@ -24,7 +24,10 @@ describe('model roots from the workspace', () => {
         // Workspace folder `repo`: two projects with a maa.json each, plus loose models.
         write('repo/projects/one/maa.json', '{}\n');
         write('repo/projects/one/toast/Sensor.arc', 'package toast;\n\ncomponent Sensor {\n  port out int value;\n}\n');
-        write('repo/projects/one/toast/Robot.arc', 'package toast;\n\ncomponent Robot {\n  port out int v;\n  Sensor s;\n  Heater h;\n  s.value -> v;\n}\n');
+        write(
+            'repo/projects/one/toast/Robot.arc',
+            'package toast;\n\ncomponent Robot {\n  port out int v;\n  Sensor s;\n  Heater h;\n  s.value -> v;\n}\n',
+        );
         write('repo/projects/two/maa.json', '{ "reservedNames": { "port": ["speed"] } }\n');
         write('repo/projects/two/toast/Heater.arc', 'package toast;\n\ncomponent Heater {\n  port in int speed;\n}\n');
         write('repo/misc/Loose.arc', 'package misc;\n\ncomponent Loose {\n}\n');
@@ -34,13 +37,15 @@ describe('model roots from the workspace', () => {
         const s = createMaaLspServices(NodeFileSystem);
         const folders = [
             { name: 'repo', uri: URI.file(join(tmp, 'repo')).toString() },
-            { name: 'other', uri: URI.file(join(tmp, 'other')).toString() }
+            { name: 'other', uri: URI.file(join(tmp, 'other')).toString() },
         ];
         const manager = s.shared.workspace.WorkspaceManager;
         manager.initialize({ processId: null, rootUri: null, capabilities: {}, workspaceFolders: folders });
         await manager.initialized({});
 
-        const roots = s.shared.maa.ModelRoots.all().map((r) => r.substring(URI.file(tmp).toString().length)).sort();
+        const roots = s.shared.maa.ModelRoots.all()
+            .map((r) => r.substring(URI.file(tmp).toString().length))
+            .sort();
         expect(roots).toEqual(['/other/', '/repo/', '/repo/projects/one/', '/repo/projects/two/']);
 
         const doc = (path: string): LangiumDocument => s.shared.workspace.LangiumDocuments.getDocument(URI.file(join(tmp, path)))!;
@@ -56,13 +61,19 @@ describe('model roots from the workspace', () => {
 
         // The maa.json changes: the server finds the roots again and rebuilds.
         write('repo/projects/two/maa.json', '{}\n');
-        s.shared.lsp.DocumentUpdateHandler.didChangeWatchedFiles({ changes: [{ uri: URI.file(join(tmp, 'repo/projects/two/maa.json')).toString(), type: FileChangeType.Changed }] });
+        s.shared.lsp.DocumentUpdateHandler.didChangeWatchedFiles({
+            changes: [{ uri: URI.file(join(tmp, 'repo/projects/two/maa.json')).toString(), type: FileChangeType.Changed }],
+        });
         await vi.waitFor(() => expect(codes('repo/projects/two/toast/Heater.arc')).toEqual([]), { timeout: 10_000 });
 
         // A project loses its maa.json: its files now belong to the workspace folder's root.
         rmSync(join(tmp, 'repo/projects/one/maa.json'));
-        s.shared.lsp.DocumentUpdateHandler.didChangeWatchedFiles({ changes: [{ uri: URI.file(join(tmp, 'repo/projects/one/maa.json')).toString(), type: FileChangeType.Deleted }] });
+        s.shared.lsp.DocumentUpdateHandler.didChangeWatchedFiles({
+            changes: [{ uri: URI.file(join(tmp, 'repo/projects/one/maa.json')).toString(), type: FileChangeType.Deleted }],
+        });
         await vi.waitFor(() => expect(codes('repo/projects/one/toast/Sensor.arc')).toEqual(['arc/package-mismatch']), { timeout: 10_000 });
-        expect(s.shared.maa.ModelRoots.rootOf(URI.file(join(tmp, 'repo/projects/one/toast/Sensor.arc')))).toBe(`${URI.file(join(tmp, 'repo')).toString()}/`);
+        expect(s.shared.maa.ModelRoots.rootOf(URI.file(join(tmp, 'repo/projects/one/toast/Sensor.arc')))).toBe(
+            `${URI.file(join(tmp, 'repo')).toString()}/`,
+        );
     });
 });

@@ -27,7 +27,7 @@ const RESERVED_KIND: Record<string, string> = {
     ParameterNoReservedKeywordTest: 'parameter',
     SubcomponentNoReservedKeywordTest: 'subcomponent',
     TypeParamNameIsNoReservedKeywordTest: 'typeParameter',
-    StateNameIsNoReservedKeywordTest: 'state'
+    StateNameIsNoReservedKeywordTest: 'state',
 };
 
 /** Writes each case into a model root of its own and checks them all in one run; the codes per case. */

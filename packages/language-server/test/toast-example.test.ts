@@ -36,18 +36,73 @@ describe('the ToastServiceRobot example', () => {
     });
 
     test.each([
-        ['a connector to a port that does not exist', 'toast/ToastServiceRobot.arc', (t: string) => t.replace('-> ctrl.distance', '-> ctrl.dist'), 'arc/missing-port'],
-        ['a connector between ports of different types', 'toast/ToastServiceRobot.arc', (t: string) => t.replace('color.value -> ctrl.color', 'dist.value -> ctrl.color'), 'arc/connector-type-mismatch'],
-        ['a feedback loop without delay', 'toast/Controller.arc', (t: string) => t.replace('<<delayed>> out ArmProgram arm', 'out ArmProgram arm'), 'arc/feedback-not-causal'],
-        ['an unconnected input of a subcomponent', 'toast/ToastServiceRobot.arc', (t: string) => t.replace('  color.value -> ctrl.color;\n', ''), 'arc/unconnected-sub-in-port'],
-        ['a guard that is not boolean', 'toast/Controller.arc', (t: string) => t.replace('[distance < threshold]', '[distance]'), 'automaton/guard-not-boolean'],
-        ['a transition to a missing state', 'toast/Controller.arc', (t: string) => t.replace('Serving -> Idle', 'Serving -> Idel'), 'automaton/missing-state'],
-        ['a move to an unknown location', 'toast/ArmController.arc', (t: string) => t.replace('move breadbox;', 'move bredbox;'), 'robotarm/unresolved-name'],
-        ['an arm command without program', 'toast/types/Types.cd', (t: string) => t.replace('PICKUP_AND_DEPLOY;', 'PICKUP_AND_DEPLOY, DANCE;'), 'robotarm/command-without-program'],
-        ['a misspelled enum constant', 'toast/Controller.arc', (t: string) => t.replace('ToastColor.GOLDEN', 'ToastColor.GOLD'), 'expr/unresolved-name'],
-        ['a missing type', 'toast/ColorSensor.arc', (t: string) => t.replace('out ToastColor value', 'out ToastColour value'), 'arc/unresolved-type'],
-        ['a wrong package', 'toast/PlateLocator.arc', (t: string) => t.replace('package toast;', 'package toasty;'), 'arc/package-mismatch'],
-        ['a truncated file', 'toast/ToasterController.arc', (t: string) => t.substring(0, t.length / 2), 'syntax/unexpected-end']
+        [
+            'a connector to a port that does not exist',
+            'toast/ToastServiceRobot.arc',
+            (t: string) => t.replace('-> ctrl.distance', '-> ctrl.dist'),
+            'arc/missing-port',
+        ],
+        [
+            'a connector between ports of different types',
+            'toast/ToastServiceRobot.arc',
+            (t: string) => t.replace('color.value -> ctrl.color', 'dist.value -> ctrl.color'),
+            'arc/connector-type-mismatch',
+        ],
+        [
+            'a feedback loop without delay',
+            'toast/Controller.arc',
+            (t: string) => t.replace('<<delayed>> out ArmProgram arm', 'out ArmProgram arm'),
+            'arc/feedback-not-causal',
+        ],
+        [
+            'an unconnected input of a subcomponent',
+            'toast/ToastServiceRobot.arc',
+            (t: string) => t.replace('  color.value -> ctrl.color;\n', ''),
+            'arc/unconnected-sub-in-port',
+        ],
+        [
+            'a guard that is not boolean',
+            'toast/Controller.arc',
+            (t: string) => t.replace('[distance < threshold]', '[distance]'),
+            'automaton/guard-not-boolean',
+        ],
+        [
+            'a transition to a missing state',
+            'toast/Controller.arc',
+            (t: string) => t.replace('Serving -> Idle', 'Serving -> Idel'),
+            'automaton/missing-state',
+        ],
+        [
+            'a move to an unknown location',
+            'toast/ArmController.arc',
+            (t: string) => t.replace('move breadbox;', 'move bredbox;'),
+            'robotarm/unresolved-name',
+        ],
+        [
+            'an arm command without program',
+            'toast/types/Types.cd',
+            (t: string) => t.replace('PICKUP_AND_DEPLOY;', 'PICKUP_AND_DEPLOY, DANCE;'),
+            'robotarm/command-without-program',
+        ],
+        [
+            'a misspelled enum constant',
+            'toast/Controller.arc',
+            (t: string) => t.replace('ToastColor.GOLDEN', 'ToastColor.GOLD'),
+            'expr/unresolved-name',
+        ],
+        [
+            'a missing type',
+            'toast/ColorSensor.arc',
+            (t: string) => t.replace('out ToastColor value', 'out ToastColour value'),
+            'arc/unresolved-type',
+        ],
+        [
+            'a wrong package',
+            'toast/PlateLocator.arc',
+            (t: string) => t.replace('package toast;', 'package toasty;'),
+            'arc/package-mismatch',
+        ],
+        ['a truncated file', 'toast/ToasterController.arc', (t: string) => t.substring(0, t.length / 2), 'syntax/unexpected-end'],
     ])('reports %s', async (_what, file, edit, code) => {
         const found = await checkBroken(file, edit);
         expect(found.map((f) => f.code)).toContain(code);

@@ -295,8 +295,10 @@ class SimApp:
                 raise ServiceError("seed must be an integer")
             if self.supervisor is not None:
                 restarted = self.reset_ros2(seed)
-                return ok(f"reset; {len(self.supervisor.processes)} node(s) restarted" + ("" if restarted else
-                          " (not every node came up again)"))
+                return ok(
+                    f"reset; {len(self.supervisor.processes)} node(s) restarted"
+                    + ("" if restarted else " (not every node came up again)")
+                )
             self._clear_states()  # the controller emits its states again in its next first slice
             runner().reset(seed)
             return ok("reset")

@@ -243,13 +243,15 @@ def message_details(type_name: str) -> list[JsonMessage]:
             else:
                 examples.append("[]" if length >= 0 else "")
         constants = _constants(cls)
-        typedefs.append({
-            "type": f"{package}/{name}",
-            "fieldnames": names,
-            "fieldtypes": types,
-            "fieldarraylen": lengths,
-            "examples": examples,
-            "constnames": list(constants),
-            "constvalues": [str(v) for v in constants.values()],
-        })
+        typedefs.append(
+            {
+                "type": f"{package}/{name}",
+                "fieldnames": names,
+                "fieldtypes": types,
+                "fieldarraylen": lengths,
+                "examples": examples,
+                "constnames": list(constants),
+                "constvalues": [str(v) for v in constants.values()],
+            }
+        )
     return typedefs

@@ -10,7 +10,7 @@ import { sortDiagnostics, summarize } from '../summary.js';
 export type CheckFormat = 'text' | 'json';
 
 export interface CheckOptions {
-  format: CheckFormat;
+    format: CheckFormat;
 }
 
 /**
@@ -18,48 +18,48 @@ export interface CheckOptions {
  * Returns the exit code: 0 without errors, 1 with errors; usage and I/O problems throw.
  */
 export async function runCheck(paths: readonly string[], options: CheckOptions, io: CliIo): Promise<ExitCode> {
-  const roots = resolveRoots(paths, io.cwd);
-  const progress = createProgress(io);
-  let found;
-  try {
-    progress?.update('loading the language services');
-    // Loaded on demand, so that --help and usage errors stay fast.
-    const { checkModelRoots, CheckInputError } = await import('@maa/language-server');
+    const roots = resolveRoots(paths, io.cwd);
+    const progress = createProgress(io);
+    let found: Awaited<ReturnType<typeof import('@maa/language-server').checkModelRoots>>;
     try {
-      found = await checkModelRoots(roots, progress ? { onProgress: (msg) => progress.update(msg) } : {});
-    } catch (e) {
-      // An I/O problem met while checking (e.g. an unreadable file): its message is for the user.
-      if (e instanceof CheckInputError) throw new CliError(e.message);
-      throw e;
+        progress?.update('loading the language services');
+        // Loaded on demand, so that --help and usage errors stay fast.
+        const { checkModelRoots, CheckInputError } = await import('@maa/language-server');
+        try {
+            found = await checkModelRoots(roots, progress ? { onProgress: (msg) => progress.update(msg) } : {});
+        } catch (e) {
+            // An I/O problem met while checking (e.g. an unreadable file): its message is for the user.
+            if (e instanceof CheckInputError) throw new CliError(e.message);
+            throw e;
+        }
+    } finally {
+        progress?.done();
     }
-  } finally {
-    progress?.done();
-  }
-  const diagnostics = sortDiagnostics(found, roots);
-  const summary = summarize(diagnostics, roots);
+    const diagnostics = sortDiagnostics(found, roots);
+    const summary = summarize(diagnostics, roots);
 
-  if (options.format === 'json') {
-    io.out(formatJson(diagnostics, summary));
-  } else {
-    const color = io.stdoutIsTTY && !io.env['NO_COLOR'];
-    io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color }));
-    io.err(`${formatSummaryText(summary)}\n`);
-  }
-  return summary.errors > 0 ? ExitCode.errors : ExitCode.ok;
+    if (options.format === 'json') {
+        io.out(formatJson(diagnostics, summary));
+    } else {
+        const color = io.stdoutIsTTY && !io.env['NO_COLOR'];
+        io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color }));
+        io.err(`${formatSummaryText(summary)}\n`);
+    }
+    return summary.errors > 0 ? ExitCode.errors : ExitCode.ok;
 }
 
 export function checkCommand(io: CliIo, setExitCode: (code: ExitCode) => void): Command {
-  return new Command('check')
-    .description('check model roots (folders) or single model files and report diagnostics')
-    .argument(
-      '<paths...>',
-      'model roots or model files: each folder is an independent model root; a file is checked ' +
-        'within its folder and only its own diagnostics are reported',
-    )
-    .addOption(new Option('-f, --format <format>', 'output format').choices(['text', 'json']).default('text'))
-    .addHelpText(
-      'after',
-      `
+    return new Command('check')
+        .description('check model roots (folders) or single model files and report diagnostics')
+        .argument(
+            '<paths...>',
+            'model roots or model files: each folder is an independent model root; a file is checked ' +
+                'within its folder and only its own diagnostics are reported',
+        )
+        .addOption(new Option('-f, --format <format>', 'output format').choices(['text', 'json']).default('text'))
+        .addHelpText(
+            'after',
+            `
 Output:
   text  one line per diagnostic on stdout, "file:line:col: severity code message"
         (paths relative to the current folder), then a summary line on stderr
@@ -75,8 +75,8 @@ Examples:
   maa-gen check examples/toast-service
   maa-gen check --format json models/a models/b
   maa-gen check models/a/toast/Controller.arc`,
-    )
-    .action(async (paths: string[], options: CheckOptions) => {
-      setExitCode(await runCheck(paths, options, io));
-    });
+        )
+        .action(async (paths: string[], options: CheckOptions) => {
+            setExitCode(await runCheck(paths, options, io));
+        });
 }

@@ -15,15 +15,15 @@ export type GenerateFormat = 'text' | 'json';
 const WRITE_FAILED = 'gen/write-failed';
 
 export interface GenerateCommandOptions {
-  platform?: string[];
-  out?: string;
-  root?: string;
-  format: GenerateFormat;
+    platform?: string[];
+    out?: string;
+    root?: string;
+    format: GenerateFormat;
 }
 
 /** The folder of this CLI's package: generators installed next to maa-gen are found too. */
 function installationDir(): string {
-  return path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+    return path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 }
 
 /**
@@ -33,137 +33,149 @@ function installationDir(): string {
  * then: the diagnostic `gen/write-failed` names the path); usage problems throw.
  */
 export async function runGenerate(appArg: string, options: GenerateCommandOptions, io: CliIo): Promise<ExitCode> {
-  const appFile = path.resolve(io.cwd, appArg);
-  let isFile = false;
-  try {
-    isFile = statSync(appFile).isFile();
-  } catch {
-    throw new CliError(`path not found: ${appArg}`);
-  }
-  if (!isFile) throw new CliError(`not a file: ${appArg}`);
-  if (path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
-  const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
-  if (options.root) {
-    let dir = false;
+    const appFile = path.resolve(io.cwd, appArg);
+    let isFile = false;
     try {
-      dir = statSync(root).isDirectory();
+        isFile = statSync(appFile).isFile();
     } catch {
-      dir = false;
+        throw new CliError(`path not found: ${appArg}`);
     }
-    if (!dir) throw new CliError(`model root not found: ${options.root}`);
-  }
-  const outDir = path.resolve(io.cwd, options.out ?? path.join(path.dirname(appFile), 'generated'));
-  const json = options.format === 'json';
-  const progress = createProgress(io);
-  // Per-generator lines are part of the text report (stderr), not just progress.
-  const report = (line: string): void => {
-    if (json) return;
-    progress?.done();
-    io.err(`${line}\n`);
-  };
+    if (!isFile) throw new CliError(`not a file: ${appArg}`);
+    if (path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
+    const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
+    if (options.root) {
+        let dir = false;
+        try {
+            dir = statSync(root).isDirectory();
+        } catch {
+            dir = false;
+        }
+        if (!dir) throw new CliError(`model root not found: ${options.root}`);
+    }
+    const outDir = path.resolve(io.cwd, options.out ?? path.join(path.dirname(appFile), 'generated'));
+    const json = options.format === 'json';
+    const progress = createProgress(io);
+    // Per-generator lines are part of the text report (stderr), not just progress.
+    const report = (line: string): void => {
+        if (json) return;
+        progress?.done();
+        io.err(`${line}\n`);
+    };
 
-  let result;
-  try {
-    progress?.update('loading the language services');
-    // Loaded on demand, so that --help and usage errors stay fast.
-    const [{ createMaaServices }, { generate, GenerateInputError }, { NodeFileSystem }] = await Promise.all([
-      import('@maa/language-server'),
-      import('@maa/generator-core/node'),
-      import('langium/node'),
-    ]);
+    let result: Awaited<ReturnType<typeof import('@maa/generator-core/node').generate>>;
     try {
-      result = await generate({
-        services: createMaaServices(NodeFileSystem),
-        appFile,
-        modelRoot: root,
-        platforms: options.platform,
-        outDir,
-        discoveryRoots: [installationDir()],
-        displayPath: (p) => displayPath(p, io.cwd),
-        onProgress: (p) => {
-          if (p.phase === 'generate' && p.files !== undefined) report(`${p.message}`);
-          else progress?.update(p.message);
-        },
-      });
-    } catch (e) {
-      if (e instanceof GenerateInputError) throw new CliError(e.message);
-      throw e;
+        progress?.update('loading the language services');
+        // Loaded on demand, so that --help and usage errors stay fast.
+        const [{ createMaaServices }, { generate, GenerateInputError }, { NodeFileSystem }] = await Promise.all([
+            import('@maa/language-server'),
+            import('@maa/generator-core/node'),
+            import('langium/node'),
+        ]);
+        try {
+            result = await generate({
+                services: createMaaServices(NodeFileSystem),
+                appFile,
+                modelRoot: root,
+                platforms: options.platform,
+                outDir,
+                discoveryRoots: [installationDir()],
+                displayPath: (p) => displayPath(p, io.cwd),
+                onProgress: (p) => {
+                    if (p.phase === 'generate' && p.files !== undefined) report(`${p.message}`);
+                    else progress?.update(p.message);
+                },
+            });
+        } catch (e) {
+            if (e instanceof GenerateInputError) throw new CliError(e.message);
+            throw e;
+        }
+    } finally {
+        progress?.done();
     }
-  } finally {
-    progress?.done();
-  }
 
-  const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
-  const errors = diagnostics.filter((d) => d.severity === 'error').length;
-  const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
-  const files = result.platforms.reduce((n, p) => n + p.files.length, 0);
-  if (json) {
-    io.out(
-      `${JSON.stringify(
-        {
-          diagnostics: diagnostics.map((d) => ({
-            root: d.root, file: d.file, line: d.line, column: d.column, endLine: d.endLine, endColumn: d.endColumn,
-            severity: d.severity, code: d.code, message: d.message,
-          })),
-          platforms: result.platforms.map((p) => ({
-            platform: p.platform,
-            outDir: p.outDir,
-            generators: p.generators,
-            files: p.files,
-            written: p.written,
-            unchanged: p.unchanged,
-            kept: p.kept,
-            removed: p.removed,
-            keptStale: p.keptStale,
-          })),
-          summary: { ok: result.ok, errors, warnings, files, platforms: result.platforms.length },
-        },
-        null,
-        2,
-      )}\n`,
-    );
-  } else {
-    const color = io.stdoutIsTTY && !io.env['NO_COLOR'];
-    io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color }));
-    for (const p of result.platforms) {
-      const parts = [`${p.written.length} written`, `${p.unchanged.length} unchanged`];
-      if (p.kept.length > 0) parts.push(`${p.kept.length} user file${p.kept.length === 1 ? '' : 's'} kept`);
-      if (p.removed.length > 0) parts.push(`${p.removed.length} stale removed`);
-      io.err(`${p.platform}: ${plural(p.files.length, 'file')} in ${displayPath(p.outDir, io.cwd)} (${parts.join(', ')})\n`);
+    const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
+    const errors = diagnostics.filter((d) => d.severity === 'error').length;
+    const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
+    const files = result.platforms.reduce((n, p) => n + p.files.length, 0);
+    if (json) {
+        io.out(
+            `${JSON.stringify(
+                {
+                    diagnostics: diagnostics.map((d) => ({
+                        root: d.root,
+                        file: d.file,
+                        line: d.line,
+                        column: d.column,
+                        endLine: d.endLine,
+                        endColumn: d.endColumn,
+                        severity: d.severity,
+                        code: d.code,
+                        message: d.message,
+                    })),
+                    platforms: result.platforms.map((p) => ({
+                        platform: p.platform,
+                        outDir: p.outDir,
+                        generators: p.generators,
+                        files: p.files,
+                        written: p.written,
+                        unchanged: p.unchanged,
+                        kept: p.kept,
+                        removed: p.removed,
+                        keptStale: p.keptStale,
+                    })),
+                    summary: { ok: result.ok, errors, warnings, files, platforms: result.platforms.length },
+                },
+                null,
+                2,
+            )}\n`,
+        );
+    } else {
+        const color = io.stdoutIsTTY && !io.env['NO_COLOR'];
+        io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color }));
+        for (const p of result.platforms) {
+            const parts = [`${p.written.length} written`, `${p.unchanged.length} unchanged`];
+            if (p.kept.length > 0) parts.push(`${p.kept.length} user file${p.kept.length === 1 ? '' : 's'} kept`);
+            if (p.removed.length > 0) parts.push(`${p.removed.length} stale removed`);
+            io.err(`${p.platform}: ${plural(p.files.length, 'file')} in ${displayPath(p.outDir, io.cwd)} (${parts.join(', ')})\n`);
+        }
+        const counts = `${plural(errors, 'error')}, ${plural(warnings, 'warning')}`;
+        io.err(
+            result.ok
+                ? `${counts}; generated ${plural(files, 'file')} for ${plural(result.platforms.length, 'platform')}\n`
+                : `${counts}; nothing was generated\n`,
+        );
     }
-    const counts = `${plural(errors, 'error')}, ${plural(warnings, 'warning')}`;
-    io.err(result.ok
-      ? `${counts}; generated ${plural(files, 'file')} for ${plural(result.platforms.length, 'platform')}\n`
-      : `${counts}; nothing was generated\n`);
-  }
-  return exitCodeOf(result.ok, diagnostics);
+    return exitCodeOf(result.ok, diagnostics);
 }
 
 /** 0 generated; 2 when the output could not be written (an I/O problem, docs/cli.md); 1 for other errors. */
 export function exitCodeOf(ok: boolean, diagnostics: readonly CheckDiagnostic[]): ExitCode {
-  if (ok) return ExitCode.ok;
-  return diagnostics.some((d) => d.severity === 'error' && d.code === WRITE_FAILED) ? ExitCode.usage : ExitCode.errors;
+    if (ok) return ExitCode.ok;
+    return diagnostics.some((d) => d.severity === 'error' && d.code === WRITE_FAILED) ? ExitCode.usage : ExitCode.errors;
 }
 
 function plural(n: number, word: string): string {
-  return `${n} ${word}${n === 1 ? '' : 's'}`;
+    return `${n} ${word}${n === 1 ? '' : 's'}`;
 }
 
 export function generateCommand(io: CliIo, setExitCode: (code: ExitCode) => void): Command {
-  return new Command('generate')
-    .description('generate code for the platforms of an application configuration (.arcapp)')
-    .argument('<app>', 'the application configuration file (APP.arcapp)')
-    .addOption(
-      new Option('-p, --platform <name>', 'generate this platform only (repeatable; default: every platform)').argParser(
-        (value: string, previous: string[] | undefined) => [...(previous ?? []), value],
-      ),
-    )
-    .option('-o, --out <dir>', 'output folder; platform P is written to DIR/P (default: "generated" next to the .arcapp)')
-    .option('-r, --root <dir>', 'model root the names of the configuration resolve in (default: the nearest folder above the .arcapp with a maa.json, else its folder)')
-    .addOption(new Option('-f, --format <format>', 'output format').choices(['text', 'json']).default('text'))
-    .addHelpText(
-      'after',
-      `
+    return new Command('generate')
+        .description('generate code for the platforms of an application configuration (.arcapp)')
+        .argument('<app>', 'the application configuration file (APP.arcapp)')
+        .addOption(
+            new Option('-p, --platform <name>', 'generate this platform only (repeatable; default: every platform)').argParser(
+                (value: string, previous: string[] | undefined) => [...(previous ?? []), value],
+            ),
+        )
+        .option('-o, --out <dir>', 'output folder; platform P is written to DIR/P (default: "generated" next to the .arcapp)')
+        .option(
+            '-r, --root <dir>',
+            'model root the names of the configuration resolve in (default: the nearest folder above the .arcapp with a maa.json, else its folder)',
+        )
+        .addOption(new Option('-f, --format <format>', 'output format').choices(['text', 'json']).default('text'))
+        .addHelpText(
+            'after',
+            `
 What it does:
   loads the configuration and the architecture, runs the language checks, the configuration
   checks (app/...) and the generators' own rules, then runs the data type generator and the
@@ -189,8 +201,8 @@ Examples:
   maa-gen generate examples/toast-service/TR.arcapp
   maa-gen generate TR.arcapp --platform rospython --out build/gen
   maa-gen generators            (lists the installed generators)`,
-    )
-    .action(async (app: string, options: GenerateCommandOptions) => {
-      setExitCode(await runGenerate(app, options, io));
-    });
+        )
+        .action(async (app: string, options: GenerateCommandOptions) => {
+            setExitCode(await runGenerate(app, options, io));
+        });
 }

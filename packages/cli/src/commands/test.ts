@@ -12,38 +12,38 @@ import type { CliIo } from '../io.js';
 import { exitCodeOf } from './generate.js';
 
 export interface TestCommandOptions {
-  platform: string;
-  out?: string;
-  root?: string;
-  python?: string;
-  format: 'text' | 'json';
+    platform: string;
+    out?: string;
+    root?: string;
+    python?: string;
+    format: 'text' | 'json';
 }
 
 interface StreamTestResult {
-  file: string;
-  test: string | null;
-  line: number;
-  passed: boolean;
-  problems: string[];
+    file: string;
+    test: string | null;
+    line: number;
+    passed: boolean;
+    problems: string[];
 }
 
 function installationDir(): string {
-  return path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+    return path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 }
 
 /** Every `*.stream` file below a folder (skipping node_modules, generated output and hidden folders), sorted. */
 export function findStreamFiles(dir: string): string[] {
-  const out: string[] = [];
-  const visit = (d: string): void => {
-    for (const entry of readdirSync(d, { withFileTypes: true }).sort((a, b) => (a.name < b.name ? -1 : a.name > b.name ? 1 : 0))) {
-      if (entry.name.startsWith('.') || entry.name === 'node_modules' || entry.name === 'generated') continue;
-      const full = path.join(d, entry.name);
-      if (entry.isDirectory()) visit(full);
-      else if (entry.isFile() && entry.name.endsWith('.stream')) out.push(full);
-    }
-  };
-  visit(dir);
-  return out;
+    const out: string[] = [];
+    const visit = (d: string): void => {
+        for (const entry of readdirSync(d, { withFileTypes: true }).sort((a, b) => (a.name < b.name ? -1 : a.name > b.name ? 1 : 0))) {
+            if (entry.name.startsWith('.') || entry.name === 'node_modules' || entry.name === 'generated') continue;
+            const full = path.join(d, entry.name);
+            if (entry.isDirectory()) visit(full);
+            else if (entry.isFile() && entry.name.endsWith('.stream')) out.push(full);
+        }
+    };
+    visit(dir);
+    return out;
 }
 
 /**
@@ -51,101 +51,104 @@ export function findStreamFiles(dir: string): string[] {
  * platform and runs the stream tests (`*.stream` next to the models) against it.
  */
 export async function runTest(appArg: string, files: string[], options: TestCommandOptions, io: CliIo): Promise<ExitCode> {
-  const appFile = path.resolve(io.cwd, appArg);
-  let isFile = false;
-  try {
-    isFile = statSync(appFile).isFile();
-  } catch {
-    throw new CliError(`path not found: ${appArg}`);
-  }
-  if (!isFile || path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
-  const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
-  const streamFiles = files.length > 0 ? files.map((f) => path.resolve(io.cwd, f)) : findStreamFiles(root);
-  for (const f of streamFiles) {
+    const appFile = path.resolve(io.cwd, appArg);
+    let isFile = false;
     try {
-      statSync(f);
+        isFile = statSync(appFile).isFile();
     } catch {
-      throw new CliError(`path not found: ${displayPath(f, io.cwd)}`);
+        throw new CliError(`path not found: ${appArg}`);
     }
-  }
-  const json = options.format === 'json';
-  const tempOut = options.out ? undefined : mkdtempSync(path.join(tmpdir(), 'maa-gen-test-'));
-  const outDir = options.out ? path.resolve(io.cwd, options.out) : tempOut!;
-  try {
-    const [{ createMaaServices }, { generate, GenerateInputError }, { NodeFileSystem }] = await Promise.all([
-      import('@maa/language-server'),
-      import('@maa/generator-core/node'),
-      import('langium/node'),
-    ]);
-    let result;
+    if (!isFile || path.extname(appFile) !== '.arcapp')
+        throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
+    const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
+    const streamFiles = files.length > 0 ? files.map((f) => path.resolve(io.cwd, f)) : findStreamFiles(root);
+    for (const f of streamFiles) {
+        try {
+            statSync(f);
+        } catch {
+            throw new CliError(`path not found: ${displayPath(f, io.cwd)}`);
+        }
+    }
+    const json = options.format === 'json';
+    const tempOut = options.out ? undefined : mkdtempSync(path.join(tmpdir(), 'maa-gen-test-'));
+    const outDir = options.out ? path.resolve(io.cwd, options.out) : tempOut!;
     try {
-      result = await generate({
-        services: createMaaServices(NodeFileSystem),
-        appFile,
-        modelRoot: root,
-        platforms: [options.platform],
-        outDir,
-        discoveryRoots: [installationDir()],
-      });
-    } catch (e) {
-      if (e instanceof GenerateInputError) throw new CliError(e.message);
-      throw e;
+        const [{ createMaaServices }, { generate, GenerateInputError }, { NodeFileSystem }] = await Promise.all([
+            import('@maa/language-server'),
+            import('@maa/generator-core/node'),
+            import('langium/node'),
+        ]);
+        let result: Awaited<ReturnType<typeof import('@maa/generator-core/node').generate>>;
+        try {
+            result = await generate({
+                services: createMaaServices(NodeFileSystem),
+                appFile,
+                modelRoot: root,
+                platforms: [options.platform],
+                outDir,
+                discoveryRoots: [installationDir()],
+            });
+        } catch (e) {
+            if (e instanceof GenerateInputError) throw new CliError(e.message);
+            throw e;
+        }
+        if (!result.ok) {
+            const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
+            io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color: false }));
+            io.err('maa-gen test: generation failed; no stream test was run\n');
+            return exitCodeOf(false, diagnostics);
+        }
+        const build = path.join(outDir, options.platform);
+        if (streamFiles.length === 0) {
+            io.err(`maa-gen test: no .stream files in ${displayPath(root, io.cwd)}\n`);
+            if (json) io.out(`${JSON.stringify({ results: [], summary: { passed: 0, failed: 0 } }, null, 2)}\n`);
+            return ExitCode.ok;
+        }
+        const python = options.python ?? io.env['MAA_PYTHON'] ?? 'python3';
+        const run = spawnSync(python, ['-m', 'maa_timesync.streamtest', build, '--json', ...streamFiles], {
+            cwd: build,
+            encoding: 'utf8',
+            env: { ...io.env, PYTHONDONTWRITEBYTECODE: '1' },
+        });
+        if (run.error) throw new CliError(`could not start ${python}: ${run.error.message}`);
+        let results: StreamTestResult[];
+        try {
+            results = JSON.parse(run.stdout) as StreamTestResult[];
+        } catch {
+            throw new CliError(`the stream test runner failed (exit ${run.status}):\n${run.stderr.trim()}`, ExitCode.internal);
+        }
+        const passed = results.filter((r) => r.passed).length;
+        const failed = results.length - passed;
+        if (json) {
+            io.out(
+                `${JSON.stringify({ results: results.map((r) => ({ ...r, file: displayPath(r.file, io.cwd) })), summary: { passed, failed } }, null, 2)}\n`,
+            );
+        } else {
+            for (const r of results) {
+                io.out(`${r.passed ? 'ok  ' : 'FAIL'} ${displayPath(r.file, io.cwd)}:${r.line}${r.test ? ` ${r.test}` : ''}\n`);
+                for (const p of r.problems) io.out(`       ${p}\n`);
+            }
+            io.err(`stream tests: ${passed} passed, ${failed} failed\n`);
+        }
+        return failed === 0 ? ExitCode.ok : ExitCode.errors;
+    } finally {
+        if (tempOut) rmSync(tempOut, { recursive: true, force: true });
     }
-    if (!result.ok) {
-      const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
-      io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color: false }));
-      io.err('maa-gen test: generation failed; no stream test was run\n');
-      return exitCodeOf(false, diagnostics);
-    }
-    const build = path.join(outDir, options.platform);
-    if (streamFiles.length === 0) {
-      io.err(`maa-gen test: no .stream files in ${displayPath(root, io.cwd)}\n`);
-      if (json) io.out(`${JSON.stringify({ results: [], summary: { passed: 0, failed: 0 } }, null, 2)}\n`);
-      return ExitCode.ok;
-    }
-    const python = options.python ?? io.env['MAA_PYTHON'] ?? 'python3';
-    const run = spawnSync(python, ['-m', 'maa_timesync.streamtest', build, '--json', ...streamFiles], {
-      cwd: build,
-      encoding: 'utf8',
-      env: { ...io.env, PYTHONDONTWRITEBYTECODE: '1' },
-    });
-    if (run.error) throw new CliError(`could not start ${python}: ${run.error.message}`);
-    let results: StreamTestResult[];
-    try {
-      results = JSON.parse(run.stdout) as StreamTestResult[];
-    } catch {
-      throw new CliError(`the stream test runner failed (exit ${run.status}):\n${run.stderr.trim()}`, ExitCode.internal);
-    }
-    const passed = results.filter((r) => r.passed).length;
-    const failed = results.length - passed;
-    if (json) {
-      io.out(`${JSON.stringify({ results: results.map((r) => ({ ...r, file: displayPath(r.file, io.cwd) })), summary: { passed, failed } }, null, 2)}\n`);
-    } else {
-      for (const r of results) {
-        io.out(`${r.passed ? 'ok  ' : 'FAIL'} ${displayPath(r.file, io.cwd)}:${r.line}${r.test ? ` ${r.test}` : ''}\n`);
-        for (const p of r.problems) io.out(`       ${p}\n`);
-      }
-      io.err(`stream tests: ${passed} passed, ${failed} failed\n`);
-    }
-    return failed === 0 ? ExitCode.ok : ExitCode.errors;
-  } finally {
-    if (tempOut) rmSync(tempOut, { recursive: true, force: true });
-  }
 }
 
 export function testCommand(io: CliIo, setExitCode: (code: ExitCode) => void): Command {
-  return new Command('test')
-    .description('run the stream tests (*.stream) of an application on its python-timesync build')
-    .argument('<app>', 'the application configuration file (APP.arcapp)')
-    .argument('[files...]', 'stream test files (default: every *.stream file of the model root)')
-    .option('-p, --platform <name>', 'the platform to test (a python-timesync platform)', 'timesync')
-    .option('-o, --out <dir>', 'keep the generated build in DIR/<platform> (default: a temporary folder)')
-    .option('-r, --root <dir>', 'model root (default: the nearest folder above the .arcapp with a maa.json, else its folder)')
-    .option('--python <interpreter>', 'Python 3.11+ to run the build (default: $MAA_PYTHON or python3)')
-    .addOption(new Option('-f, --format <format>', 'output format').choices(['text', 'json']).default('text'))
-    .addHelpText(
-      'after',
-      `
+    return new Command('test')
+        .description('run the stream tests (*.stream) of an application on its python-timesync build')
+        .argument('<app>', 'the application configuration file (APP.arcapp)')
+        .argument('[files...]', 'stream test files (default: every *.stream file of the model root)')
+        .option('-p, --platform <name>', 'the platform to test (a python-timesync platform)', 'timesync')
+        .option('-o, --out <dir>', 'keep the generated build in DIR/<platform> (default: a temporary folder)')
+        .option('-r, --root <dir>', 'model root (default: the nearest folder above the .arcapp with a maa.json, else its folder)')
+        .option('--python <interpreter>', 'Python 3.11+ to run the build (default: $MAA_PYTHON or python3)')
+        .addOption(new Option('-f, --format <format>', 'output format').choices(['text', 'json']).default('text'))
+        .addHelpText(
+            'after',
+            `
 What it does:
   generates the platform (like "maa-gen generate --platform"), then runs every test of the
   stream test files against the generated components: input streams per port in, output
@@ -160,8 +163,8 @@ Exit codes:
 Examples:
   maa-gen test examples/toast-service/TR.arcapp
   maa-gen test TR.arcapp toast/Controller.stream --format json`,
-    )
-    .action(async (app: string, files: string[], options: TestCommandOptions) => {
-      setExitCode(await runTest(app, files, options, io));
-    });
+        )
+        .action(async (app: string, files: string[], options: TestCommandOptions) => {
+            setExitCode(await runTest(app, files, options, io));
+        });
 }

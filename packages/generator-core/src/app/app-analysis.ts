@@ -28,7 +28,10 @@ export interface ApplicationAnalysis {
 export class ApplicationAnalyzer {
     private analyses = new WeakMap<Application, ApplicationAnalysis>();
 
-    constructor(shared: LangiumSharedCoreServices, private readonly registries: GeneratorRegistryService) {
+    constructor(
+        shared: LangiumSharedCoreServices,
+        private readonly registries: GeneratorRegistryService,
+    ) {
         // A change elsewhere relinks an unchanged configuration (same nodes, other targets).
         shared.workspace.DocumentBuilder.onUpdate(() => {
             this.analyses = new WeakMap();

@@ -68,7 +68,10 @@ export function selectGenerators(platform: AppPlatform, registry: GeneratorRegis
 }
 
 /** The generator that translates a behavior language on a platform, if any. */
-export function generatorForLanguage(selection: PlatformSelection, language: string): { generator: RegisteredGenerator; role: 'behavior' | 'component' } | undefined {
+export function generatorForLanguage(
+    selection: PlatformSelection,
+    language: string,
+): { generator: RegisteredGenerator; role: 'behavior' | 'component' } | undefined {
     const b = selection.behaviors.get(language);
     if (b) return { generator: b, role: 'behavior' };
     const c = selection.component;
@@ -77,7 +80,10 @@ export function generatorForLanguage(selection: PlatformSelection, language: str
 }
 
 /** The architecture of an application, or undefined while its component does not resolve. */
-export function applicationArchitecture(app: Application, variant: ApplicationVariant = applicationVariant(app)): ArchitectureModel | undefined {
+export function applicationArchitecture(
+    app: Application,
+    variant: ApplicationVariant = applicationVariant(app),
+): ArchitectureModel | undefined {
     const root = app.component?.ref as unknown as ast.ComponentType | undefined;
     // In the feature configuration the application selects (app-variant.ts).
     return root ? withVariant(variant.env, () => buildArchitecture(root)) : undefined;
@@ -104,8 +110,11 @@ export function checkApplication(app: Application, registry: GeneratorRegistry, 
     for (const platform of app.platforms) {
         if (seenPlatforms.has(platform.name)) {
             findings.push({
-                code: AppCodes.DuplicatePlatform, severity: 'error', node: platform, property: 'name',
-                message: `Platform '${platform.name}' is configured twice in application '${app.name}'.`
+                code: AppCodes.DuplicatePlatform,
+                severity: 'error',
+                node: platform,
+                property: 'name',
+                message: `Platform '${platform.name}' is configured twice in application '${app.name}'.`,
             });
             continue;
         }
@@ -117,8 +126,10 @@ export function checkApplication(app: Application, registry: GeneratorRegistry, 
 }
 
 function checkPlatform(
-    platform: AppPlatform, registry: GeneratorRegistry,
-    arch: () => ArchitectureModel | undefined, options: AppCheckOptions
+    platform: AppPlatform,
+    registry: GeneratorRegistry,
+    arch: () => ArchitectureModel | undefined,
+    options: AppCheckOptions,
 ): AppFinding[] {
     const findings: AppFinding[] = [];
     const add = (f: Omit<AppFinding, 'severity'> & { severity?: 'error' | 'warning' }): void => {
@@ -134,8 +145,11 @@ function checkPlatform(
         const name = r.generator.manifest.name;
         if (seen.has(name)) {
             add({
-                code: AppCodes.RepeatedGenerator, severity: 'warning', node: r.ref, property: 'generator',
-                message: `Generator '${name}' is listed more than once in ${where}.`
+                code: AppCodes.RepeatedGenerator,
+                severity: 'warning',
+                node: r.ref,
+                property: 'generator',
+                message: `Generator '${name}' is listed more than once in ${where}.`,
             });
             continue;
         }
@@ -151,26 +165,34 @@ function checkPlatform(
     const complete = selection.references.length === platform.generators.length;
     if (components.length === 0 && complete) {
         add({
-            code: AppCodes.MissingComponentGenerator, node: platform, property: 'name',
-            message: `${capital(where)} has no component generator: add one (e.g. '${suggest(registry, 'component')}').`
+            code: AppCodes.MissingComponentGenerator,
+            node: platform,
+            property: 'name',
+            message: `${capital(where)} has no component generator: add one (e.g. '${suggest(registry, 'component')}').`,
         });
     }
     for (const extra of components.slice(1)) {
         add({
-            code: AppCodes.DuplicateComponentGenerator, node: extra.ref, property: 'generator',
-            message: `${capital(where)} has more than one component generator ('${components.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`
+            code: AppCodes.DuplicateComponentGenerator,
+            node: extra.ref,
+            property: 'generator',
+            message: `${capital(where)} has more than one component generator ('${components.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`,
         });
     }
     if (datatypes.length === 0 && complete) {
         add({
-            code: AppCodes.MissingDataTypeGenerator, node: platform, property: 'name',
-            message: `${capital(where)} has no data type generator: add one (e.g. '${suggest(registry, 'datatype')}').`
+            code: AppCodes.MissingDataTypeGenerator,
+            node: platform,
+            property: 'name',
+            message: `${capital(where)} has no data type generator: add one (e.g. '${suggest(registry, 'datatype')}').`,
         });
     }
     for (const extra of datatypes.slice(1)) {
         add({
-            code: AppCodes.DuplicateDataTypeGenerator, node: extra.ref, property: 'generator',
-            message: `${capital(where)} has more than one data type generator ('${datatypes.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`
+            code: AppCodes.DuplicateDataTypeGenerator,
+            node: extra.ref,
+            property: 'generator',
+            message: `${capital(where)} has more than one data type generator ('${datatypes.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`,
         });
     }
     const byLanguage = new Map<string, Array<{ ref: AppGeneratorRef; generator: RegisteredGenerator }>>();
@@ -184,8 +206,10 @@ function checkPlatform(
     for (const [language, list] of byLanguage) {
         for (const extra of list.slice(1)) {
             add({
-                code: AppCodes.DuplicateBehaviorGenerator, node: extra.ref, property: 'generator',
-                message: `${capital(where)} has more than one behavior generator for '${language}' ('${list.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`
+                code: AppCodes.DuplicateBehaviorGenerator,
+                node: extra.ref,
+                property: 'generator',
+                message: `${capital(where)} has more than one behavior generator for '${language}' ('${list.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`,
             });
         }
     }
@@ -197,8 +221,11 @@ function checkPlatform(
         for (const r of distinct) {
             if (r === reference || r.generator.manifest.output.gpl === gpl) continue;
             add({
-                code: AppCodes.GplMismatch, node: r.ref, property: 'generator', generator: r.generator.manifest.name,
-                message: `Generator '${r.generator.manifest.name}' produces ${r.generator.manifest.output.gpl}, but '${reference.generator.manifest.name}' produces ${gpl}: all generators of ${where} must produce the same language.`
+                code: AppCodes.GplMismatch,
+                node: r.ref,
+                property: 'generator',
+                generator: r.generator.manifest.name,
+                message: `Generator '${r.generator.manifest.name}' produces ${r.generator.manifest.output.gpl}, but '${reference.generator.manifest.name}' produces ${gpl}: all generators of ${where} must produce the same language.`,
             });
         }
     }
@@ -209,8 +236,11 @@ function checkPlatform(
             const m = r.generator.manifest;
             if (m.kind !== 'behavior' || m.output.rte === rte || m.output.gpl !== component.generator.manifest.output.gpl) continue;
             add({
-                code: AppCodes.RteMismatch, node: r.ref, property: 'generator', generator: m.name,
-                message: `Behavior generator '${m.name}' writes against the run-time environment '${m.output.rte}', but component generator '${component.generator.manifest.name}' wraps '${rte}'.`
+                code: AppCodes.RteMismatch,
+                node: r.ref,
+                property: 'generator',
+                generator: m.name,
+                message: `Behavior generator '${m.name}' writes against the run-time environment '${m.output.rte}', but component generator '${component.generator.manifest.name}' wraps '${rte}'.`,
             });
         }
     }
@@ -223,19 +253,27 @@ function checkPlatform(
         for (const language of architecture.languages) {
             if (generatorForLanguage(selection, language)) continue;
             const users = architecture.components.filter((c) => c.behavior?.language === language || (language === 'compute' && c.init));
-            const shown = users.slice(0, 3).map((c) => c.qualifiedName).join(', ') + (users.length > 3 ? ', ...' : '');
+            const shown =
+                users
+                    .slice(0, 3)
+                    .map((c) => c.qualifiedName)
+                    .join(', ') + (users.length > 3 ? ', ...' : '');
             add({
-                code: AppCodes.UncoveredBehaviorLanguage, node: platform, property: 'name',
-                message: `${capital(where)} has no generator for the behavior language '${language}' (used by ${shown}): add a behavior generator for '${language}'${suggestBehavior(registry, language)}.`
+                code: AppCodes.UncoveredBehaviorLanguage,
+                node: platform,
+                property: 'name',
+                message: `${capital(where)} has no generator for the behavior language '${language}' (used by ${shown}): add a behavior generator for '${language}'${suggestBehavior(registry, language)}.`,
             });
         }
     }
 
     // The generators' own well-formedness rules, on the models each will translate.
-    findings.push(...checkGeneratorRules(selection, architecture, {
-        rule: (generator, name) => standardRule(name) ?? options.rules?.(generator, name),
-        onUnknownRule: options.onUnknownRule
-    }));
+    findings.push(
+        ...checkGeneratorRules(selection, architecture, {
+            rule: (generator, name) => standardRule(name) ?? options.rules?.(generator, name),
+            onUnknownRule: options.onUnknownRule,
+        }),
+    );
     return findings;
 }
 
@@ -254,23 +292,28 @@ export interface GeneratorRuleOptions {
  * the behaviors it translates itself for the component generator, the behaviors of its language
  * for a behavior generator. A generator listed twice is checked once.
  */
-export function checkGeneratorRules(selection: PlatformSelection, architecture: ArchitectureModel, options: GeneratorRuleOptions): AppFinding[] {
+export function checkGeneratorRules(
+    selection: PlatformSelection,
+    architecture: ArchitectureModel,
+    options: GeneratorRuleOptions,
+): AppFinding[] {
     const findings: AppFinding[] = [];
     const seen = new Set<string>();
     for (const { ref, generator } of selection.references) {
         const m = generator.manifest;
         if (seen.has(m.name)) continue;
         seen.add(m.name);
-        const behaviors: BehaviorView[] = m.kind === 'behavior'
-            ? architecture.behaviors.filter((b) => b.language === m.language)
-            : m.kind === 'component'
-                ? architecture.behaviors.filter((b) => m.supports.includes(b.language) && !selection.behaviors.has(b.language))
-                : [];
+        const behaviors: BehaviorView[] =
+            m.kind === 'behavior'
+                ? architecture.behaviors.filter((b) => b.language === m.language)
+                : m.kind === 'component'
+                  ? architecture.behaviors.filter((b) => m.supports.includes(b.language) && !selection.behaviors.has(b.language))
+                  : [];
         const scope = {
             architecture,
             components: m.kind === 'component' ? architecture.components : [],
             behaviors,
-            dataTypes: m.kind === 'datatype' ? architecture.dataTypes : []
+            dataTypes: m.kind === 'datatype' ? architecture.dataTypes : [],
         };
         for (const name of m.checks) {
             if (options.only && !options.only(name)) continue;
@@ -281,8 +324,14 @@ export function checkGeneratorRules(selection: PlatformSelection, architecture: 
             }
             for (const v of rule.check(scope)) {
                 findings.push({
-                    code: AppCodes.GeneratorRuleViolated, severity: 'error', node: ref, property: 'generator', modelNode: v.node, generator: m.name, rule: name,
-                    message: `Generator '${m.name}' requires ${name} (${lowerFirst(rule.description)}), but ${v.message}.`
+                    code: AppCodes.GeneratorRuleViolated,
+                    severity: 'error',
+                    node: ref,
+                    property: 'generator',
+                    modelNode: v.node,
+                    generator: m.name,
+                    rule: name,
+                    message: `Generator '${m.name}' requires ${name} (${lowerFirst(rule.description)}), but ${v.message}.`,
                 });
             }
         }
@@ -295,7 +344,10 @@ function suggest(registry: GeneratorRegistry, kind: GeneratorManifest['kind']): 
 }
 
 function suggestBehavior(registry: GeneratorRegistry, language: string): string {
-    const found = registry.all().filter((g) => g.manifest.kind === 'behavior' && g.manifest.language === language).map((g) => `'${g.manifest.name}'`);
+    const found = registry
+        .all()
+        .filter((g) => g.manifest.kind === 'behavior' && g.manifest.language === language)
+        .map((g) => `'${g.manifest.name}'`);
     return found.length > 0 ? ` (installed: ${found.join(', ')})` : '';
 }
 

@@ -5,14 +5,34 @@ import type { DiagnosticCatalog } from '@maa/language-adl';
  * exactly these): a Python family (`py.*`) plus a few generators that do not fit it.
  */
 export const DEMO_GENERATOR_MANIFESTS = [
-    { name: 'py.Components', kind: 'component', supports: ['compute'], output: { gpl: 'python', rte: 'py-rte' }, checks: ['components.BehaviorOrHandwritten'], entry: 'components.js' },
+    {
+        name: 'py.Components',
+        kind: 'component',
+        supports: ['compute'],
+        output: { gpl: 'python', rte: 'py-rte' },
+        checks: ['components.BehaviorOrHandwritten'],
+        entry: 'components.js',
+    },
     { name: 'py.TracingComponents', kind: 'component', output: { gpl: 'python', rte: 'py-rte' }, entry: 'tracing.js' },
     { name: 'py.Automata', kind: 'behavior', language: 'automaton', output: { gpl: 'python', rte: 'py-rte' }, entry: 'automata.js' },
-    { name: 'py.FlatAutomata', kind: 'behavior', language: 'automaton', output: { gpl: 'python', rte: 'py-rte' }, checks: ['automata.Flat'], entry: 'flat.js' },
-    { name: 'py.LegacyAutomata', kind: 'behavior', language: 'automaton', output: { gpl: 'python', rte: 'legacy-rte' }, entry: 'legacy.js' },
+    {
+        name: 'py.FlatAutomata',
+        kind: 'behavior',
+        language: 'automaton',
+        output: { gpl: 'python', rte: 'py-rte' },
+        checks: ['automata.Flat'],
+        entry: 'flat.js',
+    },
+    {
+        name: 'py.LegacyAutomata',
+        kind: 'behavior',
+        language: 'automaton',
+        output: { gpl: 'python', rte: 'legacy-rte' },
+        entry: 'legacy.js',
+    },
     { name: 'py.DataTypes', kind: 'datatype', output: { gpl: 'python' }, checks: ['datatypes.NoGenerics'], entry: 'datatypes.js' },
     { name: 'py.Dataclasses', kind: 'datatype', output: { gpl: 'python' }, entry: 'dataclasses.js' },
-    { name: 'java.Automata', kind: 'behavior', language: 'automaton', output: { gpl: 'java', rte: 'java-rte' }, entry: 'java.js' }
+    { name: 'java.Automata', kind: 'behavior', language: 'automaton', output: { gpl: 'java', rte: 'java-rte' }, entry: 'java.js' },
 ] as const;
 
 const ROBOT = [
@@ -27,7 +47,7 @@ const ROBOT = [
     '    state Stopped;',
     '    Driving -> Stopped [distance < 10] / { stop = true; };',
     '  }',
-    '}'
+    '}',
 ].join('\n');
 
 const COMPUTED = [
@@ -40,7 +60,7 @@ const COMPUTED = [
     '  compute {',
     '    stop = distance < 10;',
     '  }',
-    '}'
+    '}',
 ].join('\n');
 
 const HIERARCHICAL = [
@@ -58,7 +78,7 @@ const HIERARCHICAL = [
     '    state Stopped;',
     '    Driving -> Stopped [distance < 10] / { stop = true; };',
     '  }',
-    '}'
+    '}',
 ].join('\n');
 
 const VARIABLE = [
@@ -78,7 +98,7 @@ const VARIABLE = [
     '      stop = distance < 10;',
     '    }',
     '  }',
-    '}'
+    '}',
 ].join('\n');
 
 function app(...platforms: string[]): string {
@@ -111,98 +131,142 @@ export const APP_DIAGNOSTICS: DiagnosticCatalog = {
             const rte = 'rte' in m.output ? `, ${m.output.rte}` : '';
             const checks = 'checks' in m ? m.checks.join(', ') : '';
             return `| \`${m.name}\` | ${m.kind} | ${lang} | ${m.output.gpl}${rte} | ${checks} |`;
-        })
+        }),
     ].join('\n'),
     entries: [
         {
-            code: 'app/unknown-component', severity: 'error',
-            rule: 'The application names its architecture\'s top component type by a qualified name that resolves in the model root.',
+            code: 'app/unknown-component',
+            severity: 'error',
+            rule: "The application names its architecture's top component type by a qualified name that resolves in the model root.",
             invalid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robt')), at: 'robot.Robt' },
-            valid: { files: example(app(platform('python', ...FAMILY))) }
+            valid: { files: example(app(platform('python', ...FAMILY))) },
         },
         {
-            code: 'app/unknown-feature', severity: 'error',
+            code: 'app/unknown-feature',
+            severity: 'error',
             rule: 'A feature binding of the application (`for robot.Robot(cautious = true)`) names a feature of its top component type.',
-            invalid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(careful = true)'), VARIABLE), at: 'careful' },
-            valid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(cautious = true)'), VARIABLE) }
+            invalid: {
+                files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(careful = true)'), VARIABLE),
+                at: 'careful',
+            },
+            valid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(cautious = true)'), VARIABLE) },
         },
         {
-            code: 'app/feature-configuration-excluded', severity: 'error',
+            code: 'app/feature-configuration-excluded',
+            severity: 'error',
             rule: 'The feature bindings of the application select a configuration that the constraints of the top component type (and of its subcomponents) admit (instances of one component type in different configurations are generated as variants of the type).',
-            invalid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(cautious = false)'), VARIABLE.replace('  feature cautious;', '  feature cautious;\n  constraint(cautious);')), at: 'cautious = false' },
-            valid: { files: example(app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(cautious = true)'), VARIABLE.replace('  feature cautious;', '  feature cautious;\n  constraint(cautious);')) }
+            invalid: {
+                files: example(
+                    app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(cautious = false)'),
+                    VARIABLE.replace('  feature cautious;', '  feature cautious;\n  constraint(cautious);'),
+                ),
+                at: 'cautious = false',
+            },
+            valid: {
+                files: example(
+                    app(platform('python', ...FAMILY)).replace('robot.Robot', 'robot.Robot(cautious = true)'),
+                    VARIABLE.replace('  feature cautious;', '  feature cautious;\n  constraint(cautious);'),
+                ),
+            },
         },
         {
-            code: 'app/unknown-generator', severity: 'error',
+            code: 'app/unknown-generator',
+            severity: 'error',
             rule: 'Every generator a platform lists is declared by an installed package (`maa-gen generators` lists them).',
             invalid: { files: example(app(platform('python', 'py.Component', 'py.Automata', 'py.DataTypes'))), at: 'py.Component' },
-            valid: { files: example(app(platform('python', ...FAMILY))) }
+            valid: { files: example(app(platform('python', ...FAMILY))) },
         },
         {
-            code: 'app/duplicate-platform', severity: 'error',
+            code: 'app/duplicate-platform',
+            severity: 'error',
             rule: 'Platform names are unique within an application.',
-            invalid: { files: example(app(platform('python', ...FAMILY), platform('python', 'py.TracingComponents', 'py.Automata', 'py.DataTypes'))), at: 'python' },
-            valid: { files: example(app(platform('python', ...FAMILY), platform('tracing', 'py.TracingComponents', 'py.Automata', 'py.DataTypes'))) }
+            invalid: {
+                files: example(
+                    app(platform('python', ...FAMILY), platform('python', 'py.TracingComponents', 'py.Automata', 'py.DataTypes')),
+                ),
+                at: 'python',
+            },
+            valid: {
+                files: example(
+                    app(platform('python', ...FAMILY), platform('tracing', 'py.TracingComponents', 'py.Automata', 'py.DataTypes')),
+                ),
+            },
         },
         {
-            code: 'app/repeated-generator', severity: 'warning',
+            code: 'app/repeated-generator',
+            severity: 'warning',
             rule: 'A platform lists each generator once.',
             invalid: { files: example(app(platform('python', ...FAMILY, 'py.Automata'))), at: 'py.Automata' },
-            valid: { files: example(app(platform('python', ...FAMILY))) }
+            valid: { files: example(app(platform('python', ...FAMILY))) },
         },
         {
-            code: 'app/missing-component-generator', severity: 'error',
+            code: 'app/missing-component-generator',
+            severity: 'error',
             rule: 'A platform has exactly one component generator: it translates components, ports and connectors and wraps the behaviors.',
             invalid: { files: example(app(platform('python', 'py.Automata', 'py.DataTypes'))), at: 'python' },
-            valid: { files: example(app(platform('python', ...FAMILY))) }
+            valid: { files: example(app(platform('python', ...FAMILY))) },
         },
         {
-            code: 'app/duplicate-component-generator', severity: 'error',
+            code: 'app/duplicate-component-generator',
+            severity: 'error',
             rule: 'A platform has exactly one component generator.',
             invalid: { files: example(app(platform('python', ...FAMILY, 'py.TracingComponents'))), at: 'py.TracingComponents' },
-            valid: { files: example(app(platform('python', 'py.TracingComponents', 'py.Automata', 'py.DataTypes'))) }
+            valid: { files: example(app(platform('python', 'py.TracingComponents', 'py.Automata', 'py.DataTypes'))) },
         },
         {
-            code: 'app/missing-datatype-generator', severity: 'error',
+            code: 'app/missing-datatype-generator',
+            severity: 'error',
             rule: 'A platform has exactly one data type generator: it translates the class diagrams.',
             invalid: { files: example(app(platform('python', 'py.Components', 'py.Automata'))), at: 'python' },
-            valid: { files: example(app(platform('python', ...FAMILY))) }
+            valid: { files: example(app(platform('python', ...FAMILY))) },
         },
         {
-            code: 'app/duplicate-datatype-generator', severity: 'error',
+            code: 'app/duplicate-datatype-generator',
+            severity: 'error',
             rule: 'A platform has exactly one data type generator.',
             invalid: { files: example(app(platform('python', ...FAMILY, 'py.Dataclasses'))), at: 'py.Dataclasses' },
-            valid: { files: example(app(platform('python', 'py.Components', 'py.Automata', 'py.Dataclasses'))) }
+            valid: { files: example(app(platform('python', 'py.Components', 'py.Automata', 'py.Dataclasses'))) },
         },
         {
-            code: 'app/uncovered-behavior-language', severity: 'error',
+            code: 'app/uncovered-behavior-language',
+            severity: 'error',
             rule: 'Every behavior language used anywhere in the architecture is translated by a behavior generator of the platform, or by its component generator (manifest `supports`).',
             invalid: { files: example(app(platform('python', 'py.Components', 'py.DataTypes'))), at: 'python' },
-            valid: { files: example(app(platform('python', 'py.Components', 'py.DataTypes')), COMPUTED) }
+            valid: { files: example(app(platform('python', 'py.Components', 'py.DataTypes')), COMPUTED) },
         },
         {
-            code: 'app/duplicate-behavior-generator', severity: 'error',
+            code: 'app/duplicate-behavior-generator',
+            severity: 'error',
             rule: 'A platform has at most one behavior generator per behavior language.',
             invalid: { files: example(app(platform('python', ...FAMILY, 'py.FlatAutomata'))), at: 'py.FlatAutomata' },
-            valid: { files: example(app(platform('python', 'py.Components', 'py.FlatAutomata', 'py.DataTypes'))) }
+            valid: { files: example(app(platform('python', 'py.Components', 'py.FlatAutomata', 'py.DataTypes'))) },
         },
         {
-            code: 'app/gpl-mismatch', severity: 'error',
+            code: 'app/gpl-mismatch',
+            severity: 'error',
             rule: 'All generators of a platform produce the same general-purpose language (that of the component generator).',
             invalid: { files: example(app(platform('python', 'py.Components', 'java.Automata', 'py.DataTypes'))), at: 'java.Automata' },
-            valid: { files: example(app(platform('python', ...FAMILY))) }
+            valid: { files: example(app(platform('python', ...FAMILY))) },
         },
         {
-            code: 'app/rte-mismatch', severity: 'error',
+            code: 'app/rte-mismatch',
+            severity: 'error',
             rule: 'Behavior generators write against the run-time environment the component generator wraps.',
-            invalid: { files: example(app(platform('python', 'py.Components', 'py.LegacyAutomata', 'py.DataTypes'))), at: 'py.LegacyAutomata' },
-            valid: { files: example(app(platform('python', ...FAMILY))) }
+            invalid: {
+                files: example(app(platform('python', 'py.Components', 'py.LegacyAutomata', 'py.DataTypes'))),
+                at: 'py.LegacyAutomata',
+            },
+            valid: { files: example(app(platform('python', ...FAMILY))) },
         },
         {
-            code: 'app/generator-rule-violated', severity: 'error',
+            code: 'app/generator-rule-violated',
+            severity: 'error',
             rule: 'The models a generator translates satisfy the well-formedness rules its manifest declares (`checks`). Reported on the generator in the configuration, naming the rule and the model element; `maa-gen generate` reports it on the model element.',
-            invalid: { files: example(app(platform('python', 'py.Components', 'py.FlatAutomata', 'py.DataTypes')), HIERARCHICAL), at: 'py.FlatAutomata' },
-            valid: { files: example(app(platform('python', ...FAMILY)), HIERARCHICAL) }
-        }
-    ]
+            invalid: {
+                files: example(app(platform('python', 'py.Components', 'py.FlatAutomata', 'py.DataTypes')), HIERARCHICAL),
+                at: 'py.FlatAutomata',
+            },
+            valid: { files: example(app(platform('python', ...FAMILY)), HIERARCHICAL) },
+        },
+    ],
 };

@@ -26,25 +26,38 @@ export function applicationVariant(app: Application): ApplicationVariant {
     for (const b of app.features) {
         if (!features.has(b.feature)) {
             findings.push({
-                code: AppCodes.UnknownFeature, severity: 'error', node: b, property: 'feature',
-                message: `Component '${root.name}' has no feature '${b.feature}'${features.size > 0 ? `; its features are ${[...features].map((f) => `'${f}'`).join(', ')}` : ''}.`
+                code: AppCodes.UnknownFeature,
+                severity: 'error',
+                node: b,
+                property: 'feature',
+                message: `Component '${root.name}' has no feature '${b.feature}'${features.size > 0 ? `; its features are ${[...features].map((f) => `'${f}'`).join(', ')}` : ''}.`,
             });
         }
     }
     if (findings.length > 0 || (app.features.length === 0 && !isVariable(root, new Map()))) return { findings };
     const space = configurationSpace(root);
     if (space.tooLarge) {
-        findings.push({ code: AppCodes.FeatureConfigurationExcluded, severity: 'error', node: app, property: 'component', message: `The configurations of component '${root.name}' are too many to enumerate (variability/too-many-features); it cannot be generated.` });
+        findings.push({
+            code: AppCodes.FeatureConfigurationExcluded,
+            severity: 'error',
+            node: app,
+            property: 'component',
+            message: `The configurations of component '${root.name}' are too many to enumerate (variability/too-many-features); it cannot be generated.`,
+        });
         return { findings };
     }
     const chosen = space.configurations.find((a) => app.features.every((b) => space.value(a, b.feature) === (b.value === 'true')));
     if (chosen === undefined) {
         const node = app.features[0] ?? app;
         findings.push({
-            code: AppCodes.FeatureConfigurationExcluded, severity: 'error', node, ...(app.features[0] ? {} : { property: 'component' }),
-            message: app.features.length > 0
-                ? `The constraints of component '${root.name}' admit no configuration with ${app.features.map((b) => `${b.feature} = ${b.value}`).join(', ')}.`
-                : `The constraints of component '${root.name}' admit no configuration.`
+            code: AppCodes.FeatureConfigurationExcluded,
+            severity: 'error',
+            node,
+            ...(app.features[0] ? {} : { property: 'component' }),
+            message:
+                app.features.length > 0
+                    ? `The constraints of component '${root.name}' admit no configuration with ${app.features.map((b) => `${b.feature} = ${b.value}`).join(', ')}.`
+                    : `The constraints of component '${root.name}' admit no configuration.`,
         });
         return { findings };
     }

@@ -1,7 +1,22 @@
-import { AstUtils, URI, type AstNode, type AstNodeDescription, type Module, type ReferenceInfo, type Scope, type ValidationAcceptor } from 'langium';
+import {
+    AstUtils,
+    URI,
+    type AstNode,
+    type AstNodeDescription,
+    type Module,
+    type ReferenceInfo,
+    type Scope,
+    type ValidationAcceptor,
+} from 'langium';
 import type { Range } from 'vscode-languageserver-types';
 import {
-    LookupScope, type AdlDocumentValidator, type AdlLspServices, type AdlScopeProvider, type AdlServices, type DiagnosticCatalog, type LanguageRegistration
+    LookupScope,
+    type AdlDocumentValidator,
+    type AdlLspServices,
+    type AdlScopeProvider,
+    type AdlServices,
+    type DiagnosticCatalog,
+    type LanguageRegistration,
 } from '@maa/language-adl';
 import type { Application } from '../generated/ast.js';
 import type { RegisteredGenerator } from '../registry/registry.js';
@@ -14,20 +29,28 @@ import { AppCodes } from './codes.js';
 /** A new declaration node for a registered generator (GeneratorRegistryService.declaration keeps one per generator). */
 export function generatorDeclaration(g: RegisteredGenerator): GeneratorDeclarationNode {
     // `$comment` is what Langium's documentation provider shows in completion and hover.
-    return { $type: 'GeneratorDeclaration', name: g.manifest.name, generator: g, $comment: generatorComment(g) } as GeneratorDeclarationNode;
+    return {
+        $type: 'GeneratorDeclaration',
+        name: g.manifest.name,
+        generator: g,
+        $comment: generatorComment(g),
+    } as GeneratorDeclarationNode;
 }
 
 /** A short JSDoc-style description of a registered generator. */
 function generatorComment(g: RegisteredGenerator): string {
     const m = g.manifest;
-    const what = m.kind === 'behavior' ? `behavior generator for \`${m.language}\``
-        : m.kind === 'component' ? `component generator${m.supports.length > 0 ? ` (also translates ${m.supports.map((l) => `\`${l}\``).join(', ')})` : ''}`
-            : 'data type generator';
+    const what =
+        m.kind === 'behavior'
+            ? `behavior generator for \`${m.language}\``
+            : m.kind === 'component'
+              ? `component generator${m.supports.length > 0 ? ` (also translates ${m.supports.map((l) => `\`${l}\``).join(', ')})` : ''}`
+              : 'data type generator';
     const lines = [
         `**${m.name}**: ${what}; output ${m.output.gpl}${m.output.rte ? `, run-time environment ${m.output.rte}` : ''}.`,
         ...(m.description ? ['', m.description] : []),
         '',
-        `Checks: ${m.checks.length > 0 ? m.checks.join(', ') : 'none'}. Package: ${g.source.packageName}@${g.source.packageVersion}.`
+        `Checks: ${m.checks.length > 0 ? m.checks.join(', ') : 'none'}. Package: ${g.source.packageName}@${g.source.packageVersion}.`,
     ];
     return `/**\n${lines.map((l) => ` * ${l}`.trimEnd()).join('\n')}\n */`;
 }
@@ -39,7 +62,9 @@ export function isGeneratorDeclarationNode(node: unknown): node is GeneratorDecl
 /** The URI a registered generator's manifest lives at (a `maa-generator:` URI for inline registries). */
 export function manifestUri(g: RegisteredGenerator): URI {
     const f = g.source.file;
-    return f.startsWith('/') || /^[A-Za-z]:[\\/]/.test(f) ? URI.file(f) : URI.from({ scheme: 'maa-generator', path: `/${g.manifest.name}` });
+    return f.startsWith('/') || /^[A-Za-z]:[\\/]/.test(f)
+        ? URI.file(f)
+        : URI.from({ scheme: 'maa-generator', path: `/${g.manifest.name}` });
 }
 
 function describe(registry: GeneratorRegistryService, g: RegisteredGenerator): AstNodeDescription {
@@ -48,7 +73,7 @@ function describe(registry: GeneratorRegistryService, g: RegisteredGenerator): A
         type: 'GeneratorDeclaration',
         documentUri: manifestUri(g),
         path: g.source.field,
-        node: registry.declaration(g, generatorDeclaration)
+        node: registry.declaration(g, generatorDeclaration),
     };
 }
 
@@ -70,10 +95,13 @@ export function generatorDefinition(node: GeneratorDeclarationNode, manifestText
 
 function generatorScope(service: GeneratorRegistryService, context: ReferenceInfo): Scope {
     const registry = service.registryFor(AstUtils.getDocument(context.container).uri);
-    return new LookupScope((name) => {
-        const g = registry.get(name);
-        return g ? describe(service, g) : undefined;
-    }, () => registry.all().map((g) => describe(service, g)));
+    return new LookupScope(
+        (name) => {
+            const g = registry.get(name);
+            return g ? describe(service, g) : undefined;
+        },
+        () => registry.all().map((g) => describe(service, g)),
+    );
 }
 
 /**
@@ -83,7 +111,10 @@ function generatorScope(service: GeneratorRegistryService, context: ReferenceInf
  * unresolved names, and the `app/*` checks. Its container has the services of ArcAppModule
  * (the generator registry, the analysis of applications).
  */
-export const ArcAppLanguage: LanguageRegistration & { readonly diagnostics: DiagnosticCatalog; readonly module: Module<AdlServices, object> } = {
+export const ArcAppLanguage: LanguageRegistration & {
+    readonly diagnostics: DiagnosticCatalog;
+    readonly module: Module<AdlServices, object>;
+} = {
     languageId: 'arcapp',
     diagnostics: APP_DIAGNOSTICS,
     module: ArcAppModule as unknown as Module<AdlServices, object>, // the family injects it into the .arcapp container (typed for every language)
@@ -91,28 +122,35 @@ export const ArcAppLanguage: LanguageRegistration & { readonly diagnostics: Diag
         const services = adl as ArcAppServices;
         const scopes = services.references.ScopeProvider as AdlScopeProvider;
         const resolver = services.maa.NameResolver;
-        scopes.contributions.set('Application.component', (ctx) => new LookupScope(
-            (name) => resolver.resolveComponent(ctx.container, name),
-            () => resolver.visible(ctx.container, 'component')));
+        scopes.contributions.set(
+            'Application.component',
+            (ctx) =>
+                new LookupScope(
+                    (name) => resolver.resolveComponent(ctx.container, name),
+                    () => resolver.visible(ctx.container, 'component'),
+                ),
+        );
         scopes.contributions.set('AppGeneratorRef.generator', (ctx) => generatorScope(services.generators.Registry, ctx));
 
         const validator = services.validation.DocumentValidator as AdlDocumentValidator;
         validator.linkCodes.set('Application.component', {
             code: AppCodes.UnknownComponent,
-            message: (name) => `Component type '${name}' cannot be resolved: name the architecture's top component by its qualified name (e.g. 'toast.ToastServiceRobot').`
+            message: (name) =>
+                `Component type '${name}' cannot be resolved: name the architecture's top component by its qualified name (e.g. 'toast.ToastServiceRobot').`,
         });
         validator.linkCodes.set('AppGeneratorRef.generator', {
             code: AppCodes.UnknownGenerator,
-            message: (name) => `Generator '${name}' is not installed: no installed package declares it ('maa-gen generators' lists the installed generators).`
+            message: (name) =>
+                `Generator '${name}' is not installed: no installed package declares it ('maa-gen generators' lists the installed generators).`,
         });
 
         services.validation.ValidationRegistry.register({
             Application: (app: AstNode, accept: ValidationAcceptor) => {
                 for (const f of services.generators.Applications.analyze(app as Application).findings) report(f, accept);
-            }
+            },
         });
     },
-    registerLsp: registerArcAppLsp
+    registerLsp: registerArcAppLsp,
 };
 
 /**
@@ -143,7 +181,7 @@ function report(f: AppFinding, accept: ValidationAcceptor): void {
         code: f.code,
         relatedInformation: related
             ? [{ location: { uri: related.uri, range: related.range }, message: `violates ${f.rule} of generator '${f.generator}'` }]
-            : undefined
+            : undefined,
     });
 }
 

@@ -19,8 +19,8 @@ export type ArcAppServices = AdlServices & ArcAppAddedServices;
 export const ArcAppModule: Module<ArcAppServices, ArcAppAddedServices> = {
     generators: {
         Registry: (s) => new GeneratorRegistryService(s.shared),
-        Applications: (s) => new ApplicationAnalyzer(s.shared, s.generators.Registry)
-    }
+        Applications: (s) => new ApplicationAnalyzer(s.shared, s.generators.Registry),
+    },
 };
 
 /**

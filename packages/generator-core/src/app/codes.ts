@@ -18,7 +18,7 @@ export const AppCodes = {
     RteMismatch: 'app/rte-mismatch',
     GeneratorRuleViolated: 'app/generator-rule-violated',
     UnknownFeature: 'app/unknown-feature',
-    FeatureConfigurationExcluded: 'app/feature-configuration-excluded'
+    FeatureConfigurationExcluded: 'app/feature-configuration-excluded',
 } as const;
 
 export type AppCode = (typeof AppCodes)[keyof typeof AppCodes];

@@ -19,7 +19,7 @@ export function generatorRegistryService(shared: LangiumSharedCoreServices): Gen
 export function configureGeneratorRegistry(
     shared: LangiumSharedCoreServices,
     registry: GeneratorRegistry | RegistryProvider | undefined,
-    options: DiscoveryOptions = {}
+    options: DiscoveryOptions = {},
 ): void {
     generatorRegistryService(shared).configure(registry, options);
 }

@@ -1,9 +1,19 @@
 import type { AstNode } from 'langium';
 import type {
-    ArchitectureModel, BehaviorView, ComponentView, DataTypeView, FieldView, ParameterView, PortView
+    ArchitectureModel,
+    BehaviorView,
+    ComponentView,
+    DataTypeView,
+    FieldView,
+    ParameterView,
+    PortView,
 } from '../model/architecture.js';
 import type {
-    BehaviorGeneratorManifest, ComponentGeneratorManifest, DataTypeGeneratorManifest, GeneratorKind, GeneratorManifest
+    BehaviorGeneratorManifest,
+    ComponentGeneratorManifest,
+    DataTypeGeneratorManifest,
+    GeneratorKind,
+    GeneratorManifest,
 } from '../manifest/manifest.js';
 
 /**
@@ -112,7 +122,13 @@ export interface BehaviorGenerationContext {
 /** The result of handing a component's behavior on (see ComponentGenerationContext.behavior). */
 export type DelegatedBehavior =
     /** Translated by the behavior generator `generator`, which returned `result`. */
-    | { readonly handledBy: 'behavior-generator'; readonly generator: string; readonly language: string; readonly behavior: BehaviorView; readonly result: BehaviorResult }
+    | {
+          readonly handledBy: 'behavior-generator';
+          readonly generator: string;
+          readonly language: string;
+          readonly behavior: BehaviorView;
+          readonly result: BehaviorResult;
+      }
     /** A language the component generator declares in `supports`: it translates the block itself. */
     | { readonly handledBy: 'component-generator'; readonly language: string; readonly behavior: BehaviorView };
 
@@ -184,6 +200,12 @@ export interface GeneratorInstantiation<M extends GeneratorManifest = GeneratorM
 export type GeneratorFactory = (instantiation: GeneratorInstantiation) => Generator | Promise<Generator>;
 
 /** Convenience for generator authors: typed factories. */
-export type ComponentGeneratorFactory = (i: GeneratorInstantiation<ComponentGeneratorManifest>) => ComponentGenerator | Promise<ComponentGenerator>;
-export type BehaviorGeneratorFactory = (i: GeneratorInstantiation<BehaviorGeneratorManifest>) => BehaviorGenerator | Promise<BehaviorGenerator>;
-export type DataTypeGeneratorFactory = (i: GeneratorInstantiation<DataTypeGeneratorManifest>) => DataTypeGenerator | Promise<DataTypeGenerator>;
+export type ComponentGeneratorFactory = (
+    i: GeneratorInstantiation<ComponentGeneratorManifest>,
+) => ComponentGenerator | Promise<ComponentGenerator>;
+export type BehaviorGeneratorFactory = (
+    i: GeneratorInstantiation<BehaviorGeneratorManifest>,
+) => BehaviorGenerator | Promise<BehaviorGenerator>;
+export type DataTypeGeneratorFactory = (
+    i: GeneratorInstantiation<DataTypeGeneratorManifest>,
+) => DataTypeGenerator | Promise<DataTypeGenerator>;

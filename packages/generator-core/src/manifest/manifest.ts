@@ -25,7 +25,15 @@ export interface GeneratorOutput {
  * - `datatypes`: what the data type generator produced (type names per class-diagram type).
  */
 export type ContextRequirement = 'ports' | 'parameters' | 'fields' | 'component' | 'package' | 'platform' | 'datatypes';
-export const CONTEXT_REQUIREMENTS: readonly ContextRequirement[] = ['ports', 'parameters', 'fields', 'component', 'package', 'platform', 'datatypes'];
+export const CONTEXT_REQUIREMENTS: readonly ContextRequirement[] = [
+    'ports',
+    'parameters',
+    'fields',
+    'component',
+    'package',
+    'platform',
+    'datatypes',
+];
 
 interface ManifestBase {
     /** Qualified name, e.g. `ros2.Components`: what application configurations refer to. */
@@ -81,7 +89,7 @@ export class ManifestError extends Error {
         readonly packageName: string,
         readonly file: string,
         readonly field: string,
-        readonly problem: string
+        readonly problem: string,
     ) {
         super(`generator package ${packageName} (${file}): ${field ? `${field}: ` : ''}${problem}`);
         this.name = 'ManifestError';
@@ -110,9 +118,10 @@ export function validateManifest(json: unknown, where: { packageName: string; fi
     const base = {
         ...m,
         checks: (m['checks'] as string[] | undefined) ?? [],
-        requires: (m['requires'] as ContextRequirement[] | undefined) ?? []
+        requires: (m['requires'] as ContextRequirement[] | undefined) ?? [],
     };
-    if (m['kind'] === 'component') return { ...base, supports: (m['supports'] as string[] | undefined) ?? [] } as unknown as ComponentGeneratorManifest;
+    if (m['kind'] === 'component')
+        return { ...base, supports: (m['supports'] as string[] | undefined) ?? [] } as unknown as ComponentGeneratorManifest;
     return base as unknown as GeneratorManifest;
 }
 

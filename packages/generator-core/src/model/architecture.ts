@@ -1,7 +1,20 @@
 import { AstUtils, CstUtils, type AstNode } from 'langium';
 import {
-    allPorts, ast, behaviorTiming, impliedConnectors, behaviorsOf, elementsOf, isComposed, stereotypeNames, subcomponentType, subcomponentsOf,
-    typeOfMCType, printType, type ImpliedEnd, type SymType, type Timing
+    allPorts,
+    type ast,
+    behaviorTiming,
+    impliedConnectors,
+    behaviorsOf,
+    elementsOf,
+    isComposed,
+    stereotypeNames,
+    subcomponentType,
+    subcomponentsOf,
+    typeOfMCType,
+    printType,
+    type ImpliedEnd,
+    type SymType,
+    type Timing,
 } from '@maa/language-adl';
 
 import { currentVariant, isFeatureBinding, variationPoints, withVariant, type VariantEnv } from '@maa/language-adl';
@@ -164,7 +177,7 @@ export function componentQualifiedName(c: ComponentType): string {
 }
 
 /** `pkg.Diagram.Type` for class-diagram types. */
-export function dataTypeQualifiedName(t: CDType | AstNode & { name: string }): string {
+export function dataTypeQualifiedName(t: CDType | (AstNode & { name: string })): string {
     const diagram = t.$container as AstNode & { name?: string };
     const pkg = packageOf(t);
     const local = diagram?.name ? `${diagram.name}.${t.name}` : t.name;
@@ -227,7 +240,12 @@ interface Variant {
  * differs by something else (a boolean parameter bound by its instantiation, a subcomponent's
  * configuration) gets the number of the variant (`Lamp__2`). A name already taken gets `_2`, `_3`, ...
  */
-export function variantName(typeName: string, features: Readonly<Record<string, boolean>> | undefined, index: number, taken: (name: string) => boolean): string {
+export function variantName(
+    typeName: string,
+    features: Readonly<Record<string, boolean>> | undefined,
+    index: number,
+    taken: (name: string) => boolean,
+): string {
     const all = Object.keys(features ?? {}).sort(compare);
     const selected = all.filter((f) => features?.[f]);
     const suffix = selected.length > 0 ? selected.join('_') : all.length > 0 ? `no_${all.join('_')}` : String(index + 1);
@@ -241,11 +259,21 @@ export function buildArchitecture(root: ComponentType): ArchitectureModel {
     const byType = new Map<ComponentType, Map<string, Variant>>();
     const variantsInOrder: Variant[] = [];
     let seq = 0;
-    interface Entry { path: string[]; node: AstNode | undefined; args: readonly AstNode[]; variant?: Variant }
+    interface Entry {
+        path: string[];
+        node: AstNode | undefined;
+        args: readonly AstNode[];
+        variant?: Variant;
+    }
     const entries: Entry[] = [];
 
     /** The variant of `c` in configuration `env`; `entry` is its instance (undefined for a parent type). */
-    const resolve = (c: ComponentType, env: VariantEnv | undefined, entry: Entry | undefined, active: ReadonlySet<ComponentType>): Variant => {
+    const resolve = (
+        c: ComponentType,
+        env: VariantEnv | undefined,
+        entry: Entry | undefined,
+        active: ReadonlySet<ComponentType>,
+    ): Variant => {
         const position = seq++;
         if (entry) entries.push(entry);
         const inner = new Set([...active, c]);
@@ -263,13 +291,34 @@ export function buildArchitecture(root: ComponentType): ArchitectureModel {
             if (decl && !inner.has(decl)) parents.push(resolve(decl, env, undefined, inner));
         }
         const features = env?.featureValues?.(c);
-        const decisions = env ? withVariant(env, () => variationPointsOf(c).map((v) => (env.decide(v) ? '1' : '0')).join('')) : '';
-        const key = [decisions, JSON.stringify(features ?? null), [...subs].map(([n, v]) => `${n}:${v.id}`).join(','), parents.map((v) => v.id).join(',')].join('|');
+        const decisions = env
+            ? withVariant(env, () =>
+                  variationPointsOf(c)
+                      .map((v) => (env.decide(v) ? '1' : '0'))
+                      .join(''),
+              )
+            : '';
+        const key = [
+            decisions,
+            JSON.stringify(features ?? null),
+            [...subs].map(([n, v]) => `${n}:${v.id}`).join(','),
+            parents.map((v) => v.id).join(','),
+        ].join('|');
         let variants = byType.get(c);
         if (!variants) byType.set(c, (variants = new Map()));
         let variant = variants.get(key);
         if (!variant) {
-            variant = { id: variantsInOrder.length, decl: c, env, subs, parents, features, first: position, name: c.name, qualifiedName: componentQualifiedName(c) };
+            variant = {
+                id: variantsInOrder.length,
+                decl: c,
+                env,
+                subs,
+                parents,
+                features,
+                first: position,
+                name: c.name,
+                qualifiedName: componentQualifiedName(c),
+            };
             variants.set(key, variant);
             variantsInOrder.push(variant);
         }
@@ -291,14 +340,22 @@ export function buildArchitecture(root: ComponentType): ArchitectureModel {
         });
     }
     const views = new Map<Variant, ComponentView>();
-    for (const v of variantsInOrder) views.set(v, withVariant(v.env, () => componentView(v)));
+    for (const v of variantsInOrder)
+        views.set(
+            v,
+            withVariant(v.env, () => componentView(v)),
+        );
 
     const components = [...views.values()].sort((a, b) => compare(a.qualifiedName, b.qualifiedName));
     const byName = new Map(components.map((c) => [c.qualifiedName, c]));
-    const instances: InstanceView[] = entries.flatMap((e) => (e.variant ? [{ path: e.path, component: views.get(e.variant)!, node: e.node, args: e.args }] : []));
+    const instances: InstanceView[] = entries.flatMap((e) =>
+        e.variant ? [{ path: e.path, component: views.get(e.variant)!, node: e.node, args: e.args }] : [],
+    );
 
     const behaviors = components.flatMap((c) => (c.behavior ? [c.behavior] : []));
-    const languages = [...new Set([...behaviors.map((b) => b.language), ...components.filter((c) => c.init).map(() => 'compute')])].sort(compare);
+    const languages = [...new Set([...behaviors.map((b) => b.language), ...components.filter((c) => c.init).map(() => 'compute')])].sort(
+        compare,
+    );
     const dataTypes = collectDataTypes(components);
     const typeByName = new Map(dataTypes.map((t) => [t.qualifiedName, t]));
     return {
@@ -309,7 +366,7 @@ export function buildArchitecture(root: ComponentType): ArchitectureModel {
         languages,
         dataTypes,
         component: (qn) => byName.get(qn),
-        dataType: (qn) => typeByName.get(qn)
+        dataType: (qn) => typeByName.get(qn),
     };
 }
 
@@ -317,7 +374,10 @@ export function buildArchitecture(root: ComponentType): ArchitectureModel {
 function variationPointsOf(c: ComponentType, seen = new Set<ComponentType>()): ast.VarIf[] {
     if (seen.has(c)) return [];
     seen.add(c);
-    return [...variationPoints(c.body?.elements ?? []), ...c.parents.flatMap((p) => (p.type?.ref?.ref ? variationPointsOf(p.type.ref.ref, seen) : []))];
+    return [
+        ...variationPoints(c.body?.elements ?? []),
+        ...c.parents.flatMap((p) => (p.type?.ref?.ref ? variationPointsOf(p.type.ref.ref, seen) : [])),
+    ];
 }
 
 function componentView(v: Variant): ComponentView {
@@ -345,28 +405,35 @@ function componentView(v: Variant): ComponentView {
             timing: p.timing,
             delayed: p.delayed,
             node: p.port,
-            owner: componentQualifiedName(p.owner)
+            owner: componentQualifiedName(p.owner),
         })),
         parameters: c.params.map((p) => ({ ...typeView(typeOfMCType(p.type)), name: p.name, default: p.default, node: p })),
-        fields: elements.flatMap((e) => (e.$type === 'FieldDeclaration'
-            ? e.fields.map((f) => ({ ...typeView(typeOfMCType(e.type)), name: f.name, init: f.init, node: f }))
-            : [])),
+        fields: elements.flatMap((e) =>
+            e.$type === 'FieldDeclaration'
+                ? e.fields.map((f) => ({ ...typeView(typeOfMCType(e.type)), name: f.name, init: f.init, node: f }))
+                : [],
+        ),
         subcomponents: allSubcomponents(c).map((s) => {
             const decl = subcomponentType(s).decl;
             // Feature bindings (`sub(f = true)`) select the configuration; they are no arguments.
-            return { name: s.name, type: v.subs.get(s.name)?.qualifiedName ?? (decl ? componentQualifiedName(decl) : ''), args: s.args.filter((a) => !isFeatureBinding(a)), node: s };
+            return {
+                name: s.name,
+                type: v.subs.get(s.name)?.qualifiedName ?? (decl ? componentQualifiedName(decl) : ''),
+                args: s.args.filter((a) => !isFeatureBinding(a)),
+                node: s,
+            };
         }),
         connectors: [
-            ...elements.flatMap((e) => (e.$type === 'Connector'
-                ? [{ source: portRef(e.source), targets: e.targets.map(portRef), node: e }]
-                : [])),
+            ...elements.flatMap((e) =>
+                e.$type === 'Connector' ? [{ source: portRef(e.source), targets: e.targets.map(portRef), node: e }] : [],
+            ),
             // Connectors implied by `autoconnect` are connectors like any other; their node is
             // the `autoconnect` declaration.
             ...impliedConnectors(c).map((i) => ({
                 source: impliedRef(i.source),
                 targets: [impliedRef(i.target)],
-                node: i.declaration
-            }))
+                node: i.declaration,
+            })),
         ],
         behavior: main ? { language: behaviorLanguageOf(main), node: main, component: qualifiedName, timing } : undefined,
         init,
@@ -375,7 +442,7 @@ function componentView(v: Variant): ComponentView {
         ...(modes ? { modes } : {}),
         stereotypes: stereotypeNames(c.stereotype),
         // The feature configuration generated (variable architectures: app-variant.ts).
-        ...(features ? { features } : {})
+        ...(features ? { features } : {}),
     };
 }
 
@@ -399,8 +466,12 @@ function collectDataTypes(components: readonly ComponentView[]): DataTypeView[] 
         for (const t of [...c.ports, ...c.parameters, ...c.fields]) pending.push(t.type);
         // Types the behavior names: local variable types, static calls (`Rect.square(2.0)`), enum constants.
         for (const n of AstUtils.streamAst(c.node)) {
-            const target = n.$type === 'ReferenceType' || n.$type === 'NameExpression' ? (n as ast.ReferenceType | ast.NameExpression).ref?.ref : undefined;
-            if (target && (target.$type === 'CDClass' || target.$type === 'CDEnum')) pending.push({ kind: 'object', decl: target as CDType, args: [] });
+            const target =
+                n.$type === 'ReferenceType' || n.$type === 'NameExpression'
+                    ? (n as ast.ReferenceType | ast.NameExpression).ref?.ref
+                    : undefined;
+            if (target && (target.$type === 'CDClass' || target.$type === 'CDEnum'))
+                pending.push({ kind: 'object', decl: target as CDType, args: [] });
             else if (target?.$type === 'CDEnumConstant') pending.push({ kind: 'object', decl: target.$container as CDType, args: [] });
         }
     }
@@ -429,7 +500,13 @@ function collectDataTypes(components: readonly ComponentView[]): DataTypeView[] 
 
 function dataTypeView(t: CDType): DataTypeView {
     const diagram = t.$container as ast.ClassDiagram;
-    const base = { qualifiedName: dataTypeQualifiedName(t), name: t.name, packageName: packageOf(t), diagram: diagram?.name ?? '', node: t };
+    const base = {
+        qualifiedName: dataTypeQualifiedName(t),
+        name: t.name,
+        packageName: packageOf(t),
+        diagram: diagram?.name ?? '',
+        node: t,
+    };
     if (t.$type === 'CDEnum') {
         return { ...base, kind: 'enum', constants: t.constants.map((c) => c.name), attributes: [], typeParameters: [], superTypes: [] };
     }
@@ -437,9 +514,11 @@ function dataTypeView(t: CDType): DataTypeView {
         ...base,
         kind: t.kind,
         constants: [],
-        attributes: t.members.flatMap((m) => (m.$type === 'CDAttribute' ? [{ ...typeView(typeOfMCType(m.type)), name: m.name, node: m }] : [])),
+        attributes: t.members.flatMap((m) =>
+            m.$type === 'CDAttribute' ? [{ ...typeView(typeOfMCType(m.type)), name: m.name, node: m }] : [],
+        ),
         typeParameters: t.typeParams.map((p) => p.name),
-        superTypes: [...t.superTypes, ...t.interfaces].map((s) => printQualifiedType(typeOfMCType(s)))
+        superTypes: [...t.superTypes, ...t.interfaces].map((s) => printQualifiedType(typeOfMCType(s))),
     };
 }
 

@@ -1,5 +1,5 @@
 import type { AstNode } from 'langium';
-import { ast, behaviorsOf, timingsOf, DEFAULT_TIMING, type Timing } from '@maa/language-adl';
+import { type ast, behaviorsOf, timingsOf, DEFAULT_TIMING, type Timing } from '@maa/language-adl';
 import type { ConnectorView, PortRef } from './architecture.js';
 
 /**
@@ -68,8 +68,9 @@ export function isModeAutomatonBlock(node: AstNode | undefined): boolean {
 
 /** The subcomponents declared in the modes of a component's mode automata. */
 export function modeSubcomponentsOf(c: ast.ComponentType): ast.Subcomponent[] {
-    return modeAutomatonDeclarations(c).flatMap((b) => modesOf(b.behavior as unknown as AstNode & { elements: AstNode[] })
-        .flatMap((m) => subcomponentsIn(m.elements)));
+    return modeAutomatonDeclarations(c).flatMap((b) =>
+        modesOf(b.behavior as unknown as AstNode & { elements: AstNode[] }).flatMap((m) => subcomponentsIn(m.elements)),
+    );
 }
 
 function modesOf(a: AstNode & { elements: AstNode[] }): ModeNode[] {
@@ -93,21 +94,28 @@ export function modeAutomatonView(c: ast.ComponentType): ModeAutomatonView | und
         name: m.name,
         initial: m.initial,
         subcomponents: subcomponentsIn(m.elements).map((s) => s.name),
-        connectors: m.elements.filter((e): e is ast.Connector => e.$type === 'Connector')
+        connectors: m.elements
+            .filter((e): e is ast.Connector => e.$type === 'Connector')
             .map((e) => ({ source: portRef(e.source), targets: e.targets.map(portRef), node: e })),
-        node: m
+        node: m,
     }));
-    const transitions = a.elements.filter((e) => e.$type === 'ModeTransition').map((e) => {
-        const t = e as ModeTransitionNode;
-        const trigger: ModeTransitionView['trigger'] = t.tick ? { kind: 'tick' } : t.event ? { kind: 'port', port: t.event.$refText } : { kind: 'none' };
-        return { source: t.source?.$refText ?? '', target: t.target?.$refText ?? '', guard: t.guard, trigger, node: t };
-    });
+    const transitions = a.elements
+        .filter((e) => e.$type === 'ModeTransition')
+        .map((e) => {
+            const t = e as ModeTransitionNode;
+            const trigger: ModeTransitionView['trigger'] = t.tick
+                ? { kind: 'tick' }
+                : t.event
+                  ? { kind: 'port', port: t.event.$refText }
+                  : { kind: 'none' };
+            return { source: t.source?.$refText ?? '', target: t.target?.$refText ?? '', guard: t.guard, trigger, node: t };
+        });
     return {
         timing: timingsOf(decl.stereotype)[0] ?? DEFAULT_TIMING,
         initial: (modes.find((m) => m.initial) ?? modes[0])?.name ?? '',
         modes,
         transitions,
-        node: a
+        node: a,
     };
 }
 

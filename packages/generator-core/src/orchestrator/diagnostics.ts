@@ -7,7 +7,14 @@ import type { GenerationDiagnostic } from './types.js';
 type Range = { start: { line: number; character: number }; end: { line: number; character: number } };
 
 /** A diagnostic at a range of a file (1-based lines and columns, the check command's convention). */
-export function at(root: string, file: string, range: Range | undefined, severity: Severity, code: string, message: string): GenerationDiagnostic {
+export function at(
+    root: string,
+    file: string,
+    range: Range | undefined,
+    severity: Severity,
+    code: string,
+    message: string,
+): GenerationDiagnostic {
     return {
         root,
         file,
@@ -17,13 +24,20 @@ export function at(root: string, file: string, range: Range | undefined, severit
         endColumn: (range?.end.character ?? 0) + 1,
         severity,
         code,
-        message
+        message,
     };
 }
 
-export function nodeDiagnostic(modelRoot: string, node: AstNode, severity: Severity, code: string, message: string, property?: string): GenerationDiagnostic {
+export function nodeDiagnostic(
+    modelRoot: string,
+    node: AstNode,
+    severity: Severity,
+    code: string,
+    message: string,
+    property?: string,
+): GenerationDiagnostic {
     const doc = AstUtils.getDocument(node);
-    const cst = (property ? (node.$cstNode && findProperty(node, property)) : undefined) ?? node.$cstNode;
+    const cst = (property ? node.$cstNode && findProperty(node, property) : undefined) ?? node.$cstNode;
     return at(modelRoot, doc.uri.fsPath, cst?.range, severity, code, message);
 }
 
@@ -60,5 +74,11 @@ export function sortDiagnostics(ds: readonly GenerationDiagnostic[]): Generation
             seen.add(k);
             return true;
         })
-        .sort((a, b) => (a.file < b.file ? -1 : a.file > b.file ? 1 : 0) || a.line - b.line || a.column - b.column || (a.code < b.code ? -1 : a.code > b.code ? 1 : 0));
+        .sort(
+            (a, b) =>
+                (a.file < b.file ? -1 : a.file > b.file ? 1 : 0) ||
+                a.line - b.line ||
+                a.column - b.column ||
+                (a.code < b.code ? -1 : a.code > b.code ? 1 : 0),
+        );
 }

@@ -18,7 +18,7 @@ export const GenCodes = {
     /** (warning) A file no longer generated was kept because it holds user content in protected regions. */
     StaleFileKept: 'gen/stale-file-kept',
     /** The output could not be written (nothing was changed). */
-    WriteFailed: 'gen/write-failed'
+    WriteFailed: 'gen/write-failed',
 } as const;
 
 export type GenCode = (typeof GenCodes)[keyof typeof GenCodes];

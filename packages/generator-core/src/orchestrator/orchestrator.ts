@@ -37,7 +37,8 @@ function prepare(options: GenerateOptions): GenerationRun {
     const appFile = path.resolve(options.appFile);
     if (!existsSync(appFile) || !statSync(appFile).isFile()) throw new GenerateInputError(`no such file: ${options.appFile}`);
     const modelRoot = path.resolve(options.modelRoot ?? path.dirname(appFile));
-    if (!(appFile.startsWith(modelRoot + path.sep))) throw new GenerateInputError(`${options.appFile} lies outside the model root ${modelRoot}`);
+    if (!appFile.startsWith(modelRoot + path.sep))
+        throw new GenerateInputError(`${options.appFile} lies outside the model root ${modelRoot}`);
     const run = createRun(options, appFile, modelRoot);
     arcAppOf(run);
     return run;
@@ -45,8 +46,12 @@ function prepare(options: GenerateOptions): GenerationRun {
 
 async function pipeline(run: GenerationRun): Promise<GenerateResult> {
     const diagnostics: GenerationDiagnostic[] = [];
-    const done = (platforms?: PlatformResult[]): GenerateResult =>
-        ({ ok: platforms !== undefined, diagnostics: sortDiagnostics(diagnostics), platforms: platforms ?? [], timings: run.timings });
+    const done = (platforms?: PlatformResult[]): GenerateResult => ({
+        ok: platforms !== undefined,
+        diagnostics: sortDiagnostics(diagnostics),
+        platforms: platforms ?? [],
+        timings: run.timings,
+    });
     const take = <T>(result: StageResult<T>): T | undefined => {
         diagnostics.push(...result.diagnostics);
         return result.ok ? result.value : undefined;

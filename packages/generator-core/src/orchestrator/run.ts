@@ -50,7 +50,7 @@ export function createRun(options: GenerateOptions, appFile: string, modelRoot: 
         outRoot: path.resolve(options.outDir),
         progress: options.onProgress ?? (() => undefined),
         shown: options.displayPath ?? ((p: string) => p),
-        timings: { discover: 0, load: 0, check: 0, instantiate: 0, generate: 0, trace: 0, write: 0 }
+        timings: { discover: 0, load: 0, check: 0, instantiate: 0, generate: 0, trace: 0, write: 0 },
     };
 }
 

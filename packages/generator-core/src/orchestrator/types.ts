@@ -8,7 +8,10 @@ export type GenerationDiagnostic = CheckDiagnostic;
 
 /** Thrown by a generator to report a problem on a model element (reported as `gen/generator-failed`). */
 export class GenerationError extends Error {
-    constructor(message: string, readonly node?: AstNode) {
+    constructor(
+        message: string,
+        readonly node?: AstNode,
+    ) {
         super(message);
         this.name = 'GenerationError';
     }

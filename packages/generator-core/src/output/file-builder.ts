@@ -6,6 +6,7 @@ export const TRACER_CONTEXT_KEY = '__maaTracer';
 
 const OPEN = '\u0001';
 const CLOSE = '\u0002';
+// biome-ignore lint/suspicious/noControlCharactersInRegex: the marks are control characters no model text contains
 const MARKER = /\u0001(\/?)(\d+)\u0002/g;
 
 /** Allocates trace marks for model elements; text between an element's marks is traced to it. */
@@ -45,7 +46,10 @@ export interface FinishedFile {
 }
 
 /** Strips trace marks from text and returns the line ranges they enclosed. */
-export function resolveTraceMarks(marked: string, tracer: Tracer): { content: string; ranges: Array<{ startLine: number; endLine: number; element: AstNode }> } {
+export function resolveTraceMarks(
+    marked: string,
+    tracer: Tracer,
+): { content: string; ranges: Array<{ startLine: number; endLine: number; element: AstNode }> } {
     let content = '';
     let line = 1;
     let last = 0;
@@ -87,7 +91,7 @@ class DefaultFileBuilder implements FileBuilder {
         readonly path: string,
         readonly options: FileOptions,
         readonly generator: string,
-        private readonly renderer: TemplateRenderer
+        private readonly renderer: TemplateRenderer,
     ) {}
 
     write(text: string, element?: AstNode): this {
@@ -121,7 +125,7 @@ class DefaultFileBuilder implements FileBuilder {
             content,
             userFile: this.options.userFile === true,
             generator: this.generator,
-            traces: ranges.map((r) => ({ ...r, generator: this.generator }))
+            traces: ranges.map((r) => ({ ...r, generator: this.generator })),
         };
     }
 }
@@ -147,12 +151,14 @@ export class OutputCollector {
                 const p = normalizePath(path, generator);
                 const existing = this.files.get(p);
                 if (existing) {
-                    throw new OutputError(`generator '${generator}' writes '${p}', which ${existing.generator === generator ? 'it has' : `generator '${existing.generator}' has`} already written`);
+                    throw new OutputError(
+                        `generator '${generator}' writes '${p}', which ${existing.generator === generator ? 'it has' : `generator '${existing.generator}' has`} already written`,
+                    );
                 }
                 const b = new DefaultFileBuilder(p, options, generator, renderer);
                 this.files.set(p, b);
                 return b;
-            }
+            },
         };
     }
 

@@ -1,5 +1,5 @@
 import { randomBytes } from 'node:crypto';
-import { lstatSync, readlinkSync, statSync } from 'node:fs';
+import { lstatSync, readlinkSync, type Stats, statSync } from 'node:fs';
 import path from 'node:path';
 
 /**
@@ -36,11 +36,13 @@ export const names = {
     oldFolder: (platform: string, id: string): string => `old.${platform}.${id}`,
     tempLock: (id: string): string => `lock.${process.pid}.${id}`,
     /** The target written into `<out>/P`: relative, so a moved or copied `<out>` keeps working. */
-    linkTarget: (version: string): string => `${STATE_DIR}/${version}`
+    linkTarget: (version: string): string => `${STATE_DIR}/${version}`,
 };
 
 /** Classifies a name found in `<out>/.maa-gen` (undefined: not ours, never touched). */
-export function ownEntry(name: string):
+export function ownEntry(
+    name: string,
+):
     | { kind: 'version'; platform: string }
     | { kind: 'temp-link' }
     | { kind: 'old-folder'; platform: string }
@@ -72,7 +74,7 @@ export type RootState =
 
 export function rootState(outRoot: string, platform: string): RootState {
     const root = path.join(outRoot, platform);
-    let st;
+    let st: Stats;
     try {
         st = lstatSync(root);
     } catch (e) {
@@ -100,7 +102,10 @@ export function rootState(outRoot: string, platform: string): RootState {
  * folder's path, not the hidden version folder's) and the reason in words.
  */
 export class OutputWriteError extends Error {
-    constructor(readonly path: string, readonly reason: string) {
+    constructor(
+        readonly path: string,
+        readonly reason: string,
+    ) {
         super(`${path}: ${reason}`);
         this.name = 'OutputWriteError';
     }
@@ -117,7 +122,7 @@ const REASONS: Record<string, string> = {
     EEXIST: 'already exists',
     ENAMETOOLONG: 'the name is too long',
     EMFILE: 'too many open files',
-    EIO: 'input/output error'
+    EIO: 'input/output error',
 };
 
 /** Turns an error of `fs` into an OutputWriteError; `display` maps internal paths to user paths. */
@@ -126,6 +131,6 @@ export function toWriteError(e: unknown, fallbackPath: string, display: (p: stri
     const err = e as NodeJS.ErrnoException;
     const where = display(typeof err.path === 'string' ? err.path : fallbackPath);
     // The code, not the message: fs messages repeat absolute paths.
-    const reason = err.code ? (REASONS[err.code] ?? `${err.code}${err.syscall ? ` (${err.syscall})` : ''}`) : (err.message || String(e));
+    const reason = err.code ? (REASONS[err.code] ?? `${err.code}${err.syscall ? ` (${err.syscall})` : ''}`) : err.message || String(e);
     return new OutputWriteError(where, reason);
 }

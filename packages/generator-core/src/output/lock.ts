@@ -34,7 +34,10 @@ export function acquireLock(stateDir: string): () => void {
             }
             const owner = readOwner(lock);
             if (owner !== undefined && processAlive(owner)) {
-                throw new OutputWriteError(lock, `another generation (process ${owner}) is writing this output; run again when it has finished`);
+                throw new OutputWriteError(
+                    lock,
+                    `another generation (process ${owner}) is writing this output; run again when it has finished`,
+                );
             }
             // Left by a killed run: take it over.
             rmSync(lock, { force: true });

@@ -58,7 +58,12 @@ export class Checkpoints {
  * the writer pauses, kills it with SIGKILL there and resolves to the checkpoint it reached
  * (`"commit 2"`); rejects, with its stderr, when it exits without pausing.
  */
-export function killWhenPaused(command: string, args: readonly string[], pauseAt: string, options: { cwd?: string; env?: NodeJS.ProcessEnv } = {}): Promise<string> {
+export function killWhenPaused(
+    command: string,
+    args: readonly string[],
+    pauseAt: string,
+    options: { cwd?: string; env?: NodeJS.ProcessEnv } = {},
+): Promise<string> {
     return new Promise((resolve, reject) => {
         const env = { ...(options.env ?? process.env), MAA_GEN_PAUSE_AT: pauseAt };
         const child = spawn(command, args, { cwd: options.cwd, env, stdio: ['ignore', 'ignore', 'pipe'] });

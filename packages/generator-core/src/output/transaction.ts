@@ -50,7 +50,8 @@ export class OutputTransaction {
         const tx = new OutputTransaction(path.resolve(outRoot));
         try {
             tx.createdRoot = !existsSync(tx.outRoot);
-            if (!tx.createdRoot && !statSync(tx.outRoot).isDirectory()) throw new OutputWriteError(tx.outRoot, 'is a file where the output folder is needed');
+            if (!tx.createdRoot && !statSync(tx.outRoot).isDirectory())
+                throw new OutputWriteError(tx.outRoot, 'is a file where the output folder is needed');
             mkdirSync(tx.stateDir, { recursive: true });
             tx.releaseLock = acquireLock(tx.stateDir);
             cleanOutputRoot(tx.outRoot, 'recover', tx.checkpoints);
@@ -73,9 +74,17 @@ export class OutputTransaction {
         const before = rootState(this.outRoot, platform);
         if (before.kind === 'other') throw new OutputWriteError(outDir, 'is a file where the platform folder is needed');
         if (before.kind === 'foreign-link') {
-            throw new OutputWriteError(outDir, `is a symbolic link maa-gen did not create (to ${before.target}); remove it or choose another output folder`);
+            throw new OutputWriteError(
+                outDir,
+                `is a symbolic link maa-gen did not create (to ${before.target}); remove it or choose another output folder`,
+            );
         }
-        const current = before.kind === 'version' && before.exists ? path.join(this.stateDir, before.version) : before.kind === 'folder' ? outDir : undefined;
+        const current =
+            before.kind === 'version' && before.exists
+                ? path.join(this.stateDir, before.version)
+                : before.kind === 'folder'
+                  ? outDir
+                  : undefined;
         // Nothing to change: no new version (an unchanged output keeps its files and times).
         if (current !== undefined && plan.write.length === 0 && plan.remove.length === 0) return;
         const id = newId();

@@ -1,4 +1,16 @@
-import { chmodSync, copyFileSync, linkSync, lstatSync, mkdirSync, readdirSync, readlinkSync, rmdirSync, statSync, symlinkSync, writeFileSync } from 'node:fs';
+import {
+    chmodSync,
+    copyFileSync,
+    linkSync,
+    lstatSync,
+    mkdirSync,
+    readdirSync,
+    readlinkSync,
+    rmdirSync,
+    statSync,
+    symlinkSync,
+    writeFileSync,
+} from 'node:fs';
 import path from 'node:path';
 import { OutputWriteError } from './layout.js';
 import type { Checkpoints } from './pause.js';
@@ -12,8 +24,13 @@ import type { WritePlan } from './writer.js';
  * stays as it is; a file system without hard links gets copies. `shown(rel)` is the path a
  * user knows, for error messages.
  */
-export function buildVersion(plan: WritePlan, source: string | undefined, version: string, checkpoints: Checkpoints,
-    shown: (rel: string) => string): void {
+export function buildVersion(
+    plan: WritePlan,
+    source: string | undefined,
+    version: string,
+    checkpoints: Checkpoints,
+    shown: (rel: string) => string,
+): void {
     for (const f of plan.write) {
         const target = path.join(version, ...f.path.split('/'));
         mkdirSync(path.dirname(target), { recursive: true });
@@ -33,7 +50,14 @@ export function buildVersion(plan: WritePlan, source: string | undefined, versio
     checkpoints.ended('staging');
 }
 
-function carryOver(from: string, to: string, rel: string, skip: ReadonlySet<string>, checkpoints: Checkpoints, shown: (rel: string) => string): void {
+function carryOver(
+    from: string,
+    to: string,
+    rel: string,
+    skip: ReadonlySet<string>,
+    checkpoints: Checkpoints,
+    shown: (rel: string) => string,
+): void {
     for (const name of readdirSync(path.join(from, rel)).sort()) {
         const r = rel ? `${rel}/${name}` : name;
         if (skip.has(r)) continue;
@@ -42,7 +66,8 @@ function carryOver(from: string, to: string, rel: string, skip: ReadonlySet<stri
         const st = lstatSync(src);
         const existing = lstatOrUndefined(dst);
         if (st.isDirectory()) {
-            if (existing && !existing.isDirectory()) throw new OutputWriteError(shown(r), 'is a folder, but a generated file of that name goes there');
+            if (existing && !existing.isDirectory())
+                throw new OutputWriteError(shown(r), 'is a folder, but a generated file of that name goes there');
             if (!existing) mkdirSync(dst);
             carryOver(from, to, r, skip, checkpoints, shown);
             chmodSync(dst, st.mode & 0o7777);
@@ -54,7 +79,11 @@ function carryOver(from: string, to: string, rel: string, skip: ReadonlySet<stri
         }
         if (st.isSymbolicLink()) symlinkSync(readlinkSync(src), dst);
         else if (st.isFile()) linkOrCopy(src, dst);
-        else throw new OutputWriteError(shown(r), 'is neither a file, a folder nor a symbolic link, so it cannot be carried over to the new generation');
+        else
+            throw new OutputWriteError(
+                shown(r),
+                'is neither a file, a folder nor a symbolic link, so it cannot be carried over to the new generation',
+            );
         checkpoints.reached('staging');
     }
 }

@@ -74,7 +74,13 @@ export function discoverGenerators(fs: ManifestFileSystem, from: URI, options: D
             const field = `maa.generators[${i}]`;
             try {
                 let json = item;
-                let source: ManifestSource = { packageName: name, packageVersion: version, packageDir: dir.fsPath, file: file.fsPath, field };
+                let source: ManifestSource = {
+                    packageName: name,
+                    packageVersion: version,
+                    packageDir: dir.fsPath,
+                    file: file.fsPath,
+                    field,
+                };
                 if (typeof item === 'string') {
                     const manifestFile = UriUtils.resolvePath(dir, item);
                     if (!manifestFile.path.startsWith(`${dir.path}/`)) {
@@ -129,7 +135,10 @@ export function discoverGenerators(fs: ManifestFileSystem, from: URI, options: D
 function list(fs: ManifestFileSystem, dir: URI): URI[] {
     try {
         if (!fs.existsSync(dir)) return [];
-        return fs.readDirectorySync(dir).map((e) => e.uri).sort((a, b) => compare(a.path, b.path));
+        return fs
+            .readDirectorySync(dir)
+            .map((e) => e.uri)
+            .sort((a, b) => compare(a.path, b.path));
     } catch {
         return [];
     }

@@ -53,9 +53,10 @@ export class GeneratorRegistryService {
         const key = dir.toString();
         let registry = this.discovered.get(key);
         if (!registry) {
-            registry = dir.scheme === 'file'
-                ? discoverGenerators(this.shared.workspace.FileSystemProvider, dir, this.options)
-                : GeneratorRegistry.EMPTY;
+            registry =
+                dir.scheme === 'file'
+                    ? discoverGenerators(this.shared.workspace.FileSystemProvider, dir, this.options)
+                    : GeneratorRegistry.EMPTY;
             this.discovered.set(key, registry);
         }
         return registry;

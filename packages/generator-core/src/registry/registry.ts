@@ -22,8 +22,14 @@ export class GeneratorRegistry {
         for (const g of generators) {
             const other = this.byName.get(g.manifest.name);
             if (other) {
-                found.push(new ManifestError(g.source.packageName, g.source.file, `${g.source.field}.name`,
-                    `generator '${g.manifest.name}' is already declared by package ${other.source.packageName}; this declaration is ignored`));
+                found.push(
+                    new ManifestError(
+                        g.source.packageName,
+                        g.source.file,
+                        `${g.source.field}.name`,
+                        `generator '${g.manifest.name}' is already declared by package ${other.source.packageName}; this declaration is ignored`,
+                    ),
+                );
                 continue;
             }
             this.byName.set(g.manifest.name, g);

@@ -16,7 +16,7 @@ export const STANDARD_RULES: readonly WellFormednessRule[] = [
                     yield { node: t.node, message: `type '${t.qualifiedName}' is generic (<${t.typeParameters.join(', ')}>)` };
                 }
             }
-        }
+        },
     },
     {
         name: 'datatypes.NoInheritance',
@@ -27,7 +27,7 @@ export const STANDARD_RULES: readonly WellFormednessRule[] = [
                     yield { node: t.node, message: `type '${t.qualifiedName}' extends or implements ${t.superTypes.join(', ')}` };
                 }
             }
-        }
+        },
     },
     {
         name: 'components.NoGenerics',
@@ -38,7 +38,7 @@ export const STANDARD_RULES: readonly WellFormednessRule[] = [
                     yield { node: c.node, message: `component type '${c.qualifiedName}' is generic (<${c.typeParameters.join(', ')}>)` };
                 }
             }
-        }
+        },
     },
     {
         name: 'components.NoInheritance',
@@ -49,7 +49,7 @@ export const STANDARD_RULES: readonly WellFormednessRule[] = [
                     yield { node: c.node, message: `component type '${c.qualifiedName}' extends ${c.parents.join(', ')}` };
                 }
             }
-        }
+        },
     },
     {
         name: 'components.NoModes',
@@ -57,10 +57,13 @@ export const STANDARD_RULES: readonly WellFormednessRule[] = [
         *check({ components }) {
             for (const c of components) {
                 if (c.modes) {
-                    yield { node: c.modes.node, message: `component type '${c.qualifiedName}' has a mode automaton (modes ${c.modes.modes.map((m) => m.name).join(', ')})` };
+                    yield {
+                        node: c.modes.node,
+                        message: `component type '${c.qualifiedName}' has a mode automaton (modes ${c.modes.modes.map((m) => m.name).join(', ')})`,
+                    };
                 }
             }
-        }
+        },
     },
     {
         name: 'components.BehaviorOrHandwritten',
@@ -68,10 +71,13 @@ export const STANDARD_RULES: readonly WellFormednessRule[] = [
         *check({ components }) {
             for (const c of components) {
                 if (c.atomic && !c.behavior && !c.init && !c.handwritten) {
-                    yield { node: c.node, message: `atomic component type '${c.qualifiedName}' has no behavior and is not <<handwritten>>` };
+                    yield {
+                        node: c.node,
+                        message: `atomic component type '${c.qualifiedName}' has no behavior and is not <<handwritten>>`,
+                    };
                 }
             }
-        }
+        },
     },
     {
         name: 'automata.Flat',
@@ -80,13 +86,19 @@ export const STANDARD_RULES: readonly WellFormednessRule[] = [
             for (const b of behaviors) {
                 if (b.language !== 'automaton') continue;
                 for (const s of AstUtils.streamAllContents(b.node)) {
-                    if (s.$type === 'State' && ((s as AstNode & { elements?: AstNode[] }).elements ?? []).some((e) => e.$type === 'State')) {
-                        yield { node: s, message: `state '${(s as AstNode & { name?: string }).name}' of '${b.component}' is hierarchical` };
+                    if (
+                        s.$type === 'State' &&
+                        ((s as AstNode & { elements?: AstNode[] }).elements ?? []).some((e) => e.$type === 'State')
+                    ) {
+                        yield {
+                            node: s,
+                            message: `state '${(s as AstNode & { name?: string }).name}' of '${b.component}' is hierarchical`,
+                        };
                     }
                 }
             }
-        }
-    }
+        },
+    },
 ];
 
 const BY_NAME = new Map(STANDARD_RULES.map((r) => [r.name, r]));

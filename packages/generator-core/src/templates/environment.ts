@@ -3,7 +3,15 @@ import type { AstNode } from 'langium';
 import type { TemplateRenderer } from '../generators/types.js';
 import { TRACER_CONTEXT_KEY, type Tracer } from '../output/file-builder.js';
 import {
-    camelCase, constantCase, indentLines, kebabCase, pascalCase, pythonIdentifier, pythonString, snakeCase, xmlEscape
+    camelCase,
+    constantCase,
+    indentLines,
+    kebabCase,
+    pascalCase,
+    pythonIdentifier,
+    pythonString,
+    snakeCase,
+    xmlEscape,
 } from './naming.js';
 
 /** The filters every generator's templates get. */
@@ -17,7 +25,7 @@ export const TEMPLATE_FILTERS: Readonly<Record<string, (...args: never[]) => unk
     py_ident: (s: unknown) => pythonIdentifier(String(s)),
     py_str: (s: unknown) => pythonString(s),
     xml_escape: (s: unknown) => xmlEscape(s),
-    json: (v: unknown, indent?: number) => JSON.stringify(v, null, indent)
+    json: (v: unknown, indent?: number) => JSON.stringify(v, null, indent),
 };
 
 interface NunjucksParser {
@@ -52,7 +60,7 @@ class TraceExtension {
         const text = body();
         const tracer = context.ctx[TRACER_CONTEXT_KEY] as Tracer | undefined;
         const isNode = typeof element === 'object' && element !== null && typeof (element as AstNode).$type === 'string';
-        const node = isNode ? element as AstNode : (element as { node?: AstNode } | undefined)?.node;
+        const node = isNode ? (element as AstNode) : (element as { node?: AstNode } | undefined)?.node;
         return new nunjucks.runtime.SafeString(tracer && node ? tracer.wrap(node, text) : text);
     }
 }
@@ -79,6 +87,6 @@ export function createTemplateRenderer(templatesDir?: string): TemplateRenderer 
             if (!templatesDir) throw new Error(`cannot render '${template}': the generator's manifest names no templates folder`);
             return env.render(template, context);
         },
-        renderString: (source, context) => env.renderString(source, context)
+        renderString: (source, context) => env.renderString(source, context),
     };
 }

@@ -14,12 +14,16 @@ export function words(name: string): string[] {
 
 /** `ToastServiceRobot` -> `toast_service_robot` */
 export function snakeCase(name: string): string {
-    return words(name).map((w) => w.toLowerCase()).join('_');
+    return words(name)
+        .map((w) => w.toLowerCase())
+        .join('_');
 }
 
 /** `toast_service robot` -> `ToastServiceRobot` */
 export function pascalCase(name: string): string {
-    return words(name).map((w) => w.charAt(0).toUpperCase() + w.slice(1)).join('');
+    return words(name)
+        .map((w) => w.charAt(0).toUpperCase() + w.slice(1))
+        .join('');
 }
 
 /** `ToastServiceRobot` -> `toastServiceRobot` */
@@ -30,23 +34,67 @@ export function camelCase(name: string): string {
 
 /** `toastServiceRobot` -> `TOAST_SERVICE_ROBOT` */
 export function constantCase(name: string): string {
-    return words(name).map((w) => w.toUpperCase()).join('_');
+    return words(name)
+        .map((w) => w.toUpperCase())
+        .join('_');
 }
 
 /** `ToastServiceRobot` -> `toast-service-robot` */
 export function kebabCase(name: string): string {
-    return words(name).map((w) => w.toLowerCase()).join('-');
+    return words(name)
+        .map((w) => w.toLowerCase())
+        .join('-');
 }
 
 /** Indents every non-empty line by `width` spaces (or the given string), the first line included. */
 export function indentLines(text: string, width: number | string = 4): string {
     const pad = typeof width === 'number' ? ' '.repeat(width) : width;
-    return text.split('\n').map((l) => (l.length > 0 ? pad + l : l)).join('\n');
+    return text
+        .split('\n')
+        .map((l) => (l.length > 0 ? pad + l : l))
+        .join('\n');
 }
 
-const PYTHON_KEYWORDS = new Set(['False', 'None', 'True', 'and', 'as', 'assert', 'async', 'await', 'break', 'class',
-    'continue', 'def', 'del', 'elif', 'else', 'except', 'finally', 'for', 'from', 'global', 'if', 'import', 'in', 'is',
-    'lambda', 'nonlocal', 'not', 'or', 'pass', 'raise', 'return', 'try', 'while', 'with', 'yield', 'match', 'case', 'type']);
+const PYTHON_KEYWORDS = new Set([
+    'False',
+    'None',
+    'True',
+    'and',
+    'as',
+    'assert',
+    'async',
+    'await',
+    'break',
+    'class',
+    'continue',
+    'def',
+    'del',
+    'elif',
+    'else',
+    'except',
+    'finally',
+    'for',
+    'from',
+    'global',
+    'if',
+    'import',
+    'in',
+    'is',
+    'lambda',
+    'nonlocal',
+    'not',
+    'or',
+    'pass',
+    'raise',
+    'return',
+    'try',
+    'while',
+    'with',
+    'yield',
+    'match',
+    'case',
+    'type',
+]);
 
 /** A Python identifier for a name: keywords get a trailing underscore. */
 export function pythonIdentifier(name: string): string {
@@ -56,7 +104,10 @@ export function pythonIdentifier(name: string): string {
 
 /** A Python string literal (double quotes, escapes as Python reads them). */
 export function pythonString(value: unknown): string {
-    return JSON.stringify(String(value)).replace(/[\u007f-\u009f\u2028\u2029]/g, (c) => `\\u${c.charCodeAt(0).toString(16).padStart(4, '0')}`);
+    return JSON.stringify(String(value)).replace(
+        /[\u007f-\u009f\u2028\u2029]/g,
+        (c) => `\\u${c.charCodeAt(0).toString(16).padStart(4, '0')}`,
+    );
 }
 
 /** Escapes text for XML content and attribute values (package.xml, launch files). */

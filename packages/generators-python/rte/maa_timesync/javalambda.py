@@ -31,14 +31,36 @@ from typing import Any
 
 #: Java type names (boxes included) to the primitive type the value has.
 PRIMITIVE = {
-    "int": "int", "Integer": "int", "long": "long", "Long": "long", "short": "short", "Short": "short",
-    "byte": "byte", "Byte": "byte", "char": "char", "Character": "char", "float": "float", "Float": "float",
-    "double": "double", "Double": "double", "boolean": "boolean", "Boolean": "boolean", "String": "String",
+    "int": "int",
+    "Integer": "int",
+    "long": "long",
+    "Long": "long",
+    "short": "short",
+    "Short": "short",
+    "byte": "byte",
+    "Byte": "byte",
+    "char": "char",
+    "Character": "char",
+    "float": "float",
+    "Float": "float",
+    "double": "double",
+    "Double": "double",
+    "boolean": "boolean",
+    "Boolean": "boolean",
+    "String": "String",
 }
 _INTEGRAL = {"byte": 8, "short": 16, "char": 16, "int": 32, "long": 64}
 _NUMERIC = ("byte", "short", "char", "int", "long", "float", "double")
-_CONVERSIONS = {"intValue": "int", "longValue": "long", "shortValue": "short", "byteValue": "byte",
-                "floatValue": "float", "doubleValue": "double", "charValue": "char", "booleanValue": "boolean"}
+_CONVERSIONS = {
+    "intValue": "int",
+    "longValue": "long",
+    "shortValue": "short",
+    "byteValue": "byte",
+    "floatValue": "float",
+    "doubleValue": "double",
+    "charValue": "char",
+    "booleanValue": "boolean",
+}
 
 
 class LambdaError(ValueError):
@@ -396,8 +418,17 @@ def _boolean(v: JValue) -> bool:
     return bool(v.value)
 
 
-_FACTORIES = {"Integer": "int", "Long": "long", "Short": "short", "Byte": "byte", "Float": "float",
-              "Double": "double", "Character": "char", "Boolean": "boolean", "String": "String"}
+_FACTORIES = {
+    "Integer": "int",
+    "Long": "long",
+    "Short": "short",
+    "Byte": "byte",
+    "Float": "float",
+    "Double": "double",
+    "Character": "char",
+    "Boolean": "boolean",
+    "String": "String",
+}
 
 
 def _call(target: Node, name: str, args: list[JValue], env: Mapping[str, JValue]) -> JValue:

@@ -36,8 +36,18 @@ from typing import Any
 from maa_behavior import f32
 from maa_timesync.runtime import TICK, ComponentType, System
 
-TYPED = {"long": "long", "Long": "long", "short": "short", "Short": "short", "byte": "byte", "Byte": "byte",
-         "float": "float", "Float": "float", "double": "double", "Double": "double"}
+TYPED = {
+    "long": "long",
+    "Long": "long",
+    "short": "short",
+    "Short": "short",
+    "byte": "byte",
+    "Byte": "byte",
+    "float": "float",
+    "Float": "float",
+    "double": "double",
+    "Double": "double",
+}
 
 
 CHARS = ("char", "Character")
@@ -205,8 +215,10 @@ def run_streams(
     from maa_timesync.javalambda import item_transform
 
     port_types = bind_type_args(ctype, spec.get("type_args"))
-    transforms = {port: item_transform(str(text), port_types.get(port) if isinstance(port_types.get(port), str) else None)  # type: ignore[arg-type]
-                  for port, text in (spec.get("observed_value_transform") or {}).items()}
+    transforms = {
+        port: item_transform(str(text), port_types.get(port) if isinstance(port_types.get(port), str) else None)  # type: ignore[arg-type]
+        for port, text in (spec.get("observed_value_transform") or {}).items()
+    }
     params = {name: decode_value(raw, None, None, enums) for name, raw in (spec.get("params") or {}).items()}
     system = System(ctype, params)
     inputs: Mapping[str, Sequence[Mapping[str, Any]]] = spec.get("inputs") or {}

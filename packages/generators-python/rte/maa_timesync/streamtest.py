@@ -125,7 +125,7 @@ def _tokens(text: str) -> list[tuple[str, object, int]]:
         m = _TOKEN.match(text, pos)
         if not m or m.end() == pos:
             line = text.count("\n", 0, pos) + 1
-            raise StreamTestError(f"line {line}: unexpected {text[pos:pos + 10]!r}")
+            raise StreamTestError(f"line {line}: unexpected {text[pos : pos + 10]!r}")
         line = text.count("\n", 0, m.start(m.lastindex or 0)) + 1  # the token's line, not its leading blanks
         pos = m.end()
         comment, string, punct, number, char, name = m.groups()
@@ -336,7 +336,9 @@ def _show_items(items: Sequence[Mapping[str, Any]]) -> str:
 
 
 def _same_items(want: Sequence[Mapping[str, Any]], got: Sequence[Mapping[str, Any]]) -> bool:
-    return len(want) == len(got) and all(json.dumps(w, sort_keys=True) == json.dumps(g, sort_keys=True) for w, g in zip(want, got, strict=True))
+    return len(want) == len(got) and all(
+        json.dumps(w, sort_keys=True) == json.dumps(g, sort_keys=True) for w, g in zip(want, got, strict=True)
+    )
 
 
 def run_test(
@@ -417,7 +419,9 @@ def run_test(
         if port in test.values_only:
             want = [x for x in want if x is not TICK]
             got = [x for x in got if x is not TICK]
-        same = len(want) == len(got) and all(w is g if w is TICK or g is TICK else (type(w) is type(g) and w == g) for w, g in zip(want, got, strict=False))
+        same = len(want) == len(got) and all(
+            w is g if w is TICK or g is TICK else (type(w) is type(g) and w == g) for w, g in zip(want, got, strict=False)
+        )
         if not same:
             problems.append(f"{port}: expected {_show(want)}; got {_show(got)}")
     for port in test.empty:

@@ -1,4 +1,12 @@
-import type { BehaviorGenerationContext, ComponentView, DataTypeResult, FieldView, ParameterView, PortView, TypeView } from '@maa/generator-core';
+import type {
+    BehaviorGenerationContext,
+    ComponentView,
+    DataTypeResult,
+    FieldView,
+    ParameterView,
+    PortView,
+    TypeView,
+} from '@maa/generator-core';
 import { dataTypeQualifiedName } from '@maa/generator-core';
 import { GenerationError } from '@maa/generator-core/node';
 import { PythonTranslator, isInPort, isOutPort, pyName, type NameContext, type Node } from '../python/expressions.js';
@@ -6,8 +14,25 @@ import type { AttributeView, PrologueView } from './views.js';
 
 /** Names of the base class a generated attribute must not shadow. */
 const RESERVED = new Set([
-    'init', 'step', 'start', 'on_message', 'on_tick', 'current_state', 'set_delay_hook', 'TIMING', 'IN_PORTS', 'OUT_PORTS',
-    'DELAYED', 'PARAMETERS', 'self', 'emit', 'params', 'inputs', 'port', 'value', 'event'
+    'init',
+    'step',
+    'start',
+    'on_message',
+    'on_tick',
+    'current_state',
+    'set_delay_hook',
+    'TIMING',
+    'IN_PORTS',
+    'OUT_PORTS',
+    'DELAYED',
+    'PARAMETERS',
+    'self',
+    'emit',
+    'params',
+    'inputs',
+    'port',
+    'value',
+    'event',
 ]);
 
 /** The attribute of a port, parameter or field in a behavior class. */
@@ -68,9 +93,23 @@ function cmp(a: string, b: string): number {
 }
 
 const PRIMITIVE_PY: Record<string, string> = {
-    int: 'int', Integer: 'int', long: 'int', Long: 'int', short: 'int', Short: 'int', byte: 'int', Byte: 'int',
-    char: 'int', Character: 'int', float: 'float', Float: 'float', double: 'float', Double: 'float',
-    boolean: 'bool', Boolean: 'bool', String: 'str'
+    int: 'int',
+    Integer: 'int',
+    long: 'int',
+    Long: 'int',
+    short: 'int',
+    Short: 'int',
+    byte: 'int',
+    Byte: 'int',
+    char: 'int',
+    Character: 'int',
+    float: 'float',
+    Float: 'float',
+    double: 'float',
+    Double: 'float',
+    boolean: 'bool',
+    Boolean: 'bool',
+    String: 'str',
 };
 
 /** Resolves class-diagram types through the data type generator's result. */
@@ -90,7 +129,9 @@ function isNamed(n: Node): n is Node & { name: string } {
 
 /** A data type by its simple name (for qualified references such as `pkg.Types.Color.RED`). */
 export function typeBySimpleName(datatypes: DataTypeResult | undefined, imports: Imports, name: string): string | undefined {
-    const key = Object.keys(datatypes?.types ?? {}).sort().find((q) => q.split('.').pop() === name);
+    const key = Object.keys(datatypes?.types ?? {})
+        .sort()
+        .find((q) => q.split('.').pop() === name);
     const mapping = key ? datatypes?.types?.[key] : undefined;
     if (!mapping?.module || !mapping.name) return undefined;
     imports.add(mapping.module, mapping.name);
@@ -132,7 +173,7 @@ export function specFrom(ctx: BehaviorGenerationContext, component: ComponentVie
         ports: ctx.ports ?? component.ports,
         parameters: ctx.parameters ?? component.parameters,
         fields: ctx.fields ?? component.fields,
-        datatypes: ctx.datatypes
+        datatypes: ctx.datatypes,
     };
 }
 
@@ -156,14 +197,17 @@ export function behaviorTranslator(spec: ClassSpec, imports: Imports): PythonTra
                 case 'CDEnum':
                     return typeRef(spec.datatypes, imports, target);
                 default:
-                    throw new GenerationError(`'${target.name ?? target.$type}' (${target.$type}) cannot be used here by the Python generators`, ref);
+                    throw new GenerationError(
+                        `'${target.name ?? target.$type}' (${target.$type}) cannot be used here by the Python generators`,
+                        ref,
+                    );
             }
         },
         send(target, value) {
             return isOutPort(target) ? `self._emit(${JSON.stringify(target.name)}, ${value})` : undefined;
         },
         type: (decl) => typeRef(spec.datatypes, imports, decl),
-        typeBySimpleName: (name) => typeBySimpleName(spec.datatypes, imports, name)
+        typeBySimpleName: (name) => typeBySimpleName(spec.datatypes, imports, name),
     };
     return new PythonTranslator(names);
 }
@@ -181,10 +225,15 @@ export function prologueView(spec: ClassSpec, imports: Imports, doc: string, ext
             name: attr(p.name),
             type: pyType(p, spec.datatypes, imports),
             value: `self._params.get(${JSON.stringify(p.name)}, ${p.default ? tr.expr(p.default) : 'None'})`,
-            ignoreType: true
+            ignoreType: true,
         })),
-        ...spec.fields.map((f) => ({ name: attr(f.name), type: pyType(f, spec.datatypes, imports), value: tr.expr(f.init), ignoreType: false })),
-        ...ins.map((p) => ({ name: attr(p.name), type: `${pyType(p, spec.datatypes, imports)} | None`, value: 'None', ignoreType: false }))
+        ...spec.fields.map((f) => ({
+            name: attr(f.name),
+            type: pyType(f, spec.datatypes, imports),
+            value: tr.expr(f.init),
+            ignoreType: false,
+        })),
+        ...ins.map((p) => ({ name: attr(p.name), type: `${pyType(p, spec.datatypes, imports)} | None`, value: 'None', ignoreType: false })),
     ];
     return {
         className: spec.className,
@@ -194,25 +243,36 @@ export function prologueView(spec: ClassSpec, imports: Imports, doc: string, ext
         outPorts: outs.map((p) => p.name),
         delayed: outs.filter((p) => p.delayed).map((p) => p.name),
         attributes,
-        extraInit
+        extraInit,
     };
 }
 
 /** Statements that copy a sync slice's inputs to the in-port attributes. */
 export function readInputs(spec: ClassSpec): string[] {
-    return spec.ports.filter((p) => p.direction === 'in').map((p) => {
-        const def = primitiveDefault(p);
-        return `self.${attr(p.name)} = ${def === 'None' ? `inputs.get(${JSON.stringify(p.name)})` : `self._in(inputs, ${JSON.stringify(p.name)}, ${def})`}  # type: ignore[assignment]`;
-    });
+    return spec.ports
+        .filter((p) => p.direction === 'in')
+        .map((p) => {
+            const def = primitiveDefault(p);
+            return `self.${attr(p.name)} = ${def === 'None' ? `inputs.get(${JSON.stringify(p.name)})` : `self._in(inputs, ${JSON.stringify(p.name)}, ${def})`}  # type: ignore[assignment]`;
+        });
 }
 
 /** Java's default of a primitive type (what a sync slice reads from a port without message), else `None`. */
 export function primitiveDefault(t: TypeView): string {
     switch (t.typeName) {
-        case 'int': case 'long': case 'short': case 'byte': case 'char': return '0';
-        case 'float': case 'double': return '0.0';
-        case 'boolean': return 'False';
-        default: return 'None';
+        case 'int':
+        case 'long':
+        case 'short':
+        case 'byte':
+        case 'char':
+            return '0';
+        case 'float':
+        case 'double':
+            return '0.0';
+        case 'boolean':
+            return 'False';
+        default:
+            return 'None';
     }
 }
 

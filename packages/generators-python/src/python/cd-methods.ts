@@ -18,7 +18,10 @@ export function methodViews(t: DataTypeView, annotation: (typeName: string) => s
     return methods.map((m) => {
         const name = m.name;
         if (seen.has(name)) {
-            throw new GenerationError(`${t.qualifiedName} declares the method '${name}' twice; Python has no overloading, so the Python generators need distinct method names`, m);
+            throw new GenerationError(
+                `${t.qualifiedName} declares the method '${name}' twice; Python has no overloading, so the Python generators need distinct method names`,
+                m,
+            );
         }
         seen.set(name, m);
         const params = m.params.map((p) => ({ name: pyName(p.name), type: typeText(p.type) }));
@@ -31,7 +34,7 @@ export function methodViews(t: DataTypeView, annotation: (typeName: string) => s
             args: [...(isStatic ? [] : ['self']), ...params.map((p) => `${p.name}: ${annotation(p.type)}`)],
             returns: returnType === 'void' ? 'None' : annotation(returnType),
             signature,
-            message: `${signature} is declared in the class diagram; implement it between the PROTECTED REGION markers of this file`
+            message: `${signature} is declared in the class diagram; implement it between the PROTECTED REGION markers of this file`,
         };
     });
 }

@@ -49,7 +49,7 @@ export class ControlFlow {
             `${first} = True`,
             `while ${first} or ${this.host.expr(s.condition)}:`,
             `    ${first} = False`,
-            ...indent(this.host.stmt(s.body))
+            ...indent(this.host.stmt(s.body)),
         ];
     }
 
@@ -147,7 +147,11 @@ export class ControlFlow {
     }
 
     private blockArm(body: Node, hoist: ((lines: string[]) => void) | undefined): string {
-        if (!hoist) throw new GenerationError('a switch expression with a block arm is supported by the Python generators inside statements only (compute blocks, actions), not in guards or initializers', body);
+        if (!hoist)
+            throw new GenerationError(
+                'a switch expression with a block arm is supported by the Python generators inside statements only (compute blocks, actions), not in guards or initializers',
+                body,
+            );
         const fn = this.fresh('arm');
         const lines = this.host.stmt(body);
         const nonlocals = assignedOuterLocals(body).map((n) => this.host.pyName(n));
@@ -192,8 +196,9 @@ function assignedOuterLocals(body: Node): string[] {
     const visit = (n: Node): void => {
         let target: Node | undefined;
         if (n.$type === 'AssignmentExpression') target = n.left as Node;
-        else if ((n.$type === 'PrefixExpression' || n.$type === 'PostfixExpression') && (n.op === '++' || n.op === '--')) target = n.operand as Node;
-        const decl = target?.$type === 'NameExpression' ? target.ref?.ref as Node | undefined : undefined;
+        else if ((n.$type === 'PrefixExpression' || n.$type === 'PostfixExpression') && (n.op === '++' || n.op === '--'))
+            target = n.operand as Node;
+        const decl = target?.$type === 'NameExpression' ? (target.ref?.ref as Node | undefined) : undefined;
         if (decl?.$type === 'LocalVariable' && !inside(decl)) names.add(String(decl.name));
         for (const [key, value] of Object.entries(n)) {
             if (key.startsWith('$')) continue;

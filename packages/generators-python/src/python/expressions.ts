@@ -5,7 +5,7 @@ import { JAVA_LIBRARY } from './java-library.js';
 import { ControlFlow } from './control-flow.js';
 
 /** A loosely typed AST node: the translators read `$type` and fields, so they work on any family build. */
-// eslint-disable-next-line @typescript-eslint/no-explicit-any
+// biome-ignore lint/suspicious/noExplicitAny: the translators read fields of any family build's nodes by name
 export type Node = AstNode & Record<string, any>;
 
 /** How names of the model appear in the generated Python code. */
@@ -31,9 +31,44 @@ function qualifiedParts(e: Node): string[] | undefined {
 }
 
 const PY_KEYWORDS = new Set([
-    'False', 'None', 'True', 'and', 'as', 'assert', 'async', 'await', 'break', 'class', 'continue', 'def', 'del', 'elif',
-    'else', 'except', 'finally', 'for', 'from', 'global', 'if', 'import', 'in', 'is', 'lambda', 'nonlocal', 'not', 'or',
-    'pass', 'raise', 'return', 'try', 'while', 'with', 'yield', 'match', 'case', 'type'
+    'False',
+    'None',
+    'True',
+    'and',
+    'as',
+    'assert',
+    'async',
+    'await',
+    'break',
+    'class',
+    'continue',
+    'def',
+    'del',
+    'elif',
+    'else',
+    'except',
+    'finally',
+    'for',
+    'from',
+    'global',
+    'if',
+    'import',
+    'in',
+    'is',
+    'lambda',
+    'nonlocal',
+    'not',
+    'or',
+    'pass',
+    'raise',
+    'return',
+    'try',
+    'while',
+    'with',
+    'yield',
+    'match',
+    'case',
+    'type',
 ]);
 
 /** A Python-safe identifier for a model name. */
@@ -50,8 +85,22 @@ export function isInPort(n: Node | undefined): boolean {
 }
 
 const BINARY: Record<string, string> = {
-    '||': 'or', '&&': 'and', '==': '==', '!=': '!=', '<': '<', '<=': '<=', '>': '>', '>=': '>=',
-    '+': '+', '-': '-', '*': '*', '|': '|', '^': '^', '&': '&', '<<': '<<', '>>': '>>'
+    '||': 'or',
+    '&&': 'and',
+    '==': '==',
+    '!=': '!=',
+    '<': '<',
+    '<=': '<=',
+    '>': '>',
+    '>=': '>=',
+    '+': '+',
+    '-': '-',
+    '*': '*',
+    '|': '|',
+    '^': '^',
+    '&': '&',
+    '<<': '<<',
+    '>>': '>>',
 };
 
 function stripSuffix(text: string): string {
@@ -69,17 +118,21 @@ export class PythonTranslator {
         expr: (e) => this.expr(e),
         stmt: (s) => this.stmt(s),
         expressionStatement: (e) => this.exprStmt(e),
-        pyName
+        pyName,
     });
 
     constructor(private readonly names: NameContext) {}
 
     expr(e: Node): string {
         switch (e.$type) {
-            case 'BooleanLiteral': return e.value === 'true' ? 'True' : 'False';
-            case 'NullLiteral': return 'None';
-            case 'IntLiteral': return String(typeof e.value === 'number' ? e.value : Number(e.value));
-            case 'LongLiteral': return String(Number(stripSuffix(String(e.value))));
+            case 'BooleanLiteral':
+                return e.value === 'true' ? 'True' : 'False';
+            case 'NullLiteral':
+                return 'None';
+            case 'IntLiteral':
+                return String(typeof e.value === 'number' ? e.value : Number(e.value));
+            case 'LongLiteral':
+                return String(Number(stripSuffix(String(e.value))));
             case 'FloatLiteral': {
                 const raw = String(e.value);
                 const text = /[eE.]/.test(raw) ? stripSuffix(raw) : `${stripSuffix(raw)}.0`;
@@ -88,7 +141,7 @@ export class PythonTranslator {
             case 'CharLiteral': {
                 const raw = String(e.value);
                 const inner = raw.startsWith("'") ? raw.slice(1, -1) : raw;
-                const ch = inner.startsWith('\\') ? JSON.parse(`"${inner}"`) as string : inner;
+                const ch = inner.startsWith('\\') ? (JSON.parse(`"${inner}"`) as string) : inner;
                 return String(ch.codePointAt(0) ?? 0);
             }
             case 'StringLiteral': {
@@ -110,12 +163,14 @@ export class PythonTranslator {
                     if (type) return `${type}.${pyName(parts[parts.length - 1])}`;
                     throw new GenerationError(`unresolved name '${parts.join('.')}'`, e);
                 }
-                const recvTarget = recv.$type === 'NameExpression' ? recv.ref?.ref as Node | undefined : undefined;
+                const recvTarget = recv.$type === 'NameExpression' ? (recv.ref?.ref as Node | undefined) : undefined;
                 if (isTypeDecl(recvTarget)) return `${this.names.type(recvTarget)}.${pyName(e.member)}`;
                 return `${this.expr(recv)}.${pyName(e.member)}`;
             }
-            case 'CallExpression': return this.call(e);
-            case 'ArrayAccessExpression': return `${this.expr(e.receiver)}[${this.expr(e.index)}]`;
+            case 'CallExpression':
+                return this.call(e);
+            case 'ArrayAccessExpression':
+                return `${this.expr(e.receiver)}[${this.expr(e.index)}]`;
             case 'ConditionalExpression':
                 return `(${this.expr(e.then)} if ${this.expr(e.condition)} else ${this.expr(e.else)})`;
             case 'SwitchExpression': {
@@ -136,20 +191,29 @@ export class PythonTranslator {
                 if (!op) throw new GenerationError(`operator '${e.op}' is not supported by the Python generators`, e);
                 return `(${l} ${op} ${r})`;
             }
-            case 'CastExpression': return `jcast(${this.expr(e.operand)}, ${pyString(String(e.type?.name))})`;
+            case 'CastExpression':
+                return `jcast(${this.expr(e.operand)}, ${pyString(String(e.type?.name))})`;
             case 'PrefixExpression': {
                 const o = this.expr(e.operand);
                 switch (e.op) {
-                    case '!': return `(not ${o})`;
-                    case '-': return `(-${o})`;
-                    case '+': return o;
-                    case '~': return `(~${o})`;
-                    default: throw new GenerationError(`'${e.op}' inside an expression is not supported; use it as a statement`, e);
+                    case '!':
+                        return `(not ${o})`;
+                    case '-':
+                        return `(-${o})`;
+                    case '+':
+                        return o;
+                    case '~':
+                        return `(~${o})`;
+                    default:
+                        throw new GenerationError(`'${e.op}' inside an expression is not supported; use it as a statement`, e);
                 }
             }
             case 'AssignmentExpression':
             case 'PostfixExpression':
-                throw new GenerationError('an assignment inside an expression is not supported by the Python generators; use it as a statement', e);
+                throw new GenerationError(
+                    'an assignment inside an expression is not supported by the Python generators; use it as a statement',
+                    e,
+                );
             default:
                 if (e.$type === 'Expression' && e.expression) return this.expr(e.expression);
                 throw new GenerationError(`expression '${e.$type}' is not supported by the Python generators`, e);
@@ -157,7 +221,10 @@ export class PythonTranslator {
     }
 
     private isStringy(e: Node): boolean {
-        return e.$type === 'StringLiteral' || (e.$type === 'BinaryExpression' && e.op === '+' && (this.isStringy(e.left) || this.isStringy(e.right)));
+        return (
+            e.$type === 'StringLiteral' ||
+            (e.$type === 'BinaryExpression' && e.op === '+' && (this.isStringy(e.left) || this.isStringy(e.right)))
+        );
     }
 
     private call(e: Node): string {
@@ -203,7 +270,8 @@ export class PythonTranslator {
                 const out = (s.statements as Node[]).flatMap((x) => this.stmt(x));
                 return out;
             }
-            case 'EmptyStatement': return [];
+            case 'EmptyStatement':
+                return [];
             case 'LocalVariableDeclaration':
                 return (s.variables as Node[]).map((v) => `${pyName(v.name)} = ${v.init ? this.expr(v.init) : 'None'}`);
             case 'IfStatement': {
@@ -216,10 +284,14 @@ export class PythonTranslator {
             }
             case 'WhileStatement':
                 return [`while ${this.expr(s.condition)}:`, ...this.body(s.body)];
-            case 'DoWhileStatement': return this.control.doWhile(s);
-            case 'SwitchStatement': return this.control.switchStatement(s);
-            case 'BreakStatement': return this.control.breakStatement();
-            case 'ContinueStatement': return this.control.continueStatement(s);
+            case 'DoWhileStatement':
+                return this.control.doWhile(s);
+            case 'SwitchStatement':
+                return this.control.switchStatement(s);
+            case 'BreakStatement':
+                return this.control.breakStatement();
+            case 'ContinueStatement':
+                return this.control.continueStatement(s);
             case 'ForStatement': {
                 if (this.control.needsContinueForm(s)) return this.control.forWithContinue(s);
                 const out: string[] = s.init ? this.stmt(s.init) : [];
@@ -228,9 +300,11 @@ export class PythonTranslator {
                 out.push(`while ${cond}:`, ...this.body(s.body), ...updates.map((u) => `    ${u}`));
                 return out;
             }
-            case 'ExpressionStatement': return this.exprStmt(s.expression);
+            case 'ExpressionStatement':
+                return this.exprStmt(s.expression);
             // Only in a switch expression's block arm (checked), which is a local function (control-flow.ts).
-            case 'YieldStatement': return [`return ${this.expr(s.value)}`];
+            case 'YieldStatement':
+                return [`return ${this.expr(s.value)}`];
             default:
                 throw new GenerationError(`statement '${s.$type}' is not supported by the Python generators`, s);
         }
@@ -256,8 +330,17 @@ export class PythonTranslator {
                 const op = (e.op as string).slice(0, -1);
                 const cur = this.expr(left);
                 // `s += x` on a String is Java's concatenation (a char joins as the character)
-                if (op === '+' && declaredType(left) === 'String') value = `jconcat(${cur}, ${isChar(e.right as Node) ? `chr(${value})` : value})`;
-                else value = op === '/' ? `jdiv(${cur}, ${value})` : op === '%' ? `jmod(${cur}, ${value})` : op === '>>>' ? `jushr(${cur}, ${value})` : `(${cur} ${op} ${value})`;
+                if (op === '+' && declaredType(left) === 'String')
+                    value = `jconcat(${cur}, ${isChar(e.right as Node) ? `chr(${value})` : value})`;
+                else
+                    value =
+                        op === '/'
+                            ? `jdiv(${cur}, ${value})`
+                            : op === '%'
+                              ? `jmod(${cur}, ${value})`
+                              : op === '>>>'
+                                ? `jushr(${cur}, ${value})`
+                                : `(${cur} ${op} ${value})`;
             }
             return [this.assign(left, value)];
         }
@@ -311,17 +394,26 @@ function isBuiltin(n: Node): boolean {
 /** The declared type of a name or literal (what Python cannot tell apart: `long`/`int`, `float`/`double`, `char`). */
 function declaredType(e: Node): string | undefined {
     switch (e.$type) {
-        case 'IntLiteral': return 'int';
-        case 'LongLiteral': return 'long';
-        case 'FloatLiteral': return /[fF]$/.test(String(e.value)) ? 'float' : 'double';
-        case 'CharLiteral': return 'char';
-        case 'CastExpression': return String(e.type?.name);
+        case 'IntLiteral':
+            return 'int';
+        case 'LongLiteral':
+            return 'long';
+        case 'FloatLiteral':
+            return /[fF]$/.test(String(e.value)) ? 'float' : 'double';
+        case 'CharLiteral':
+            return 'char';
+        case 'CastExpression':
+            return String(e.type?.name);
         case 'NameExpression': {
             const t = e.ref?.ref as Node | undefined;
             if (!t) return undefined;
-            const mcType = adlAst.isPort(t) ? portHeader(t).type
-                : t.$type === 'Field' || t.$type === 'LocalVariable' ? (t.$container as Node).type
-                    : t.$type === 'Parameter' ? t.type : undefined;
+            const mcType = adlAst.isPort(t)
+                ? portHeader(t).type
+                : t.$type === 'Field' || t.$type === 'LocalVariable'
+                  ? (t.$container as Node).type
+                  : t.$type === 'Parameter'
+                    ? t.type
+                    : undefined;
             return mcType ? printType(typeOfMCType(mcType)) : undefined;
         }
         default:

@@ -3,7 +3,12 @@ import { createTemplateRenderer } from '@maa/generator-core/node';
 import type { AutomatonClassView, ComputeClassView, ModuleView } from '../behavior/views.js';
 import type { RobotArmClassView } from '../behavior/views.js';
 import type {
-    AppModuleView, ComponentClassesView, DataTypeView as DataTypeChunkView, DataTypesModuleView, HandwrittenUserView, ModeTransitionView
+    AppModuleView,
+    ComponentClassesView,
+    DataTypeView as DataTypeChunkView,
+    DataTypesModuleView,
+    HandwrittenUserView,
+    ModeTransitionView,
 } from '../timesync/views.js';
 
 /**

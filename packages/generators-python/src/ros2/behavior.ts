@@ -1,4 +1,11 @@
-import type { BehaviorGenerator, BehaviorGeneratorFactory, BehaviorResult, GeneratorInstantiation, BehaviorGeneratorManifest, OutputSink } from '@maa/generator-core';
+import type {
+    BehaviorGenerator,
+    BehaviorGeneratorFactory,
+    BehaviorResult,
+    GeneratorInstantiation,
+    BehaviorGeneratorManifest,
+    OutputSink,
+} from '@maa/generator-core';
 import createAutomata from '../behavior/automata.js';
 import createRobotArm from '../behavior/robotarm.js';
 import { MODEL_PACKAGE, rosPackageName } from './naming.js';
@@ -10,7 +17,6 @@ import { MODEL_PACKAGE, rosPackageName } from './naming.js';
  * imported as `<pkg>.model.<model package>.<module>`. ros2.Components wraps the classes in rclpy
  * nodes (and gives a RobotArm executor the simulator's arm, maa_ros2.RosArm).
  */
-
 
 export function wrapBehaviorGenerator(inner: BehaviorGenerator): BehaviorGenerator {
     return {
@@ -24,12 +30,12 @@ export function wrapBehaviorGenerator(inner: BehaviorGenerator): BehaviorGenerat
                 file(path, options) {
                     files.push(path);
                     return ctx.out.file(`${pkg}/${pkg}/${MODEL_PACKAGE}/${path}`, options);
-                }
+                },
             };
             const result: BehaviorResult = (await inner.generate(behavior, { ...ctx, out })) ?? {};
             const module = typeof result.module === 'string' ? `${pkg}.${MODEL_PACKAGE}.${result.module}` : undefined;
             return { ...result, ...(module ? { module } : {}), files };
-        }
+        },
     };
 }
 

@@ -2,14 +2,28 @@ import type { SymType } from '@maa/language-adl';
 import type { AstNode } from 'langium';
 import { GenerationError } from '@maa/generator-core/node';
 import type {
-    DataTypeGenerationContext, DataTypeGeneratorFactory, DataTypeGeneratorManifest, DataTypeView, GeneratorInstantiation, TypeMapping
+    DataTypeGenerationContext,
+    DataTypeGeneratorFactory,
+    DataTypeGeneratorManifest,
+    DataTypeView,
+    GeneratorInstantiation,
+    TypeMapping,
 } from '@maa/generator-core';
 import {
-    MODEL_PACKAGE, constantName, describe, fieldName, interfacePackageName, isBuiltinDecl, messageNameOf, primitiveOf, rosPackageName, typeKey,
-    type RosDataTypeResult, type RosMessage
+    MODEL_PACKAGE,
+    constantName,
+    describe,
+    fieldName,
+    interfacePackageName,
+    isBuiltinDecl,
+    messageNameOf,
+    primitiveOf,
+    rosPackageName,
+    typeKey,
+    type RosDataTypeResult,
+    type RosMessage,
 } from './naming.js';
 import createPythonTypes from '../timesync/datatypes.js';
-
 
 /**
  * ros2.DataTypes: the class-diagram types the architecture uses become `.msg` files of a sibling
@@ -42,23 +56,34 @@ const create: DataTypeGeneratorFactory = (instantiation) => ({
             ctx.out.file(`${pkg}/msg/${d.name}.msg`).write(`${d.lines.join('\n')}\n`, d.view.node);
         }
         ctx.out.file(`${pkg}/CMakeLists.txt`).render('interfaces/CMakeLists.txt.njk', { pkg, messages: sorted.map((d) => d.name) });
-        ctx.out.file(`${pkg}/package.xml`).render('interfaces/package.xml.njk', { pkg, app: ctx.platform.application, root: ctx.platform.rootComponent, ament: rosPackageName(ctx.platform) });
+        ctx.out.file(`${pkg}/package.xml`).render('interfaces/package.xml.njk', {
+            pkg,
+            app: ctx.platform.application,
+            root: ctx.platform.rootComponent,
+            ament: rosPackageName(ctx.platform),
+        });
         const messages: Record<string, RosMessage> = {};
         for (const d of sorted) messages[d.key] = { type: `${pkg}/msg/${d.name}`, module: `${pkg}.msg`, name: d.name, kind: d.kind };
         return { interfacePackage: pkg, messages, types: await pythonTypes(instantiation, ctx) };
-    }
+    },
 });
 
 /**
  * The behavior classes work with Python values (docs/runtime.md): the Python data types of
  * timesync.DataTypes, placed inside the ament_python package (`<pkg>.model.<diagram module>`).
  */
-async function pythonTypes(instantiation: GeneratorInstantiation<DataTypeGeneratorManifest>, ctx: DataTypeGenerationContext): Promise<Record<string, TypeMapping>> {
+async function pythonTypes(
+    instantiation: GeneratorInstantiation<DataTypeGeneratorManifest>,
+    ctx: DataTypeGenerationContext,
+): Promise<Record<string, TypeMapping>> {
     const ament = rosPackageName(ctx.platform);
-    const python = (await (await createPythonTypes(instantiation)).generate({
-        ...ctx,
-        out: { file: (path, options) => ctx.out.file(`${ament}/${ament}/${MODEL_PACKAGE}/${path}`, options) }
-    })) ?? {};
+    const python =
+        (await (
+            await createPythonTypes(instantiation)
+        ).generate({
+            ...ctx,
+            out: { file: (path, options) => ctx.out.file(`${ament}/${ament}/${MODEL_PACKAGE}/${path}`, options) },
+        })) ?? {};
     const types: Record<string, TypeMapping> = {};
     for (const [name, mapping] of Object.entries(python.types ?? {})) {
         types[name] = { ...mapping, module: `${ament}.${MODEL_PACKAGE}.${mapping.module}` };
@@ -72,7 +97,10 @@ class MessageCatalog {
     private readonly byName = new Map<string, string>();
     private readonly pending: Array<{ t: SymType; where: AstNode }> = [];
 
-    constructor(private readonly pkg: string, private readonly ctx: DataTypeGenerationContext) {}
+    constructor(
+        private readonly pkg: string,
+        private readonly ctx: DataTypeGenerationContext,
+    ) {}
 
     /** Every non-generic type used, and every concrete use of a generic type by ports, parameters and fields. */
     collect(): void {
@@ -105,13 +133,18 @@ class MessageCatalog {
         const view = this.ctx.architecture.dataType(typeKey({ kind: 'object', decl: t.decl, args: [] }));
         if (!view) throw new GenerationError(`type ${describe(t)} is not part of the architecture's data types`, where);
         if (view.typeParameters.length !== t.args.length) {
-            throw new GenerationError(`type ${describe(t)} is used without its type arguments; a ROS 2 message needs concrete types`, where);
+            throw new GenerationError(
+                `type ${describe(t)} is used without its type arguments; a ROS 2 message needs concrete types`,
+                where,
+            );
         }
         const name = messageNameOf(t, where);
         const clash = this.byName.get(name);
         if (clash && clash !== key) throw new GenerationError(`types ${clash} and ${key} both map to the message name ${name}`, view.node);
         this.byName.set(name, key);
-        const lines: string[] = [`# ${key}${view.kind === 'enum' ? ' (enum: the constants are the literals\' ordinals, `value` holds one of them)' : ''}`];
+        const lines: string[] = [
+            `# ${key}${view.kind === 'enum' ? " (enum: the constants are the literals' ordinals, `value` holds one of them)" : ''}`,
+        ];
         this.defs.set(key, { name, key, view, kind: view.kind === 'enum' ? 'enum' : 'class', lines });
         lines.push(...(view.kind === 'enum' ? enumFields(view) : this.classFields(view, t)));
     }
@@ -119,7 +152,10 @@ class MessageCatalog {
     /** One field per attribute, type arguments substituted. */
     private classFields(view: DataTypeView, t: SymType & { kind: 'object' }): string[] {
         if (view.superTypes.length > 0) {
-            throw new GenerationError(`type ${view.qualifiedName} extends ${view.superTypes.join(', ')}: ROS 2 messages have no inheritance`, view.node);
+            throw new GenerationError(
+                `type ${view.qualifiedName} extends ${view.superTypes.join(', ')}: ROS 2 messages have no inheritance`,
+                view.node,
+            );
         }
         const subst = new Map(view.typeParameters.map((p, i) => [p, t.args[i]!] as const));
         const seen = new Set<string>();

@@ -60,7 +60,7 @@ const PRIMITIVES: Readonly<Record<string, { field: string; std: string; py: stri
     Double: { field: 'float64', std: 'Float64', py: 'float' },
     char: { field: 'string', std: 'String', py: 'str' },
     Character: { field: 'string', std: 'String', py: 'str' },
-    String: { field: 'string', std: 'String', py: 'str' }
+    String: { field: 'string', std: 'String', py: 'str' },
 };
 
 /** The primitive mapping of a type (primitive or boxed), if it is one. */
@@ -88,11 +88,16 @@ function typeToken(t: SymType, where: AstNode): string {
 
 export function describe(t: SymType): string {
     switch (t.kind) {
-        case 'primitive': return t.name;
-        case 'object': return t.args.length ? `${t.decl.name}<${t.args.map(describe).join(', ')}>` : t.decl.name;
-        case 'array': return `${describe(t.component)}[]`;
-        case 'typevar': return t.decl.name;
-        default: return t.kind;
+        case 'primitive':
+            return t.name;
+        case 'object':
+            return t.args.length ? `${t.decl.name}<${t.args.map(describe).join(', ')}>` : t.decl.name;
+        case 'array':
+            return `${describe(t.component)}[]`;
+        case 'typevar':
+            return t.decl.name;
+        default:
+            return t.kind;
     }
 }
 
@@ -124,7 +129,10 @@ export interface RosDataTypeResult extends DataTypeResult {
 }
 
 export function isRosDataTypeResult(d: DataTypeResult): d is RosDataTypeResult {
-    return typeof (d as { interfacePackage?: unknown }).interfacePackage === 'string' && typeof (d as { messages?: unknown }).messages === 'object';
+    return (
+        typeof (d as { interfacePackage?: unknown }).interfacePackage === 'string' &&
+        typeof (d as { messages?: unknown }).messages === 'object'
+    );
 }
 
 /** The subpackage of the ament_python package that holds the Python data types and behavior classes. */

@@ -37,18 +37,25 @@ function configTranslator(datatypes: DataTypeResult, imports: Imports): PythonTr
     return new PythonTranslator({
         name(target, ref) {
             if (target.$type === 'Parameter') return `params[${str(target.name)}]`;
-            if (target.$type === 'CDEnumConstant') return `${typeRef(datatypes, imports, target.$container as Node)}.${pyName(target.name)}`;
+            if (target.$type === 'CDEnumConstant')
+                return `${typeRef(datatypes, imports, target.$container as Node)}.${pyName(target.name)}`;
             if (isTypeDecl(target)) return typeRef(datatypes, imports, target);
             throw new GenerationError(`'${target.name}' cannot be used in a configuration argument`, ref);
         },
         type: (decl) => typeRef(datatypes, imports, decl),
-        typeBySimpleName: (name) => typeBySimpleName(datatypes, imports, name)
+        typeBySimpleName: (name) => typeBySimpleName(datatypes, imports, name),
     });
 }
 
 /** The class-level declarations every component type has (templates/timesync/component.njk). */
-function typeHeader(c: ComponentView, datatypes: DataTypeResult, imports: Imports): Pick<ComponentClassesView,
-    'className' | 'qualifiedName' | 'inPorts' | 'outPorts' | 'portTypes' | 'parameters' | 'typeParameters' | 'features'> {
+function typeHeader(
+    c: ComponentView,
+    datatypes: DataTypeResult,
+    imports: Imports,
+): Pick<
+    ComponentClassesView,
+    'className' | 'qualifiedName' | 'inPorts' | 'outPorts' | 'portTypes' | 'parameters' | 'typeParameters' | 'features'
+> {
     const header = {
         className: pyName(c.name),
         qualifiedName: c.qualifiedName,
@@ -59,7 +66,7 @@ function typeHeader(c: ComponentView, datatypes: DataTypeResult, imports: Import
         // Generic components name their type parameters: stream tests bind them (`type_args`).
         typeParameters: c.typeParameters,
         // A variable component records the feature configuration it was generated in (stream tests check it).
-        features: c.features ? Object.entries(c.features).map(([k, v]) => ({ key: str(k), value: v ? 'True' : 'False' })) : undefined
+        features: c.features ? Object.entries(c.features).map(([k, v]) => ({ key: str(k), value: v ? 'True' : 'False' })) : undefined,
     };
     imports.add('typing', 'ClassVar');
     imports.add('collections.abc', 'Mapping');
@@ -119,9 +126,16 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                     handwritten = { base, module: impl.module, cls: `${c.name}Behavior` };
                     const source = handwrittenSource(c);
                     if (source !== undefined) ctx.out.file(impl.file).write(source, c.node);
-                    else ctx.out.file(impl.file, { userFile: true }).write(renderPython('timesync/handwritten.py.njk', {
-                        qualifiedName: c.qualifiedName, module: componentModule(c).module, base, className: handwritten.cls
-                    }), c.node);
+                    else
+                        ctx.out.file(impl.file, { userFile: true }).write(
+                            renderPython('timesync/handwritten.py.njk', {
+                                qualifiedName: c.qualifiedName,
+                                module: componentModule(c).module,
+                                base,
+                                className: handwritten.cls,
+                            }),
+                            c.node,
+                        );
                     behavior = '_behavior()';
                 } else {
                     behavior = `${c.name}Behavior`;
@@ -129,8 +143,13 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                 }
                 const header = typeHeader(c, datatypes, imports);
                 view = {
-                    ...header, behaviorClass, handwritten, base: 'AtomicComponent', atomic: { behavior }, composed: undefined,
-                    defaults: parameterDefaults(c, datatypes, imports)
+                    ...header,
+                    behaviorClass,
+                    handwritten,
+                    base: 'AtomicComponent',
+                    atomic: { behavior },
+                    composed: undefined,
+                    defaults: parameterDefaults(c, datatypes, imports),
                 };
             } else {
                 // A mode automaton makes it a ModeComponent (modes.ts).
@@ -150,7 +169,8 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                         // A named argument `p = value` (MontiArc's keyword arguments).
                         if (arg.$type === 'AssignmentExpression' && arg.op === '=' && arg.left.$type === 'NameExpression') {
                             const name = String(arg.left.ref?.$refText);
-                            if (!sub.parameters.some((p) => p.name === name)) throw new GenerationError(`${sub.qualifiedName} has no parameter '${name}'`, arg);
+                            if (!sub.parameters.some((p) => p.name === name))
+                                throw new GenerationError(`${sub.qualifiedName} has no parameter '${name}'`, arg);
                             return { key: str(name), value: tr.expr(arg.right) };
                         }
                         const param = sub.parameters[i];
@@ -162,14 +182,20 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                 const usesParams = subcomponents.some((x) => x.args.some((a) => a.value.includes('params[')));
                 const header = typeHeader(c, datatypes, imports);
                 view = {
-                    ...header, behaviorClass: undefined, handwritten: undefined, base: modes ? 'ModeComponent' : 'ComposedComponent', atomic: undefined,
+                    ...header,
+                    behaviorClass: undefined,
+                    handwritten: undefined,
+                    base: modes ? 'ModeComponent' : 'ComposedComponent',
+                    atomic: undefined,
                     composed: { connectors: c.connectors.map(connectorTuple), modes, usesParams, subcomponents },
-                    defaults: parameterDefaults(c, datatypes, imports)
+                    defaults: parameterDefaults(c, datatypes, imports),
                 };
             }
             const out = ctx.out.file(file);
             const classes = renderClass('timesync/component.njk', view);
-            out.traced(c.node, () => out.write(moduleTextOf(`Component ${c.qualifiedName} for the python-timesync platform (generated).`, imports, classes)));
+            out.traced(c.node, () =>
+                out.write(moduleTextOf(`Component ${c.qualifiedName} for the python-timesync platform (generated).`, imports, classes)),
+            );
         }
 
         // The run-time environments, copied so that the build runs with Python alone.
@@ -191,7 +217,9 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
             imports.add(m.module, `${pyName(c.name)} as ${alias}`);
             return { name: c.qualifiedName, alias };
         });
-        const enums = ctx.architecture.dataTypes.filter((t) => t.kind === 'enum').map((t) => ({ name: t.name, type: typeRef(datatypes, imports, t.node) }));
+        const enums = ctx.architecture.dataTypes
+            .filter((t) => t.kind === 'enum')
+            .map((t) => ({ name: t.name, type: typeRef(datatypes, imports, t.node) }));
         // Live values in the simulator's lock-step mode: every port value under its ROS 2 topic name
         // (the ros2 generator's rule), so the IDE sees the same topics in both modes. Primitives travel
         // as their std_msgs type; enums as their constant name and classes as JSON, both in std_msgs/String.
@@ -211,20 +239,33 @@ const create: ComponentGeneratorFactory = ({ packageDir }) => ({
                 portTopics.push({ key: `${inst.path.join('.')}.${p.name}`, topic: `${node}/${rosName(p.name)}`, type: topicType(p) });
             }
         }
-        ctx.out.file('maa_app.py').write(renderPython('timesync/app.py.njk', {
-            application: ctx.platform.application,
-            rootQualifiedName: root.qualifiedName,
-            imports: imports.lines(),
-            rootAlias: `_${rootModule.module.replace(/\./g, '_')}`,
-            components,
-            enums,
-            portTopics,
-            nodeNames
-        }), root.node);
-        ctx.out.file('lockstep.json').write(`${JSON.stringify({
-            format: 'maa-lockstep/1', factory: 'maa_app:create_controller', python_path: ['.'], period: 0.02, parameters: {}
-        }, null, 2)}\n`);
-    }
+        ctx.out.file('maa_app.py').write(
+            renderPython('timesync/app.py.njk', {
+                application: ctx.platform.application,
+                rootQualifiedName: root.qualifiedName,
+                imports: imports.lines(),
+                rootAlias: `_${rootModule.module.replace(/\./g, '_')}`,
+                components,
+                enums,
+                portTopics,
+                nodeNames,
+            }),
+            root.node,
+        );
+        ctx.out.file('lockstep.json').write(
+            `${JSON.stringify(
+                {
+                    format: 'maa-lockstep/1',
+                    factory: 'maa_app:create_controller',
+                    python_path: ['.'],
+                    period: 0.02,
+                    parameters: {},
+                },
+                null,
+                2,
+            )}\n`,
+        );
+    },
 });
 
 export default create;

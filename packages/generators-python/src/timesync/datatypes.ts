@@ -6,9 +6,27 @@ import { renderPython } from '../python/templates.js';
 import type { DataTypeView as DataTypeChunkView } from './views.js';
 
 const PRIMITIVES: Record<string, string> = {
-    int: 'int', Integer: 'int', long: 'int', Long: 'int', short: 'int', Short: 'int', byte: 'int', Byte: 'int', char: 'int',
-    Character: 'int', float: 'float', Float: 'float', double: 'float', Double: 'float', boolean: 'bool', Boolean: 'bool',
-    String: 'str', List: 'list', Set: 'set', Map: 'dict', Optional: 'Optional'
+    int: 'int',
+    Integer: 'int',
+    long: 'int',
+    Long: 'int',
+    short: 'int',
+    Short: 'int',
+    byte: 'int',
+    Byte: 'int',
+    char: 'int',
+    Character: 'int',
+    float: 'float',
+    Float: 'float',
+    double: 'float',
+    Double: 'float',
+    boolean: 'bool',
+    Boolean: 'bool',
+    String: 'str',
+    List: 'list',
+    Set: 'set',
+    Map: 'dict',
+    Optional: 'Optional',
 };
 
 const DEFAULTS: Record<string, string> = { int: '0', float: '0.0', bool: 'False', str: '""' };
@@ -76,10 +94,17 @@ const create: DataTypeGeneratorFactory = () => ({
                 if (t.kind === 'enum') {
                     imports.add('enum', 'Enum');
                     const methods = methodViews(t, (n) => annotation(n, local, []));
-                    chunks.push({ t, view: {
-                        name: pyName(t.name), qualifiedName: t.qualifiedName, enum: { constants: t.constants.map(pyName) }, data: undefined,
-                        empty: t.constants.length === 0 && methods.length === 0, methods
-                    } });
+                    chunks.push({
+                        t,
+                        view: {
+                            name: pyName(t.name),
+                            qualifiedName: t.qualifiedName,
+                            enum: { constants: t.constants.map(pyName) },
+                            data: undefined,
+                            empty: t.constants.length === 0 && methods.length === 0,
+                            methods,
+                        },
+                    });
                     continue;
                 }
                 imports.add('dataclasses', 'dataclass');
@@ -96,16 +121,25 @@ const create: DataTypeGeneratorFactory = () => ({
                 const attributes = t.attributes.map((a) => {
                     const ann = annotation(a.typeName, local, t.typeParameters);
                     const enumType = ctx.dataTypes.find((d) => d.name === a.typeName && d.kind === 'enum');
-                    const value = DEFAULTS[ann] ?? (enumType && enumType.constants.length ? `${pyName(enumType.name)}.${pyName(enumType.constants[0])}` : undefined);
-                    if (value === undefined) return { name: pyName(a.name), annotation: ann.endsWith('| None') ? ann : `${ann} | None`, value: 'None' };
+                    const value =
+                        DEFAULTS[ann] ??
+                        (enumType?.constants.length ? `${pyName(enumType.name)}.${pyName(enumType.constants[0])}` : undefined);
+                    if (value === undefined)
+                        return { name: pyName(a.name), annotation: ann.endsWith('| None') ? ann : `${ann} | None`, value: 'None' };
                     return { name: pyName(a.name), annotation: ann, value };
                 });
                 const methods = methodViews(t, (n) => annotation(n, local, t.typeParameters));
-                chunks.push({ t, view: {
-                    name: pyName(t.name), qualifiedName: t.qualifiedName, enum: undefined,
-                    data: { kind: t.kind === 'interface' ? 'Interface' : 'Class', typeParameters: t.typeParameters, bases, attributes },
-                    empty: t.attributes.length === 0 && methods.length === 0, methods
-                } });
+                chunks.push({
+                    t,
+                    view: {
+                        name: pyName(t.name),
+                        qualifiedName: t.qualifiedName,
+                        enum: undefined,
+                        data: { kind: t.kind === 'interface' ? 'Interface' : 'Class', typeParameters: t.typeParameters, bases, attributes },
+                        empty: t.attributes.length === 0 && methods.length === 0,
+                        methods,
+                    },
+                });
             }
             const diagrams = [...new Set(list.map((t) => `${t.packageName ? `${t.packageName}.` : ''}${t.diagram}`))].join(', ');
             out.write(renderPython('timesync/datatypes-module.njk', { diagrams, imports: imports.lines() }));
@@ -115,7 +149,7 @@ const create: DataTypeGeneratorFactory = () => ({
             }
         }
         return { types };
-    }
+    },
 });
 
 export default create;

@@ -1,6 +1,6 @@
 import type { ComponentView, ConnectorView, DataTypeResult } from '@maa/generator-core';
 import { GenerationError } from '@maa/generator-core/node';
-import { Imports, primitiveDefault, typeBySimpleName, typeRef } from '../behavior/common.js';
+import { type Imports, primitiveDefault, typeBySimpleName, typeRef } from '../behavior/common.js';
 import { renderLines } from '../python/templates.js';
 import type { ModeTransitionView, ModesView } from './views.js';
 import { PythonTranslator, isTypeDecl, pyName, type Node } from '../python/expressions.js';
@@ -45,12 +45,16 @@ function guardTranslator(c: ComponentView, datatypes: DataTypeResult, imports: I
                 return `port_value(inputs, ${str(target.name)}, ${def})`;
             }
             if (target.$type === 'Parameter') return `params[${str(target.name)}]`;
-            if (target.$type === 'CDEnumConstant') return `${typeRef(datatypes, imports, target.$container as Node)}.${pyName(target.name)}`;
+            if (target.$type === 'CDEnumConstant')
+                return `${typeRef(datatypes, imports, target.$container as Node)}.${pyName(target.name)}`;
             if (isTypeDecl(target)) return typeRef(datatypes, imports, target);
-            throw new GenerationError(`'${target.name}' cannot be used in the guard of a mode transition (only in ports, parameters and constants)`, ref);
+            throw new GenerationError(
+                `'${target.name}' cannot be used in the guard of a mode transition (only in ports, parameters and constants)`,
+                ref,
+            );
         },
         type: (decl) => typeRef(datatypes, imports, decl),
-        typeBySimpleName: (name) => typeBySimpleName(datatypes, imports, name)
+        typeBySimpleName: (name) => typeBySimpleName(datatypes, imports, name),
     });
 }
 
@@ -65,7 +69,7 @@ export function modesView(c: ComponentView, datatypes: DataTypeResult, imports: 
         initial: m.initial,
         timing: m.timing,
         perMode: m.modes.map((x) => ({ name: x.name, subcomponents: x.subcomponents, connectors: x.connectors.map(connectorTuple) })),
-        body: modeTransitionBody(c, datatypes, imports, 'maa_timesync.modes')
+        body: modeTransitionBody(c, datatypes, imports, 'maa_timesync.modes'),
     };
 }
 

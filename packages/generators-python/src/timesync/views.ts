@@ -10,7 +10,11 @@ export interface ModesView {
     readonly modes: readonly string[];
     readonly initial: string;
     readonly timing: string;
-    readonly perMode: ReadonlyArray<{ readonly name: string; readonly subcomponents: readonly string[]; readonly connectors: readonly string[] }>;
+    readonly perMode: ReadonlyArray<{
+        readonly name: string;
+        readonly subcomponents: readonly string[];
+        readonly connectors: readonly string[];
+    }>;
     /** The statements of `mode_transition`. */
     readonly body: readonly string[];
 }
@@ -45,13 +49,15 @@ export interface ComponentClassesView {
     readonly typeParameters: readonly string[];
     readonly features: readonly EntryView[] | undefined;
     readonly atomic: { readonly behavior: string } | undefined;
-    readonly composed: {
-        /** maa_timesync `Connector` tuples. */
-        readonly connectors: readonly string[];
-        readonly modes: ModesView | undefined;
-        readonly usesParams: boolean;
-        readonly subcomponents: readonly SubcomponentView[];
-    } | undefined;
+    readonly composed:
+        | {
+              /** maa_timesync `Connector` tuples. */
+              readonly connectors: readonly string[];
+              readonly modes: ModesView | undefined;
+              readonly usesParams: boolean;
+              readonly subcomponents: readonly SubcomponentView[];
+          }
+        | undefined;
     /** Parameter defaults (`defaults` classmethod). */
     readonly defaults: ReadonlyArray<{ readonly name: string; readonly value: string }>;
 }
@@ -98,12 +104,14 @@ export interface DataTypeView {
     readonly name: string;
     readonly qualifiedName: string;
     readonly enum: { readonly constants: readonly string[] } | undefined;
-    readonly data: {
-        readonly kind: 'Class' | 'Interface';
-        readonly typeParameters: readonly string[];
-        readonly bases: readonly string[];
-        readonly attributes: ReadonlyArray<{ readonly name: string; readonly annotation: string; readonly value: string }>;
-    } | undefined;
+    readonly data:
+        | {
+              readonly kind: 'Class' | 'Interface';
+              readonly typeParameters: readonly string[];
+              readonly bases: readonly string[];
+              readonly attributes: ReadonlyArray<{ readonly name: string; readonly annotation: string; readonly value: string }>;
+          }
+        | undefined;
     /** No members at all (`pass`). */
     readonly empty: boolean;
     readonly methods: readonly MethodView[];

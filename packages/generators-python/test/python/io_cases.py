@@ -47,11 +47,33 @@ def _num(x: object) -> float | None:
 
 
 #: The case fields the harness reads; any other field fails the case (it might carry a condition).
-KNOWN_FIELDS = frozenset({
-    "id", "test_file", "test_method", "invocation", "kind", "component", "model_files", "model_sources", "params",
-    "features", "type_args", "inputs", "expected", "run_ticks", "steps", "test_line", "junit_args", "compare",
-    "implicit_empty_inputs", "extra_assertions", "observed_value_transform", "expected_states", "port_accessors",
-})
+KNOWN_FIELDS = frozenset(
+    {
+        "id",
+        "test_file",
+        "test_method",
+        "invocation",
+        "kind",
+        "component",
+        "model_files",
+        "model_sources",
+        "params",
+        "features",
+        "type_args",
+        "inputs",
+        "expected",
+        "run_ticks",
+        "steps",
+        "test_line",
+        "junit_args",
+        "compare",
+        "implicit_empty_inputs",
+        "extra_assertions",
+        "observed_value_transform",
+        "expected_states",
+        "port_accessors",
+    }
+)
 CHARS = ("char", "Character")
 
 
@@ -96,7 +118,10 @@ def char_items(items: list[dict[str, Any]], port_type: object) -> list[dict[str,
     """On a ``char``/``Character`` port the suite may write a character as its code ``{"msg": 97}``."""
     if port_type not in CHARS:
         return items
-    return [{"char": chr(i["msg"])} if isinstance(i.get("msg"), int) and not isinstance(i.get("msg"), bool) and "type" not in i else i for i in items]
+    return [
+        {"char": chr(i["msg"])} if isinstance(i.get("msg"), int) and not isinstance(i.get("msg"), bool) and "type" not in i else i
+        for i in items
+    ]
 
 
 def compare(case: Mapping[str, Any], result: Mapping[str, Any], port_types: Mapping[str, object] | None = None) -> str | None:

@@ -54,12 +54,14 @@ def test_topics_follow_the_ros2_names_with_lockstep_types(features_app: ModuleTy
 
 def test_every_slice_shows_its_port_values_and_changed_states(features_app: ModuleType) -> None:
     app = features_app.create_controller({})
-    first = app.step({
-        "/features/press": {"data": True},
-        "/features/inc": {"data": 2},
-        "/features/mode": {"data": "FAST"},
-        "/features/level": {"data": 7},
-    })
+    first = app.step(
+        {
+            "/features/press": {"data": True},
+            "/features/inc": {"data": 2},
+            "/features/mode": {"data": "FAST"},
+            "/features/level": {"data": 7},
+        }
+    )
     # injected root inputs are shown in the slice that reads them
     assert first["/features/press"] == [{"data": True}]
     assert first["/features/mode"] == [{"data": "FAST"}]

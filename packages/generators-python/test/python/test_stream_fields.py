@@ -91,8 +91,16 @@ def test_type_args_bind_the_ports_java_types() -> None:
 
 
 def test_observe_state_records_the_state_between_steps() -> None:
-    steps = [{"op": "init"}, {"op": "observe_state"}, {"op": "receive", "port": "i", "count": 2}, {"op": "run"},
-             {"op": "observe_state"}, {"op": "receive", "port": "i", "count": 2}, {"op": "run"}, {"op": "observe_state"}]
+    steps = [
+        {"op": "init"},
+        {"op": "observe_state"},
+        {"op": "receive", "port": "i", "count": 2},
+        {"op": "run"},
+        {"op": "observe_state"},
+        {"op": "receive", "port": "i", "count": 2},
+        {"op": "run"},
+        {"op": "observe_state"},
+    ]
     out = run_streams(Toggle, {"inputs": {"i": [{"msg": 1}, TICK_ITEM, {"msg": 2}, TICK_ITEM]}, "steps": steps})
     assert out["state_trace"] == ["Off", "On", "Off"]
     with pytest.raises(ValueError, match="unknown step"):
@@ -100,9 +108,14 @@ def test_observe_state_records_the_state_between_steps() -> None:
 
 
 def test_in_port_buffer_empty_after_run() -> None:
-    spec = {"type_args": ["Integer"], "inputs": {"i": [{"msg": 1}, TICK_ITEM]},
-            "extra_assertions": [{"assert": "in_port_buffer_empty_after_run", "port": "i"}]}
-    assert run_streams(Relay, spec)["assertions"] == [{"assert": "in_port_buffer_empty_after_run", "port": "i", "holds": True, "detail": None}]
+    spec = {
+        "type_args": ["Integer"],
+        "inputs": {"i": [{"msg": 1}, TICK_ITEM]},
+        "extra_assertions": [{"assert": "in_port_buffer_empty_after_run", "port": "i"}],
+    }
+    assert run_streams(Relay, spec)["assertions"] == [
+        {"assert": "in_port_buffer_empty_after_run", "port": "i", "holds": True, "detail": None}
+    ]
     not_run = dict(spec, steps=[{"op": "init"}, {"op": "receive", "port": "i", "count": 2}])
     (check,) = run_streams(Relay, not_run)["assertions"]
     assert not check["holds"] and "2 item(s) left buffered on i" in check["detail"]
@@ -113,7 +126,11 @@ def test_in_port_buffer_empty_after_run() -> None:
 
 
 def test_observed_value_transform() -> None:
-    spec = {"type_args": ["Integer"], "inputs": {"i": [{"msg": 97}, TICK_ITEM]}, "observed_value_transform": {"o": "c -> (char) c.intValue()"}}
+    spec = {
+        "type_args": ["Integer"],
+        "inputs": {"i": [{"msg": 97}, TICK_ITEM]},
+        "observed_value_transform": {"o": "c -> (char) c.intValue()"},
+    }
     assert run_streams(Relay, spec)["outputs"]["o"] == [{"char": "a"}, TICK_ITEM]
     with pytest.raises(ValueError, match="no observed port 'x'"):
         run_streams(Relay, dict(spec, observed_value_transform={"x": "c -> c"}))
@@ -151,8 +168,8 @@ def test_map_and_object_values() -> None:
         ("x -> (long) x", {"msg": 1e30, "type": "float"}, None, {"msg": 2**63 - 1, "type": "long"}),
         ("x -> x.floatValue() / 3", {"msg": 1}, None, {"msg": 0.3333333432674408, "type": "float"}),
         ("x -> x.doubleValue() / 0", {"msg": -1}, None, {"msg": "-Infinity", "type": "double"}),
-        ("x -> \"n=\" + x", {"msg": 3, "type": "long"}, None, {"msg": "n=3"}),
-        ("x -> x + \"!\"", {"char": "c"}, None, {"msg": "c!"}),
+        ('x -> "n=" + x', {"msg": 3, "type": "long"}, None, {"msg": "n=3"}),
+        ('x -> x + "!"', {"char": "c"}, None, {"msg": "c!"}),
         ("x -> x > 2 ? 'y' : 'n'", {"msg": 3}, None, {"char": "y"}),
         ("x -> !(x == 1) && x != 2", {"msg": 3}, None, {"msg": True}),
         ("x -> x.name()", {"msg": {"enum": "OnOff", "literal": "ON"}}, None, {"msg": "ON"}),
@@ -223,27 +240,32 @@ def _run(tmp_path: Path, text: str) -> list[dict[str, object]]:
 
 
 def test_stream_steps_states_transforms_and_empty_ports(tmp_path: Path) -> None:
-    results = _run(tmp_path, (
-        'component t.Toggle;\n'
-        'test "steps in order" {\n'
-        '  state == Off;\n'
-        '  i = 97 Tk;\n'
-        '  run;\n'
-        '  state == On;\n'
-        '  i = 98 Tk;\n'
-        '  run 1;\n'
-        '  state == Off;\n'
-        '  transform o = c -> (char) c.intValue();\n'
-        "  o == 'a' Tk 'b' Tk;\n"
-        '  empty i;\n'
-        '}\n'
-        'test "a state between the steps differs" { i = 1 Tk; run; state == Off; o == 1 Tk; }\n'
-        "test \"a transformed value keeps its type\" { i = 97 Tk; transform o = c -> (char) c.intValue(); o == 97 Tk; }\n"
-        'test "left buffered" { i = 1 Tk; empty i; run 0; }\n'
-    ))
+    results = _run(
+        tmp_path,
+        (
+            "component t.Toggle;\n"
+            'test "steps in order" {\n'
+            "  state == Off;\n"
+            "  i = 97 Tk;\n"
+            "  run;\n"
+            "  state == On;\n"
+            "  i = 98 Tk;\n"
+            "  run 1;\n"
+            "  state == Off;\n"
+            "  transform o = c -> (char) c.intValue();\n"
+            "  o == 'a' Tk 'b' Tk;\n"
+            "  empty i;\n"
+            "}\n"
+            'test "a state between the steps differs" { i = 1 Tk; run; state == Off; o == 1 Tk; }\n'
+            'test "a transformed value keeps its type" { i = 97 Tk; transform o = c -> (char) c.intValue(); o == 97 Tk; }\n'
+            'test "left buffered" { i = 1 Tk; empty i; run 0; }\n'
+        ),
+    )
     assert [(r["test"], r["passed"]) for r in results] == [
-        ("steps in order", True), ("a state between the steps differs", False),
-        ("a transformed value keeps its type", False), ("left buffered", False),
+        ("steps in order", True),
+        ("a state between the steps differs", False),
+        ("a transformed value keeps its type", False),
+        ("left buffered", False),
     ]
     assert [r["line"] for r in results] == [2, 14, 15, 16]  # the line of `test`, not of the blanks before it
     assert results[1]["problems"] == ["state (line 14): expected Off; got On"]
@@ -252,12 +274,15 @@ def test_stream_steps_states_transforms_and_empty_ports(tmp_path: Path) -> None:
 
 
 def test_stream_generic_components_and_typed_literals(tmp_path: Path) -> None:
-    results = _run(tmp_path, (
-        'component t.Relay<Long>;\n'
-        'test "long" { i = 5 Tk; o == 5 Tk; transform o = x -> x * 2; }\n'
-        'test "typed literals" { i = 5 Tk; transform o = x -> x * 2; o == 10L Tk; }\n'
-        'test "an int is not a long" { i = 5 Tk; transform o = x -> x; o == 5 Tk; }\n'
-    ))
+    results = _run(
+        tmp_path,
+        (
+            "component t.Relay<Long>;\n"
+            'test "long" { i = 5 Tk; o == 5 Tk; transform o = x -> x * 2; }\n'
+            'test "typed literals" { i = 5 Tk; transform o = x -> x * 2; o == 10L Tk; }\n'
+            'test "an int is not a long" { i = 5 Tk; transform o = x -> x; o == 5 Tk; }\n'
+        ),
+    )
     assert [r["passed"] for r in results] == [False, True, False]
     assert results[0]["problems"] == ["o: expected 5 Tk; got 10L Tk"]
     assert results[2]["problems"] == ["o: expected 5 Tk; got 5L Tk"]
@@ -286,17 +311,14 @@ def test_stream_feature_configurations(tmp_path: Path) -> None:
 
 
 def test_stream_checks(tmp_path: Path) -> None:
-    results = _run(tmp_path, (
-        'component t.Toggle;\n'
-        'test "unknown ports" { i = 1 Tk; transform x = c -> c; empty o; }\n'
-    ))
+    results = _run(tmp_path, ('component t.Toggle;\ntest "unknown ports" { i = 1 Tk; transform x = c -> c; empty o; }\n'))
     assert results[0]["problems"] == ["transform: t.Toggle has no out port 'x'", "empty: t.Toggle has no in port 'o'"]
 
 
 def test_stream_syntax() -> None:
     parsed = parse(
-        'component a.B<Integer, String>(p = 1) features (f = true, g = false);\n'
-        'test "t" { run = 1 Tk; empty = 2; transform = 3; i = 4L 1.5f \'c\'; run 2; empty i, run; }'
+        "component a.B<Integer, String>(p = 1) features (f = true, g = false);\n"
+        "test \"t\" { run = 1 Tk; empty = 2; transform = 3; i = 4L 1.5f 'c'; run 2; empty i, run; }"
     )
     assert parsed.type_args == ["Integer", "String"] and parsed.features == {"f": True, "g": False}
     test = parsed.tests[0]

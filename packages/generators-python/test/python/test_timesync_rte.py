@@ -115,7 +115,7 @@ def test_stream_test_files(tmp_path: Path) -> None:
     )
     stream = tmp_path / "Delay.stream"
     stream.write_text(
-        'component t.Delay;\n'
+        "component t.Delay;\n"
         'test "delays" { i = ON Tk OFF Tk; o == OFF Tk ON Tk OFF Tk; }\n'
         'test "values only" { i = ON Tk; o ~= OFF ON; }\n'
         'test "wrong" { i = ON Tk; o == OnOff.ON Tk; }\n',

@@ -81,9 +81,7 @@ def test_sim_server_accepts_the_deployment(generated: Generated) -> None:
         "from pathlib import Path; from maa_sim.deployment import Deployment;"
         "d = Deployment.load(Path(sys.argv[2])); print(len(d.nodes))"
     )
-    result = subprocess.run(
-        [sys.executable, "-c", code, str(src), str(generated.package)], capture_output=True, text=True, check=False
-    )
+    result = subprocess.run([sys.executable, "-c", code, str(src), str(generated.package)], capture_output=True, text=True, check=False)
     if "No module named" in result.stderr and "maa_sim" not in result.stderr:
         return  # a dependency of maa_sim's package is not in this venv
     assert result.returncode == 0, result.stderr
@@ -122,8 +120,18 @@ def test_ros2_rte_type_checks() -> None:
     pytest.importorskip("mypy", reason="needs the venv of scripts/setup_ros2_venv.sh")
     rte = Path(__file__).resolve().parents[2] / "rte"
     result = subprocess.run(
-        [sys.executable, "-m", "mypy", "--strict", "--ignore-missing-imports", "--no-incremental",
-         "--cache-dir", "/dev/null", "-p", "maa_ros2"],
+        [
+            sys.executable,
+            "-m",
+            "mypy",
+            "--strict",
+            "--ignore-missing-imports",
+            "--no-incremental",
+            "--cache-dir",
+            "/dev/null",
+            "-p",
+            "maa_ros2",
+        ],
         cwd=rte,
         capture_output=True,
         text=True,

@@ -56,8 +56,9 @@ class Probe:
         self.events: list[tuple[str, Any]] = []
         for name, topic in outputs.items():
             self.node.create_subscription(Int32, topic, self._recorder(name), 10)
-        latched = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=1, reliability=ReliabilityPolicy.RELIABLE,
-                             durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        latched = QoSProfile(
+            history=HistoryPolicy.KEEP_LAST, depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL
+        )
         for name, topic in modes.items():
             self.node.create_subscription(String, topic, self._recorder(name), latched)
         # the IDE's live states: every entry as the event "state <node path>"
@@ -168,9 +169,7 @@ def test_deployment_has_a_mode_manager_and_gated_nodes(package: Path) -> None:
 
 
 @contextlib.contextmanager
-def probing(
-    package: Path, log_dir: Path, speed: str, outputs: Mapping[str, str], modes: Mapping[str, str]
-) -> Iterator[Probe]:
+def probing(package: Path, log_dir: Path, speed: str, outputs: Mapping[str, str], modes: Mapping[str, str]) -> Iterator[Probe]:
     """A probe on the deployed nodes of ``package`` while the block runs."""
     p = Probe(speed, outputs, modes)
     try:
@@ -183,8 +182,9 @@ def probing(
 @pytest.fixture()
 def probe(package: Path, ros_domain: int, tmp_path: Path) -> Iterator[Probe]:
     del ros_domain
-    with probing(package, tmp_path, "/gearbox/speed", {"o": "/gearbox/o", "total": "/gearbox/total"},
-                 {"mode": "/gearbox/maa_modes/mode"}) as p:
+    with probing(
+        package, tmp_path, "/gearbox/speed", {"o": "/gearbox/o", "total": "/gearbox/total"}, {"mode": "/gearbox/maa_modes/mode"}
+    ) as p:
         yield p
 
 
@@ -192,8 +192,13 @@ def probe(package: Path, ros_domain: int, tmp_path: Path) -> Iterator[Probe]:
 def selector_probe(selector_package: Path, ros_domain: int, tmp_path: Path) -> Iterator[Probe]:
     del ros_domain
     root = "/selector_pair"
-    with probing(selector_package, tmp_path, f"{root}/speed", {"slow": f"{root}/a/o", "fast": f"{root}/b/o"},
-                 {"a": f"{root}/a/maa_modes/mode", "b": f"{root}/b/maa_modes/mode"}) as p:
+    with probing(
+        selector_package,
+        tmp_path,
+        f"{root}/speed",
+        {"slow": f"{root}/a/o", "fast": f"{root}/b/o"},
+        {"a": f"{root}/a/maa_modes/mode", "b": f"{root}/b/maa_modes/mode"},
+    ) as p:
         yield p
 
 

@@ -133,10 +133,7 @@ class FakeSimulator:
         while time.monotonic() < start + timeout:
             names = {f"{ns.rstrip('/')}/{name}" for name, ns in self.node.get_node_names_and_namespaces()}
             nodes_up = all(f"{n['namespace'].rstrip('/')}/{n['name']}" in names for n in deployment["nodes"])
-            matched = all(
-                self.node.count_publishers(t) >= 1 and self.node.count_subscribers(t) >= subscribers.get(t, 0)
-                for t in ports
-            )
+            matched = all(self.node.count_publishers(t) >= 1 and self.node.count_subscribers(t) >= subscribers.get(t, 0) for t in ports)
             if nodes_up and matched:
                 time.sleep(0.5)  # the subscriptions' own matching completes
                 return time.monotonic() - start
@@ -166,10 +163,22 @@ def start_nodes(package: Path, log_dir: Path) -> list[tuple[str, subprocess.Pope
         params = log_dir / f"{stem}.params.yaml"
         params.write_text(json.dumps({fqn: {"ros__parameters": n["parameters"]}}), encoding="utf-8")
         log = (log_dir / f"{stem}.log").open("wb")
-        cmd = [sys.executable, "-m", n["module"], *n["args"], "--ros-args", "-r", f"__node:={n['name']}",
-               "-r", f"__ns:={n['namespace']}", "-p", "use_sim_time:=true", "--params-file", str(params)]
-        processes.append((stem, subprocess.Popen(cmd, cwd=package, env=env, stdout=log, stderr=subprocess.STDOUT,
-                                                      start_new_session=True)))
+        cmd = [
+            sys.executable,
+            "-m",
+            n["module"],
+            *n["args"],
+            "--ros-args",
+            "-r",
+            f"__node:={n['name']}",
+            "-r",
+            f"__ns:={n['namespace']}",
+            "-p",
+            "use_sim_time:=true",
+            "--params-file",
+            str(params),
+        ]
+        processes.append((stem, subprocess.Popen(cmd, cwd=package, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)))
     return processes
 
 
@@ -235,8 +244,13 @@ def test_toast_service_nodes_serve_a_toast(running: tuple[FakeSimulator, Path]) 
         # ToasterActuator sends START
         sim.sensor_distance = 20
         breadbox = {"base_yaw": pytest.approx(0.0), "lift": pytest.approx(0.07)}
-        stages = [("arm_cmd", ArmProgram.LOAD_BREAD), ("gripper", pytest.approx(0.06)), ("joints", breadbox),
-                  ("arm_status", ArmStatus.DONE), ("toaster", "START")]
+        stages = [
+            ("arm_cmd", ArmProgram.LOAD_BREAD),
+            ("gripper", pytest.approx(0.06)),
+            ("joints", breadbox),
+            ("arm_status", ArmStatus.DONE),
+            ("toaster", "START"),
+        ]
         times = [(f"{n}={v}", sim.wait_for(n, v)) for n, v in stages]
         # golden toast: the controller stops the toaster (the lever is released) and starts PickupAndDeploy
         sim.sensor_distance = 290

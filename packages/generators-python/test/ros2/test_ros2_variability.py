@@ -128,8 +128,11 @@ def test_the_plain_room_switches_its_lamp_fully_on(plain_probe: Probe) -> None:
 def test_each_lamp_of_the_hall_behaves_as_its_instance_is_configured(hall_probe: Probe) -> None:
     probe = hall_probe
     # dimmable lamps (a, c, the lamp of wing w2) halve the level; plain ones (b, the lamp of w1) switch
-    expected = {10: {"a": 5, "b": 100, "c": 5, "w1": 100, "w2": 5}, 7: {"a": 3, "b": 100, "c": 3, "w1": 100, "w2": 3},
-                0: {"a": 0, "b": 0, "c": 0, "w1": 0, "w2": 0}}
+    expected = {
+        10: {"a": 5, "b": 100, "c": 5, "w1": 100, "w2": 5},
+        7: {"a": 3, "b": 100, "c": 3, "w1": 100, "w2": 3},
+        0: {"a": 0, "b": 0, "c": 0, "w1": 0, "w2": 0},
+    }
     first = True
     for level, outputs in expected.items():
         since = probe.mark()

@@ -1,14 +1,27 @@
 /** The backend's simulation API (docs/ide.md "Backend HTTP API"); types and checks from @maa/protocol. */
 import {
-    answers, formatIssues, topicMapContract,
-    type Contract, type OkAnswer, type PortTopicEntry, type SimMode, type SimStartAnswer, type SimStatusAnswer, type Static, type TopicMapAnswer, type TSchema,
+    answers,
+    formatIssues,
+    topicMapContract,
+    type Contract,
+    type OkAnswer,
+    type PortTopicEntry,
+    type SimMode,
+    type SimStartAnswer,
+    type SimStatusAnswer,
+    type Static,
+    type TopicMapAnswer,
+    type TSchema,
 } from '@maa/protocol';
 import { backendError } from './logic.js';
 
 export type { PortTopicEntry, SimStartAnswer, SimStatusAnswer, TopicMapAnswer };
 
 export class BackendError extends Error {
-    constructor(message: string, readonly log: string[]) {
+    constructor(
+        message: string,
+        readonly log: string[],
+    ) {
         super(message);
     }
 }

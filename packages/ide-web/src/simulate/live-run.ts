@@ -177,7 +177,7 @@ export class LiveRun implements Disposable {
 
     private async pollStatus(): Promise<void> {
         const conn = this.ros;
-        if (!conn || conn.connectionState !== 'connected') return;
+        if (conn?.connectionState !== 'connected') return;
         try {
             this.simStatus = unwrapStatus(await conn.callService('/sim/get_status', {}, 5000));
             if (this.disposed) return;
@@ -190,7 +190,7 @@ export class LiveRun implements Disposable {
 
     private async refreshTopics(): Promise<void> {
         const conn = this.ros;
-        if (!conn || conn.connectionState !== 'connected') return;
+        if (conn?.connectionState !== 'connected') return;
         let list: TopicInfo[];
         try {
             list = await conn.listTopics();

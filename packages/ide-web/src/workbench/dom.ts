@@ -1,6 +1,9 @@
 /** Tiny DOM helpers. */
-export function h<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<Record<string, string>> = {},
-    ...children: (Node | string | undefined)[]): HTMLElementTagNameMap[K] {
+export function h<K extends keyof HTMLElementTagNameMap>(
+    tag: K,
+    props: Partial<Record<string, string>> = {},
+    ...children: (Node | string | undefined)[]
+): HTMLElementTagNameMap[K] {
     const element = document.createElement(tag);
     for (const [key, value] of Object.entries(props)) {
         if (value === undefined) continue;

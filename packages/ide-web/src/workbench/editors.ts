@@ -31,8 +31,12 @@ export class EditorArea {
 
     private readonly registered = new Map<string, RegisteredMemoryFile>();
 
-    constructor(private readonly tabBar: HTMLElement, container: HTMLElement,
-        private readonly files: RegisteredFileSystemProvider | undefined, private readonly events: EditorEvents) {
+    constructor(
+        private readonly tabBar: HTMLElement,
+        container: HTMLElement,
+        private readonly files: RegisteredFileSystemProvider | undefined,
+        private readonly events: EditorEvents,
+    ) {
         this.editor = monaco.editor.create(container, {
             automaticLayout: true,
             minimap: { enabled: false },
@@ -67,7 +71,7 @@ export class EditorArea {
         const pending = this.loading.get(path);
         if (pending) return pending;
         const promise = (async () => {
-            const content = text ?? await api.readFile(path);
+            const content = text ?? (await api.readFile(path));
             const again = monaco.editor.getModel(uri);
             const model = again ?? monaco.editor.createModel(content, languageOf(path), uri);
             this.saved.set(path, model.getValue());
@@ -105,10 +109,18 @@ export class EditorArea {
         let tab = this.tabs.find((t) => t.path === path);
         if (!tab) {
             const close = h('span', { class: 'tab-close', title: 'Close (Ctrl+W)' }, '×');
-            const element = h('div', { class: 'tab', 'data-path': path, title: path },
-                h('span', { class: 'tab-dirty' }, '●'), h('span', { class: 'tab-label' }, basename(path)), close);
+            const element = h(
+                'div',
+                { class: 'tab', 'data-path': path, title: path },
+                h('span', { class: 'tab-dirty' }, '●'),
+                h('span', { class: 'tab-label' }, basename(path)),
+                close,
+            );
             element.addEventListener('mousedown', (e) => {
-                if (e.button === 1) { e.preventDefault(); this.close(path); }
+                if (e.button === 1) {
+                    e.preventDefault();
+                    this.close(path);
+                }
             });
             element.addEventListener('click', (e) => {
                 if (e.target === close) this.close(path);
@@ -129,7 +141,12 @@ export class EditorArea {
             this.events.onActiveChanged(path);
         }
         if (selection) {
-            const range = new monaco.Range(selection.start.line + 1, selection.start.character + 1, selection.end.line + 1, selection.end.character + 1);
+            const range = new monaco.Range(
+                selection.start.line + 1,
+                selection.start.character + 1,
+                selection.end.line + 1,
+                selection.end.character + 1,
+            );
             this.editor.setSelection(range);
             this.editor.revealRangeInCenterIfOutsideViewport(range);
         }

@@ -7,7 +7,10 @@ export class Explorer {
     private readonly collapsed = new Set<string>();
     private entries: FileEntry[] = [];
 
-    constructor(private readonly container: HTMLElement, private readonly openFile: (path: string) => void) {}
+    constructor(
+        private readonly container: HTMLElement,
+        private readonly openFile: (path: string) => void,
+    ) {}
 
     setEntries(root: string, entries: FileEntry[]): void {
         this.entries = entries;
@@ -41,22 +44,32 @@ export class Explorer {
 
     private renderLevel(folder: string): HTMLElement {
         const list = h('ul', { class: 'tree' });
-        const children = this.entries.filter((e) => {
-            const slash = e.path.lastIndexOf('/');
-            return (slash < 0 ? '' : e.path.slice(0, slash)) === folder;
-        }).sort((a, b) => a.type === b.type ? a.path.localeCompare(b.path) : a.type === 'directory' ? -1 : 1);
+        const children = this.entries
+            .filter((e) => {
+                const slash = e.path.lastIndexOf('/');
+                return (slash < 0 ? '' : e.path.slice(0, slash)) === folder;
+            })
+            .sort((a, b) => (a.type === b.type ? a.path.localeCompare(b.path) : a.type === 'directory' ? -1 : 1));
         const depth = folder === '' ? 0 : folder.split('/').length;
         for (const entry of children) {
             const isDir = entry.type === 'directory';
             const open = isDir && !this.collapsed.has(entry.path);
-            const row = h('div', {
-                class: `tree-row ${isDir ? 'folder' : 'file'}`, 'data-path': entry.path, title: entry.path,
-                style: `padding-left:${8 + depth * 12}px`,
-            }, h('span', { class: 'twistie' }, isDir ? (open ? '▾' : '▸') : ''), h('span', { class: `file-icon ${iconClass(entry.path, isDir)}` }),
-            h('span', { class: 'tree-label' }, basename(entry.path)));
+            const row = h(
+                'div',
+                {
+                    class: `tree-row ${isDir ? 'folder' : 'file'}`,
+                    'data-path': entry.path,
+                    title: entry.path,
+                    style: `padding-left:${8 + depth * 12}px`,
+                },
+                h('span', { class: 'twistie' }, isDir ? (open ? '▾' : '▸') : ''),
+                h('span', { class: `file-icon ${iconClass(entry.path, isDir)}` }),
+                h('span', { class: 'tree-label' }, basename(entry.path)),
+            );
             row.addEventListener('click', () => {
                 if (isDir) {
-                    if (open) this.collapsed.add(entry.path); else this.collapsed.delete(entry.path);
+                    if (open) this.collapsed.add(entry.path);
+                    else this.collapsed.delete(entry.path);
                     this.rerender();
                     this.markSelected();
                 } else {

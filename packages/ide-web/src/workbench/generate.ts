@@ -44,7 +44,10 @@ export class GeneratePanel {
     private shownFile: string | undefined;
     private markedModels: monaco.editor.ITextModel[] = [];
 
-    constructor(container: HTMLElement, private readonly host: GenerateHost) {
+    constructor(
+        container: HTMLElement,
+        private readonly host: GenerateHost,
+    ) {
         this.picker = h('select', { class: 'platform-picker', 'data-testid': 'platform-picker', title: 'Application and platform' });
         this.button = h('button', { class: 'primary', 'data-testid': 'generate-button' }, 'Generate');
         this.status = h('span', { class: 'generate-status' });
@@ -53,15 +56,28 @@ export class GeneratePanel {
         const previewHost = h('div', { class: 'generated-preview', 'data-testid': 'generated-preview' });
         container.replaceChildren(
             h('div', { class: 'panel-toolbar' }, this.picker, this.button, this.status),
-            h('div', { class: 'generate-body' }, this.tree, h('div', { class: 'generated-right' },
-                h('div', { class: 'generated-header' }, this.location), previewHost)));
+            h(
+                'div',
+                { class: 'generate-body' },
+                this.tree,
+                h('div', { class: 'generated-right' }, h('div', { class: 'generated-header' }, this.location), previewHost),
+            ),
+        );
         this.preview = monaco.editor.create(previewHost, {
-            readOnly: true, automaticLayout: true, minimap: { enabled: false }, fontSize: 12, scrollBeyondLastLine: false,
-            domReadOnly: true, fixedOverflowWidgets: true,
+            readOnly: true,
+            automaticLayout: true,
+            minimap: { enabled: false },
+            fontSize: 12,
+            scrollBeyondLastLine: false,
+            domReadOnly: true,
+            fixedOverflowWidgets: true,
         });
         this.preview.addAction({
-            id: 'maa.goToModel', label: 'Go to Model Element', keybindings: [monaco.KeyCode.F12],
-            contextMenuGroupId: 'navigation', run: () => this.goToModel(),
+            id: 'maa.goToModel',
+            label: 'Go to Model Element',
+            keybindings: [monaco.KeyCode.F12],
+            contextMenuGroupId: 'navigation',
+            run: () => this.goToModel(),
         });
         this.preview.onDidChangeCursorPosition((e) => this.showLocation(e.position.lineNumber));
         this.button.addEventListener('click', () => void this.generate());
@@ -76,8 +92,11 @@ export class GeneratePanel {
             return;
         }
         const previous = this.picker.value;
-        this.picker.replaceChildren(...this.apps.flatMap((app) => app.platforms.map((p) =>
-            h('option', { value: `${app.path}\u0000${p.name}` }, `${app.name} · ${p.name} (${p.kind})`))));
+        this.picker.replaceChildren(
+            ...this.apps.flatMap((app) =>
+                app.platforms.map((p) => h('option', { value: `${app.path}\u0000${p.name}` }, `${app.name} · ${p.name} (${p.kind})`)),
+            ),
+        );
         if (previous && [...this.picker.options].some((o) => o.value === previous)) this.picker.value = previous;
     }
 
@@ -111,7 +130,9 @@ export class GeneratePanel {
             this.current = { app, platform, files };
             try {
                 this.current.trace = await api.trace(app.path, platform);
-            } catch { /* no trace (failed generation) */ }
+            } catch {
+                /* no trace (failed generation) */
+            }
             this.renderTree();
             const errors = result.diagnostics.filter((d) => d.severity === 'error').length;
             this.status.className = `generate-status ${result.ok ? 'ok' : 'failed'}`;
@@ -154,7 +175,7 @@ export class GeneratePanel {
         const byFile = new Map<string, GenerateDiagnostic[]>();
         for (const d of diagnostics) {
             const file = d.file || app.path;
-            byFile.set(file, [...byFile.get(file) ?? [], d]);
+            byFile.set(file, [...(byFile.get(file) ?? []), d]);
         }
         for (const [file, list] of byFile) {
             let model: monaco.editor.ITextModel;
@@ -163,15 +184,28 @@ export class GeneratePanel {
             } catch {
                 continue;
             }
-            monaco.editor.setModelMarkers(model, MARKER_OWNER, list.map((d) => {
-                const range = d.range;
-                return {
-                    severity: d.severity === 'error' ? monaco.MarkerSeverity.Error : d.severity === 'warning' ? monaco.MarkerSeverity.Warning : monaco.MarkerSeverity.Info,
-                    message: d.message, code: d.code, source: 'generate',
-                    startLineNumber: range.start.line + 1, startColumn: range.start.character + 1,
-                    endLineNumber: range.end.line + 1, endColumn: Math.max(range.end.character + 1, range.start.character + 2),
-                };
-            }));
+            monaco.editor.setModelMarkers(
+                model,
+                MARKER_OWNER,
+                list.map((d) => {
+                    const range = d.range;
+                    return {
+                        severity:
+                            d.severity === 'error'
+                                ? monaco.MarkerSeverity.Error
+                                : d.severity === 'warning'
+                                  ? monaco.MarkerSeverity.Warning
+                                  : monaco.MarkerSeverity.Info,
+                        message: d.message,
+                        code: d.code,
+                        source: 'generate',
+                        startLineNumber: range.start.line + 1,
+                        startColumn: range.start.character + 1,
+                        endLineNumber: range.end.line + 1,
+                        endColumn: Math.max(range.end.character + 1, range.start.character + 2),
+                    };
+                }),
+            );
             this.markedModels.push(model);
         }
     }
@@ -187,8 +221,12 @@ export class GeneratePanel {
             const parent = folder.includes('/') ? folder.slice(0, folder.lastIndexOf('/')) : '';
             const list = h('ul', { class: 'tree' });
             const depth = folder.split('/').length - 1;
-            const row = h('div', { class: 'tree-row folder', style: `padding-left:${8 + depth * 12}px` },
-                h('span', { class: 'twistie' }, '▾'), h('span', { class: 'tree-label' }, basename(folder)));
+            const row = h(
+                'div',
+                { class: 'tree-row folder', style: `padding-left:${8 + depth * 12}px` },
+                h('span', { class: 'twistie' }, '▾'),
+                h('span', { class: 'tree-label' }, basename(folder)),
+            );
             row.addEventListener('click', () => {
                 list.hidden = !list.hidden;
                 row.firstElementChild!.textContent = list.hidden ? '▸' : '▾';
@@ -200,8 +238,12 @@ export class GeneratePanel {
         for (const file of generated.files) {
             const folder = file.includes('/') ? file.slice(0, file.lastIndexOf('/')) : '';
             const depth = folder ? folder.split('/').length : 0;
-            const row = h('div', { class: 'tree-row file', 'data-path': file, title: file, style: `padding-left:${8 + depth * 12}px` },
-                h('span', { class: 'twistie' }), h('span', { class: 'tree-label' }, basename(file)));
+            const row = h(
+                'div',
+                { class: 'tree-row file', 'data-path': file, title: file, style: `padding-left:${8 + depth * 12}px` },
+                h('span', { class: 'twistie' }),
+                h('span', { class: 'tree-label' }, basename(file)),
+            );
             row.addEventListener('click', () => void this.showFile(file));
             folderList(folder).append(h('li', {}, row));
         }
@@ -219,7 +261,8 @@ export class GeneratePanel {
         else model = monaco.editor.createModel(text, languageOf(file), uri);
         this.preview.setModel(model);
         this.shownFile = file;
-        for (const row of this.tree.querySelectorAll<HTMLElement>('.tree-row.file')) row.classList.toggle('selected', row.dataset.path === file);
+        for (const row of this.tree.querySelectorAll<HTMLElement>('.tree-row.file'))
+            row.classList.toggle('selected', row.dataset.path === file);
         if (lines) {
             const range = new monaco.Range(lines.first + 1, 1, lines.last + 1, model.getLineMaxColumn(lines.last + 1));
             this.preview.setSelection(range);
@@ -248,9 +291,15 @@ export class GeneratePanel {
             return;
         }
         const at = element.range ? `:${element.range.start.line + 1}` : '';
-        const link = h('a', { href: '#', class: 'trace-link', 'data-testid': 'trace-link', title: 'Go to the model element (F12)' },
-            `${element.type} ${element.name ?? ''} — ${element.file}${at}`);
-        link.addEventListener('click', (e) => { e.preventDefault(); this.goToModel(); });
+        const link = h(
+            'a',
+            { href: '#', class: 'trace-link', 'data-testid': 'trace-link', title: 'Go to the model element (F12)' },
+            `${element.type} ${element.name ?? ''} — ${element.file}${at}`,
+        );
+        link.addEventListener('click', (e) => {
+            e.preventDefault();
+            this.goToModel();
+        });
         this.location.replaceChildren(h('span', { class: 'muted' }, `${file}  ↦  `), link);
     }
 
@@ -281,8 +330,9 @@ export class GeneratePanel {
                 const range = t.element.range;
                 if (!range || t.element.file !== rel) continue;
                 const { start, end } = range;
-                const inside = (line > start.line || (line === start.line && character >= start.character))
-                    && (line < end.line || (line === end.line && character <= end.character));
+                const inside =
+                    (line > start.line || (line === start.line && character >= start.character)) &&
+                    (line < end.line || (line === end.line && character <= end.character));
                 if (!inside) continue;
                 const size = (end.line - start.line) * 10000 + (end.character - start.character);
                 if (!best || size < best.size) best = { file: f.path, lines: t.lines, size };

@@ -84,10 +84,12 @@ export function impliedConnectors(c: ComponentType): ImpliedConnector[] {
     const result: ImpliedConnector[] = [];
     for (const target of targets) {
         if (fed.has(endKey(target.sub?.name, target.info.name))) continue;
-        const candidates = sources.filter((s) =>
-            (s.sub === undefined || s.sub !== target.sub)
-            && (declaration.kind === 'type' || s.info.name === target.info.name)
-            && sameType(s.info.type, target.info.type));
+        const candidates = sources.filter(
+            (s) =>
+                (s.sub === undefined || s.sub !== target.sub) &&
+                (declaration.kind === 'type' || s.info.name === target.info.name) &&
+                sameType(s.info.type, target.info.type),
+        );
         if (candidates.length === 1) result.push({ source: candidates[0]!, target, declaration });
     }
     return result;

@@ -1,7 +1,5 @@
 import { AstUtils, type AstNode } from 'langium';
-import type {
-    BehaviorDeclaration, ComponentType, ComponentTypeRef, MCType, Port, Stereotype, Subcomponent
-} from '../generated/ast.js';
+import type { BehaviorDeclaration, ComponentType, ComponentTypeRef, MCType, Port, Stereotype, Subcomponent } from '../generated/ast.js';
 import { isComponentType } from '../generated/ast.js';
 import { bind, typeOfMCType } from '../types/type-resolver.js';
 import { configuredElements } from './variant-context.js';
@@ -64,7 +62,12 @@ export function behaviorTiming(c: ComponentType): Timing | undefined {
  * Direction, type and stereotypes of a port: in `port in int a, b, out int c;` the port `b`
  * has none of its own and takes those of `a`.
  */
-export function portHeader(port: Port): { direction: 'in' | 'out'; type: MCType | undefined; stereotype?: Stereotype; declaration?: Stereotype } {
+export function portHeader(port: Port): {
+    direction: 'in' | 'out';
+    type: MCType | undefined;
+    stereotype?: Stereotype;
+    declaration?: Stereotype;
+} {
     const decl = port.$container;
     const ports = decl?.ports ?? [port];
     for (let i = Math.max(ports.indexOf(port), 0); i >= 0; i--) {
@@ -90,7 +93,7 @@ export function ownPorts(c: ComponentType, s: Substitution = EMPTY_SUBSTITUTION)
                 timing: declared ?? fromBehavior ?? DEFAULT_TIMING,
                 explicitTiming: declared !== undefined,
                 delayed: stereotypeNames(h.stereotype, h.declaration).includes('delayed'),
-                owner: c
+                owner: c,
             });
         }
     }
@@ -98,7 +101,10 @@ export function ownPorts(c: ComponentType, s: Substitution = EMPTY_SUBSTITUTION)
 }
 
 /** Resolved parent component types with the substitution their type arguments define. */
-export function parentsOf(c: ComponentType, s: Substitution = EMPTY_SUBSTITUTION): Array<{ decl: ComponentType; subst: Substitution; ref: ComponentTypeRef }> {
+export function parentsOf(
+    c: ComponentType,
+    s: Substitution = EMPTY_SUBSTITUTION,
+): Array<{ decl: ComponentType; subst: Substitution; ref: ComponentTypeRef }> {
     const result: Array<{ decl: ComponentType; subst: Substitution; ref: ComponentTypeRef }> = [];
     for (const p of c.parents) {
         const decl = p.type?.ref?.ref;
@@ -112,7 +118,10 @@ export function parentsOf(c: ComponentType, s: Substitution = EMPTY_SUBSTITUTION
 export function substitutionFor(ref: ComponentTypeRef, outer: Substitution = EMPTY_SUBSTITUTION): Substitution {
     const decl = ref?.ref?.ref;
     if (!decl) return EMPTY_SUBSTITUTION;
-    return bind(decl.typeParams, ref.typeArgs.map((a) => typeOfMCType(a, outer)));
+    return bind(
+        decl.typeParams,
+        ref.typeArgs.map((a) => typeOfMCType(a, outer)),
+    );
 }
 
 /** Own and inherited ports; an own port hides an inherited port of the same name. */

@@ -72,7 +72,10 @@ export function chainSource<Scope, Stop>(graph: ChainGraph<Scope, Stop>, scope: 
 }
 
 /** The source of the first connector among `connectors` whose targets include `target`. */
-export function feedingSource(connectors: Iterable<{ readonly source: PortEnd; readonly targets: readonly PortEnd[] }>, target: PortEnd): PortEnd | undefined {
+export function feedingSource(
+    connectors: Iterable<{ readonly source: PortEnd; readonly targets: readonly PortEnd[] }>,
+    target: PortEnd,
+): PortEnd | undefined {
     for (const c of connectors) {
         if (c.targets.some((t) => t.port === target.port && t.sub === target.sub)) return c.source;
     }

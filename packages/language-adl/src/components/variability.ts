@@ -117,10 +117,14 @@ class Compiler {
                     const r = this.bool(e.right, inst);
                     if (!l || !r) return undefined;
                     switch (op) {
-                        case '==': return (a) => l(a) === r(a);
-                        case '&': return (a) => l(a) && r(a);
-                        case '|': return (a) => l(a) || r(a);
-                        default: return (a) => l(a) !== r(a);
+                        case '==':
+                            return (a) => l(a) === r(a);
+                        case '&':
+                            return (a) => l(a) && r(a);
+                        case '|':
+                            return (a) => l(a) || r(a);
+                        default:
+                            return (a) => l(a) !== r(a);
                     }
                 }
                 return undefined;
@@ -178,12 +182,14 @@ class Compiler {
 
 /** `Type.CONSTANT`: a name starting with an upper-case letter, then a member. */
 function isConstantAccess(e: Expression | undefined): boolean {
-    return e?.$type === 'FieldAccessExpression' && e.receiver.$type === 'NameExpression'
-        && /^[A-Z]/.test(e.receiver.ref?.$refText ?? '');
+    return e?.$type === 'FieldAccessExpression' && e.receiver.$type === 'NameExpression' && /^[A-Z]/.test(e.receiver.ref?.$refText ?? '');
 }
 
 /** Own and inherited constraints and variation points of a component type, with the type that declares them. */
-function declarationsOf(c: ComponentType, seen = new Set<ComponentType>()): { constraints: Array<{ node: ConstraintDeclaration; guards: VarIf[] }>; points: VarIf[] } {
+function declarationsOf(
+    c: ComponentType,
+    seen = new Set<ComponentType>(),
+): { constraints: Array<{ node: ConstraintDeclaration; guards: VarIf[] }>; points: VarIf[] } {
     const constraints: Array<{ node: ConstraintDeclaration; guards: VarIf[] }> = [];
     const points: VarIf[] = [];
     if (seen.has(c)) return { constraints, points };
@@ -251,7 +257,11 @@ function bindingsOf(sub: Subcomponent, decl: ComponentType, outer: Instance): Ma
  * subcomponents that do. `memo` (e.g. a workspace cache) answers for types asked before, so
  * asking every type of a large model walks each type once.
  */
-export function isVariable(c: ComponentType, memo?: Map<ComponentType, boolean> | { get(c: ComponentType): boolean | undefined; set(c: ComponentType, v: boolean): void }, active = new Set<ComponentType>()): boolean {
+export function isVariable(
+    c: ComponentType,
+    memo?: Map<ComponentType, boolean> | { get(c: ComponentType): boolean | undefined; set(c: ComponentType, v: boolean): void },
+    active = new Set<ComponentType>(),
+): boolean {
     const known = memo?.get(c);
     if (known !== undefined) return known;
     if (active.has(c)) return false; // a cycle (reported elsewhere)
@@ -291,7 +301,12 @@ export function configurationSpace(c: ComponentType): ConfigurationSpace {
         for (const s of allSubcomponents(inst.decl)) {
             const decl = subcomponentType(s).decl;
             if (!decl || active.has(decl)) continue;
-            const child: Instance = { decl, prefix: `${inst.prefix}${s.name}.`, path: [...inst.path, s], bindings: bindingsOf(s, decl, inst) };
+            const child: Instance = {
+                decl,
+                prefix: `${inst.prefix}${s.name}.`,
+                path: [...inst.path, s],
+                bindings: bindingsOf(s, decl, inst),
+            };
             // Feature bindings of the instantiation (`sub(f = true)`) fix the subcomponent's features.
             for (const arg of s.args) {
                 if (arg.$type !== 'AssignmentExpression' || arg.op !== '=' || arg.left.$type !== 'NameExpression') continue;
@@ -329,7 +344,7 @@ export function configurationSpace(c: ComponentType): ConfigurationSpace {
         const env: VariantEnv = {
             // A variation point outside the analysed tree (deeper than MAX_DEPTH): all of it.
             decide: (v) => formulaOf.get(prefix)?.get(v)?.(a) ?? true,
-            sub: (s) => envFor(a, `${prefix}${s.name}.`, cache)
+            sub: (s) => envFor(a, `${prefix}${s.name}.`, cache),
         };
         cache.set(prefix, env);
         return env;
@@ -365,11 +380,13 @@ export function configurationSpace(c: ComponentType): ConfigurationSpace {
                     featureValues: (c) => {
                         const features = allFeatures(c);
                         if (features.length === 0) return undefined;
-                        return Object.fromEntries(features.map((f) => {
-                            const i = keys.indexOf(prefix + f.name);
-                            return [f.name, i >= 0 && Math.floor(a / 2 ** i) % 2 === 1];
-                        }));
-                    }
+                        return Object.fromEntries(
+                            features.map((f) => {
+                                const i = keys.indexOf(prefix + f.name);
+                                return [f.name, i >= 0 && Math.floor(a / 2 ** i) % 2 === 1];
+                            }),
+                        );
+                    },
                 };
                 cache.set(prefix, env);
                 return env;
@@ -380,7 +397,7 @@ export function configurationSpace(c: ComponentType): ConfigurationSpace {
             const i = keys.indexOf(key);
             return i >= 0 && Math.floor(a / 2 ** i) % 2 === 1;
         },
-        signature
+        signature,
     };
 }
 

@@ -1,7 +1,14 @@
 import { CstUtils, type AstNode, type LangiumDocument, type MaybePromise } from 'langium';
 import type { CodeActionProvider } from 'langium/lsp';
 import type { CodeActionParams } from 'vscode-languageserver-protocol';
-import { CodeActionKind, type CodeAction, type Command, type Diagnostic, type TextEdit, type WorkspaceEdit } from 'vscode-languageserver-types';
+import {
+    CodeActionKind,
+    type CodeAction,
+    type Command,
+    type Diagnostic,
+    type TextEdit,
+    type WorkspaceEdit,
+} from 'vscode-languageserver-types';
 import type { AdlLspServices } from './lsp-module.js';
 
 /** What a quick fix gets: the diagnostic it fixes, its document and the node at its start. */

@@ -1,10 +1,23 @@
 import {
-    AstUtils, CstUtils, GrammarAST, GrammarUtils, stream, type AstNode, type AstNodeDescription, type LangiumDocument,
-    type MaybePromise, type ReferenceInfo, type Stream
+    AstUtils,
+    CstUtils,
+    GrammarAST,
+    GrammarUtils,
+    stream,
+    type AstNode,
+    type AstNodeDescription,
+    type LangiumDocument,
+    type MaybePromise,
+    type ReferenceInfo,
+    type Stream,
 } from 'langium';
 import {
-    DefaultCompletionProvider, type CompletionAcceptor, type CompletionContext, type CompletionProviderOptions,
-    type CompletionValueItem, type NextFeature
+    DefaultCompletionProvider,
+    type CompletionAcceptor,
+    type CompletionContext,
+    type CompletionProviderOptions,
+    type CompletionValueItem,
+    type NextFeature,
 } from 'langium/lsp';
 import type { TextEdit } from 'vscode-languageserver-types';
 import type { AdlLspServices } from './lsp-module.js';
@@ -18,7 +31,11 @@ import { importName, membersOf } from './node-info.js';
  * Completes one feature the parser expects at the cursor; returns true when it handled the
  * feature completely (the default completion is then skipped for it).
  */
-export type CompletionContribution = (context: CompletionContext, next: NextFeature, acceptor: CompletionAcceptor) => MaybePromise<boolean | void>;
+export type CompletionContribution = (
+    context: CompletionContext,
+    next: NextFeature,
+    acceptor: CompletionAcceptor,
+) => MaybePromise<boolean | void>;
 
 /** Reference types whose targets are model types or components (completed by simple name). */
 const TYPE_TARGETS = new Set(['CDClass', 'CDEnum', 'ComponentType']);
@@ -92,7 +109,7 @@ export class AdlCompletionProvider extends DefaultCompletionProvider {
                 out.push({ ...best, name: simple });
             } else if (!resolved && refInfo.container.$type !== 'NameExpression' && this.canImport(context.document)) {
                 const candidate = { ...best, name: simple };
-                this.imports.set(candidate, best.node ? importName(best.node) ?? best.name : best.name);
+                this.imports.set(candidate, best.node ? (importName(best.node) ?? best.name) : best.name);
                 out.push(candidate);
             } else {
                 out.push(best);
@@ -101,18 +118,22 @@ export class AdlCompletionProvider extends DefaultCompletionProvider {
         return stream(out);
     }
 
-    protected override createReferenceCompletionItem(nodeDescription: AstNodeDescription, refInfo: ReferenceInfo, context: CompletionContext): CompletionValueItem {
+    protected override createReferenceCompletionItem(
+        nodeDescription: AstNodeDescription,
+        refInfo: ReferenceInfo,
+        context: CompletionContext,
+    ): CompletionValueItem {
         const item = super.createReferenceCompletionItem(nodeDescription, refInfo, context);
         const node = nodeDescription.node;
         const toImport = this.imports.get(nodeDescription);
         const isType = TYPE_TARGETS.has(nodeDescription.type);
         return {
             ...item,
-            detail: toImport ? `${toImport} (import)` : (node && detail(node)) ?? nodeDescription.type,
+            detail: toImport ? `${toImport} (import)` : ((node && detail(node)) ?? nodeDescription.type),
             documentation: this.documentationOf(node),
             // Names of the component (ports, fields, ...) before types, types before keywords.
             sortText: isType && refInfo.container.$type === 'NameExpression' ? '2' : '0',
-            additionalTextEdits: toImport ? importEdits(context.document, toImport) : undefined
+            additionalTextEdits: toImport ? importEdits(context.document, toImport) : undefined,
         };
     }
 
@@ -167,7 +188,7 @@ export class AdlCompletionProvider extends DefaultCompletionProvider {
                 kind: this.nodeKindProvider.getCompletionItemKind(p.port),
                 detail: detail(p.port),
                 documentation: this.documentationOf(p.port),
-                sortText: '0'
+                sortText: '0',
             });
         }
         return true;
@@ -184,7 +205,7 @@ export class AdlCompletionProvider extends DefaultCompletionProvider {
                 kind: kinds.getCompletionItemKind(m.node),
                 detail: detail(m.node),
                 documentation: this.documentationOf(m.node),
-                sortText: '0'
+                sortText: '0',
             });
         }
     }
@@ -198,7 +219,12 @@ export class AdlCompletionProvider extends DefaultCompletionProvider {
         if (leaf && leaf.end <= dot && !leaf.hidden) {
             let expr: AstNode | undefined = leaf.astNode;
             if (expr && isExpression(expr)) {
-                while (expr.$container && isExpression(expr.$container) && expr.$container.$cstNode && expr.$container.$cstNode.end === leaf.end) {
+                while (
+                    expr.$container &&
+                    isExpression(expr.$container) &&
+                    expr.$container.$cstNode &&
+                    expr.$container.$cstNode.end === leaf.end
+                ) {
                     expr = expr.$container;
                 }
                 const t = typer.typeOf(expr as Parameters<typeof typer.typeOf>[0], []);

@@ -1,10 +1,34 @@
 import { AstUtils, type AstNode } from 'langium';
 import type {
-    CDAttribute, CDClass, CDEnum, CDEnumConstant, CDMethod, ComponentType, Field, LocalVariable, Parameter, Port, Subcomponent, TypeParameter
+    CDAttribute,
+    CDClass,
+    CDEnum,
+    CDEnumConstant,
+    CDMethod,
+    ComponentType,
+    Field,
+    LocalVariable,
+    Parameter,
+    Port,
+    Subcomponent,
+    TypeParameter,
 } from '../generated/ast.js';
-import { isArcModel, isCDModel, isClassDiagram, isComponentType, isFieldDeclaration, isLocalVariableDeclaration } from '../generated/ast.js';
 import {
-    allPorts, behaviorTiming, enclosingComponent, portHeader, stereotypeNames, subcomponentType, type PortInfo
+    isArcModel,
+    isCDModel,
+    isClassDiagram,
+    isComponentType,
+    isFieldDeclaration,
+    isLocalVariableDeclaration,
+} from '../generated/ast.js';
+import {
+    allPorts,
+    behaviorTiming,
+    enclosingComponent,
+    portHeader,
+    stereotypeNames,
+    subcomponentType,
+    type PortInfo,
 } from '../components/component-model.js';
 import { exportedNames, sourceText } from './node-info.js';
 
@@ -22,11 +46,12 @@ export function signature(node: AstNode): string | undefined {
             const stereo = stereotypeNames(h.declaration, h.stereotype);
             return `${stereo.length ? `<<${stereo.join(', ')}>> ` : ''}port ${h.direction} ${sourceText(h.type) || '?'} ${p.name}`;
         }
-        case 'ComponentType': return componentSignature(node as ComponentType);
+        case 'ComponentType':
+            return componentSignature(node as ComponentType);
         case 'Subcomponent': {
             const s = node as Subcomponent;
             const t = subcomponentType(s);
-            const typeText = t.ref ? sourceText(t.ref) : t.decl?.name ?? '?';
+            const typeText = t.ref ? sourceText(t.ref) : (t.decl?.name ?? '?');
             return `${typeText} ${s.name}${s.args.length ? `(${s.args.map((a) => sourceText(a)).join(', ')})` : ''}`;
         }
         case 'Field': {
@@ -34,7 +59,8 @@ export function signature(node: AstNode): string | undefined {
             const decl = f.$container;
             return `${isFieldDeclaration(decl) ? sourceText(decl.type) : '?'} ${f.name}${f.init ? ` = ${sourceText(f.init)}` : ''}`;
         }
-        case 'Feature': return `feature ${(node as unknown as { name: string }).name}`;
+        case 'Feature':
+            return `feature ${(node as unknown as { name: string }).name}`;
         case 'Parameter': {
             const p = node as Parameter;
             return `${sourceText(p.type)} ${p.name}${p.default ? ` = ${sourceText(p.default)}` : ''}`;
@@ -44,7 +70,8 @@ export function signature(node: AstNode): string | undefined {
             const decl = v.$container;
             return `${isLocalVariableDeclaration(decl) ? sourceText(decl.type) : '?'} ${v.name}`;
         }
-        case 'TypeParameter': return sourceText(node) || (node as TypeParameter).name;
+        case 'TypeParameter':
+            return sourceText(node) || (node as TypeParameter).name;
         case 'CDClass': {
             const c = node as CDClass;
             const text = sourceText(c.$cstNode);
@@ -55,10 +82,14 @@ export function signature(node: AstNode): string | undefined {
             const e = node as CDEnum;
             return `enum ${e.name} { ${e.constants.map((c) => c.name).join(', ')} }`;
         }
-        case 'CDEnumConstant': return `${(node.$container as CDEnum).name}.${(node as CDEnumConstant).name}`;
-        case 'CDAttribute': return `${sourceText((node as CDAttribute).type)} ${(node as CDAttribute).name}`;
-        case 'CDMethod': return sourceText(node as CDMethod).replace(/;$/, '');
-        default: return undefined;
+        case 'CDEnumConstant':
+            return `${(node.$container as CDEnum).name}.${(node as CDEnumConstant).name}`;
+        case 'CDAttribute':
+            return `${sourceText((node as CDAttribute).type)} ${(node as CDAttribute).name}`;
+        case 'CDMethod':
+            return sourceText(node as CDMethod).replace(/;$/, '');
+        default:
+            return undefined;
     }
 }
 
@@ -86,8 +117,10 @@ export function detail(node: AstNode): string | undefined {
             const decl = node.$container;
             return isFieldDeclaration(decl) ? sourceText(decl.type) : undefined;
         }
-        case 'Parameter': return sourceText((node as Parameter).type);
-        case 'Feature': return 'boolean';
+        case 'Parameter':
+            return sourceText((node as Parameter).type);
+        case 'Feature':
+            return 'boolean';
         case 'LocalVariable': {
             const decl = node.$container;
             return isLocalVariableDeclaration(decl) ? sourceText(decl.type) : undefined;
@@ -99,9 +132,12 @@ export function detail(node: AstNode): string | undefined {
         case 'CDClass':
         case 'CDEnum':
             return exportedNames(node).sort((a, b) => a.length - b.length)[0];
-        case 'CDEnumConstant': return (node.$container as CDEnum).name;
-        case 'CDAttribute': return sourceText((node as CDAttribute).type);
-        default: return undefined;
+        case 'CDEnumConstant':
+            return (node.$container as CDEnum).name;
+        case 'CDAttribute':
+            return sourceText((node as CDAttribute).type);
+        default:
+            return undefined;
     }
 }
 
@@ -146,7 +182,9 @@ export function describe(node: AstNode, languageOf: LanguageOf): string | undefi
             const info = owner && allPorts(owner).find((p) => p.port === port);
             if (owner && info) {
                 const what = info.direction === 'in' ? 'Incoming' : 'Outgoing';
-                const timing = info.explicitTiming ? `timing \`${info.timing}\`` : `timing \`${info.timing}\` (${behaviorTiming(owner) ? 'from the behavior' : 'default'})`;
+                const timing = info.explicitTiming
+                    ? `timing \`${info.timing}\``
+                    : `timing \`${info.timing}\` (${behaviorTiming(owner) ? 'from the behavior' : 'default'})`;
                 const facts = [`type \`${printPortType(info)}\``, timing];
                 if (info.delayed) facts.push('delayed by one time slice');
                 parts.push(`${what} port of component \`${owner.name}\`: ${facts.join(', ')}.`);
@@ -155,9 +193,14 @@ export function describe(node: AstNode, languageOf: LanguageOf): string | undefi
         }
         case 'ComponentType': {
             const c = node as ComponentType;
-            const where = isArcModel(c.$container) ? (c.$container.package ? `Component in package \`${c.$container.package}\`` : 'Component in the default package')
+            const where = isArcModel(c.$container)
+                ? c.$container.package
+                    ? `Component in package \`${c.$container.package}\``
+                    : 'Component in the default package'
                 : `Inner component of \`${enclosingComponent(c.$container)?.name ?? '?'}\``;
-            parts.push(`${where}${c.body?.elements.some((e) => e.$type === 'ComponentInstantiation' || (isComponentType(e) && e.instances.length > 0)) ? ' (composed)' : ''}.`);
+            parts.push(
+                `${where}${c.body?.elements.some((e) => e.$type === 'ComponentInstantiation' || (isComponentType(e) && e.instances.length > 0)) ? ' (composed)' : ''}.`,
+            );
             const sections = [paramsSection(c), portsSection(c)].filter((s): s is string => !!s);
             parts.push(...sections);
             break;
@@ -177,10 +220,14 @@ export function describe(node: AstNode, languageOf: LanguageOf): string | undefi
             parts.push(`Field of component \`${enclosingComponent(node)?.name ?? '?'}\`.`);
             break;
         case 'Feature':
-            parts.push(`Feature of component \`${enclosingComponent(node)?.name ?? '?'}\`: selects variation points (\`varif\`); its value is fixed per configuration (\`constraint\`, the application's binding).`);
+            parts.push(
+                `Feature of component \`${enclosingComponent(node)?.name ?? '?'}\`: selects variation points (\`varif\`); its value is fixed per configuration (\`constraint\`, the application's binding).`,
+            );
             break;
         case 'Parameter':
-            parts.push(`Configuration parameter of component \`${enclosingComponent(node)?.name ?? '?'}\`${(node as Parameter).default ? ' (optional)' : ''}.`);
+            parts.push(
+                `Configuration parameter of component \`${enclosingComponent(node)?.name ?? '?'}\`${(node as Parameter).default ? ' (optional)' : ''}.`,
+            );
             break;
         case 'LocalVariable':
             parts.push('Local variable.');
@@ -189,7 +236,9 @@ export function describe(node: AstNode, languageOf: LanguageOf): string | undefi
         case 'CDEnum': {
             const qn = exportedNames(node).sort((a, b) => a.length - b.length)[0];
             const diagram = node.$container;
-            parts.push(`${node.$type === 'CDEnum' ? 'Enumeration' : (node as CDClass).kind === 'interface' ? 'Interface' : 'Class'} \`${qn ?? (node as CDClass).name}\`${isClassDiagram(diagram) ? ` of class diagram \`${diagram.name}\`` : ''}.`);
+            parts.push(
+                `${node.$type === 'CDEnum' ? 'Enumeration' : (node as CDClass).kind === 'interface' ? 'Interface' : 'Class'} \`${qn ?? (node as CDClass).name}\`${isClassDiagram(diagram) ? ` of class diagram \`${diagram.name}\`` : ''}.`,
+            );
             if (node.$type === 'CDClass') {
                 const attrs = (node as CDClass).members.filter((m): m is CDAttribute => m.$type === 'CDAttribute');
                 if (attrs.length) parts.push(`**Attributes**\n\n${attrs.map((a) => `- \`${signature(a)}\``).join('\n')}`);

@@ -17,7 +17,7 @@ export function insertAfter(document: LangiumDocument, anchor: AstNode, text: st
     const cst = anchor.$cstNode!;
     let end = cst.range.end;
     const next = nextLeaf(cst);
-    if (next && next.hidden && next.range.start.line === end.line) end = next.range.end;
+    if (next?.hidden && next.range.start.line === end.line) end = next.range.end;
     const indent = lineIndentation(document, cst.range.start.line);
     return { range: { start: end, end }, newText: `\n${indent}${text}` };
 }

@@ -46,7 +46,8 @@ export class AdlFoldingRangeProvider extends DefaultFoldingRangeProvider {
         let start: number | undefined;
         let end = -1;
         const flush = (): void => {
-            if (start !== undefined && end - start >= 1) acceptor(FoldingRange.create(start, end, undefined, undefined, FoldingRangeKind.Comment));
+            if (start !== undefined && end - start >= 1)
+                acceptor(FoldingRange.create(start, end, undefined, undefined, FoldingRangeKind.Comment));
             start = undefined;
         };
         for (const leaf of CstUtils.flattenCst(cst)) {

@@ -1,8 +1,18 @@
 import { GrammarUtils, type AstNode, type CstNode, type LangiumDocument } from 'langium';
 import {
-    AbstractFormatter, Formatting, type FormattingAction, type FormattingContext, type FormattingRegion, type NodeFormatter
+    AbstractFormatter,
+    Formatting,
+    type FormattingAction,
+    type FormattingContext,
+    type FormattingRegion,
+    type NodeFormatter,
 } from 'langium/lsp';
-import type { DocumentFormattingParams, DocumentOnTypeFormattingParams, DocumentRangeFormattingParams, FormattingOptions } from 'vscode-languageserver-protocol';
+import type {
+    DocumentFormattingParams,
+    DocumentOnTypeFormattingParams,
+    DocumentRangeFormattingParams,
+    FormattingOptions,
+} from 'vscode-languageserver-protocol';
 import type { TextEdit } from 'vscode-languageserver-types';
 import { isExpression } from '../generated/ast.js';
 import { previousLeaf } from './node-info.js';
@@ -137,7 +147,7 @@ export class AdlFormatter extends AbstractFormatter {
         const cst = node.$cstNode;
         if (!cst) return;
         let first: CstNode = cst;
-        for (let prev = previousLeaf(first); prev && prev.hidden && first.range.start.line - prev.range.end.line <= 1; prev = previousLeaf(prev)) {
+        for (let prev = previousLeaf(first); prev?.hidden && first.range.start.line - prev.range.end.line <= 1; prev = previousLeaf(prev)) {
             const before = previousLeaf(prev);
             if (before && before.range.end.line === prev.range.start.line) break; // trails the element before
             first = prev;
@@ -181,7 +191,12 @@ export class AdlFormatter extends AbstractFormatter {
         return { ...options, insertSpaces: true, tabSize: this.indentSize };
     }
 
-    protected override createTextEdit(a: CstNode | undefined, b: CstNode, formatting: FormattingAction, context: FormattingContext): TextEdit[] {
+    protected override createTextEdit(
+        a: CstNode | undefined,
+        b: CstNode,
+        formatting: FormattingAction,
+        context: FormattingContext,
+    ): TextEdit[] {
         if (isLines(formatting) && a && a.range.end.line < b.range.start.line) {
             // Langium only re-indents comments; this also sets the line breaks before them.
             const indent = ' '.repeat(context.indentation * (context.options.insertSpaces ? context.options.tabSize : 1));
@@ -198,7 +213,12 @@ export class AdlFormatter extends AbstractFormatter {
      * Comments are re-indented with the code around them, except inside nodes no rule formats
      * (e.g. the block of a behavior language without formatting rules): those stay as written.
      */
-    protected override createHiddenTextEdits(previous: CstNode | undefined, hidden: CstNode, formatting: FormattingAction | undefined, context: FormattingContext): TextEdit[] {
+    protected override createHiddenTextEdits(
+        previous: CstNode | undefined,
+        hidden: CstNode,
+        formatting: FormattingAction | undefined,
+        context: FormattingContext,
+    ): TextEdit[] {
         if (!formatting && !this.rules.has(hidden.astNode.$type)) return [];
         return super.createHiddenTextEdits(previous, hidden, formatting, context);
     }
@@ -241,7 +261,7 @@ function nodes(node: AstNode, property: string): AstNode[] {
 
 function child(node: AstNode, property: string): AstNode | undefined {
     const v = (node as unknown as Props)[property];
-    return typeof v === 'object' && v !== null && '$type' in v ? v as AstNode : undefined;
+    return typeof v === 'object' && v !== null && '$type' in v ? (v as AstNode) : undefined;
 }
 
 /**
@@ -309,7 +329,9 @@ function registerHostRules(f: AdlFormatter): void {
         fm.list(n, typeParams);
         fm.list(n, nodes(n, 'params'));
         const instances = nodes(n, 'instances');
-        instances.forEach((inst, i) => { if (i === 0) on.node(inst).prepend(Formatting.oneSpace()); });
+        instances.forEach((inst, i) => {
+            if (i === 0) on.node(inst).prepend(Formatting.oneSpace());
+        });
         fm.list(n, instances);
         on.keywords('extends').surround(Formatting.oneSpace());
         fm.list(n, nodes(n, 'parents'));
@@ -428,7 +450,7 @@ function registerHostRules(f: AdlFormatter): void {
     r.set('SwitchGroup', (n, fm) => {
         const on = fm.on(n);
         const labels = nodes(n, 'labels');
-        labels.slice(1).forEach((l) => on.node(l).prepend(Formatting.newLine()));
+        for (const l of labels.slice(1)) on.node(l).prepend(Formatting.newLine());
         const arrow = labels.some((l) => (l as AstNode & { arrow?: boolean }).arrow);
         for (const st of nodes(n, 'statements')) on.node(st).prepend(arrow ? Formatting.oneSpace() : Formatting.indent());
     });

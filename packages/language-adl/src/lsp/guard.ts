@@ -27,7 +27,7 @@ const ENTRY_METHODS: Readonly<Record<string, readonly string[]>> = {
     CallHierarchyProvider: ['prepareCallHierarchy', 'incomingCalls', 'outgoingCalls'],
     TypeHierarchyProvider: ['prepareTypeHierarchy', 'supertypes', 'subtypes'],
     WorkspaceSymbolProvider: ['getSymbols', 'resolveSymbol'],
-    ExecuteCommandHandler: ['executeCommand']
+    ExecuteCommandHandler: ['executeCommand'],
 };
 
 /** At most this many distinct failures are logged (a model that breaks a feature on every keystroke logs once). */
@@ -46,7 +46,9 @@ export function refusal(feature: string, error: unknown, log: (message: string) 
     const key = `${feature}: ${message}`;
     if (!logged.has(key) && logged.size < MAX_LOGGED) {
         logged.add(key);
-        log(`${feature} failed (further failures with this message are not logged): ${error instanceof Error && error.stack ? error.stack : message}`);
+        log(
+            `${feature} failed (further failures with this message are not logged): ${error instanceof Error && error.stack ? error.stack : message}`,
+        );
     }
     return new ResponseError(LSPErrorCodes.RequestFailed, `${feature} failed: ${message}`);
 }
@@ -59,7 +61,10 @@ function callGuarded(feature: string, call: () => unknown, log: (message: string
     } catch (e) {
         throw refusal(feature, e, log);
     }
-    if (result instanceof Promise) return result.catch((e: unknown) => { throw refusal(feature, e, log); });
+    if (result instanceof Promise)
+        return result.catch((e: unknown) => {
+            throw refusal(feature, e, log);
+        });
     return result;
 }
 
@@ -84,8 +89,9 @@ export function guardService<T extends object>(name: string, service: T, log?: (
             const value: unknown = Reflect.get(target, key, receiver);
             if (typeof key !== 'string' || typeof value !== 'function' || !methods.includes(key)) return value;
             const method = value as (...args: unknown[]) => unknown;
-            return (...args: unknown[]) => callGuarded(`${name}.${key}`, () => method.apply(target, args), log ?? ((m) => console.error(m)));
-        }
+            return (...args: unknown[]) =>
+                callGuarded(`${name}.${key}`, () => method.apply(target, args), log ?? ((m) => console.error(m)));
+        },
     });
 }
 
@@ -102,12 +108,13 @@ export function guardLspModule<M extends object>(module: M): M {
     if (typeof lsp !== 'object' || lsp === null) return module;
     const guarded: Record<string, unknown> = {};
     for (const [name, factory] of Object.entries(lsp)) {
-        guarded[name] = typeof factory === 'function' && name in ENTRY_METHODS
-            ? (services: unknown) => {
-                const service: unknown = (factory as (s: unknown) => unknown)(services);
-                return typeof service === 'object' && service !== null ? guardService(name, service, serverLog(services)) : service;
-            }
-            : factory;
+        guarded[name] =
+            typeof factory === 'function' && name in ENTRY_METHODS
+                ? (services: unknown) => {
+                      const service: unknown = (factory as (s: unknown) => unknown)(services);
+                      return typeof service === 'object' && service !== null ? guardService(name, service, serverLog(services)) : service;
+                  }
+                : factory;
     }
     return { ...module, lsp: guarded } as M;
 }

@@ -9,10 +9,17 @@ import { documentOf } from './node-info.js';
  * declaration does not have; its uses in this document are highlighted without a declaration.
  */
 export class AdlDocumentHighlightProvider extends DefaultDocumentHighlightProvider {
-    override getDocumentHighlight(document: LangiumDocument, params: DocumentHighlightParams): MaybePromise<DocumentHighlight[] | undefined> {
+    override getDocumentHighlight(
+        document: LangiumDocument,
+        params: DocumentHighlightParams,
+    ): MaybePromise<DocumentHighlight[] | undefined> {
         const root = document.parseResult.value.$cstNode;
         if (!root) return undefined;
-        const selected = CstUtils.findDeclarationNodeAtOffset(root, document.textDocument.offsetAt(params.position), this.grammarConfig.nameRegexp);
+        const selected = CstUtils.findDeclarationNodeAtOffset(
+            root,
+            document.textDocument.offsetAt(params.position),
+            this.grammarConfig.nameRegexp,
+        );
         if (!selected) return undefined;
         const highlights: DocumentHighlight[] = [];
         for (const target of this.references.findDeclarations(selected)) {

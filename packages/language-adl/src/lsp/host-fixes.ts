@@ -3,7 +3,13 @@ import { CodeActionKind, type CodeAction, type TextEdit } from 'vscode-languages
 import type { ComponentType, Subcomponent } from '../generated/ast.js';
 import { isArcModel, isCDModel, isComponentType, isConnector, isPortAccess, isSubcomponent } from '../generated/ast.js';
 import {
-    allPorts, elementsOf, enclosingComponent, portHeader, subcomponentType, subcomponentsOf, type PortInfo
+    allPorts,
+    elementsOf,
+    enclosingComponent,
+    portHeader,
+    subcomponentType,
+    subcomponentsOf,
+    type PortInfo,
 } from '../components/component-model.js';
 import { Codes } from '../validation/codes.js';
 import { fixIn, fixWith, mergeEdits, type AdlCodeActionProvider, type QuickFixContext } from './code-actions.js';
@@ -62,13 +68,16 @@ function fixMissingPort(ctx: QuickFixContext): CodeAction | undefined {
     const sub = access.subcomponent?.ref;
     const owner = sub ? subcomponentType(sub).decl : enclosingComponent(connector);
     if (!owner || !otherPort || !isIdentifier(name)) return undefined;
-    const direction = isSource ? (sub ? 'out' : 'in') : (sub ? 'in' : 'out');
+    const direction = isSource ? (sub ? 'out' : 'in') : sub ? 'in' : 'out';
     const type = typeTextFor(portHeader(otherPort).type, owner, ctx.services.maa.NameResolver);
     if (!type) return undefined;
     const ownerDoc = AstUtils.getDocument(owner);
     const lastPortDecl = [...elementsOf(owner)].reverse().find((e) => e.$type === 'PortDeclaration');
     const edit = insertIntoBody(ownerDoc, owner.body, `port ${direction} ${type} ${name};`, lastPortDecl);
-    return fixWith(`Create ${direction === 'in' ? 'incoming' : 'outgoing'} port '${name}' in '${owner.name}'`, mergeEdits({ uri: ownerDoc.uri.toString(), edit }));
+    return fixWith(
+        `Create ${direction === 'in' ? 'incoming' : 'outgoing'} port '${name}' in '${owner.name}'`,
+        mergeEdits({ uri: ownerDoc.uri.toString(), edit }),
+    );
 }
 
 /** `arc/file-name-mismatch`: rename the component (and its uses) or the file. */
@@ -91,7 +100,7 @@ function fixFileName(ctx: QuickFixContext): CodeAction[] {
     out.push({
         title: `Rename file to '${element.name}${ext}'`,
         kind: CodeActionKind.QuickFix,
-        edit: { documentChanges: [{ kind: 'rename', oldUri: ctx.document.uri.toString(), newUri }] }
+        edit: { documentChanges: [{ kind: 'rename', oldUri: ctx.document.uri.toString(), newUri }] },
     });
     return out;
 }
@@ -117,7 +126,9 @@ function fixPackage(ctx: QuickFixContext): CodeAction | undefined {
         const text = doc.getText();
         let end = semicolon.end;
         while (end < text.length && /\s/.test(text[end]!)) end++;
-        return fixIn('Remove the package declaration (default package)', ctx.document, [{ range: { start: keyword.range.start, end: doc.positionAt(end) }, newText: '' }]);
+        return fixIn('Remove the package declaration (default package)', ctx.document, [
+            { range: { start: keyword.range.start, end: doc.positionAt(end) }, newText: '' },
+        ]);
     }
     if (!expected) return undefined;
     const start = { line: 0, character: 0 };
@@ -128,19 +139,25 @@ function fixPackage(ctx: QuickFixContext): CodeAction | undefined {
 function unconnectedSubInPorts(c: ComponentType): Array<{ sub: Subcomponent; port: PortInfo }> {
     const connectors = elementsOf(c).filter(isConnector);
     const targeted = new Set<string>();
-    for (const con of connectors) for (const t of con.targets) if (t.subcomponent) targeted.add(`${t.subcomponent.$refText}.${t.port.$refText}`);
+    for (const con of connectors)
+        for (const t of con.targets) if (t.subcomponent) targeted.add(`${t.subcomponent.$refText}.${t.port.$refText}`);
     const out: Array<{ sub: Subcomponent; port: PortInfo }> = [];
     for (const sub of subcomponentsOf(c)) {
         const { decl, subst } = subcomponentType(sub);
         if (!decl) continue;
-        for (const p of allPorts(decl, subst)) if (p.direction === 'in' && !targeted.has(`${sub.name}.${p.name}`)) out.push({ sub, port: p });
+        for (const p of allPorts(decl, subst))
+            if (p.direction === 'in' && !targeted.has(`${sub.name}.${p.name}`)) out.push({ sub, port: p });
     }
     return out;
 }
 
 function connectorAnchor(c: ComponentType): AstNode | undefined {
     const elements = elementsOf(c);
-    return [...elements].reverse().find(isConnector) ?? [...elements].reverse().find((e) => e.$type === 'ComponentInstantiation' || isComponentType(e)) ?? elements[elements.length - 1];
+    return (
+        [...elements].reverse().find(isConnector) ??
+        [...elements].reverse().find((e) => e.$type === 'ComponentInstantiation' || isComponentType(e)) ??
+        elements[elements.length - 1]
+    );
 }
 
 function connectorEdit(c: ComponentType, text: string): CodeAction['edit'] {
@@ -159,11 +176,14 @@ function fixUnusedInPort(ctx: QuickFixContext): CodeAction[] {
     const candidates = unconnectedSubInPorts(c)
         .filter(({ port: q }) => rel.isAssignable(q.type, port.type))
         .sort((a, b) => Number(b.port.name === port.name) - Number(a.port.name === port.name));
-    return candidates.slice(0, MAX_ALTERNATIVES).map(({ sub, port: q }) => ({
-        title: `Connect '${port.name}' to '${sub.name}.${q.name}'`,
-        kind: CodeActionKind.QuickFix,
-        edit: connectorEdit(c, `${port.name} -> ${sub.name}.${q.name};`)
-    })).filter((a) => a.edit);
+    return candidates
+        .slice(0, MAX_ALTERNATIVES)
+        .map(({ sub, port: q }) => ({
+            title: `Connect '${port.name}' to '${sub.name}.${q.name}'`,
+            kind: CodeActionKind.QuickFix,
+            edit: connectorEdit(c, `${port.name} -> ${sub.name}.${q.name};`),
+        }))
+        .filter((a) => a.edit);
 }
 
 /**
@@ -187,7 +207,8 @@ function fixUnconnectedSubInPort(ctx: QuickFixContext): CodeAction[] {
             if (other === sub) continue;
             const { decl, subst } = subcomponentType(other);
             for (const p of decl ? allPorts(decl, subst) : []) {
-                if (p.direction === 'out' && rel.isAssignable(q.type, p.type)) sources.push({ text: `${other.name}.${p.name}`, exact: p.name === q.name });
+                if (p.direction === 'out' && rel.isAssignable(q.type, p.type))
+                    sources.push({ text: `${other.name}.${p.name}`, exact: p.name === q.name });
             }
         }
         sources.sort((a, b) => Number(b.exact) - Number(a.exact));
@@ -205,7 +226,7 @@ function fixUnconnectedSubInPort(ctx: QuickFixContext): CodeAction[] {
                 out.push({
                     title: `Create incoming port '${q.name}' and connect it to '${sub.name}.${q.name}'`,
                     kind: CodeActionKind.QuickFix,
-                    edit: { changes: { [doc.uri.toString()]: [portEdit, conEdit] } }
+                    edit: { changes: { [doc.uri.toString()]: [portEdit, conEdit] } },
                 });
             }
         }

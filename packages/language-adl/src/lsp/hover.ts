@@ -1,4 +1,4 @@
-import { type AstNode, type LangiumDocument, type MaybePromise, type ServiceRegistry } from 'langium';
+import type { AstNode, LangiumDocument, MaybePromise, ServiceRegistry } from 'langium';
 import type { Hover, HoverParams } from 'vscode-languageserver-protocol';
 import { AstNodeHoverProvider } from 'langium/lsp';
 import type { AdlLspServices } from './lsp-module.js';

@@ -1,7 +1,12 @@
 import type { Module } from 'langium';
 import {
-    createDefaultModule, createDefaultSharedModule, type DefaultSharedModuleContext, type LangiumLSPServices,
-    type LangiumSharedLSPServices, type PartialLangiumLSPServices, type PartialLangiumSharedLSPServices
+    createDefaultModule,
+    createDefaultSharedModule,
+    type DefaultSharedModuleContext,
+    type LangiumLSPServices,
+    type LangiumSharedLSPServices,
+    type PartialLangiumLSPServices,
+    type PartialLangiumSharedLSPServices,
 } from 'langium/lsp';
 import type { AdlServices, AdlSharedServices } from '../adl-module.js';
 import type { BehaviorLanguage } from '../behavior-language.js';
@@ -75,13 +80,13 @@ export type AdlLspServices = AdlServices & LangiumLSPServices & AdlAddedLspServi
 export const AdlLspSharedModule: Module<AdlLspSharedServices, PartialLangiumSharedLSPServices & AdlAddedSharedLspServices> = {
     lsp: {
         NodeKindProvider: () => new AdlNodeKindProvider(),
-        DocumentUpdateHandler: (s) => new AdlDocumentUpdateHandler(s)
+        DocumentUpdateHandler: (s) => new AdlDocumentUpdateHandler(s),
     },
     workspace: {
         WorkspaceManager: (s) => new AdlLspWorkspaceManager(s),
         DocumentBuilder: (s) => new AdlLspDocumentBuilder(s),
-        LangiumDocuments: (s) => new AdlLspLangiumDocuments(s)
-    }
+        LangiumDocuments: (s) => new AdlLspLangiumDocuments(s),
+    },
 };
 
 /** The LSP services of one language of the family (host languages and behavior-language files). */
@@ -100,11 +105,11 @@ export const AdlLspModule: Module<AdlLspServices, PartialLangiumLSPServices & Ad
             const actions = new AdlCodeActionProvider(s);
             registerHostQuickFixes(actions);
             return actions;
-        }
+        },
     },
     references: {
-        References: (s) => new AdlReferences(s)
-    }
+        References: (s) => new AdlReferences(s),
+    },
 };
 
 /** The services of a language family with LSP support (see createHostLspServices). */
@@ -125,13 +130,14 @@ export function createHostLspServices(
     context: DefaultSharedModuleContext,
     generated: GeneratedModules,
     behaviors: readonly BehaviorLanguage[],
-    languages: readonly FamilyLanguage[] = []
+    languages: readonly FamilyLanguage[] = [],
 ): HostLspServices {
     const host = createHostServices(context, generated, behaviors, languages, {
         shared: (ctx) => guardLspModule(createDefaultSharedModule(ctx)) as unknown as Module<AdlSharedServices, object>,
-        language: (ctx) => guardLspModule(createDefaultModule(ctx as Parameters<typeof createDefaultModule>[0])) as unknown as Module<AdlServices, object>,
+        language: (ctx) =>
+            guardLspModule(createDefaultModule(ctx as Parameters<typeof createDefaultModule>[0])) as unknown as Module<AdlServices, object>,
         sharedModules: [AdlLspSharedModule as unknown as Module<AdlSharedServices, object>],
-        languageModules: [guardLspModule(AdlLspModule) as unknown as Module<AdlServices, object>]
+        languageModules: [guardLspModule(AdlLspModule) as unknown as Module<AdlServices, object>],
     });
     const services = host as unknown as HostLspServices;
     for (const b of behaviors) b.registerLsp?.(services.Arc);

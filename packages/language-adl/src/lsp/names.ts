@@ -7,7 +7,13 @@ function admittedKeywords(grammar: GrammarAST.Grammar): ReadonlySet<string> {
     let set = softKeywords.get(grammar);
     if (!set) {
         const rule = [...GrammarUtils.getAllReachableRules(grammar, false)].find((r) => r.name === 'Name');
-        set = new Set(rule ? AstUtils.streamAllContents(rule).filter(GrammarAST.isKeyword).map((k) => k.value) : []);
+        set = new Set(
+            rule
+                ? AstUtils.streamAllContents(rule)
+                      .filter(GrammarAST.isKeyword)
+                      .map((k) => k.value)
+                : [],
+        );
         softKeywords.set(grammar, set);
     }
     return set;

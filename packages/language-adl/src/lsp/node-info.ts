@@ -1,5 +1,12 @@
 import {
-    AstUtils, CstUtils, GrammarUtils, isCompositeCstNode, type AstNode, type CstNode, type LangiumDocument, type LangiumSharedCoreServices
+    AstUtils,
+    CstUtils,
+    GrammarUtils,
+    isCompositeCstNode,
+    type AstNode,
+    type CstNode,
+    type LangiumDocument,
+    type LangiumSharedCoreServices,
 } from 'langium';
 import { cdExportedNamesOf } from '@maa/language-cd';
 import type { CDEnum, CDType, FieldAccessExpression } from '../generated/ast.js';
@@ -19,7 +26,9 @@ import { qualify } from '../scoping/adl-scope-computation.js';
 export function sourceText(node: AstNode | CstNode | undefined): string {
     const cst = node && ('$cstNode' in node ? (node as AstNode).$cstNode : (node as CstNode));
     if (!cst) return '';
-    const leaves = CstUtils.flattenCst(cst).filter((l) => !l.hidden).toArray();
+    const leaves = CstUtils.flattenCst(cst)
+        .filter((l) => !l.hidden)
+        .toArray();
     let out = '';
     for (let i = 0; i < leaves.length; i++) {
         const leaf = leaves[i]!;
@@ -137,7 +146,12 @@ export function documentation(node: AstNode): string | undefined {
     const property = node.$containerProperty;
     if (container && property && !isComponentType(node)) {
         const list = (container as unknown as Record<string, unknown>)[property];
-        if (Array.isArray(list) && list[0] === node && list.length >= 1 && ['PortDeclaration', 'FieldDeclaration', 'ComponentInstantiation'].includes(container.$type)) {
+        if (
+            Array.isArray(list) &&
+            list[0] === node &&
+            list.length >= 1 &&
+            ['PortDeclaration', 'FieldDeclaration', 'ComponentInstantiation'].includes(container.$type)
+        ) {
             const outer = documentationComments(container);
             if (outer.length > 0) return outer.join('\n\n');
         }
@@ -161,9 +175,7 @@ export function importName(node: AstNode): string | undefined {
 /** The documents of the model root a document belongs to (built-in library excluded). */
 export function rootDocuments(shared: AdlSharedServices | LangiumSharedCoreServices, uri: LangiumDocument['uri']): LangiumDocument[] {
     const roots = (shared as AdlSharedServices).maa.ModelRoots;
-    return shared.workspace.LangiumDocuments.all
-        .filter((d) => !roots.isBuiltin(d.uri) && roots.visible(uri, d.uri))
-        .toArray();
+    return shared.workspace.LangiumDocuments.all.filter((d) => !roots.isBuiltin(d.uri) && roots.visible(uri, d.uri)).toArray();
 }
 
 /** Whether a node belongs to the built-in library (never renamed or edited). */
@@ -202,11 +214,15 @@ export function membersOf(type: SymType, rel: TypeRelations): MemberInfo[] {
     if (type.kind === 'qualifier') {
         const decl = type.typeDecl;
         if (!decl) return [];
-        if (decl.$type === 'CDEnum') return [...(decl as CDEnum).constants.map((c) => ({ name: c.name, node: c, kind: 'constant' as const })), ...classMembers(decl)];
+        if (decl.$type === 'CDEnum')
+            return [
+                ...(decl as CDEnum).constants.map((c) => ({ name: c.name, node: c, kind: 'constant' as const })),
+                ...classMembers(decl),
+            ];
         return classMembers(decl);
     }
     const obj = type.kind === 'typevar' ? undefined : rel.box(type);
-    if (!obj || obj.kind !== 'object') return [];
+    if (obj?.kind !== 'object') return [];
     const out: MemberInfo[] = [];
     const seen = new Set<AstNode>();
     const queue: SymType[] = [obj];
@@ -221,7 +237,11 @@ export function membersOf(type: SymType, rel: TypeRelations): MemberInfo[] {
 }
 
 function classMembers(decl: CDType): MemberInfo[] {
-    return decl.members.map((m) => ({ name: m.name, node: m, kind: m.$type === 'CDMethod' ? 'method' as const : 'attribute' as const }));
+    return decl.members.map((m) => ({
+        name: m.name,
+        node: m,
+        kind: m.$type === 'CDMethod' ? ('method' as const) : ('attribute' as const),
+    }));
 }
 
 /** The CST node of a named node's name, if any. */

@@ -29,7 +29,7 @@ export class AdlNodeKindProvider implements NodeKindProvider {
         ['CDAttribute', { symbol: SymbolKind.Field, completion: CompletionItemKind.Field }],
         ['CDMethod', { symbol: SymbolKind.Method, completion: CompletionItemKind.Method }],
         ['CDMethodParameter', { symbol: SymbolKind.Variable, completion: CompletionItemKind.Variable }],
-        ['CDAssociation', { symbol: SymbolKind.Property, completion: CompletionItemKind.Reference }]
+        ['CDAssociation', { symbol: SymbolKind.Property, completion: CompletionItemKind.Reference }],
     ]);
 
     getSymbolKind(node: AstNode | AstNodeDescription): SymbolKind {

@@ -1,6 +1,18 @@
 import {
-    AstUtils, CstUtils, DefaultReferences, DocumentState, GrammarUtils, isReference, stream, UriUtils, type AstNode, type CstNode,
-    type FindReferencesOptions, type LangiumDocument, type ReferenceDescription, type Stream
+    AstUtils,
+    CstUtils,
+    DefaultReferences,
+    DocumentState,
+    GrammarUtils,
+    isReference,
+    stream,
+    UriUtils,
+    type AstNode,
+    type CstNode,
+    type FindReferencesOptions,
+    type LangiumDocument,
+    type ReferenceDescription,
+    type Stream,
 } from 'langium';
 import type { AdlServices } from '../adl-module.js';
 import { isFieldAccessExpression } from '../generated/ast.js';
@@ -16,7 +28,10 @@ export type NameResolverContribution = (leaf: CstNode) => AstNode[] | undefined;
  * Finds further uses of an element that the index does not know (names that are not
  * cross-references), in the documents where it may be used (computed on first call).
  */
-export type ReferenceFinderContribution = (target: AstNode, documents: () => readonly LangiumDocument[]) => Iterable<{ document: LangiumDocument; node: AstNode; segment: CstNode }>;
+export type ReferenceFinderContribution = (
+    target: AstNode,
+    documents: () => readonly LangiumDocument[],
+) => Iterable<{ document: LangiumDocument; node: AstNode; segment: CstNode }>;
 
 /**
  * Cross-references as Langium indexes them, plus names that are not cross-references:
@@ -56,9 +71,10 @@ export class AdlReferences extends DefaultReferences {
         const indexed = super.findReferences(targetNode, options);
         if (this.referenceFinders.length === 0) return indexed;
         let docs: LangiumDocument[] | undefined;
-        const documents = (): LangiumDocument[] => (docs ??= options.documentUri
-            ? this.documents.all.filter((d) => d.uri.toString() === options.documentUri!.toString()).toArray()
-            : rootDocuments(this.services.shared, AstUtils.getDocument(targetNode).uri));
+        const documents = (): LangiumDocument[] =>
+            (docs ??= options.documentUri
+                ? this.documents.all.filter((d) => d.uri.toString() === options.documentUri!.toString()).toArray()
+                : rootDocuments(this.services.shared, AstUtils.getDocument(targetNode).uri));
         const targetDoc = AstUtils.getDocument(targetNode);
         const targetPath = this.nodeLocator.getAstNodePath(targetNode);
         const extra: ReferenceDescription[] = [];
@@ -70,7 +86,7 @@ export class AdlReferences extends DefaultReferences {
                     targetUri: targetDoc.uri,
                     targetPath,
                     segment: CstUtils.toDocumentSegment(use.segment),
-                    local: use.document === targetDoc
+                    local: use.document === targetDoc,
                 });
             }
         }
@@ -95,14 +111,15 @@ export class AdlReferences extends DefaultReferences {
         for (const { document, ref } of uses) {
             const desc = ref.$nodeDescription;
             if (options.documentUri && !UriUtils.equals(document.uri, options.documentUri)) continue;
-            if (!ref.$refNode || !desc || desc.path !== described.path || !UriUtils.equals(desc.documentUri, described.documentUri)) continue;
+            if (!ref.$refNode || !desc || desc.path !== described.path || !UriUtils.equals(desc.documentUri, described.documentUri))
+                continue;
             out.push({
                 sourceUri: document.uri,
                 sourcePath: this.nodeLocator.getAstNodePath(ref.$refNode.astNode),
                 targetUri: desc.documentUri,
                 targetPath: desc.path,
                 segment: CstUtils.toDocumentSegment(ref.$refNode),
-                local: false
+                local: false,
             });
         }
         return out;
@@ -130,7 +147,10 @@ export class AdlReferences extends DefaultReferences {
         return found?.node ? [found.node] : undefined;
     }
 
-    private *memberUses(target: AstNode, docs: () => readonly LangiumDocument[]): Generator<{ document: LangiumDocument; node: AstNode; segment: CstNode }> {
+    private *memberUses(
+        target: AstNode,
+        docs: () => readonly LangiumDocument[],
+    ): Generator<{ document: LangiumDocument; node: AstNode; segment: CstNode }> {
         if (!['CDEnumConstant', 'CDAttribute', 'CDMethod'].includes(target.$type)) return;
         const name = (target as AstNode & { name?: string }).name;
         for (const document of docs()) {
@@ -138,7 +158,8 @@ export class AdlReferences extends DefaultReferences {
                 if (!isFieldAccessExpression(node) || node.member !== name) continue;
                 const segment = GrammarUtils.findNodeForProperty(node.$cstNode, 'member');
                 if (!segment) continue;
-                if (resolveMember(node, this.services.maa.ExpressionTyper, this.services.maa.TypeRelations) === target) yield { document, node, segment };
+                if (resolveMember(node, this.services.maa.ExpressionTyper, this.services.maa.TypeRelations) === target)
+                    yield { document, node, segment };
             }
         }
     }

@@ -1,6 +1,14 @@
 import { AstUtils, CstUtils, GrammarUtils, URI, UriUtils, type AstNode, type LangiumDocument, type LangiumDocuments } from 'langium';
 import { DefaultRenameProvider, type LangiumSharedServices } from 'langium/lsp';
-import { ErrorCodes, LSPErrorCodes, ResponseError, type Position, type PrepareRenameParams, type RenameParams, type TextDocumentPositionParams } from 'vscode-languageserver-protocol';
+import {
+    ErrorCodes,
+    LSPErrorCodes,
+    ResponseError,
+    type Position,
+    type PrepareRenameParams,
+    type RenameParams,
+    type TextDocumentPositionParams,
+} from 'vscode-languageserver-protocol';
 import type { Range, TextEdit, WorkspaceEdit } from 'vscode-languageserver-types';
 import type { AdlSharedServices } from '../adl-module.js';
 import type { AdlLspServices } from './lsp-module.js';
@@ -59,7 +67,10 @@ export class AdlRenameProvider extends DefaultRenameProvider {
             const outside = this.declarationAt(document, params.position);
             if (outside && !documentOf(outside)) {
                 const name = this.nameProvider.getName(outside) ?? 'this name';
-                throw new ResponseError(LSPErrorCodes.RequestFailed, `'${name}' is not declared in a model file (it names an installed generator or another external declaration) and cannot be renamed.`);
+                throw new ResponseError(
+                    LSPErrorCodes.RequestFailed,
+                    `'${name}' is not declared in a model file (it names an installed generator or another external declaration) and cannot be renamed.`,
+                );
             }
             return undefined;
         }
@@ -83,7 +94,11 @@ export class AdlRenameProvider extends DefaultRenameProvider {
         const target = this.targetAt(document, params.position);
         if (!target) return undefined;
         const root = document.parseResult.value.$cstNode!;
-        const leaf = CstUtils.findDeclarationNodeAtOffset(root, document.textDocument.offsetAt(params.position), this.grammarConfig.nameRegexp);
+        const leaf = CstUtils.findDeclarationNodeAtOffset(
+            root,
+            document.textDocument.offsetAt(params.position),
+            this.grammarConfig.nameRegexp,
+        );
         if (!leaf) return undefined;
         // In a qualified name (`toast.Controller`, an import) the name is the last segment.
         const name = this.nameProvider.getName(target);
@@ -127,8 +142,8 @@ export class AdlRenameProvider extends DefaultRenameProvider {
             return {
                 documentChanges: [
                     ...Object.entries(changes).map(([uri, edits]) => ({ textDocument: { uri, version: null }, edits })),
-                    { kind: 'rename', oldUri: targetDoc.uri.toString(), newUri }
-                ]
+                    { kind: 'rename', oldUri: targetDoc.uri.toString(), newUri },
+                ],
             };
         }
         return { changes };
@@ -151,5 +166,10 @@ function lastSegment(doc: LangiumDocument, range: Range, name: string): Range {
 }
 
 function sameRange(a: Range, b: Range): boolean {
-    return a.start.line === b.start.line && a.start.character === b.start.character && a.end.line === b.end.line && a.end.character === b.end.character;
+    return (
+        a.start.line === b.start.line &&
+        a.start.character === b.start.character &&
+        a.end.line === b.end.line &&
+        a.end.character === b.end.character
+    );
 }

@@ -47,7 +47,13 @@ export type HighlightContribution = (node: AstNode, acceptor: SemanticTokenAccep
 export class AdlSemanticTokenProvider extends AbstractSemanticTokenProvider {
     readonly styles = new Map<string, TokenStyleContribution>([
         ['ComponentType', { type: SemanticTokenTypes.class }],
-        ['Port', (n) => ({ type: SemanticTokenTypes.property, modifiers: portHeader(n as Port).direction === 'in' ? [SemanticTokenModifiers.readonly] : [] })],
+        [
+            'Port',
+            (n) => ({
+                type: SemanticTokenTypes.property,
+                modifiers: portHeader(n as Port).direction === 'in' ? [SemanticTokenModifiers.readonly] : [],
+            }),
+        ],
         ['Field', { type: SemanticTokenTypes.variable }],
         ['Feature', { type: SemanticTokenTypes.variable, modifiers: [SemanticTokenModifiers.readonly] }],
         ['Parameter', { type: SemanticTokenTypes.parameter }],
@@ -55,12 +61,15 @@ export class AdlSemanticTokenProvider extends AbstractSemanticTokenProvider {
         ['LocalVariable', { type: SemanticTokenTypes.variable }],
         ['TypeParameter', { type: SemanticTokenTypes.typeParameter }],
         ['ClassDiagram', { type: SemanticTokenTypes.namespace }],
-        ['CDClass', (n) => ({ type: (n as { kind?: string }).kind === 'interface' ? SemanticTokenTypes.interface : SemanticTokenTypes.type })],
+        [
+            'CDClass',
+            (n) => ({ type: (n as { kind?: string }).kind === 'interface' ? SemanticTokenTypes.interface : SemanticTokenTypes.type }),
+        ],
         ['CDEnum', { type: SemanticTokenTypes.enum }],
         ['CDEnumConstant', { type: SemanticTokenTypes.enumMember }],
         ['CDAttribute', { type: SemanticTokenTypes.property }],
         ['CDMethod', { type: SemanticTokenTypes.method }],
-        ['CDMethodParameter', { type: SemanticTokenTypes.parameter }]
+        ['CDMethodParameter', { type: SemanticTokenTypes.parameter }],
     ]);
     readonly highlighters = new Map<string, HighlightContribution>();
     private readonly services: AdlLspServices;

@@ -41,19 +41,27 @@ export class AdlDocumentSymbolProvider extends DefaultDocumentSymbolProvider {
         if (contributed === 'skip') return [];
         const cst = astNode.$cstNode;
         if (contributed && cst) {
-            return [{
-                name: contributed.name,
-                kind: contributed.kind ?? this.nodeKindProvider.getSymbolKind(astNode),
-                detail: contributed.detail,
-                range: cst.range,
-                selectionRange: (contributed.selection ?? this.nameProvider.getNameNode(astNode) ?? cst).range,
-                children: this.getChildSymbols(document, astNode)
-            }];
+            return [
+                {
+                    name: contributed.name,
+                    kind: contributed.kind ?? this.nodeKindProvider.getSymbolKind(astNode),
+                    detail: contributed.detail,
+                    range: cst.range,
+                    selectionRange: (contributed.selection ?? this.nameProvider.getNameNode(astNode) ?? cst).range,
+                    children: this.getChildSymbols(document, astNode),
+                },
+            ];
         }
         return super.getSymbol(document, astNode);
     }
 
-    protected override createSymbol(document: LangiumDocument, astNode: AstNode, cstNode: CstNode, nameNode: CstNode, computedName?: string): DocumentSymbol {
+    protected override createSymbol(
+        document: LangiumDocument,
+        astNode: AstNode,
+        cstNode: CstNode,
+        nameNode: CstNode,
+        computedName?: string,
+    ): DocumentSymbol {
         const symbol = super.createSymbol(document, astNode, cstNode, nameNode, computedName);
         const d = detail(astNode);
         return d ? { ...symbol, detail: d } : symbol;

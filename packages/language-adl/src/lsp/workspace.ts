@@ -1,6 +1,16 @@
 import {
-    DefaultDocumentBuilder, DefaultLangiumDocuments, isOperationCancelled, URI, UriUtils, type BuildOptions, type FileSystemNode, type FileSystemProvider, type LangiumDocument,
-    type LangiumDocuments, type DocumentBuilder, type WorkspaceLock
+    DefaultDocumentBuilder,
+    DefaultLangiumDocuments,
+    isOperationCancelled,
+    URI,
+    UriUtils,
+    type BuildOptions,
+    type FileSystemNode,
+    type FileSystemProvider,
+    type LangiumDocument,
+    type LangiumDocuments,
+    type DocumentBuilder,
+    type WorkspaceLock,
 } from 'langium';
 import { DefaultDocumentUpdateHandler, type DocumentUpdateHandler, type LangiumSharedServices } from 'langium/lsp';
 import { LSPErrorCodes, ResponseError, type CancellationToken } from 'vscode-languageserver-protocol';
@@ -94,7 +104,7 @@ export class AdlLspWorkspaceManager extends AdlWorkspaceManager {
     private async readConfiguration(uri: URI): Promise<RootConfiguration | undefined> {
         try {
             const text = await this.fileSystemProvider.readFile(uri);
-            return text.trim() ? JSON.parse(text) as RootConfiguration : {};
+            return text.trim() ? (JSON.parse(text) as RootConfiguration) : {};
         } catch (e) {
             console.warn(`${uri.toString()}: ignored (${(e as Error).message})`);
             return undefined;
@@ -114,7 +124,10 @@ export class AdlLspLangiumDocuments extends DefaultLangiumDocuments {
             return await super.getOrCreateDocument(uri, cancellationToken);
         } catch (e) {
             if (isOperationCancelled(e) || e instanceof ResponseError) throw e;
-            throw new ResponseError(LSPErrorCodes.RequestFailed, `${uri.toString()} is not open and cannot be read: ${e instanceof Error ? e.message : String(e)}`);
+            throw new ResponseError(
+                LSPErrorCodes.RequestFailed,
+                `${uri.toString()} is not open and cannot be read: ${e instanceof Error ? e.message : String(e)}`,
+            );
         }
     }
 }
@@ -173,11 +186,16 @@ export class AdlDocumentUpdateHandler extends DefaultDocumentUpdateHandler {
     override didChangeWatchedFiles(params: DidChangeWatchedFilesParams): void {
         super.didChangeWatchedFiles(params);
         if (params.changes.some((c) => UriUtils.basename(URI.parse(c.uri)) === ReservedNames.CONFIG_FILE)) {
-            this.afterStartup('reloading the model roots', () => this.lock.write(async (token) => {
-                await this.adlWorkspace.reloadModelRoots();
-                const all = this.documents.all.filter((d) => !this.roots.isBuiltin(d.uri)).map((d) => d.uri).toArray();
-                await this.builder.update(all, [], token);
-            }));
+            this.afterStartup('reloading the model roots', () =>
+                this.lock.write(async (token) => {
+                    await this.adlWorkspace.reloadModelRoots();
+                    const all = this.documents.all
+                        .filter((d) => !this.roots.isBuiltin(d.uri))
+                        .map((d) => d.uri)
+                        .toArray();
+                    await this.builder.update(all, [], token);
+                }),
+            );
         }
     }
 
@@ -222,7 +240,7 @@ export class AdlDocumentUpdateHandler extends DefaultDocumentUpdateHandler {
     /** Runs a workspace action once the workspace is loaded; a failure is logged, never left unhandled. */
     private afterStartup(what: string, action: () => Promise<unknown>): void {
         this.adlWorkspace.ready.then(action).catch((e: unknown) => {
-            if (!isOperationCancelled(e)) this.log(`Error ${what}: ${e instanceof Error ? e.stack ?? e.message : String(e)}`);
+            if (!isOperationCancelled(e)) this.log(`Error ${what}: ${e instanceof Error ? (e.stack ?? e.message) : String(e)}`);
         });
     }
 }

@@ -69,9 +69,10 @@ function tooDeep(cuts: readonly NestingCut[]): GuardError {
         column: t.startColumn,
         length: t.image.length,
         regions: cuts.map((c) => ({ offset: c.regionOffset, resumeOffset: c.resumeOffset })),
-        message: `Nested too deeply${more}: '${t.image}' exceeds the nesting limit of ${NESTING_LIMIT} levels `
-            + '(a parenthesis or bracket counts 16, a brace 4, a statement keyword 2, any other keyword or operator 1 until its statement ends); '
-            + 'the text up to its closing bracket or the end of its statement is not parsed.'
+        message:
+            `Nested too deeply${more}: '${t.image}' exceeds the nesting limit of ${NESTING_LIMIT} levels ` +
+            '(a parenthesis or bracket counts 16, a brace 4, a statement keyword 2, any other keyword or operator 1 until its statement ends); ' +
+            'the text up to its closing bracket or the end of its statement is not parsed.',
     };
 }
 
@@ -83,7 +84,7 @@ function tooLarge(text: string): LexerResult {
         column: 1,
         length: 1,
         regions: [{ offset: 0, resumeOffset: Infinity }],
-        message: `The file has ${text.length.toLocaleString('en')} characters, more than the limit of ${SIZE_LIMIT.toLocaleString('en')}; it is not parsed (split the model into several files).`
+        message: `The file has ${text.length.toLocaleString('en')} characters, more than the limit of ${SIZE_LIMIT.toLocaleString('en')}; it is not parsed (split the model into several files).`,
     };
     return { tokens: [], hidden: [], errors: [error] };
 }

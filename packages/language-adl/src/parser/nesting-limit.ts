@@ -24,13 +24,24 @@ type Token = LexerResult['tokens'][number];
  */
 export const NESTING_LIMIT = 200;
 
-const OPENERS: ReadonlyMap<string, number> = new Map([['(', 16], ['[', 16], ['{', 4]]);
+const OPENERS: ReadonlyMap<string, number> = new Map([
+    ['(', 16],
+    ['[', 16],
+    ['{', 4],
+]);
 const CLOSERS: ReadonlySet<string> = new Set([')', ']', '}']);
 /** Tokens that end a statement, an argument or a list element: the nesting they add ends too. */
 const SEPARATORS: ReadonlySet<string> = new Set([';', ',']);
 /** Keywords that recurse more than one rule deep (every other keyword and operator weighs 1). */
 const STATEMENT_ENDS: ReadonlySet<string> = new Set([';', '}']);
-const WEIGHTS: ReadonlyMap<string, number> = new Map([['<', 3], ['if', 2], ['else', 2], ['while', 2], ['for', 2], ['do', 2]]);
+const WEIGHTS: ReadonlyMap<string, number> = new Map([
+    ['<', 3],
+    ['if', 2],
+    ['else', 2],
+    ['while', 2],
+    ['for', 2],
+    ['do', 2],
+]);
 
 /** A region of the token stream that was cut out because it nests beyond the budget. */
 export interface NestingCut {

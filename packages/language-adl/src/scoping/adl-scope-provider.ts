@@ -1,11 +1,28 @@
 import {
-    AstUtils, EMPTY_SCOPE, WorkspaceCache, type AstNode, type AstNodeDescription, type AstNodeDescriptionProvider,
-    type LangiumSharedCoreServices, type ReferenceInfo, type Scope, type ScopeProvider
+    AstUtils,
+    EMPTY_SCOPE,
+    WorkspaceCache,
+    type AstNode,
+    type AstNodeDescription,
+    type AstNodeDescriptionProvider,
+    type LangiumSharedCoreServices,
+    type ReferenceInfo,
+    type Scope,
+    type ScopeProvider,
 } from 'langium';
 import type { Block, CDEnum, ComponentType, NameExpression, SwitchGroup } from '../generated/ast.js';
 import {
-    isAssignmentExpression, isBlock, isCDEnum, isComponentType, isSwitchGroup, isForStatement, isLocalVariableDeclaration,
-    isParentComponent, isPortAccess, isStatement, isSubcomponent
+    isAssignmentExpression,
+    isBlock,
+    isCDEnum,
+    isComponentType,
+    isSwitchGroup,
+    isForStatement,
+    isLocalVariableDeclaration,
+    isParentComponent,
+    isPortAccess,
+    isStatement,
+    isSubcomponent,
 } from '../generated/ast.js';
 import type { ExpressionTyper } from '../types/expression-typer.js';
 import { switchOfLabelValue } from './switch-labels.js';
@@ -42,7 +59,7 @@ export class AdlScopeProvider implements ScopeProvider {
         private readonly descriptions: AstNodeDescriptionProvider,
         shared: LangiumSharedCoreServices,
         /** The typer, for the selector type of a switch whose case labels name enum constants (lazy: it needs the scopes). */
-        private readonly typer?: () => ExpressionTyper
+        private readonly typer?: () => ExpressionTyper,
     ) {
         this.componentTables = new WorkspaceCache(shared);
         this.portTables = new WorkspaceCache(shared);
@@ -59,9 +76,15 @@ export class AdlScopeProvider implements ScopeProvider {
         }
         switch (key) {
             case 'ReferenceType.ref':
-                return new LookupScope((n) => this.resolver.resolveType(c, n), () => this.resolver.visible(c, 'type'));
+                return new LookupScope(
+                    (n) => this.resolver.resolveType(c, n),
+                    () => this.resolver.visible(c, 'type'),
+                );
             case 'ComponentTypeRef.ref':
-                return new LookupScope((n) => this.resolver.resolveComponent(c, n), () => this.resolver.visible(c, 'component'));
+                return new LookupScope(
+                    (n) => this.resolver.resolveComponent(c, n),
+                    () => this.resolver.visible(c, 'component'),
+                );
             case 'PortAccess.subcomponent':
                 return this.nodes(() => {
                     const comp = AstUtils.getContainerOfType(c, isComponentType);
@@ -82,7 +105,10 @@ export class AdlScopeProvider implements ScopeProvider {
             case 'NameExpression.ref':
                 return this.expressionScope(c as NameExpression);
             case 'CDAssociationEnd.type':
-                return new LookupScope((n) => this.resolver.resolveType(c, n), () => this.resolver.visible(c, 'type'));
+                return new LookupScope(
+                    (n) => this.resolver.resolveType(c, n),
+                    () => this.resolver.visible(c, 'type'),
+                );
             default:
                 return EMPTY_SCOPE;
         }
@@ -139,7 +165,7 @@ export class AdlScopeProvider implements ScopeProvider {
             // A switch group's statements are a block of their own (its locals are visible after them in the group).
             if (isBlock(n) || isSwitchGroup(n)) {
                 // $containerIndex: indexOf would scan the block for each name again.
-                const upTo = isStatement(previous) ? previous.$containerIndex ?? n.statements.indexOf(previous) : n.statements.length;
+                const upTo = isStatement(previous) ? (previous.$containerIndex ?? n.statements.indexOf(previous)) : n.statements.length;
                 const found = nearestBefore(this.blockTable(n).get(name), upTo);
                 if (found) return found;
             } else if (isForStatement(n) && n.init) {
@@ -234,7 +260,8 @@ export class AdlScopeProvider implements ScopeProvider {
             for (const n of get()) if (n.name === name) return this.descriptions.createDescription(n, name);
             return undefined;
         };
-        const all = (): AstNodeDescription[] => [...get()].filter((n) => n.name).map((n) => this.descriptions.createDescription(n, n.name!));
+        const all = (): AstNodeDescription[] =>
+            [...get()].filter((n) => n.name).map((n) => this.descriptions.createDescription(n, n.name!));
         return new LookupScope(find, all);
     }
 }
@@ -252,11 +279,15 @@ function nearestBefore(declarations: ReadonlyArray<{ index: number; node: AstNod
 
 /** A scope preferring, among candidates of one name, the one in the variation branch of `at` (variant-context.ts: sameBranchFirst). */
 function sameBranchScope(at: AstNode, scope: Scope): Scope {
-    const inBranch = (n: AstNode | undefined): boolean => AstUtils.getContainerOfType(n, (x): x is AstNode => x.$type === 'VarBody') !== undefined;
+    const inBranch = (n: AstNode | undefined): boolean =>
+        AstUtils.getContainerOfType(n, (x): x is AstNode => x.$type === 'VarBody') !== undefined;
     const find = (name: string): AstNodeDescription | undefined => {
         const first = scope.getElement(name);
         if (!inBranch(at) && !inBranch(first?.node)) return first; // no variation point involved: as before
-        const candidates = scope.getAllElements().filter((d) => d.name === name).toArray();
+        const candidates = scope
+            .getAllElements()
+            .filter((d) => d.name === name)
+            .toArray();
         if (candidates.length <= 1) return candidates[0] ?? scope.getElement(name);
         const nodes = candidates.flatMap((d) => (d.node ? [d.node] : []));
         const best = sameBranchFirst(at, nodes)[0];

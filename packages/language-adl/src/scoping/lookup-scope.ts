@@ -8,7 +8,7 @@ import { stream, type AstNodeDescription, type Scope, type Stream } from 'langiu
 export class LookupScope implements Scope {
     constructor(
         private readonly find: (name: string) => AstNodeDescription | undefined,
-        private readonly all: () => Iterable<AstNodeDescription>
+        private readonly all: () => Iterable<AstNodeDescription>,
     ) {}
 
     getElement(name: string): AstNodeDescription | undefined {

@@ -20,7 +20,7 @@ export class NameResolver {
     constructor(
         private readonly index: RootIndex,
         private readonly roots: ModelRoots,
-        private readonly descriptions: AstNodeDescriptionProvider
+        private readonly descriptions: AstNodeDescriptionProvider,
     ) {}
 
     resolveType(context: AstNode, name: string): AstNodeDescription | undefined {
@@ -35,7 +35,11 @@ export class NameResolver {
 
     resolveComponent(context: AstNode, name: string): AstNodeDescription | undefined {
         if (!name.includes('.')) {
-            for (let c = AstUtils.getContainerOfType(context, isComponentType); c; c = AstUtils.getContainerOfType(c.$container, isComponentType)) {
+            for (
+                let c = AstUtils.getContainerOfType(context, isComponentType);
+                c;
+                c = AstUtils.getContainerOfType(c.$container, isComponentType)
+            ) {
                 const inner = elementsOf(c).find((e): e is ComponentType => isComponentType(e) && e.name === name);
                 if (inner) return this.descriptions.createDescription(inner, inner.name);
             }

@@ -14,7 +14,7 @@ export class RootIndex {
     constructor(
         shared: LangiumSharedCoreServices,
         private readonly indexManager: IndexManager,
-        private readonly roots: ModelRoots
+        private readonly roots: ModelRoots,
     ) {
         this.cache = new WorkspaceCache(shared);
     }

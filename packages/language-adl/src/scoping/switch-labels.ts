@@ -15,7 +15,7 @@ export function switchOfLabelValue(expr: AstNode): AnySwitch | undefined {
     if (!isSwitchLabel(label)) return undefined;
     const owner = label.$container;
     const sw = isSwitchGroup(owner) || isSwitchArm(owner) ? owner.$container : undefined;
-    return (isSwitchStatement(sw) || isSwitchExpression(sw)) && sw.selector ? sw as AnySwitch : undefined;
+    return (isSwitchStatement(sw) || isSwitchExpression(sw)) && sw.selector ? (sw as AnySwitch) : undefined;
 }
 
 /** The message for a bare label that names no constant of the selector's enum. */

@@ -12,7 +12,7 @@ export function describeCatalog(
     catalog: DiagnosticCatalog,
     validate: (files: Readonly<Record<string, string>>) => Promise<Finding[]>,
     /** `codes`: the codes the catalog must document (each catalog entry's code appears once). */
-    options: { strict?: boolean; codes?: readonly string[] } = {}
+    options: { strict?: boolean; codes?: readonly string[] } = {},
 ): void {
     describe.each(catalog.entries.map((e) => [e.code, e] as const))('%s', (code, entry) => {
         test('is reported on the invalid example', async () => {
@@ -22,13 +22,22 @@ export function describeCatalog(
             expect(own.map((h) => h.severity)).toContain(entry.severity);
             if (entry.invalid.at !== undefined) expect(own.map((h) => h.text)).toContain(entry.invalid.at);
             for (const h of own) expect(h.message.length).toBeGreaterThan(10);
-            if (options.strict) expect(found.filter((f) => f.code !== code), dump(found)).toEqual([]);
+            if (options.strict)
+                expect(
+                    found.filter((f) => f.code !== code),
+                    dump(found),
+                ).toEqual([]);
         });
-        test(options.strict ? 'is not reported on the valid example, which has no diagnostics' : 'is not reported on the valid example, which has no errors', async () => {
-            const found = await validate(entry.valid.files);
-            const unwanted = options.strict ? found : found.filter((f) => f.code === code || f.severity === 'error');
-            expect(unwanted, dump(found)).toEqual([]);
-        });
+        test(
+            options.strict
+                ? 'is not reported on the valid example, which has no diagnostics'
+                : 'is not reported on the valid example, which has no errors',
+            async () => {
+                const found = await validate(entry.valid.files);
+                const unwanted = options.strict ? found : found.filter((f) => f.code === code || f.severity === 'error');
+                expect(unwanted, dump(found)).toEqual([]);
+            },
+        );
     });
     if (options.codes) {
         test(`every code of "${catalog.title}" is documented, once`, () => {

@@ -41,9 +41,14 @@ export function mutations(path: string, text: string, options: CorpusOptions): F
     const n = options.perKind ?? 8;
     const pick = (k: number): number => Math.floor(rnd() * k);
     const toks = tokens(text);
-    const words = toks.map((t, i) => [t, i] as const).filter(([t]) => !/^\s+$/.test(t)).map(([, i]) => i);
+    const words = toks
+        .map((t, i) => [t, i] as const)
+        .filter(([t]) => !/^\s+$/.test(t))
+        .map(([, i]) => i);
     const cases: FuzzCase[] = [];
-    const add = (what: string, t: string): void => { cases.push({ name: `${what} of ${path} (seed ${options.seed})`, path, text: t }); };
+    const add = (what: string, t: string): void => {
+        cases.push({ name: `${what} of ${path} (seed ${options.seed})`, path, text: t });
+    };
     for (let k = 1; k <= n; k++) {
         const at = Math.floor((text.length * k) / (n + 1));
         add(`truncate@${at}`, text.substring(0, at));
@@ -74,12 +79,12 @@ export function pathological(path: string, depth: number, rnd: () => number): Fu
     const r = (s: string, k = depth): string => s.repeat(k);
     const noise = Array.from({ length: 2000 }, () => String.fromCharCode(Math.floor(rnd() * 256))).join('');
     const texts: Record<string, string> = {
-        'empty': '',
-        'noise': noise,
+        empty: '',
+        noise: noise,
         'open braces': r('{'),
         'open parentheses': r('('),
         'mixed brackets': r('( [ { '),
-        'closing brackets': r(') ] } ')
+        'closing brackets': r(') ] } '),
     };
     if (path.endsWith('.arc')) {
         const body = (s: string): string => `component ${baseName(path)} {\n  port in int i;\n  port out int o;\n${s}\n}\n`;
@@ -89,7 +94,9 @@ export function pathological(path: string, depth: number, rnd: () => number): Fu
         texts['nested ifs'] = body(`  compute { ${r('if (i > 0) ')}o = 1; }`);
         texts['else-if chain'] = body(`  compute { ${r('if (i > 0) o = 1; else ')}o = 2; }`);
         texts['binary chain'] = body(`  compute { o = i${r(' + i', depth * 4)}; }`);
-        texts['nested states'] = body(`  automaton {\n    initial ${Array.from({ length: depth }, (_, k) => `state S${k} {`).join(' ')}${r('}')}\n  }`);
+        texts['nested states'] = body(
+            `  automaton {\n    initial ${Array.from({ length: depth }, (_, k) => `state S${k} {`).join(' ')}${r('}')}\n  }`,
+        );
         texts['guard parentheses'] = body(`  automaton {\n    initial state A;\n    A -> A [${r('(')}i > 0${r(')')}] / o = 1;\n  }`);
         texts['generic types'] = body(`  port in ${r('List<')}int${r('>')} g;`);
         texts['robotarm moves'] = body(`  robotarm {\n    location L 10 deg 5 cm;\n    program P { move ${r('L ')}; }\n  }`);

@@ -23,7 +23,10 @@ export class ModelTestBench {
     private services: HostLanguageServices | undefined;
     private counter = 0;
 
-    constructor(private readonly create: () => HostLanguageServices, private readonly name = 'test') {}
+    constructor(
+        private readonly create: () => HostLanguageServices,
+        private readonly name = 'test',
+    ) {}
 
     get host(): HostLanguageServices {
         return (this.services ??= this.create());
@@ -34,21 +37,24 @@ export class ModelTestBench {
         const root = URI.file(`/${this.name}-root-${++this.counter}`);
         s.shared.maa.ModelRoots.setRoots([root]);
         const docs = Object.entries(files).map(([path, text]) =>
-            s.shared.workspace.LangiumDocuments.createDocument(URI.file(`${root.path}/${path}`), text));
+            s.shared.workspace.LangiumDocuments.createDocument(URI.file(`${root.path}/${path}`), text),
+        );
         await s.shared.workspace.DocumentBuilder.build([...builtinDocuments(s.shared), ...docs], { validation: true });
         return { root, docs };
     }
 
     async validate(files: Readonly<Record<string, string>>): Promise<Finding[]> {
         const { root, docs } = await this.build(files);
-        return docs.flatMap((doc) => (doc.diagnostics ?? []).map((d) => ({
-            file: doc.uri.path.substring(root.path.length + 1),
-            code: String(d.code),
-            severity: SEVERITIES[(d.severity ?? 1) - 1]!,
-            text: doc.textDocument.getText(d.range),
-            message: d.message,
-            line: d.range.start.line + 1
-        })));
+        return docs.flatMap((doc) =>
+            (doc.diagnostics ?? []).map((d) => ({
+                file: doc.uri.path.substring(root.path.length + 1),
+                code: String(d.code),
+                severity: SEVERITIES[(d.severity ?? 1) - 1]!,
+                text: doc.textDocument.getText(d.range),
+                message: d.message,
+                line: d.range.start.line + 1,
+            })),
+        );
     }
 }
 

@@ -66,7 +66,9 @@ export function forbiddenCodesByClass(cases: readonly CocosCase[]): Map<string, 
  */
 export function cocosFailure(c: CocosCase, codes: readonly string[], forbidden: Map<string, Set<string>>): string | undefined {
     if (c.kind === 'invalid') {
-        const missing = [...new Set(c.expected)].filter((e) => codes.filter((x) => x === e).length < c.expected.filter((x) => x === e).length);
+        const missing = [...new Set(c.expected)].filter(
+            (e) => codes.filter((x) => x === e).length < c.expected.filter((x) => x === e).length,
+        );
         return missing.length === 0 ? undefined : `missing [${missing.join(', ')}], got [${codes.join(', ')}]`;
     }
     const wrong = codes.filter((x) => x.startsWith('syntax/') || x.startsWith('link/') || forbidden.get(c.cls)?.has(x));
@@ -104,9 +106,12 @@ export function scoreCocos(cases: readonly CocosCase[], codesOfCase: readonly (r
 
 /** The score as a table for the test log. */
 export function formatCocosScore(title: string, score: CocosScore): string {
-    const rows = [...score.perClass.entries()].sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0)).map(
-        ([cls, s]) => `${((100 * s.passed) / s.total).toFixed(0).padStart(4)}%  ${String(s.passed).padStart(3)}/${String(s.total).padEnd(3)} ${cls}`,
-    );
+    const rows = [...score.perClass.entries()]
+        .sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0))
+        .map(
+            ([cls, s]) =>
+                `${((100 * s.passed) / s.total).toFixed(0).padStart(4)}%  ${String(s.passed).padStart(3)}/${String(s.total).padEnd(3)} ${cls}`,
+        );
     const failing = score.failures.length ? `\nfailing cases:\n  ${score.failures.join('\n  ')}` : '';
     return `${title}: ${score.passed}/${score.total} (${((100 * score.passed) / Math.max(1, score.total)).toFixed(1)}%)\n${rows.join('\n')}${failing}`;
 }

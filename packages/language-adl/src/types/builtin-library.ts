@@ -16,22 +16,26 @@ const boxes: ReadonlyArray<readonly [string, string, boolean]> = [
     ['Integer', 'int', true],
     ['Long', 'long', true],
     ['Float', 'float', true],
-    ['Double', 'double', true]
+    ['Double', 'double', true],
 ];
 
 /** Static members of a box beyond those every box has (MIN/MAX values, parsing, character classes). */
 const BOX_EXTRAS: Readonly<Record<string, string>> = {
-    Boolean: ' static boolean parseBoolean(String s); static boolean logicalAnd(boolean a, boolean b); static boolean logicalOr(boolean a, boolean b);',
-    Character: ' static boolean isDigit(char c); static boolean isLetter(char c); static boolean isLetterOrDigit(char c); static boolean isWhitespace(char c);'
-        + ' static boolean isUpperCase(char c); static boolean isLowerCase(char c); static char toUpperCase(char c); static char toLowerCase(char c);',
+    Boolean:
+        ' static boolean parseBoolean(String s); static boolean logicalAnd(boolean a, boolean b); static boolean logicalOr(boolean a, boolean b);',
+    Character:
+        ' static boolean isDigit(char c); static boolean isLetter(char c); static boolean isLetterOrDigit(char c); static boolean isWhitespace(char c);' +
+        ' static boolean isUpperCase(char c); static boolean isLowerCase(char c); static char toUpperCase(char c); static char toLowerCase(char c);',
     Byte: ' static byte MIN_VALUE; static byte MAX_VALUE; static byte parseByte(String s);',
     Short: ' static short MIN_VALUE; static short MAX_VALUE; static short parseShort(String s);',
-    Integer: ' static int MIN_VALUE; static int MAX_VALUE; static int parseInt(String s); static int signum(int i); static int sum(int a, int b);'
-        + ' static int max(int a, int b); static int min(int a, int b);',
+    Integer:
+        ' static int MIN_VALUE; static int MAX_VALUE; static int parseInt(String s); static int signum(int i); static int sum(int a, int b);' +
+        ' static int max(int a, int b); static int min(int a, int b);',
     Long: ' static long MIN_VALUE; static long MAX_VALUE; static long parseLong(String s); static long sum(long a, long b);',
     Float: ' static float MIN_VALUE; static float MAX_VALUE; static float parseFloat(String s); boolean isNaN(); static boolean isNaN(float v);',
-    Double: ' static double MIN_VALUE; static double MAX_VALUE; static double parseDouble(String s); boolean isNaN(); static boolean isNaN(double v);'
-        + ' boolean isInfinite(); static double sum(double a, double b);'
+    Double:
+        ' static double MIN_VALUE; static double MAX_VALUE; static double parseDouble(String s); boolean isNaN(); static boolean isNaN(double v);' +
+        ' boolean isInfinite(); static double sum(double a, double b);',
 };
 
 const javaLang = `package java.lang;
@@ -42,8 +46,12 @@ classdiagram Lang {
   abstract class Number {
     byte byteValue(); short shortValue(); int intValue(); long longValue(); float floatValue(); double doubleValue();
   }
-${boxes.map(([box, prim, numeric]) =>
-    `  class ${box} ${numeric ? 'extends Number ' : ''}implements Comparable<${box}> { static ${box} ${box}(${prim} value); static ${box} valueOf(${prim} value); ${prim} ${prim}Value(); static String toString(${prim} value); static int compare(${prim} a, ${prim} b);${BOX_EXTRAS[box] ?? ''} }`).join('\n')}
+${boxes
+    .map(
+        ([box, prim, numeric]) =>
+            `  class ${box} ${numeric ? 'extends Number ' : ''}implements Comparable<${box}> { static ${box} ${box}(${prim} value); static ${box} valueOf(${prim} value); ${prim} ${prim}Value(); static String toString(${prim} value); static int compare(${prim} a, ${prim} b);${BOX_EXTRAS[box] ?? ''} }`,
+    )
+    .join('\n')}
   class String implements Comparable<String>, CharSequence {
     static String String(); static String valueOf(Object value);
     int length(); boolean isEmpty(); char charAt(int index); String substring(int begin); String substring(int begin, int end);
@@ -102,7 +110,7 @@ classdiagram Util {
 
 export const BUILTIN_DOCUMENTS: readonly BuiltinDocument[] = [
     { uri: 'builtin:/java/lang/Lang.cd', text: javaLang },
-    { uri: 'builtin:/java/util/Util.cd', text: javaUtil }
+    { uri: 'builtin:/java/util/Util.cd', text: javaUtil },
 ];
 
 /** Boxed class name for each primitive, and back. */

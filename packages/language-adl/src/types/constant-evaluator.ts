@@ -24,7 +24,10 @@ export type ConstantValue =
 
 /** An expression that is not constant; `node` is where. */
 export class ConstantEvaluationError extends Error {
-    constructor(message: string, readonly node: AstNode) {
+    constructor(
+        message: string,
+        readonly node: AstNode,
+    ) {
         super(message);
         this.name = 'ConstantEvaluationError';
     }
@@ -50,22 +53,33 @@ export function constantEnv(values: ReadonlyMap<string, ConstantValue>): Constan
  */
 export function evaluateConstant(expr: Expression, env: ConstantEnv, expected?: SymType): ConstantValue {
     switch (expr.$type) {
-        case 'BooleanLiteral': return { kind: 'boolean', value: expr.value === 'true' };
-        case 'IntLiteral': return { kind: 'int', value: Number(expr.value) };
-        case 'LongLiteral': return { kind: 'int', value: Number(String(expr.value).replace(/[lL]$/, '')) };
-        case 'FloatLiteral': return { kind: 'float', value: Number(String(expr.value).replace(/[fFdD]$/, '')) };
-        case 'CharLiteral': return { kind: 'char', value: unquote(String(expr.value), "'", expr) };
-        case 'StringLiteral': return { kind: 'string', value: unquote(String(expr.value), '"', expr) };
-        case 'NameExpression': return env.lookup(expr.ref.$refText) ?? enumConstant(expected, expr.ref.$refText, expr);
-        case 'FieldAccessExpression': return enumConstant(expected, String(expr.member), expr);
-        case 'PrefixExpression': return prefix(expr, evaluateConstant(expr.operand, env, expected));
-        case 'BinaryExpression': return binary(expr, evaluateConstant(expr.left, env), evaluateConstant(expr.right, env));
+        case 'BooleanLiteral':
+            return { kind: 'boolean', value: expr.value === 'true' };
+        case 'IntLiteral':
+            return { kind: 'int', value: Number(expr.value) };
+        case 'LongLiteral':
+            return { kind: 'int', value: Number(String(expr.value).replace(/[lL]$/, '')) };
+        case 'FloatLiteral':
+            return { kind: 'float', value: Number(String(expr.value).replace(/[fFdD]$/, '')) };
+        case 'CharLiteral':
+            return { kind: 'char', value: unquote(String(expr.value), "'", expr) };
+        case 'StringLiteral':
+            return { kind: 'string', value: unquote(String(expr.value), '"', expr) };
+        case 'NameExpression':
+            return env.lookup(expr.ref.$refText) ?? enumConstant(expected, expr.ref.$refText, expr);
+        case 'FieldAccessExpression':
+            return enumConstant(expected, String(expr.member), expr);
+        case 'PrefixExpression':
+            return prefix(expr, evaluateConstant(expr.operand, env, expected));
+        case 'BinaryExpression':
+            return binary(expr, evaluateConstant(expr.left, env), evaluateConstant(expr.right, env));
         case 'ConditionalExpression': {
             const condition = evaluateConstant(expr.condition, env);
             if (condition.kind !== 'boolean') throw notConstant(expr.condition, 'is not a boolean');
             return evaluateConstant(condition.value ? expr.then : expr.else, env, expected);
         }
-        default: throw notConstant(expr, 'is not a constant expression');
+        default:
+            throw notConstant(expr, 'is not a constant expression');
     }
 }
 
@@ -86,7 +100,10 @@ function unquote(raw: string, quote: string, node: AstNode): string {
 
 /** A constant of the expected enum type, by name. */
 function enumConstant(expected: SymType | undefined, name: string, node: AstNode): ConstantValue {
-    const decl = expected?.kind === 'object' && isCDEnum(expected.decl) && AstUtils.getDocument(expected.decl).uri.scheme !== 'builtin' ? expected.decl : undefined;
+    const decl =
+        expected?.kind === 'object' && isCDEnum(expected.decl) && AstUtils.getDocument(expected.decl).uri.scheme !== 'builtin'
+            ? expected.decl
+            : undefined;
     const ordinal = decl ? decl.constants.findIndex((c) => c.name === name) : -1;
     if (decl && ordinal >= 0) return { kind: 'enum', value: name, ordinal, decl };
     throw notConstant(node, 'is not a constant (a parameter or a constant of the expected enum)');
@@ -124,21 +141,35 @@ function display(v: ConstantValue): string {
 }
 
 /** Java's binary numeric promotion: int op int is an int (division truncates), anything with a float is a float. */
-function numeric(expr: BinaryExpression, l: { kind: 'int' | 'float'; value: number }, r: { kind: 'int' | 'float'; value: number }): ConstantValue {
+function numeric(
+    expr: BinaryExpression,
+    l: { kind: 'int' | 'float'; value: number },
+    r: { kind: 'int' | 'float'; value: number },
+): ConstantValue {
     const kind = l.kind === 'float' || r.kind === 'float' ? 'float' : 'int';
     const a = l.value;
     const b = r.value;
     if (kind === 'int' && (expr.op === '/' || expr.op === '%') && b === 0) throw notConstant(expr, 'divides by zero');
     switch (expr.op) {
-        case '+': return { kind, value: a + b };
-        case '-': return { kind, value: a - b };
-        case '*': return { kind, value: a * b };
-        case '/': return { kind, value: kind === 'int' ? Math.trunc(a / b) : a / b };
-        case '%': return { kind, value: a % b };
-        case '<': return { kind: 'boolean', value: a < b };
-        case '<=': return { kind: 'boolean', value: a <= b };
-        case '>': return { kind: 'boolean', value: a > b };
-        case '>=': return { kind: 'boolean', value: a >= b };
-        default: throw notConstant(expr, `applies '${expr.op}' to numbers`);
+        case '+':
+            return { kind, value: a + b };
+        case '-':
+            return { kind, value: a - b };
+        case '*':
+            return { kind, value: a * b };
+        case '/':
+            return { kind, value: kind === 'int' ? Math.trunc(a / b) : a / b };
+        case '%':
+            return { kind, value: a % b };
+        case '<':
+            return { kind: 'boolean', value: a < b };
+        case '<=':
+            return { kind: 'boolean', value: a <= b };
+        case '>':
+            return { kind: 'boolean', value: a > b };
+        case '>=':
+            return { kind: 'boolean', value: a >= b };
+        default:
+            throw notConstant(expr, `applies '${expr.op}' to numbers`);
     }
 }

@@ -1,9 +1,25 @@
 import type { AstNode } from 'langium';
 import type {
-    BinaryExpression, CallExpression, CDAttribute, CDClass, CDMethod, CDType, Expression, FieldAccessExpression, NameExpression, Port,
-    SwitchExpression
+    BinaryExpression,
+    CallExpression,
+    CDAttribute,
+    CDClass,
+    CDMethod,
+    CDType,
+    Expression,
+    FieldAccessExpression,
+    NameExpression,
+    Port,
+    SwitchExpression,
 } from '../generated/ast.js';
-import { isCDClass, isCDEnum, isFieldAccessExpression, isFieldDeclaration, isLocalVariableDeclaration, isNameExpression } from '../generated/ast.js';
+import {
+    isCDClass,
+    isCDEnum,
+    isFieldAccessExpression,
+    isFieldDeclaration,
+    isLocalVariableDeclaration,
+    isNameExpression,
+} from '../generated/ast.js';
 import { notAConstantMessage, yieldsOf } from '../scoping/switch-labels.js';
 import { portHeader } from '../components/component-model.js';
 import { subcomponentFeature } from '../components/features.js';
@@ -11,7 +27,19 @@ import type { NameResolver } from '../scoping/name-resolver.js';
 import { bind, typeOfMCType } from './type-resolver.js';
 import type { TypeRelations } from './type-relations.js';
 import {
-    BOOLEAN, CHAR, DOUBLE, ERROR_TYPE, FLOAT, INT, LONG, NULL_TYPE, UNKNOWN_TYPE, isErroneous, printType, substitute, type SymType
+    BOOLEAN,
+    CHAR,
+    DOUBLE,
+    ERROR_TYPE,
+    FLOAT,
+    INT,
+    LONG,
+    NULL_TYPE,
+    UNKNOWN_TYPE,
+    isErroneous,
+    printType,
+    substitute,
+    type SymType,
 } from './sym-type.js';
 
 export interface TypeProblem {
@@ -27,7 +55,7 @@ export interface TypeProblem {
 export class ExpressionTyper {
     constructor(
         private readonly rel: TypeRelations,
-        private readonly resolver: NameResolver
+        private readonly resolver: NameResolver,
     ) {}
 
     typeOf(expr: Expression, problems: TypeProblem[] = []): SymType {
@@ -67,20 +95,31 @@ export class ExpressionTyper {
     private type(e: Expression | undefined, p: TypeProblem[]): SymType {
         if (!e) return ERROR_TYPE; // partially parsed: the syntax error is reported already
         switch (e.$type) {
-            case 'BooleanLiteral': return BOOLEAN;
-            case 'IntLiteral': return INT;
-            case 'LongLiteral': return LONG;
-            case 'FloatLiteral': return /[fF]$/.test(e.value) ? FLOAT : DOUBLE;
-            case 'CharLiteral': return CHAR;
-            case 'StringLiteral': return this.rel.objectType('java.lang.String');
-            case 'NullLiteral': return NULL_TYPE;
-            case 'NameExpression': return this.name(e, p);
-            case 'FieldAccessExpression': return this.fieldAccess(e, p);
-            case 'CallExpression': return this.call(e, p);
+            case 'BooleanLiteral':
+                return BOOLEAN;
+            case 'IntLiteral':
+                return INT;
+            case 'LongLiteral':
+                return LONG;
+            case 'FloatLiteral':
+                return /[fF]$/.test(e.value) ? FLOAT : DOUBLE;
+            case 'CharLiteral':
+                return CHAR;
+            case 'StringLiteral':
+                return this.rel.objectType('java.lang.String');
+            case 'NullLiteral':
+                return NULL_TYPE;
+            case 'NameExpression':
+                return this.name(e, p);
+            case 'FieldAccessExpression':
+                return this.fieldAccess(e, p);
+            case 'CallExpression':
+                return this.call(e, p);
             case 'ArrayAccessExpression': {
                 const r = this.value(e.receiver, p);
                 const i = this.value(e.index, p);
-                if (!isErroneous(i) && !this.rel.isIntegral(i)) p.push(mismatch(e.index, `an array index must be integral, not ${printType(i)}`));
+                if (!isErroneous(i) && !this.rel.isIntegral(i))
+                    p.push(mismatch(e.index, `an array index must be integral, not ${printType(i)}`));
                 if (r.kind === 'array') return r.component;
                 if (!isErroneous(r)) p.push(mismatch(e.receiver, `${printType(r)} is not an array`));
                 return ERROR_TYPE;
@@ -89,7 +128,10 @@ export class ExpressionTyper {
                 const t = this.value(e.operand, p);
                 if (isErroneous(t)) return t;
                 if (e.op === '!') return this.expect(e.operand, t, 'boolean', p) ? BOOLEAN : ERROR_TYPE;
-                if (e.op === '~') return this.rel.isIntegral(t) ? this.rel.promote(t, INT) : fail(p, e.operand, `'~' needs an integral operand, not ${printType(t)}`);
+                if (e.op === '~')
+                    return this.rel.isIntegral(t)
+                        ? this.rel.promote(t, INT)
+                        : fail(p, e.operand, `'~' needs an integral operand, not ${printType(t)}`);
                 if (!this.rel.isNumeric(t)) return fail(p, e.operand, `'${e.op}' needs a numeric operand, not ${printType(t)}`);
                 return e.op === '++' || e.op === '--' ? t : this.rel.promote(t, INT);
             }
@@ -100,17 +142,24 @@ export class ExpressionTyper {
                 const t = this.value(e.operand, p);
                 if (isErroneous(t) || isErroneous(target)) return target;
                 const source = this.rel.unbox(t);
-                const ok = target.kind === 'primitive' && source.kind === 'primitive'
-                    && (target.name === 'boolean') === (source.name === 'boolean') && target.name !== 'void' && source.name !== 'void';
+                const ok =
+                    target.kind === 'primitive' &&
+                    source.kind === 'primitive' &&
+                    (target.name === 'boolean') === (source.name === 'boolean') &&
+                    target.name !== 'void' &&
+                    source.name !== 'void';
                 return ok ? target : fail(p, e, `a value of type ${printType(t)} cannot be cast to ${printType(target)}`);
             }
             case 'PostfixExpression': {
                 const t = this.value(e.operand, p);
-                if (!isErroneous(t) && !this.rel.isNumeric(t)) return fail(p, e.operand, `'${e.op}' needs a numeric operand, not ${printType(t)}`);
+                if (!isErroneous(t) && !this.rel.isNumeric(t))
+                    return fail(p, e.operand, `'${e.op}' needs a numeric operand, not ${printType(t)}`);
                 return t;
             }
-            case 'BinaryExpression': return this.binary(e, p);
-            case 'SwitchExpression': return this.switchExpression(e, p);
+            case 'BinaryExpression':
+                return this.binary(e, p);
+            case 'SwitchExpression':
+                return this.switchExpression(e, p);
             case 'ConditionalExpression': {
                 const c = this.value(e.condition, p);
                 this.expect(e.condition, c, 'boolean', p);
@@ -201,7 +250,11 @@ export class ExpressionTyper {
         if (isFieldAccessExpression(e.$container) && e.$container.receiver === e && this.resolver.isPackagePrefix(e, name)) {
             return { kind: 'qualifier', description: `package ${name}` };
         }
-        p.push({ node: e, code: 'expr/unresolved-name', message: `'${name}' is not a port, field, parameter, variable or type visible here` });
+        p.push({
+            node: e,
+            code: 'expr/unresolved-name',
+            message: `'${name}' is not a port, field, parameter, variable or type visible here`,
+        });
         return ERROR_TYPE;
     }
 
@@ -220,7 +273,8 @@ export class ExpressionTyper {
             if (r.typeDecl) {
                 if (r.typeDecl.$type === 'CDEnum') {
                     if (r.typeDecl.constants.some((c) => c.name === member)) return { kind: 'object', decl: r.typeDecl, args: [] };
-                    if (!isCallee(e) && !this.attribute(r.typeDecl, member)) return unresolved(p, e, `enum ${r.typeDecl.name} has no constant '${member}'`);
+                    if (!isCallee(e) && !this.attribute(r.typeDecl, member))
+                        return unresolved(p, e, `enum ${r.typeDecl.name} has no constant '${member}'`);
                 }
                 const attr = this.attribute(r.typeDecl, member);
                 if (attr) return typeOfMCType(attr.type);
@@ -289,7 +343,11 @@ export class ExpressionTyper {
     }
 
     /** The method a call selects: the first declared overload whose parameters accept the arguments, else the first of that arity. */
-    private method(t: SymType, name: string, argTypes: readonly SymType[]): { m: CDMethod; subst: ReadonlyMap<never, SymType> } | undefined {
+    private method(
+        t: SymType,
+        name: string,
+        argTypes: readonly SymType[],
+    ): { m: CDMethod; subst: ReadonlyMap<never, SymType> } | undefined {
         const seen = new Set<CDType>();
         const queue: SymType[] = [t];
         let fallback: { m: CDMethod; subst: ReadonlyMap<never, SymType> } | undefined;
@@ -299,11 +357,15 @@ export class ExpressionTyper {
             seen.add(cur.decl);
             if (cur.decl.$type === 'CDClass' || cur.decl.$type === 'CDEnum') {
                 const subst = bind(cur.decl.$type === 'CDClass' ? cur.decl.typeParams : [], cur.args) as ReadonlyMap<never, SymType>;
-                const candidates = cur.decl.members.filter((x): x is CDMethod => x.$type === 'CDMethod' && x.name === name && x.params.length === argTypes.length);
-                const fitting = candidates.find((m) => m.params.every((p, i) => {
-                    const pt = substitute(typeOfMCType(p.type), subst);
-                    return pt.kind === 'typevar' || this.rel.isAssignable(pt, argTypes[i]!);
-                }));
+                const candidates = cur.decl.members.filter(
+                    (x): x is CDMethod => x.$type === 'CDMethod' && x.name === name && x.params.length === argTypes.length,
+                );
+                const fitting = candidates.find((m) =>
+                    m.params.every((p, i) => {
+                        const pt = substitute(typeOfMCType(p.type), subst);
+                        return pt.kind === 'typevar' || this.rel.isAssignable(pt, argTypes[i]!);
+                    }),
+                );
                 if (fitting) return { m: fitting, subst };
                 if (candidates[0]) fallback ??= { m: candidates[0], subst };
             }
@@ -337,24 +399,35 @@ export class ExpressionTyper {
             case '!=':
                 if (!lenient && !this.comparable(l, r)) p.push(mismatch(e, `cannot compare ${printType(l)} with ${printType(r)}`));
                 return BOOLEAN;
-            case '<': case '<=': case '>': case '>=':
-                if (!lenient && !(this.rel.isNumeric(l) && this.rel.isNumeric(r))) p.push(mismatch(e, `'${op}' needs numeric operands, not ${printType(l)} and ${printType(r)}`));
+            case '<':
+            case '<=':
+            case '>':
+            case '>=':
+                if (!lenient && !(this.rel.isNumeric(l) && this.rel.isNumeric(r)))
+                    p.push(mismatch(e, `'${op}' needs numeric operands, not ${printType(l)} and ${printType(r)}`));
                 return BOOLEAN;
+            // biome-ignore lint/suspicious/noFallthroughSwitchClause: '+' of two numbers is arithmetic, as below
             case '+':
                 if (this.rel.isString(l) || this.rel.isString(r)) return this.rel.objectType('java.lang.String');
-            // falls through
-            case '-': case '*': case '/': case '%':
+            case '-':
+            case '*':
+            case '/':
+            case '%':
                 if (lenient) return ERROR_TYPE;
-                if (!(this.rel.isNumeric(l) && this.rel.isNumeric(r))) return fail(p, e, `'${op}' needs numeric operands, not ${printType(l)} and ${printType(r)}`);
+                if (!(this.rel.isNumeric(l) && this.rel.isNumeric(r)))
+                    return fail(p, e, `'${op}' needs numeric operands, not ${printType(l)} and ${printType(r)}`);
                 return this.rel.promote(l, r);
-            case '&': case '|': case '^':
+            case '&':
+            case '|':
+            case '^':
                 if (lenient) return ERROR_TYPE;
                 if (this.rel.isBoolean(l) && this.rel.isBoolean(r)) return BOOLEAN;
                 if (this.rel.isIntegral(l) && this.rel.isIntegral(r)) return this.rel.promote(l, r);
                 return fail(p, e, `'${op}' needs two boolean or two integral operands, not ${printType(l)} and ${printType(r)}`);
             default: // shifts
                 if (lenient) return ERROR_TYPE;
-                if (!(this.rel.isIntegral(l) && this.rel.isIntegral(r))) return fail(p, e, `'${op}' needs integral operands, not ${printType(l)} and ${printType(r)}`);
+                if (!(this.rel.isIntegral(l) && this.rel.isIntegral(r)))
+                    return fail(p, e, `'${op}' needs integral operands, not ${printType(l)} and ${printType(r)}`);
                 return this.rel.promote(l, INT);
         }
     }
@@ -398,4 +471,3 @@ function unresolved(p: TypeProblem[], node: AstNode, message: string): SymType {
     p.push({ node, message, code: 'expr/unresolved-name' });
     return ERROR_TYPE;
 }
-

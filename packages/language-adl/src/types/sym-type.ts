@@ -59,7 +59,7 @@ export function substitute(t: SymType, s: Substitution): SymType {
             return {
                 kind: 'wildcard',
                 upper: t.upper && substitute(t.upper, s),
-                lower: t.lower && substitute(t.lower, s)
+                lower: t.lower && substitute(t.lower, s),
             };
         default:
             return t;

@@ -99,7 +99,7 @@ export class TypeRelations {
         }
         if (sub.kind === 'object' && sup.kind === 'object') {
             const ancestor = this.ancestor(sub, sup.decl);
-            if (!ancestor || ancestor.kind !== 'object') return false;
+            if (ancestor?.kind !== 'object') return false;
             if (sup.args.length === 0 || ancestor.args.length === 0) return true;
             if (sup.args.length !== ancestor.args.length) return false;
             return sup.args.every((a, i) => this.containsArg(a, ancestor.args[i]!));
@@ -155,7 +155,11 @@ export class TypeRelations {
                 return this.equal(a.component, (b as typeof a).component);
             case 'object': {
                 const o = b as typeof a;
-                return a.decl === o.decl && a.args.length === o.args.length && a.args.every((x, i) => this.equal(this.box(x), this.box(o.args[i]!)));
+                return (
+                    a.decl === o.decl &&
+                    a.args.length === o.args.length &&
+                    a.args.every((x, i) => this.equal(this.box(x), this.box(o.args[i]!)))
+                );
             }
             case 'null':
                 return true;

@@ -13,7 +13,7 @@ export function typeOfMCType(t: MCType | TypeArgument | undefined, s: Substituti
             return {
                 kind: 'wildcard',
                 upper: t.upper ? typeOfMCType(t.upper, s) : undefined,
-                lower: t.lower ? typeOfMCType(t.lower, s) : undefined
+                lower: t.lower ? typeOfMCType(t.lower, s) : undefined,
             };
         case 'ReferenceType': {
             const decl = t.ref.ref;

@@ -1,4 +1,14 @@
-import { DefaultLinker, ValidationRegistry, isOperationCancelled, type AstNode, type AstNodeDescription, type LinkingError, type MaybePromise, type ReferenceInfo, type ValidationAcceptor } from 'langium';
+import {
+    DefaultLinker,
+    ValidationRegistry,
+    isOperationCancelled,
+    type AstNode,
+    type AstNodeDescription,
+    type LinkingError,
+    type MaybePromise,
+    type ReferenceInfo,
+    type ValidationAcceptor,
+} from 'langium';
 import { Codes } from './codes.js';
 
 /**
@@ -39,7 +49,12 @@ export function checkFailedMessage(check: string, err: unknown): string {
 
 /** The registry of every language of the family: failing checks become `internal/check-failed`. */
 export class AdlValidationRegistry extends ValidationRegistry {
-    protected override async handleException(functionality: () => MaybePromise<void>, _context: string, accept: ValidationAcceptor, node: AstNode): Promise<void> {
+    protected override async handleException(
+        functionality: () => MaybePromise<void>,
+        _context: string,
+        accept: ValidationAcceptor,
+        node: AstNode,
+    ): Promise<void> {
         try {
             await functionality();
         } catch (err) {

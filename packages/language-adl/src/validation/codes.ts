@@ -79,7 +79,7 @@ export const Codes = {
     // Class diagrams: the codes are defined with their checks in @maa/language-cd.
     CdDuplicateName: CdCodes.DuplicateName,
     CdFileNameMismatch: CdCodes.FileNameMismatch,
-    CdPackageMismatch: CdCodes.PackageMismatch
+    CdPackageMismatch: CdCodes.PackageMismatch,
 } as const;
 
 export type Code = (typeof Codes)[keyof typeof Codes];

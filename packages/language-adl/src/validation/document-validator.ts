@@ -1,4 +1,12 @@
-import { DefaultDocumentValidator, DocumentValidator, GrammarAST, type LangiumCoreServices, type LangiumDocument, type ParseResult, type ValidationOptions } from 'langium';
+import {
+    DefaultDocumentValidator,
+    DocumentValidator,
+    GrammarAST,
+    type LangiumCoreServices,
+    type LangiumDocument,
+    type ParseResult,
+    type ValidationOptions,
+} from 'langium';
 import type { Diagnostic } from 'vscode-languageserver-types';
 import { Codes } from './codes.js';
 import { isGuardError } from '../parser/guarded-lexer.js';
@@ -70,7 +78,15 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
             const { container, property } = error.info;
             if (isFailedLinkingError(error)) {
                 const range = reference.$refNode?.range ?? container.$cstNode?.range;
-                if (range) diagnostics.push({ severity: 1, range, message: error.message, code: Codes.InternalError, source: this.getSource(), data: { check: error.check } });
+                if (range)
+                    diagnostics.push({
+                        severity: 1,
+                        range,
+                        message: error.message,
+                        code: Codes.InternalError,
+                        source: this.getSource(),
+                        data: { check: error.check },
+                    });
                 continue;
             }
             let code: string = Codes.LinkUnresolved;
@@ -98,8 +114,11 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
                     break;
                 case 'NameExpression.ref': {
                     const assign = container.$container;
-                    if (assign?.$type === 'AssignmentExpression' && (assign as { left?: unknown }).left === container
-                        && ['Subcomponent', 'ParentComponent'].includes(assign.$container?.$type ?? '')) {
+                    if (
+                        assign?.$type === 'AssignmentExpression' &&
+                        (assign as { left?: unknown }).left === container &&
+                        ['Subcomponent', 'ParentComponent'].includes(assign.$container?.$type ?? '')
+                    ) {
                         code = Codes.UnknownArgumentKey;
                         message = `'${name}' is not a parameter of the instantiated component type.`;
                         break;
@@ -124,7 +143,7 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
                 message,
                 code,
                 source: this.getSource(),
-                data: { code: DocumentValidator.LinkingError }
+                data: { code: DocumentValidator.LinkingError },
             });
         }
     }
@@ -143,7 +162,8 @@ function concise(message: string, atEnd: boolean, softKeywords: ReadonlySet<stri
         const shown = expected.slice(0, 12).map((t) => (t === 'ID' ? 'a name' : `'${t}'`));
         return `${what}; expected ${shown.join(', ')}${expected.length > 12 ? ', ...' : ''}.`;
     }
-    if (/Expecting:? end of (file|input)|token of type '?EOF/i.test(message)) return `${what}; expected the end of the file (one top-level element per file).`;
+    if (/Expecting:? end of (file|input)|token of type '?EOF/i.test(message))
+        return `${what}; expected the end of the file (one top-level element per file).`;
     const single = /Expecting (?:token of type )?'?([^'\s]+)'?/.exec(message)?.[1];
     return single ? `${what}; expected ${single === 'ID' ? 'a name' : `'${single}'`}.` : message;
 }
@@ -168,12 +188,11 @@ function onePerFailedCheck(diagnostics: Diagnostic[]): Diagnostic[] {
 function withoutFollowUps(parseResult: ParseResult): ParseResult {
     const cuts = parseResult.lexerErrors.filter(isGuardError).flatMap((e) => e.regions);
     if (cuts.length === 0) return parseResult;
-    const followUp = (offset: number): boolean => cuts.some((c) =>
-        (Number.isNaN(offset) ? c.resumeOffset === Infinity : offset >= c.offset && offset <= c.resumeOffset));
+    const followUp = (offset: number): boolean =>
+        cuts.some((c) => (Number.isNaN(offset) ? c.resumeOffset === Infinity : offset >= c.offset && offset <= c.resumeOffset));
     return { ...parseResult, parserErrors: parseResult.parserErrors.filter((e) => !followUp(e.token.startOffset)) };
 }
 
 function retag(d: Diagnostic, code: string): void {
     d.code = code;
 }
-

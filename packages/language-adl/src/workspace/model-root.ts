@@ -46,12 +46,18 @@ export function resolveModelRoot(file: string, options: ModelRootOptions): strin
 }
 
 /** `package a.b;` at the start of a model file (after a byte-order mark, white space and comments), if any. */
-const PACKAGE_DECLARATION = /^\uFEFF?(?:\s|\/\/[^\n]*|\/\*[\s\S]*?\*\/)*package\s+([\p{L}_$][\p{L}\p{N}_$]*(?:\s*\.\s*[\p{L}_$][\p{L}\p{N}_$]*)*)\s*;/u;
+const PACKAGE_DECLARATION =
+    /^\uFEFF?(?:\s|\/\/[^\n]*|\/\*[\s\S]*?\*\/)*package\s+([\p{L}_$][\p{L}\p{N}_$]*(?:\s*\.\s*[\p{L}_$][\p{L}\p{N}_$]*)*)\s*;/u;
 
 /** The package a model file's text declares at its start (`a.b`, spaces removed), if any. */
 export function declaredPackage(text: string): string | undefined {
     const declared = PACKAGE_DECLARATION.exec(text)?.[1];
-    return declared === undefined ? undefined : declared.split('.').map((s) => s.trim()).join('.');
+    return declared === undefined
+        ? undefined
+        : declared
+              .split('.')
+              .map((s) => s.trim())
+              .join('.');
 }
 
 /** The folder above the trailing folders that spell `packageName`, if they do. */

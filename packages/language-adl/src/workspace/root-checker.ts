@@ -1,3 +1,4 @@
+import type { Dirent, Stats } from 'node:fs';
 import { readFile, readdir, stat } from 'node:fs/promises';
 import { join, resolve } from 'node:path';
 import { DocumentState, URI, isOperationCancelled, type LangiumDocument } from 'langium';
@@ -46,7 +47,11 @@ const SEVERITIES: readonly Severity[] = ['error', 'warning', 'info', 'hint'];
  * each root (each root an independent scope), builds and validates them in one workspace, and
  * returns the diagnostics sorted by file and position.
  */
-export async function checkRoots(services: HostLanguageServices, specs: readonly RootSpec[], options: CheckOptions = {}): Promise<CheckDiagnostic[]> {
+export async function checkRoots(
+    services: HostLanguageServices,
+    specs: readonly RootSpec[],
+    options: CheckOptions = {},
+): Promise<CheckDiagnostic[]> {
     const shared = services.shared;
     const extensions = options.extensions ?? shared.ServiceRegistry.all.flatMap((s) => s.LanguageMetaData.fileExtensions);
     const roots = new Map<string, Set<string> | undefined>();
@@ -104,7 +109,7 @@ export async function checkRoots(services: HostLanguageServices, specs: readonly
     }
     const builtins = builtinDocuments(shared);
     options.onProgress?.(`checking ${documents.length} files`);
-    failed.push(...await buildEach(shared, builtins, documents));
+    failed.push(...(await buildEach(shared, builtins, documents)));
 
     const result: CheckDiagnostic[] = [];
     for (const { uri, reason } of failed) {
@@ -129,7 +134,7 @@ export async function checkRoots(services: HostLanguageServices, specs: readonly
                 endColumn: d.range.end.character + 1,
                 severity: SEVERITIES[(d.severity ?? 1) - 1] ?? 'error',
                 code: typeof d.code === 'string' ? d.code : d.code !== undefined ? String(d.code) : 'internal/unclassified',
-                message: d.message
+                message: d.message,
             });
         }
     }
@@ -148,7 +153,11 @@ interface FailedFile {
  * yet validated on its own, so one file that breaks the build is reported and the others are
  * still checked. Returns the documents that could not be checked.
  */
-async function buildEach(shared: HostLanguageServices['shared'], builtins: LangiumDocument[], documents: LangiumDocument[]): Promise<FailedFile[]> {
+async function buildEach(
+    shared: HostLanguageServices['shared'],
+    builtins: LangiumDocument[],
+    documents: LangiumDocument[],
+): Promise<FailedFile[]> {
     const builder = shared.workspace.DocumentBuilder;
     try {
         await builder.build([...builtins, ...documents], { validation: true });
@@ -171,16 +180,28 @@ async function buildEach(shared: HostLanguageServices['shared'], builtins: Langi
 
 /** The diagnostic of a file that could not be checked: an error at its start, with the reason. */
 function notChecked(root: string, file: string, reason: unknown): CheckDiagnostic {
-    const why = reason instanceof RangeError ? 'the model is nested too deeply for the parser' : reason instanceof Error ? reason.message : String(reason);
+    const why =
+        reason instanceof RangeError
+            ? 'the model is nested too deeply for the parser'
+            : reason instanceof Error
+              ? reason.message
+              : String(reason);
     return {
-        root, file, line: 1, column: 1, endLine: 1, endColumn: 1, severity: 'error', code: Codes.InternalError,
-        message: `This file could not be checked (${why}); the other files were checked. Please report this with the file.`
+        root,
+        file,
+        line: 1,
+        column: 1,
+        endLine: 1,
+        endColumn: 1,
+        severity: 'error',
+        code: Codes.InternalError,
+        message: `This file could not be checked (${why}); the other files were checked. Please report this with the file.`,
     };
 }
 
 /** The model files below a root and the folders below it that are roots of their own (`maa.json`). */
 async function scanRoot(root: string, extensions: readonly string[]): Promise<{ files: string[]; nested: string[] }> {
-    let info;
+    let info: Stats;
     try {
         info = await stat(root);
     } catch {
@@ -190,7 +211,7 @@ async function scanRoot(root: string, extensions: readonly string[]): Promise<{ 
     const files: string[] = [];
     const nested: string[] = [];
     const walk = async (dir: string): Promise<void> => {
-        let entries;
+        let entries: Dirent[];
         try {
             entries = await readdir(dir, { withFileTypes: true });
         } catch (e) {

@@ -1,13 +1,34 @@
 import { AstUtils, GrammarUtils, type AstNode } from 'langium';
 import { Formatting } from 'langium/lsp';
-import { CodeActionKind, CompletionItemKind, SemanticTokenModifiers, SemanticTokenTypes, SymbolKind, type CodeAction } from 'vscode-languageserver-types';
 import {
-    enclosingComponent, fixIn, insertIntoBody, sourceText, type AdlFormatter, type AdlLspServices, type QuickFixContext
+    CodeActionKind,
+    CompletionItemKind,
+    SemanticTokenModifiers,
+    SemanticTokenTypes,
+    SymbolKind,
+    type CodeAction,
+} from 'vscode-languageserver-types';
+import {
+    enclosingComponent,
+    fixIn,
+    insertIntoBody,
+    sourceText,
+    type AdlFormatter,
+    type AdlLspServices,
+    type QuickFixContext,
 } from '@maa/language-adl';
 import type { Automaton, InternalTransition, State, Transition } from '../generated/ast.js';
 import {
-    automatonTiming, enclosingAutomaton, initialStates, isHierarchical, isAnyTransition, sourceOf, stateActions, substates,
-    triggerOf, type AnyTransition
+    automatonTiming,
+    enclosingAutomaton,
+    initialStates,
+    isHierarchical,
+    isAnyTransition,
+    sourceOf,
+    stateActions,
+    substates,
+    triggerOf,
+    type AnyTransition,
 } from '../automaton-model.js';
 import { AutomatonCodes } from '../codes.js';
 
@@ -39,7 +60,7 @@ function registerSymbols(services: AdlLspServices): void {
     symbols.set('Automaton', (n) => ({
         name: 'automaton',
         detail: automatonTiming(n as Automaton),
-        selection: GrammarUtils.findNodeForKeyword(n.$cstNode, 'automaton')
+        selection: GrammarUtils.findNodeForKeyword(n.$cstNode, 'automaton'),
     }));
     symbols.set('State', (n) => {
         const s = n as State;
@@ -62,7 +83,8 @@ function registerTokens(services: AdlLspServices): void {
     const tokens = services.lsp.SemanticTokenProvider;
     tokens.styles.set('State', { type: SemanticTokenTypes.namespace });
     const tick = (n: AstNode, accept: Parameters<NonNullable<ReturnType<typeof tokens.highlighters.get>>>[1]): void => {
-        if ((n as AnyTransition).tick) accept({ node: n, keyword: 'Tick', type: SemanticTokenTypes.event, modifier: SemanticTokenModifiers.defaultLibrary });
+        if ((n as AnyTransition).tick)
+            accept({ node: n, keyword: 'Tick', type: SemanticTokenTypes.event, modifier: SemanticTokenModifiers.defaultLibrary });
     };
     tokens.highlighters.set('Transition', tick);
     tokens.highlighters.set('InternalTransition', tick);
@@ -123,14 +145,22 @@ function describeState(s: State, language: string): string {
     const actions = (['entry', 'exit', 'do'] as const).filter((k) => stateActions(s, k).length > 0);
     if (actions.length) lines.push(`**Actions**: ${actions.join(', ')}`);
     if (automaton) {
-        const out = AstUtils.streamAllContents(automaton).filter(isAnyTransition).filter((t) => sourceOf(t) === s).toArray();
+        const out = AstUtils.streamAllContents(automaton)
+            .filter(isAnyTransition)
+            .filter((t) => sourceOf(t) === s)
+            .toArray();
         if (out.length) {
-            lines.push(`**Transitions**\n\n${out.map((t) => {
-                const trigger = triggerOf(t);
-                const on = trigger.kind === 'tick' ? ' Tick' : trigger.kind === 'port' ? ` ${trigger.name}` : '';
-                const target = t.$type === 'InternalTransition' ? t.$container.name : t.target?.ref?.name ?? t.target?.$refText ?? '?';
-                return `- \`-> ${target}${t.guard ? ` [${sourceText(t.guard)}]` : ''}${on}\``;
-            }).join('\n')}`);
+            lines.push(
+                `**Transitions**\n\n${out
+                    .map((t) => {
+                        const trigger = triggerOf(t);
+                        const on = trigger.kind === 'tick' ? ' Tick' : trigger.kind === 'port' ? ` ${trigger.name}` : '';
+                        const target =
+                            t.$type === 'InternalTransition' ? t.$container.name : (t.target?.ref?.name ?? t.target?.$refText ?? '?');
+                        return `- \`-> ${target}${t.guard ? ` [${sourceText(t.guard)}]` : ''}${on}\``;
+                    })
+                    .join('\n')}`,
+            );
         }
     }
     return lines.join('\n\n');
@@ -139,7 +169,7 @@ function describeState(s: State, language: string): string {
 /** `automaton/missing-state`: declare the state at the level of the transition. */
 function createMissingState(ctx: QuickFixContext): CodeAction | undefined {
     const t = ctx.node && AstUtils.getContainerOfType(ctx.node, isAnyTransition);
-    if (!t || t.$type !== 'Transition') return undefined;
+    if (t?.$type !== 'Transition') return undefined;
     const name = ctx.document.textDocument.getText(ctx.diagnostic.range).trim();
     if (!/^[_a-zA-Z$][\w$]*$/.test(name)) return undefined;
     const level = t.$container as Automaton | State;
@@ -152,17 +182,27 @@ function createMissingState(ctx: QuickFixContext): CodeAction | undefined {
 /** `automaton/no-initial-state`: mark a state of the level `initial`. */
 function markInitial(ctx: QuickFixContext): CodeAction[] {
     const node = ctx.node;
-    const automaton = node && (node.$type === 'Automaton' ? node as Automaton : enclosingAutomaton(node));
+    const automaton = node && (node.$type === 'Automaton' ? (node as Automaton) : enclosingAutomaton(node));
     if (!automaton) return [];
     const state = AstUtils.getContainerOfType(node, (n): n is State => n.$type === 'State');
     const level: Automaton | State = state && isHierarchical(state) && initialStates(state).length === 0 ? state : automaton;
-    return substates(level).slice(0, 5).flatMap((s) => {
-        const keyword = GrammarUtils.findNodeForKeyword(s.$cstNode, 'state');
-        if (!keyword) return [];
-        return [{
-            title: `Make '${s.name}' the initial state`,
-            kind: CodeActionKind.QuickFix,
-            edit: { changes: { [ctx.document.uri.toString()]: [{ range: { start: keyword.range.start, end: keyword.range.start }, newText: 'initial ' }] } }
-        }];
-    });
+    return substates(level)
+        .slice(0, 5)
+        .flatMap((s) => {
+            const keyword = GrammarUtils.findNodeForKeyword(s.$cstNode, 'state');
+            if (!keyword) return [];
+            return [
+                {
+                    title: `Make '${s.name}' the initial state`,
+                    kind: CodeActionKind.QuickFix,
+                    edit: {
+                        changes: {
+                            [ctx.document.uri.toString()]: [
+                                { range: { start: keyword.range.start, end: keyword.range.start }, newText: 'initial ' },
+                            ],
+                        },
+                    },
+                },
+            ];
+        });
 }

@@ -10,7 +10,7 @@ export const ModeCodes = {
     ModeAutomatonInAtomic: 'mode/mode-automaton-in-atomic',
     StateInModeAutomaton: 'mode/state-in-mode-automaton',
     ModeInStatechart: 'mode/mode-in-statechart',
-    PortInMode: 'mode/port-in-mode'
+    PortInMode: 'mode/port-in-mode',
 } as const;
 
 export type ModeCode = (typeof ModeCodes)[keyof typeof ModeCodes];

@@ -1,6 +1,14 @@
 import type { ValidationAcceptor } from 'langium';
 import {
-    Codes, elementsOf, findPort, isErroneous, printType, subcomponentType, type ast as adl, type PortInfo, type TypeRelations
+    Codes,
+    elementsOf,
+    findPort,
+    isErroneous,
+    printType,
+    subcomponentType,
+    type ast as adl,
+    type PortInfo,
+    type TypeRelations,
 } from '@maa/language-adl';
 import type { Mode } from '../generated/ast.js';
 import { modeAutomatonComponent, enclosingModeAutomaton, modeConnectors } from './mode-model.js';
@@ -22,7 +30,7 @@ export class ModeConnectorChecks {
 
     check(m: Mode, accept: ValidationAcceptor): void {
         const a = enclosingModeAutomaton(m);
-        const c = a && modeAutomatonComponent(a) as adl.ComponentType | undefined;
+        const c = a && (modeAutomatonComponent(a) as adl.ComponentType | undefined);
         if (!c) return;
         const own = modeConnectors(m) as unknown as adl.Connector[]; // the composed AST's Connector is the host's
         const shared = elementsOf(c).filter((e): e is adl.Connector => e.$type === 'Connector');
@@ -36,27 +44,39 @@ export class ModeConnectorChecks {
             let sourceOk = true;
             if (source && !(source.sub ? source.info.direction === 'out' : source.info.direction === 'in')) {
                 sourceOk = false;
-                accept('error', `Connector source '${text(source)}' must be an incoming port of the component or an outgoing port of a subcomponent, but it is ${source.sub ? 'an incoming port of subcomponent' : 'an outgoing port of component'} '${source.sub?.name ?? source.info.owner.name}'.`,
-                    { node: source.access, code: Codes.SourceDirectionMismatch });
+                accept(
+                    'error',
+                    `Connector source '${text(source)}' must be an incoming port of the component or an outgoing port of a subcomponent, but it is ${source.sub ? 'an incoming port of subcomponent' : 'an outgoing port of component'} '${source.sub?.name ?? source.info.owner.name}'.`,
+                    { node: source.access, code: Codes.SourceDirectionMismatch },
+                );
             }
             for (const access of con.targets) {
                 if (senders.has(key(access))) {
-                    accept('error', `Port '${access.$cstNode?.text ?? ''}' receives messages from more than one connector in mode '${m.name}'; every port has at most one sender in each mode.`,
-                        { node: access, code: Codes.MultipleSenders });
+                    accept(
+                        'error',
+                        `Port '${access.$cstNode?.text ?? ''}' receives messages from more than one connector in mode '${m.name}'; every port has at most one sender in each mode.`,
+                        { node: access, code: Codes.MultipleSenders },
+                    );
                 } else senders.set(key(access), access);
                 const target = end(c, access);
                 if (!target) continue;
                 if (!(target.sub ? target.info.direction === 'in' : target.info.direction === 'out')) {
-                    accept('error', `Connector target '${text(target)}' must be an outgoing port of the component or an incoming port of a subcomponent, but it is ${target.sub ? 'an outgoing port of subcomponent' : 'an incoming port of component'} '${target.sub?.name ?? target.info.owner.name}'.`,
-                        { node: target.access, code: Codes.TargetDirectionMismatch });
+                    accept(
+                        'error',
+                        `Connector target '${text(target)}' must be an outgoing port of the component or an incoming port of a subcomponent, but it is ${target.sub ? 'an outgoing port of subcomponent' : 'an incoming port of component'} '${target.sub?.name ?? target.info.owner.name}'.`,
+                        { node: target.access, code: Codes.TargetDirectionMismatch },
+                    );
                     continue;
                 }
                 if (!source || !sourceOk) continue;
                 const st = source.info.type;
                 const tt = target.info.type;
                 if (!isErroneous(st) && !isErroneous(tt) && !this.rel.isAssignable(tt, st)) {
-                    accept('error', `Connector '${text(source)} -> ${text(target)}' connects a port of type ${printType(st)} to a port of type ${printType(tt)}; ${printType(st)} is not assignable to ${printType(tt)}.`,
-                        { node: target.access, code: Codes.ConnectorTypeMismatch });
+                    accept(
+                        'error',
+                        `Connector '${text(source)} -> ${text(target)}' connects a port of type ${printType(st)} to a port of type ${printType(tt)}; ${printType(st)} is not assignable to ${printType(tt)}.`,
+                        { node: target.access, code: Codes.ConnectorTypeMismatch },
+                    );
                 }
             }
         }

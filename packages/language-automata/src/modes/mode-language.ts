@@ -1,6 +1,11 @@
 import type { AstNode, ReferenceInfo, Scope } from 'langium';
 import {
-    allPorts, enclosingComponent, subcomponentsOf, type AdlDocumentValidator, type AdlScopeProvider, type AdlServices
+    allPorts,
+    enclosingComponent,
+    subcomponentsOf,
+    type AdlDocumentValidator,
+    type AdlScopeProvider,
+    type AdlServices,
 } from '@maa/language-adl';
 import { AutomatonCodes } from '../codes.js';
 import { ModeChecks } from './mode-checks.js';
@@ -16,31 +21,35 @@ import { enclosingMode, enclosingModeAutomaton, modesOf, modeSubcomponents } fro
  */
 export function registerModes(services: AdlServices): void {
     const scopes = services.references.ScopeProvider as AdlScopeProvider;
-    const modes = (ctx: ReferenceInfo): Scope => scopes.nodes(() => {
-        const a = enclosingModeAutomaton(ctx.container);
-        return a ? modesOf(a) : [];
-    });
+    const modes = (ctx: ReferenceInfo): Scope =>
+        scopes.nodes(() => {
+            const a = enclosingModeAutomaton(ctx.container);
+            return a ? modesOf(a) : [];
+        });
     scopes.contributions.set('ModeTransition.source', modes);
     scopes.contributions.set('ModeTransition.target', modes);
     scopes.contributions.set('ModeTransition.event', (ctx) => scopes.nodes(() => incomingPorts(ctx.container)));
     // Outside modes this is the host's own scope (the component's subcomponents).
-    scopes.contributions.set('PortAccess.subcomponent', (ctx) => scopes.nodes(() => {
-        const comp = enclosingComponent(ctx.container);
-        const own = comp ? subcomponentsOf(comp) : [];
-        const mode = enclosingMode(ctx.container);
-        return mode ? [...modeSubcomponents(mode), ...own] : own;
-    }));
+    scopes.contributions.set('PortAccess.subcomponent', (ctx) =>
+        scopes.nodes(() => {
+            const comp = enclosingComponent(ctx.container);
+            const own = comp ? subcomponentsOf(comp) : [];
+            const mode = enclosingMode(ctx.container);
+            return mode ? [...modeSubcomponents(mode), ...own] : own;
+        }),
+    );
 
     const validator = services.validation.DocumentValidator as AdlDocumentValidator;
     const missingMode = {
         code: AutomatonCodes.MissingState,
-        message: (name: string) => `Mode '${name}' does not exist in this mode automaton.`
+        message: (name: string) => `Mode '${name}' does not exist in this mode automaton.`,
     };
     validator.linkCodes.set('ModeTransition.source', missingMode);
     validator.linkCodes.set('ModeTransition.target', missingMode);
     validator.linkCodes.set('ModeTransition.event', {
         code: AutomatonCodes.MissingEvent,
-        message: (name: string) => `'${name}' is not an incoming port of the component: a mode transition is triggered by an incoming port or by 'Tick'.`
+        message: (name: string) =>
+            `'${name}' is not an incoming port of the component: a mode transition is triggered by an incoming port or by 'Tick'.`,
     });
 
     const checks = new ModeChecks(services);
@@ -50,5 +59,9 @@ export function registerModes(services: AdlServices): void {
 /** The incoming ports of the component that encloses a node, inherited ones included. */
 function incomingPorts(node: AstNode): AstNode[] {
     const component = enclosingComponent(node);
-    return component ? allPorts(component).filter((p) => p.direction === 'in').map((p) => p.port) : [];
+    return component
+        ? allPorts(component)
+              .filter((p) => p.direction === 'in')
+              .map((p) => p.port)
+        : [];
 }

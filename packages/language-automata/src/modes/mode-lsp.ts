@@ -4,7 +4,12 @@ import { CompletionItemKind, SemanticTokenModifiers, SemanticTokenTypes, SymbolK
 import { sourceText, type AdlFormatter, type AdlLspServices } from '@maa/language-adl';
 import type { Mode, ModeAutomaton, ModeTransition } from '../generated/ast.js';
 import {
-    enclosingModeAutomaton, modeAutomatonComponent, modeAutomatonTiming, modeConnectors, modeSubcomponents, modeTransitionsOf
+    enclosingModeAutomaton,
+    modeAutomatonComponent,
+    modeAutomatonTiming,
+    modeConnectors,
+    modeSubcomponents,
+    modeTransitionsOf,
 } from './mode-model.js';
 
 /**
@@ -25,7 +30,7 @@ export function registerModeLsp(services: AdlLspServices): void {
     symbols.set('ModeAutomaton', (n) => ({
         name: 'mode automaton',
         detail: modeAutomatonTiming(n as ModeAutomaton),
-        selection: GrammarUtils.findNodeForKeyword(n.$cstNode, 'automaton')
+        selection: GrammarUtils.findNodeForKeyword(n.$cstNode, 'automaton'),
     }));
     symbols.set('Mode', (n) => {
         const m = n as Mode;
@@ -41,7 +46,8 @@ export function registerModeLsp(services: AdlLspServices): void {
     const tokens = services.lsp.SemanticTokenProvider;
     tokens.styles.set('Mode', { type: SemanticTokenTypes.namespace });
     tokens.highlighters.set('ModeTransition', (n, accept) => {
-        if ((n as ModeTransition).tick) accept({ node: n, keyword: 'Tick', type: SemanticTokenTypes.event, modifier: SemanticTokenModifiers.defaultLibrary });
+        if ((n as ModeTransition).tick)
+            accept({ node: n, keyword: 'Tick', type: SemanticTokenTypes.event, modifier: SemanticTokenModifiers.defaultLibrary });
     });
 
     registerFormatting(services.lsp.Formatter);
@@ -84,7 +90,12 @@ function describeMode(m: Mode, language: string): string {
     const automaton = enclosingModeAutomaton(m);
     const component = automaton && modeAutomatonComponent(automaton);
     const lines = [`\`\`\`${language}\n${m.initial ? 'initial ' : ''}mode ${m.name}\n\`\`\``];
-    lines.push(`${m.initial ? 'Initial mode' : 'Mode'} of the ${automaton ? modeAutomatonTiming(automaton) : ''} mode automaton of \`${component?.name ?? '?'}\`.`.replace(/ {2,}/g, ' '));
+    lines.push(
+        `${m.initial ? 'Initial mode' : 'Mode'} of the ${automaton ? modeAutomatonTiming(automaton) : ''} mode automaton of \`${component?.name ?? '?'}\`.`.replace(
+            / {2,}/g,
+            ' ',
+        ),
+    );
     const subs = modeSubcomponents(m);
     if (subs.length) lines.push(`**Subcomponents**: ${subs.map((s) => `\`${s.name}\``).join(', ')}`);
     const connectors = modeConnectors(m);
@@ -92,10 +103,14 @@ function describeMode(m: Mode, language: string): string {
     if (automaton) {
         const out = modeTransitionsOf(automaton).filter((t) => t.source?.ref === m);
         if (out.length) {
-            lines.push(`**Transitions**\n\n${out.map((t) => {
-                const on = t.tick ? ' Tick' : t.event ? ` ${t.event.$refText}` : '';
-                return `- \`-> ${t.target?.$refText ?? '?'}${t.guard ? ` [${sourceText(t.guard)}]` : ''}${on}\``;
-            }).join('\n')}`);
+            lines.push(
+                `**Transitions**\n\n${out
+                    .map((t) => {
+                        const on = t.tick ? ' Tick' : t.event ? ` ${t.event.$refText}` : '';
+                        return `- \`-> ${t.target?.$refText ?? '?'}${t.guard ? ` [${sourceText(t.guard)}]` : ''}${on}\``;
+                    })
+                    .join('\n')}`,
+            );
         }
     }
     return lines.join('\n\n');

@@ -21,7 +21,9 @@ function host(c: AnyComponentType): adl.ComponentType {
 
 /** The mode automata a component declares, in declaration order. */
 export function modeAutomataOf(c: AnyComponentType): ModeAutomaton[] {
-    return behaviorsOf(host(c)).map((b) => b.behavior as AstNode | undefined).filter((b): b is ModeAutomaton => isModeAutomaton(b));
+    return behaviorsOf(host(c))
+        .map((b) => b.behavior as AstNode | undefined)
+        .filter((b): b is ModeAutomaton => isModeAutomaton(b));
 }
 
 /** The mode automaton of a component (the first one; more than one is an error). */
@@ -97,7 +99,7 @@ export function modeAutomatonComponent(a: ModeAutomaton): ComponentType | undefi
  */
 export function modeAutomatonTiming(a: ModeAutomaton): Timing {
     const decl = a.$container;
-    const names = isBehaviorDeclaration(decl) ? decl.stereotype?.values.map((v) => v.name) ?? [] : [];
+    const names = isBehaviorDeclaration(decl) ? (decl.stereotype?.values.map((v) => v.name) ?? []) : [];
     return names.find((n): n is Timing => (TIMINGS as readonly string[]).includes(n)) ?? DEFAULT_TIMING;
 }
 

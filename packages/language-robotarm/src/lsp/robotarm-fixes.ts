@@ -1,14 +1,34 @@
 import { AstUtils, GrammarUtils, UriUtils, type AstNode } from 'langium';
 import { CodeActionKind, type CodeAction, type TextEdit } from 'vscode-languageserver-types';
 import {
-    allPorts, elementsOf, enclosingComponent, fixIn, fixWith, importEdits, importName, insertIntoBody, isIdentifier, sourceText,
-    type AdlCodeActionProvider, type QuickFixContext
+    allPorts,
+    elementsOf,
+    enclosingComponent,
+    fixIn,
+    fixWith,
+    importEdits,
+    importName,
+    insertIntoBody,
+    isIdentifier,
+    sourceText,
+    type AdlCodeActionProvider,
+    type QuickFixContext,
 } from '@maa/language-adl';
 import type { CDEnum, ComponentType, Location, MoveArgument, RobotArm, RobotArmInput, RobotArmModel } from '../generated/ast.js';
 import { RobotArmCodes } from '../codes.js';
 import {
-    enclosingRobotArm, INPUT_UNITS, inputsOf, isEmbedded, locationsOf, parseMeasure, programForCommand, programsOf,
-    protocolPorts, robotArmComponent, RobotArmProtocol, type RobotArmBody
+    enclosingRobotArm,
+    INPUT_UNITS,
+    inputsOf,
+    isEmbedded,
+    locationsOf,
+    parseMeasure,
+    programForCommand,
+    programsOf,
+    protocolPorts,
+    robotArmComponent,
+    RobotArmProtocol,
+    type RobotArmBody,
 } from '../robotarm-model.js';
 
 /** At most this many alternatives per diagnostic. */
@@ -64,9 +84,13 @@ function fixUnresolvedName(ctx: QuickFixContext): CodeAction | undefined {
     if (isEmbedded(body)) {
         const component = robotArmComponent(body);
         if (!component || component !== (enclosingComponent(body) as unknown)) return undefined;
-        return fixIn(`Create incoming port '${name}' in '${component.name}'`, ctx.document, [addPortEdit(component, `port in int ${name};`)]);
+        return fixIn(`Create incoming port '${name}' in '${component.name}'`, ctx.document, [
+            addPortEdit(component, `port in int ${name};`),
+        ]);
     }
-    return fixIn(`Create input '${name}'`, ctx.document, [insertIntoBody(ctx.document, body, `input int ${name};`, anchorFor(body, 'input'))]);
+    return fixIn(`Create input '${name}'`, ctx.document, [
+        insertIntoBody(ctx.document, body, `input int ${name};`, anchorFor(body, 'input')),
+    ]);
 }
 
 /** The edit that removes a node, with its line when it stands alone on it. */
@@ -77,7 +101,8 @@ function removeEdit(ctx: QuickFixContext, node: AstNode): TextEdit | undefined {
     const { start, end } = cst.range;
     const before = doc.getText({ start: { line: start.line, character: 0 }, end: start });
     const after = doc.getText({ start: end, end: { line: end.line + 1, character: 0 } });
-    if (before.trim() === '' && after.trim() === '') return { range: { start: { line: start.line, character: 0 }, end: { line: end.line + 1, character: 0 } }, newText: '' };
+    if (before.trim() === '' && after.trim() === '')
+        return { range: { start: { line: start.line, character: 0 }, end: { line: end.line + 1, character: 0 } }, newText: '' };
     return { range: cst.range, newText: '' };
 }
 
@@ -95,7 +120,10 @@ function fixInputInEmbedded(ctx: QuickFixContext): CodeAction[] {
     const type = sourceText(input.type);
     const hasPort = component !== undefined && allPorts(asHost(component)).some((p) => p.name === input.name);
     if (component && !hasPort && type && isIdentifier(input.name) && component === enclosingComponent(body)) {
-        const a = fixIn(`Replace input '${input.name}' by 'port in ${type} ${input.name};'`, ctx.document, [addPortEdit(component, `port in ${type} ${input.name};`), remove]);
+        const a = fixIn(`Replace input '${input.name}' by 'port in ${type} ${input.name};'`, ctx.document, [
+            addPortEdit(component, `port in ${type} ${input.name};`),
+            remove,
+        ]);
         if (a) out.push(a);
     }
     const r = fixIn(`Remove input '${input.name}'`, ctx.document, [remove]);
@@ -115,7 +143,7 @@ function asHost(c: ComponentType): Parameters<typeof allPorts>[0] {
  * wrong direction is turned around.
  */
 function fixProtocolPort(ctx: QuickFixContext, which: 'cmd' | 'status'): CodeAction[] {
-    const body = ctx.node && (ctx.node.$type === 'RobotArm' ? ctx.node as RobotArm : enclosingRobotArm(ctx.node));
+    const body = ctx.node && (ctx.node.$type === 'RobotArm' ? (ctx.node as RobotArm) : enclosingRobotArm(ctx.node));
     if (!body || !isEmbedded(body)) return [];
     const component = robotArmComponent(body);
     if (!component || component !== (enclosingComponent(body) as unknown)) return [];
@@ -126,7 +154,9 @@ function fixProtocolPort(ctx: QuickFixContext, which: 'cmd' | 'status'): CodeAct
         if (existing.direction === direction || AstUtils.getDocument(existing.port) !== ctx.document) return [];
         const cst = GrammarUtils.findNodeForProperty(existing.port.$cstNode, 'direction');
         if (!cst) return [];
-        const a = fixIn(`Make port '${portName}' ${direction === 'in' ? 'incoming' : 'outgoing'}`, ctx.document, [{ range: cst.range, newText: direction }]);
+        const a = fixIn(`Make port '${portName}' ${direction === 'in' ? 'incoming' : 'outgoing'}`, ctx.document, [
+            { range: cst.range, newText: direction },
+        ]);
         return a ? [a] : [];
     }
     const resolver = ctx.services.maa.NameResolver;
@@ -159,7 +189,10 @@ function fixProtocolPort(ctx: QuickFixContext, which: 'cmd' | 'status'): CodeAct
             imports = importEdits(ctx.document, qn);
             if (imports.length === 0) type = qn;
         }
-        const a = fixIn(`Declare 'port ${direction} ${type} ${portName};' in '${component.name}'`, ctx.document, [...imports, addPortEdit(component, `port ${direction} ${type} ${portName};`)]);
+        const a = fixIn(`Declare 'port ${direction} ${type} ${portName};' in '${component.name}'`, ctx.document, [
+            ...imports,
+            addPortEdit(component, `port ${direction} ${type} ${portName};`),
+        ]);
         if (a) out.push(a);
     }
     return out;
@@ -202,7 +235,7 @@ function fixMissingUnit(ctx: QuickFixContext): CodeAction | undefined {
     return {
         title: `Add the unit '${unit}' (${cst.text}${unit})`,
         kind: CodeActionKind.QuickFix,
-        edit: { changes: { [ctx.document.uri.toString()]: [{ range: { start: cst.range.end, end: cst.range.end }, newText: unit }] } }
+        edit: { changes: { [ctx.document.uri.toString()]: [{ range: { start: cst.range.end, end: cst.range.end }, newText: unit }] } },
     };
 }
 
@@ -223,7 +256,7 @@ function fixFileName(ctx: QuickFixContext): CodeAction[] {
     out.push({
         title: `Rename file to '${robot.name}.ra'`,
         kind: CodeActionKind.QuickFix,
-        edit: { documentChanges: [{ kind: 'rename', oldUri: ctx.document.uri.toString(), newUri }] }
+        edit: { documentChanges: [{ kind: 'rename', oldUri: ctx.document.uri.toString(), newUri }] },
     });
     return out;
 }
@@ -242,7 +275,9 @@ function fixPackage(ctx: QuickFixContext): CodeAction | undefined {
         const text = ctx.document.textDocument.getText();
         let end = semicolon.end;
         while (end < text.length && /\s/.test(text[end]!)) end++;
-        return fixIn('Remove the package declaration (default package)', ctx.document, [{ range: { start: keyword.range.start, end: ctx.document.textDocument.positionAt(end) }, newText: '' }]);
+        return fixIn('Remove the package declaration (default package)', ctx.document, [
+            { range: { start: keyword.range.start, end: ctx.document.textDocument.positionAt(end) }, newText: '' },
+        ]);
     }
     if (!expected) return undefined;
     const start = { line: 0, character: 0 };

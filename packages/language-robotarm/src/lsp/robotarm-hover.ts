@@ -2,9 +2,24 @@ import { GrammarUtils, type AstNode } from 'langium';
 import { sourceText } from '@maa/language-adl';
 import type { Location, Move, Program, RobotArmInput } from '../generated/ast.js';
 import {
-    commandConstantName, enclosingRobotArm, enumConstants, formatSI, INPUT_UNITS, inputsOf, isEmbedded, locationsOf, moveTarget,
-    parseMeasure, programForCommand, programsOf, protocolPorts, robotArmComponent, RobotArmProtocol, type Dimension,
-    type JointSource, type RobotArmBody
+    commandConstantName,
+    enclosingRobotArm,
+    enumConstants,
+    formatSI,
+    INPUT_UNITS,
+    inputsOf,
+    isEmbedded,
+    locationsOf,
+    moveTarget,
+    parseMeasure,
+    programForCommand,
+    programsOf,
+    protocolPorts,
+    robotArmComponent,
+    RobotArmProtocol,
+    type Dimension,
+    type JointSource,
+    type RobotArmBody,
 } from '../robotarm-model.js';
 
 /** Hover texts (Markdown) of RobotArm's declarations. */
@@ -40,13 +55,32 @@ function writtenProperty(node: AstNode, property: string): string {
 export function describeRobotArm(body: RobotArmBody, language: string): string {
     const head = isEmbedded(body) ? 'robotarm' : `robotarm ${body.name}`;
     const lines = [code(language, head)];
-    lines.push(isEmbedded(body)
-        ? `RobotArm programs of component \`${robotArmComponent(body)?.name ?? '?'}\`: port \`${RobotArmProtocol.commandPort}\` selects the program, port \`${RobotArmProtocol.statusPort}\` reports ${RobotArmProtocol.statusValues.join(', ')}.`
-        : `Robot arm \`${body.name}\` (a standalone RobotArm model).`);
-    const list = (title: string, items: string[]): void => { if (items.length) lines.push(`**${title}**: ${items.join(', ')}`); };
-    list('Inputs', inputsOf(body).filter((i) => i.name).map((i) => `\`${i.name}\``));
-    list('Locations', locationsOf(body).filter((l) => l.name).map((l) => `\`${l.name}\``));
-    list('Programs', programsOf(body).filter((p) => p.name).map((p) => `\`${p.name}\``));
+    lines.push(
+        isEmbedded(body)
+            ? `RobotArm programs of component \`${robotArmComponent(body)?.name ?? '?'}\`: port \`${RobotArmProtocol.commandPort}\` selects the program, port \`${RobotArmProtocol.statusPort}\` reports ${RobotArmProtocol.statusValues.join(', ')}.`
+            : `Robot arm \`${body.name}\` (a standalone RobotArm model).`,
+    );
+    const list = (title: string, items: string[]): void => {
+        if (items.length) lines.push(`**${title}**: ${items.join(', ')}`);
+    };
+    list(
+        'Inputs',
+        inputsOf(body)
+            .filter((i) => i.name)
+            .map((i) => `\`${i.name}\``),
+    );
+    list(
+        'Locations',
+        locationsOf(body)
+            .filter((l) => l.name)
+            .map((l) => `\`${l.name}\``),
+    );
+    list(
+        'Programs',
+        programsOf(body)
+            .filter((p) => p.name)
+            .map((p) => `\`${p.name}\``),
+    );
     return lines.join('\n\n');
 }
 
@@ -56,7 +90,7 @@ export function describeLocation(l: Location, language: string): string {
     return [
         code(language, `location ${l.name} ${angle} ${height}`),
         `Location of ${owner(enclosingRobotArm(l))}, a target in joint space:`,
-        `- joint angle ${measureInUnits(l.angle, angle)}\n- gripper height ${measureInUnits(l.height, height)}`
+        `- joint angle ${measureInUnits(l.angle, angle)}\n- gripper height ${measureInUnits(l.height, height)}`,
     ].join('\n\n');
 }
 
@@ -66,7 +100,9 @@ export function describeInput(i: RobotArmInput, language: string): string {
     if (body && isEmbedded(body)) {
         lines.push(`Not allowed in an embedded robotarm block: \`move ${i.name}\` names an incoming port of the component there.`);
     } else {
-        lines.push(`Input of ${owner(body)}: its latest value is read when a move starts, in ${unitName('angle')} as a joint angle, in ${unitName('height')} as a gripper height.`);
+        lines.push(
+            `Input of ${owner(body)}: its latest value is read when a move starts, in ${unitName('angle')} as a joint angle, in ${unitName('height')} as a gripper height.`,
+        );
     }
     return lines.join('\n\n');
 }
@@ -99,10 +135,14 @@ function stepMeaning(step: Program['steps'][number]): string {
     if (!t) return '';
     const joint = (s: JointSource, d: Dimension): string => {
         switch (s.kind) {
-            case 'fixed': return formatSI(d, s.si);
-            case 'keep': return 'unchanged';
-            case 'input': return `input \`${s.name}\` (${s.unit})`;
-            case 'port': return `port \`${s.name}\` (${s.unit})`;
+            case 'fixed':
+                return formatSI(d, s.si);
+            case 'keep':
+                return 'unchanged';
+            case 'input':
+                return `input \`${s.name}\` (${s.unit})`;
+            case 'port':
+                return `port \`${s.name}\` (${s.unit})`;
         }
     };
     const where = `angle ${joint(t.angle, 'angle')}, height ${joint(t.height, 'height')}`;

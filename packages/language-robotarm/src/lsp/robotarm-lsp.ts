@@ -52,7 +52,7 @@ function bodySummary(body: RobotArmBody): string | undefined {
     const parts = [
         inputsOf(body).length ? count(inputsOf(body).length, 'input') : undefined,
         locationsOf(body).length ? count(locationsOf(body).length, 'location') : undefined,
-        programsOf(body).length ? count(programsOf(body).length, 'program') : undefined
+        programsOf(body).length ? count(programsOf(body).length, 'program') : undefined,
     ].filter((p): p is string => !!p);
     return parts.join(', ') || undefined;
 }
@@ -62,7 +62,7 @@ function registerSymbols(services: AdlLspServices): void {
     symbols.set('RobotArm', (n) => ({
         name: 'robotarm',
         detail: bodySummary(n as RobotArm),
-        selection: GrammarUtils.findNodeForKeyword(n.$cstNode, 'robotarm')
+        selection: GrammarUtils.findNodeForKeyword(n.$cstNode, 'robotarm'),
     }));
     symbols.set('RobotArmDefinition', (n) => {
         const d = n as RobotArmDefinition;
@@ -99,7 +99,7 @@ const TOKEN_STYLES: ReadonlyArray<[string, TokenStyle]> = [
     // A location is a named, fixed pose; `top` and `bottom` are the arm's own (defaultLibrary).
     ['Location', { type: SemanticTokenTypes.variable, modifiers: [SemanticTokenModifiers.readonly] }],
     // Inputs are the programs' parameters, read when a move starts.
-    ['RobotArmInput', { type: SemanticTokenTypes.parameter }]
+    ['RobotArmInput', { type: SemanticTokenTypes.parameter }],
 ];
 
 function registerTokens(services: AdlLspServices): void {
@@ -113,7 +113,12 @@ function registerTokens(services: AdlLspServices): void {
         const a = n as MoveArgument;
         if (a.constant) {
             // `top` and `bottom`: constants of the arm (its lift positions).
-            accept({ node: a, property: 'constant', type: SemanticTokenTypes.variable, modifier: [SemanticTokenModifiers.readonly, SemanticTokenModifiers.defaultLibrary] });
+            accept({
+                node: a,
+                property: 'constant',
+                type: SemanticTokenTypes.variable,
+                modifier: [SemanticTokenModifiers.readonly, SemanticTokenModifiers.defaultLibrary],
+            });
         } else if (a.value !== undefined) {
             highlightMeasure(a, 'value', accept);
         }
@@ -130,8 +135,15 @@ function highlightMeasure(node: AstNode, property: string, accept: SemanticToken
     const m = /^(-?\s*(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)(\s*)([_a-zA-Z$][\w$]*)?/.exec(cst.text);
     if (!m) return;
     const doc = AstUtils.getDocument(node).textDocument;
-    const range = (start: number, length: number): Range =>
-        ({ start: doc.positionAt(cst.offset + start), end: doc.positionAt(cst.offset + start + length) });
+    const range = (start: number, length: number): Range => ({
+        start: doc.positionAt(cst.offset + start),
+        end: doc.positionAt(cst.offset + start + length),
+    });
     accept({ range: range(0, m[1]!.length), type: SemanticTokenTypes.number });
-    if (m[3]) accept({ range: range(m[1]!.length + m[2]!.length, m[3].length), type: SemanticTokenTypes.type, modifier: SemanticTokenModifiers.defaultLibrary });
+    if (m[3])
+        accept({
+            range: range(m[1]!.length + m[2]!.length, m[3].length),
+            type: SemanticTokenTypes.type,
+            modifier: SemanticTokenModifiers.defaultLibrary,
+        });
 }

@@ -107,7 +107,11 @@ export class HttpFileSystemProvider implements FileSystemProvider {
 
     private children(uri: URI, path: string, listing: NonNullable<HttpFileSystemProvider['listing']>): FileSystemNode[] {
         if (path !== '' && listing.entries.get(path)?.type !== 'directory') throw new Error(`${uri.toString()}: no such directory`);
-        return (listing.children.get(path) ?? []).map((e) => ({ isFile: e.type === 'file', isDirectory: e.type === 'directory', uri: toUri(e.path) }));
+        return (listing.children.get(path) ?? []).map((e) => ({
+            isFile: e.type === 'file',
+            isDirectory: e.type === 'directory',
+            uri: toUri(e.path),
+        }));
     }
 
     private node(uri: URI, path: string, entries: Map<string, WorkspaceEntry>): FileSystemNode {
@@ -129,7 +133,7 @@ export class HttpFileSystemProvider implements FileSystemProvider {
             try {
                 const response = await this.fetch(`${this.apiBase}/api/files`);
                 if (!response.ok) throw new Error(`listing the workspace: ${response.status} ${await errorText(response)}`);
-                const body = await response.json() as { entries: WorkspaceEntry[] };
+                const body = (await response.json()) as { entries: WorkspaceEntry[] };
                 const entries = new Map(body.entries.map((e) => [e.path, e]));
                 const children = new Map<string, WorkspaceEntry[]>();
                 for (const e of body.entries) {
@@ -160,7 +164,7 @@ export function toUri(path: string): URI {
 
 async function errorText(response: Response): Promise<string> {
     try {
-        const body = await response.json() as { error?: string };
+        const body = (await response.json()) as { error?: string };
         return body.error ?? response.statusText;
     } catch {
         return response.statusText;

@@ -10,7 +10,10 @@ declare const self: ServerPort;
 
 /** The worker's global scope as far as errors are concerned (typed loosely without the DOM library). */
 interface ErrorEventTarget {
-    addEventListener(type: 'error' | 'unhandledrejection', listener: (event: { preventDefault(): void; error?: unknown; reason?: unknown }) => void): void;
+    addEventListener(
+        type: 'error' | 'unhandledrejection',
+        listener: (event: { preventDefault(): void; error?: unknown; reason?: unknown }) => void,
+    ): void;
 }
 
 // A feature that throws outside a request (an unawaited promise, an event handler) is logged and

@@ -7,7 +7,9 @@ export function familyDiagnostics(): DiagnosticCatalog[] {
         ADL_DIAGNOSTICS,
         ...BEHAVIOR_LANGUAGES.flatMap((b) => (b.diagnostics ? [b.diagnostics] : [])),
         // Languages with their own files (e.g. `.arcapp`), unless a behavior language already brought the catalog.
-        ...FAMILY_LANGUAGES.flatMap((l) => (l.diagnostics && !BEHAVIOR_LANGUAGES.some((b) => b.diagnostics === l.diagnostics) ? [l.diagnostics] : []))
+        ...FAMILY_LANGUAGES.flatMap((l) =>
+            l.diagnostics && !BEHAVIOR_LANGUAGES.some((b) => b.diagnostics === l.diagnostics) ? [l.diagnostics] : [],
+        ),
     ];
 }
 
@@ -26,7 +28,7 @@ export function renderDiagnosticsMarkdown(catalogs: readonly DiagnosticCatalog[]
         '| code | severity | rule |',
         '|---|---|---|',
         ...catalogs.flatMap((c) => c.entries.map((e) => `| [${e.code}](#${anchor(e.code)}) | ${e.severity} | ${firstSentence(e.rule)} |`)),
-        ''
+        '',
     ];
     for (const c of catalogs) {
         out.push(`## ${c.title}`, '', c.intro, '');
@@ -46,7 +48,7 @@ function entry(e: CatalogEntry): string[] {
         ...example(e.invalid),
         'Accepted:',
         '',
-        ...example(e.valid)
+        ...example(e.valid),
     ];
 }
 

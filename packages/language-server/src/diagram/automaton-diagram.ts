@@ -1,6 +1,6 @@
 import type { AstNode } from 'langium';
-import { ast as adl, behaviorsOf } from '@maa/language-adl';
-import { allTransitions, sourceOf, statePath, substates, targetOf, type AnyTransition, ast } from '@maa/language-automata';
+import { type ast as adl, behaviorsOf } from '@maa/language-adl';
+import { allTransitions, sourceOf, statePath, substates, targetOf, type AnyTransition, type ast } from '@maa/language-automata';
 import { componentQualifiedName } from '@maa/generator-core';
 import type { BuildContext } from './context.js';
 import { labelId, stateId, transitionId } from './ids.js';
@@ -19,7 +19,9 @@ type State = ast.State;
 export function buildAutomatonDiagram(component: adl.ComponentType, ctx: BuildContext): MaaGraph {
     const qualifiedName = componentQualifiedName(component);
     const graph: MaaGraph = { type: TYPES.graph, id: ctx.id(`automaton:${qualifiedName}`), component: qualifiedName, children: [] };
-    const automaton = behaviorsOf(component).map((b) => b.behavior as AstNode | undefined).find((b): b is ast.Automaton => b?.$type === 'Automaton');
+    const automaton = behaviorsOf(component)
+        .map((b) => b.behavior as AstNode | undefined)
+        .find((b): b is ast.Automaton => b?.$type === 'Automaton');
     if (!automaton) {
         addModeAutomaton(component, graph, ctx); // a decomposed component's mode automaton, if any
         return graph;
@@ -30,7 +32,14 @@ export function buildAutomatonDiagram(component: adl.ComponentType, ctx: BuildCo
         for (const s of substates(level)) {
             const path = pathOf(s);
             const id = ctx.id(stateId(path), s);
-            const node: StateNode = { type: TYPES.state, id, name: s.name, initial: s.initial, statePath: path, children: [label(TYPES.stateLabel, labelId(id, 'name'), s.name, s)] };
+            const node: StateNode = {
+                type: TYPES.state,
+                id,
+                name: s.name,
+                initial: s.initial,
+                statePath: path,
+                children: [label(TYPES.stateLabel, labelId(id, 'name'), s.name, s)],
+            };
             const severity = ctx.severity(s);
             if (severity) node.severity = severity;
             ctx.trace(node, s);
@@ -84,7 +93,7 @@ export function buildAutomatonDiagram(component: adl.ComponentType, ctx: BuildCo
  * or from its own substate, else the deepest common ancestor. `undefined` is the graph.
  */
 function edgeContainer(from: State, to: State): State | undefined {
-    const parent = (s: State): State | undefined => (s.$container.$type === 'State' ? s.$container as State : undefined);
+    const parent = (s: State): State | undefined => (s.$container.$type === 'State' ? (s.$container as State) : undefined);
     if (parent(from) === parent(to)) return parent(from);
     if (parent(to) === from) return from;
     if (parent(from) === to) return to;
@@ -95,7 +104,9 @@ function edgeContainer(from: State, to: State): State | undefined {
 }
 
 function pathOf(s: State): string {
-    return statePath(s).map((p) => p.name).join('.');
+    return statePath(s)
+        .map((p) => p.name)
+        .join('.');
 }
 
 /** `trigger [guard] / action` as written, whitespace collapsed. */

@@ -1,6 +1,16 @@
 import type { AstNode } from 'langium';
 import {
-    allPorts, ast, behaviorsOf, inSubcomponent, isComposed, printType, stereotypeNames, subcomponentType, subcomponentsOf, variationCondition, type PortInfo
+    allPorts,
+    type ast,
+    behaviorsOf,
+    inSubcomponent,
+    isComposed,
+    printType,
+    stereotypeNames,
+    subcomponentType,
+    subcomponentsOf,
+    variationCondition,
+    type PortInfo,
 } from '@maa/language-adl';
 import { behaviorLanguageOf, componentQualifiedName, modeAutomatonView, modeSubcomponentsOf } from '@maa/generator-core';
 import type { SModelElement } from 'sprotty-protocol';
@@ -42,7 +52,7 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
             behaviorKind: behaviorKind(type),
             composed,
             expanded: composed && open,
-            children: []
+            children: [],
         };
         if (modeAutomatonView(type)) node.modeAutomaton = true;
         const severity = ctx.severity(decl, type);
@@ -53,7 +63,7 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
         node.children!.push(
             label(TYPES.nameLabel, labelId(id, 'name'), name, decl ?? type),
             label(TYPES.typeLabel, labelId(id, 'type'), decl ? type.name : componentType, type),
-            label(TYPES.badgeLabel, labelId(id, 'badge'), node.behaviorKind, type)
+            label(TYPES.badgeLabel, labelId(id, 'badge'), node.behaviorKind, type),
         );
         for (const p of allPorts(type)) node.children!.push(portNode(p, path));
         if (composed && open) {
@@ -82,7 +92,7 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
                     const named: NamedConnector[] = m.connectors.map((k) => ({
                         source: { sub: k.source.subcomponent, port: k.source.port },
                         targets: k.targets.map((t) => ({ sub: t.subcomponent, port: t.port })),
-                        node: k.node
+                        node: k.node,
                     }));
                     node.children!.push(...connectors(named, path, m.name));
                 }
@@ -105,7 +115,7 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
             portType: printType(p.type),
             portPath: [...path, p.name].join('.'),
             size: { width: PORT_SIZE, height: PORT_SIZE },
-            children: [label(TYPES.portLabel, labelId(id, 'name'), p.name, p.port)]
+            children: [label(TYPES.portLabel, labelId(id, 'name'), p.name, p.port)],
         };
         const severity = ctx.severity(p.port);
         if (severity) node.severity = severity;
@@ -132,7 +142,7 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
                     sourceId,
                     targetId,
                     sourcePortPath,
-                    ...(mode ? { mode } : {})
+                    ...(mode ? { mode } : {}),
                 };
                 const condition = variationCondition(e.node);
                 if (condition) edge.variationPoint = condition;

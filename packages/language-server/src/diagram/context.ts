@@ -30,12 +30,13 @@ export function buildContext(idCache: IdCache<AstNode>, traces: TraceProvider): 
                 }
             }
             return found;
-        }
+        },
     };
 }
 
 function contains(outer: Range, inner: Range): boolean {
-    const startsAfter = outer.start.line < inner.start.line || (outer.start.line === inner.start.line && outer.start.character <= inner.start.character);
+    const startsAfter =
+        outer.start.line < inner.start.line || (outer.start.line === inner.start.line && outer.start.character <= inner.start.character);
     const endsBefore = outer.end.line > inner.end.line || (outer.end.line === inner.end.line && outer.end.character >= inner.end.character);
     return startsAfter && endsBefore;
 }

@@ -17,7 +17,10 @@ import { TYPES, type MaaDiagramOptions, type MaaGraph } from './model.js';
 export class MaaDiagramGenerator extends LangiumDiagramGenerator {
     private readonly documents: LangiumDocuments;
 
-    constructor(services: LangiumSprottyServices, private readonly layoutEngine: IModelLayoutEngine) {
+    constructor(
+        services: LangiumSprottyServices,
+        private readonly layoutEngine: IModelLayoutEngine,
+    ) {
         super(services);
         this.documents = services.shared.workspace.LangiumDocuments;
     }
@@ -46,7 +49,9 @@ export class MaaDiagramGenerator extends LangiumDiagramGenerator {
     private findComponent(source: AstNode, qualifiedName: string | undefined): ast.ComponentType | undefined {
         if (!qualifiedName) return AstUtils.streamAst(source).find(ast.isComponentType);
         const matches = (root: AstNode): ast.ComponentType | undefined =>
-            AstUtils.streamAst(root).filter(ast.isComponentType).find((c) => componentQualifiedName(c) === qualifiedName);
+            AstUtils.streamAst(root)
+                .filter(ast.isComponentType)
+                .find((c) => componentQualifiedName(c) === qualifiedName);
         return matches(source) ?? this.documents.all.map((d) => matches(d.parseResult.value)).find((c) => c !== undefined);
     }
 }
@@ -57,7 +62,9 @@ export class MaaDiagramGenerator extends LangiumDiagramGenerator {
  * when none does (or the space is too large to enumerate).
  */
 export function chooseConfiguration(
-    component: ast.ComponentType, features: readonly string[], wanted: Readonly<Record<string, boolean>>
+    component: ast.ComponentType,
+    features: readonly string[],
+    wanted: Readonly<Record<string, boolean>>,
 ): { env: VariantEnv | undefined; values: Record<string, boolean> } {
     const space = configurationSpace(component);
     const asked = features.filter((f) => typeof wanted[f] === 'boolean');

@@ -42,14 +42,17 @@ export class MaaLayoutEngine extends ElkLayoutEngine {
     protected override transformNode(snode: SNode, index: SModelIndex): ElkNode {
         const node = initialFirst(super.transformNode(snode, index), index);
         if (snode.type === TYPES.state && (snode as StateNode).initial) {
-            node.labels = [...(node.labels ?? []), {
-                id: `${snode.id}$initial-marker`,
-                text: 'initial', // ELK places no label without a text
-                width: INITIAL_MARKER.width,
-                height: INITIAL_MARKER.height,
-                // Left of the node's top (without H_PRIORITY, above it).
-                layoutOptions: { 'org.eclipse.elk.nodeLabels.placement': '[OUTSIDE, H_LEFT, V_TOP, H_PRIORITY]' }
-            }];
+            node.labels = [
+                ...(node.labels ?? []),
+                {
+                    id: `${snode.id}$initial-marker`,
+                    text: 'initial', // ELK places no label without a text
+                    width: INITIAL_MARKER.width,
+                    height: INITIAL_MARKER.height,
+                    // Left of the node's top (without H_PRIORITY, above it).
+                    layoutOptions: { 'org.eclipse.elk.nodeLabels.placement': '[OUTSIDE, H_LEFT, V_TOP, H_PRIORITY]' },
+                },
+            ];
         }
         return node;
     }
@@ -79,9 +82,11 @@ const STATE_HEIGHT = 32;
 const STATE_HEADER = 28;
 
 const width = (e: SModelElement | undefined): number => (e as SLabel | undefined)?.size?.width ?? 0;
-const childOf = (n: SModelElement, type: string): SLabel | undefined => (n.children ?? []).find((c) => c.type === type) as SLabel | undefined;
+const childOf = (n: SModelElement, type: string): SLabel | undefined =>
+    (n.children ?? []).find((c) => c.type === type) as SLabel | undefined;
 const childrenOf = (n: SModelElement, type: string): SModelElement[] => (n.children ?? []).filter((c) => c.type === type);
-const portsOf = (n: SModelElement, direction: 'in' | 'out'): PortNode[] => childrenOf(n, TYPES.port).filter((p) => (p as PortNode).direction === direction) as PortNode[];
+const portsOf = (n: SModelElement, direction: 'in' | 'out'): PortNode[] =>
+    childrenOf(n, TYPES.port).filter((p) => (p as PortNode).direction === direction) as PortNode[];
 const maxLabel = (ports: PortNode[]): number => Math.max(0, ...ports.map((p) => width(childOf(p, TYPES.portLabel))));
 const hasNodes = (n: SModelElement): boolean => (n.children ?? []).some((c) => c.type === TYPES.component || c.type === TYPES.state);
 
@@ -92,7 +97,10 @@ export const EXPAND_TOGGLE_ROOM = 22;
 function headerWidth(node: SModelElement): number {
     const component = node as Partial<ComponentNode>;
     const toggle = component.composed && component.instancePath ? EXPAND_TOGGLE_ROOM : 0;
-    return Math.max(width(childOf(node, TYPES.nameLabel)) + 12 + width(childOf(node, TYPES.badgeLabel)), width(childOf(node, TYPES.typeLabel)) + toggle);
+    return Math.max(
+        width(childOf(node, TYPES.nameLabel)) + 12 + width(childOf(node, TYPES.badgeLabel)),
+        width(childOf(node, TYPES.typeLabel)) + toggle,
+    );
 }
 
 /** The size of a component without shown children, and of a state, from their texts. */
@@ -109,7 +117,7 @@ export function nodeSize(node: SModelElement): Dimension {
     return {
         // Rounded up to a grid, so a slightly longer or shorter name leaves the layout as it was.
         width: Math.ceil(Math.max(90, 2 * PAD + headerWidth(node), portsWidth) / WIDTH_GRID) * WIDTH_GRID,
-        height: HEADER + rows * PORT_SIZE + (rows - 1) * PORT_GAP + PAD
+        height: HEADER + rows * PORT_SIZE + (rows - 1) * PORT_GAP + PAD,
     };
 }
 
@@ -138,12 +146,16 @@ function placeLabels(element: SModelElement): void {
                 // Beside the port; in an open node, whose ports have connectors inside too, above their line.
                 const height = portLabel.size?.height ?? 14;
                 const y = open ? -height + 2 : ((port.size?.height ?? PORT_SIZE) - height) / 2;
-                portLabel.position = port.direction === 'out' ? { x: -PORT_LABEL_GAP - width(portLabel), y } : { x: (port.size?.width ?? PORT_SIZE) + PORT_LABEL_GAP, y };
+                portLabel.position =
+                    port.direction === 'out'
+                        ? { x: -PORT_LABEL_GAP - width(portLabel), y }
+                        : { x: (port.size?.width ?? PORT_SIZE) + PORT_LABEL_GAP, y };
             }
         }
     } else if (element.type === TYPES.state) {
         const label = childOf(element, TYPES.stateLabel);
-        if (label) label.position = { x: (w - width(label)) / 2, y: hasNodes(element) ? 6 : (STATE_HEIGHT - (label.size?.height ?? 16)) / 2 };
+        if (label)
+            label.position = { x: (w - width(label)) / 2, y: hasNodes(element) ? 6 : (STATE_HEIGHT - (label.size?.height ?? 16)) / 2 };
     }
     for (const child of node.children ?? []) placeLabels(child);
 }
@@ -164,7 +176,7 @@ const COMMON: LayoutOptions = {
     // Back edges are those against the model order (not a heuristic's choice that an edit may flip).
     'org.eclipse.elk.layered.cycleBreaking.strategy': 'MODEL_ORDER',
     'org.eclipse.elk.layered.nodePlacement.strategy': 'BRANDES_KOEPF',
-    'org.eclipse.elk.layered.nodePlacement.bk.fixedAlignment': 'BALANCED'
+    'org.eclipse.elk.layered.nodePlacement.bk.fixedAlignment': 'BALANCED',
 };
 
 const CC: LayoutOptions = {
@@ -175,7 +187,7 @@ const CC: LayoutOptions = {
     'org.eclipse.elk.spacing.edgeNode': '12',
     'org.eclipse.elk.spacing.edgeEdge': '8',
     'org.eclipse.elk.layered.spacing.edgeNodeBetweenLayers': '12',
-    'org.eclipse.elk.layered.spacing.edgeEdgeBetweenLayers': '8'
+    'org.eclipse.elk.layered.spacing.edgeEdgeBetweenLayers': '8',
 };
 
 const AUTOMATON: LayoutOptions = {
@@ -190,7 +202,7 @@ const AUTOMATON: LayoutOptions = {
     'org.eclipse.elk.spacing.edgeLabel': '6',
     'org.eclipse.elk.spacing.labelNode': '8',
     'org.eclipse.elk.layered.edgeLabels.sideSelection': 'SMART_DOWN',
-    'org.eclipse.elk.layered.edgeLabels.centerLabelPlacementStrategy': 'MEDIAN_LAYER'
+    'org.eclipse.elk.layered.edgeLabels.centerLabelPlacementStrategy': 'MEDIAN_LAYER',
 };
 
 class MaaLayoutConfigurator extends DefaultLayoutConfigurator {
@@ -199,7 +211,7 @@ class MaaLayoutConfigurator extends DefaultLayoutConfigurator {
         return {
             ...(automaton ? AUTOMATON : CC),
             'org.eclipse.elk.hierarchyHandling': 'INCLUDE_CHILDREN',
-            'org.eclipse.elk.padding': '[top=12,left=12,bottom=12,right=12]'
+            'org.eclipse.elk.padding': '[top=12,left=12,bottom=12,right=12]',
         };
     }
 
@@ -211,7 +223,9 @@ class MaaLayoutConfigurator extends DefaultLayoutConfigurator {
                 'org.eclipse.elk.nodeSize.constraints': '[MINIMUM_SIZE]',
                 'org.eclipse.elk.nodeSize.minimum': `(${size.width}, ${size.height})`,
                 // Substates below the name (initial markers have their room as labels).
-                'org.eclipse.elk.padding': hasNodes(node) ? `[top=${STATE_HEADER},left=${PAD * 2},bottom=${PAD * 2},right=${PAD * 2}]` : '[top=0,left=0,bottom=0,right=0]'
+                'org.eclipse.elk.padding': hasNodes(node)
+                    ? `[top=${STATE_HEADER},left=${PAD * 2},bottom=${PAD * 2},right=${PAD * 2}]`
+                    : '[top=0,left=0,bottom=0,right=0]',
             };
         }
         const open = hasNodes(node);
@@ -223,11 +237,13 @@ class MaaLayoutConfigurator extends DefaultLayoutConfigurator {
             'org.eclipse.elk.spacing.portPort': `${PORT_GAP}`,
             'org.eclipse.elk.spacing.portsSurrounding': `[top=${HEADER},left=0,bottom=${PAD},right=0]`,
             'org.eclipse.elk.nodeSize.constraints': '[PORTS, MINIMUM_SIZE]',
-            'org.eclipse.elk.nodeSize.minimum': open ? `(${Math.ceil(2 * PAD + headerWidth(node))}, ${HEADER + 20})` : `(${size.width}, ${size.height})`,
+            'org.eclipse.elk.nodeSize.minimum': open
+                ? `(${Math.ceil(2 * PAD + headerWidth(node))}, ${HEADER + 20})`
+                : `(${size.width}, ${size.height})`,
             // Children below the header; the labels of the node's own ports beside them.
             'org.eclipse.elk.padding': open
                 ? `[top=${HEADER + 16},left=${Math.max(20, inner + maxLabel(portsOf(node, 'in')))},bottom=16,right=${Math.max(20, inner + maxLabel(portsOf(node, 'out')))}]`
-                : `[top=${PAD},left=${PAD},bottom=${PAD},right=${PAD}]`
+                : `[top=${PAD},left=${PAD},bottom=${PAD},right=${PAD}]`,
         };
     }
 
@@ -235,7 +251,7 @@ class MaaLayoutConfigurator extends DefaultLayoutConfigurator {
         const direction = (port as Partial<PortNode>).direction;
         return {
             'org.eclipse.elk.port.side': direction === 'out' ? 'EAST' : 'WEST',
-            'org.eclipse.elk.port.borderOffset': `${-(port.size?.width ?? 0) / 2}`
+            'org.eclipse.elk.port.borderOffset': `${-(port.size?.width ?? 0) / 2}`,
         };
     }
 

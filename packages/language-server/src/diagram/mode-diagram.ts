@@ -20,8 +20,12 @@ export function addModeAutomaton(component: adl.ComponentType, graph: MaaGraph, 
         if (nodes.has(m.name)) continue; // a duplicate mode (automaton/duplicate-state): shown once
         const id = ctx.id(stateId(m.name), m.node);
         const node: StateNode = {
-            type: TYPES.state, id, name: m.name, initial: m.initial, statePath: m.name,
-            children: [label(TYPES.stateLabel, labelId(id, 'name'), m.name, m.node)]
+            type: TYPES.state,
+            id,
+            name: m.name,
+            initial: m.initial,
+            statePath: m.name,
+            children: [label(TYPES.stateLabel, labelId(id, 'name'), m.name, m.node)],
         };
         const severity = ctx.severity(m.node);
         if (severity) node.severity = severity;

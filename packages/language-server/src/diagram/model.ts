@@ -42,7 +42,7 @@ export const TYPES = {
     badgeLabel: 'label:badge',
     portLabel: 'label:port',
     stateLabel: 'label:state',
-    transitionLabel: 'label:transition'
+    transitionLabel: 'label:transition',
 } as const;
 
 interface Traced {

@@ -29,7 +29,9 @@ export class MaaDiagramServerManager extends DefaultDiagramServerManager {
             lsp: services.shared.lsp,
             ServiceRegistry: services.shared.ServiceRegistry,
             workspace: services.shared.workspace,
-            diagram: { diagramServerFactory: (clientId: string, options?: DiagramOptions) => holder.manager!.createServer(clientId, options) }
+            diagram: {
+                diagramServerFactory: (clientId: string, options?: DiagramOptions) => holder.manager!.createServer(clientId, options),
+            },
         } as unknown as LangiumSprottySharedServices;
         super(facade);
         holder.manager = this;
@@ -59,7 +61,9 @@ export class MaaDiagramServerManager extends DefaultDiagramServerManager {
                 let timer: ReturnType<typeof setTimeout> | undefined;
                 await Promise.race([
                     workspace.DocumentBuilder.waitUntil(DocumentState.Validated, URI.parse(uri)).catch(() => undefined),
-                    new Promise((resolve) => { timer = setTimeout(resolve, VALIDATION_WAIT_MS); })
+                    new Promise((resolve) => {
+                        timer = setTimeout(resolve, VALIDATION_WAIT_MS);
+                    }),
                 ]);
                 clearTimeout(timer);
             }
@@ -73,7 +77,7 @@ export class MaaDiagramServerManager extends DefaultDiagramServerManager {
         return new MaaDiagramServer((action: Action) => this.send({ clientId, action }), {
             DiagramGenerator: d.DiagramGenerator,
             ModelLayoutEngine: d.ModelLayoutEngine,
-            ServerActionHandlerRegistry: d.ServerActionHandlerRegistry
+            ServerActionHandlerRegistry: d.ServerActionHandlerRegistry,
         });
     }
 
@@ -105,7 +109,11 @@ export class MaaDiagramServerManager extends DefaultDiagramServerManager {
             const document = uri ? documents.getDocument(URI.parse(uri)) : undefined;
             if (!document || document.parseResult.lexerErrors.length > 0 || document.parseResult.parserErrors.length > 0) continue;
             try {
-                const model = await this.services.diagram.DiagramGenerator.generate({ document, options: server.state.options ?? {}, state: server.state });
+                const model = await this.services.diagram.DiagramGenerator.generate({
+                    document,
+                    options: server.state.options ?? {},
+                    state: server.state,
+                });
                 await server.updateModel(model);
             } catch (err) {
                 console.error(`Diagram update failed: ${(err as Error).message}`);

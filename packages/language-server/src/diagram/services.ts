@@ -1,7 +1,12 @@
 import { inject, type AstNodeLocator, type Module } from 'langium';
 import {
-    DefaultDiagnosticMarkerProvider, DefaultTraceProvider, addDiagramHandler, type DiagnosticMarkerProvider, type LangiumSprottyServices,
-    type LangiumSprottySharedServices, type TraceProvider
+    DefaultDiagnosticMarkerProvider,
+    DefaultTraceProvider,
+    addDiagramHandler,
+    type DiagnosticMarkerProvider,
+    type LangiumSprottyServices,
+    type LangiumSprottySharedServices,
+    type TraceProvider,
 } from 'langium-sprotty';
 import { ServerActionHandlerRegistry } from 'sprotty-protocol';
 import type { AdlLspSharedServices, HostLspServices } from '@maa/language-adl';
@@ -42,8 +47,8 @@ export function createMaaDiagramServices(family: HostLspServices): MaaDiagramSer
             ServerActionHandlerRegistry: () => new ServerActionHandlerRegistry(),
             TraceProvider: (s) => new DefaultTraceProvider(sprotty(s)),
             DiagnosticMarkerProvider: (s) => new DefaultDiagnosticMarkerProvider(sprotty(s)),
-            DiagramServerManager: (s) => new MaaDiagramServerManager(s)
-        }
+            DiagramServerManager: (s) => new MaaDiagramServerManager(s),
+        },
     };
     return inject(module);
 }
@@ -57,7 +62,9 @@ export function addMaaDiagramServer(family: HostLspServices): MaaDiagramServices
     const connection = family.shared.lsp.Connection;
     if (connection) {
         // addDiagramHandler reads only `diagram.DiagramServerManager`.
-        addDiagramHandler(connection, { diagram: { DiagramServerManager: services.diagram.DiagramServerManager } } as unknown as LangiumSprottySharedServices);
+        addDiagramHandler(connection, {
+            diagram: { DiagramServerManager: services.diagram.DiagramServerManager },
+        } as unknown as LangiumSprottySharedServices);
     }
     // The manager listens to the document builder from its construction on.
     void services.diagram.DiagramServerManager;

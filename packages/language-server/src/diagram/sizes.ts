@@ -16,20 +16,16 @@ export const LINE_HEIGHT = 16;
 // Bold (their hmtx tables): the sans-serif Linux browsers fall back to, and wider than
 // Helvetica, Arial, Segoe UI and San Francisco, so labels fit in those too.
 const REGULAR = [
-    318, 401, 460, 838, 636, 950, 780, 275, 390, 390, 500, 838, 318, 361, 318, 337,
-    636, 636, 636, 636, 636, 636, 636, 636, 636, 636, 337, 337, 838, 838, 838, 531,
-    1000, 684, 686, 698, 770, 632, 575, 775, 752, 295, 295, 656, 557, 863, 748, 787,
-    603, 787, 695, 635, 611, 732, 684, 989, 685, 611, 685, 390, 337, 390, 838, 500,
-    500, 613, 635, 550, 635, 615, 352, 635, 634, 278, 278, 579, 278, 974, 634, 612,
-    635, 635, 411, 521, 392, 634, 592, 818, 592, 592, 525, 636, 337, 636, 838
+    318, 401, 460, 838, 636, 950, 780, 275, 390, 390, 500, 838, 318, 361, 318, 337, 636, 636, 636, 636, 636, 636, 636, 636, 636, 636, 337,
+    337, 838, 838, 838, 531, 1000, 684, 686, 698, 770, 632, 575, 775, 752, 295, 295, 656, 557, 863, 748, 787, 603, 787, 695, 635, 611, 732,
+    684, 989, 685, 611, 685, 390, 337, 390, 838, 500, 500, 613, 635, 550, 635, 615, 352, 635, 634, 278, 278, 579, 278, 974, 634, 612, 635,
+    635, 411, 521, 392, 634, 592, 818, 592, 592, 525, 636, 337, 636, 838,
 ];
 const BOLD = [
-    348, 456, 521, 838, 696, 1002, 872, 306, 457, 457, 523, 838, 380, 415, 380, 365,
-    696, 696, 696, 696, 696, 696, 696, 696, 696, 696, 400, 400, 838, 838, 838, 580,
-    1000, 774, 762, 734, 830, 683, 683, 821, 837, 372, 372, 775, 637, 995, 837, 850,
-    733, 850, 770, 720, 682, 812, 774, 1103, 771, 724, 725, 457, 365, 457, 838, 500,
-    500, 675, 716, 593, 716, 678, 435, 716, 712, 343, 343, 665, 343, 1042, 712, 687,
-    716, 716, 493, 595, 478, 712, 652, 924, 645, 652, 582, 712, 365, 712, 838
+    348, 456, 521, 838, 696, 1002, 872, 306, 457, 457, 523, 838, 380, 415, 380, 365, 696, 696, 696, 696, 696, 696, 696, 696, 696, 696, 400,
+    400, 838, 838, 838, 580, 1000, 774, 762, 734, 830, 683, 683, 821, 837, 372, 372, 775, 637, 995, 837, 850, 733, 850, 770, 720, 682, 812,
+    774, 1103, 771, 724, 725, 457, 365, 457, 838, 500, 500, 675, 716, 593, 716, 678, 435, 716, 712, 343, 343, 665, 343, 1042, 712, 687, 716,
+    716, 493, 595, 478, 712, 652, 924, 645, 652, 582, 712, 365, 712, 838,
 ];
 
 export interface Font {
@@ -44,7 +40,7 @@ export const FONTS = {
     badge: { size: 9 },
     port: { size: 10.5 },
     state: { size: 12, bold: true },
-    transition: { size: 10.5 }
+    transition: { size: 10.5 },
 } as const satisfies Record<string, Font>;
 
 /** The estimated advance width of a text in a font. */
@@ -67,12 +63,18 @@ export function textSize(text: string, font: Font = FONTS.type): Dimension {
 /** The label box of a label type (the badge's pill has room around its text). */
 export function labelSize(type: string, text: string): Dimension {
     switch (type) {
-        case TYPES.nameLabel: return textSize(text, FONTS.name);
-        case TYPES.badgeLabel: return { width: Math.ceil(textWidth(badgeText(text), FONTS.badge)) + 14, height: 14 };
-        case TYPES.portLabel: return textSize(text, FONTS.port);
-        case TYPES.stateLabel: return textSize(text, FONTS.state);
-        case TYPES.transitionLabel: return textSize(text, FONTS.transition);
-        default: return textSize(text, FONTS.type);
+        case TYPES.nameLabel:
+            return textSize(text, FONTS.name);
+        case TYPES.badgeLabel:
+            return { width: Math.ceil(textWidth(badgeText(text), FONTS.badge)) + 14, height: 14 };
+        case TYPES.portLabel:
+            return textSize(text, FONTS.port);
+        case TYPES.stateLabel:
+            return textSize(text, FONTS.state);
+        case TYPES.transitionLabel:
+            return textSize(text, FONTS.transition);
+        default:
+            return textSize(text, FONTS.type);
     }
 }
 
@@ -95,7 +97,7 @@ export function shortenTransitionLabel(text: string, max = MAX_TRANSITION_LABEL_
     const slash = text.indexOf(' / ', guardEnd(text));
     if (slash < 0) return cut(text, fits);
     const head = `${text.slice(0, slash)} / `;
-    const action = text.slice(slash + 3).replace(/^\{\s*([^]*?)\s*\}$/, '$1');
+    const action = text.slice(slash + 3).replace(/^\{\s*([\s\S]*?)\s*\}$/, '$1');
     if (fits(head + action)) return head + action;
     if (fits(`${head}…`)) return head + cut(action, (t) => fits(head + t));
     return cut(text, fits);

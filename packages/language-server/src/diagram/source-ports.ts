@@ -1,5 +1,15 @@
 import type { AstNode } from 'langium';
-import { type ast, chainSource, elementsOf, feedingSource, impliedConnectors, isComposed, subcomponentType, subcomponentsOf, type ChainGraph } from '@maa/language-adl';
+import {
+    type ast,
+    chainSource,
+    elementsOf,
+    feedingSource,
+    impliedConnectors,
+    isComposed,
+    subcomponentType,
+    subcomponentsOf,
+    type ChainGraph,
+} from '@maa/language-adl';
 
 type ComponentType = ast.ComponentType;
 
@@ -30,7 +40,7 @@ export function connectorsOf(c: ComponentType): NamedConnector[] {
         result.push({
             source: { sub: i.source.sub?.name, port: i.source.info.name },
             targets: [{ sub: i.target.sub?.name, port: i.target.info.name }],
-            node: i.declaration
+            node: i.declaration,
         });
     }
     return result;
@@ -61,7 +71,7 @@ function shownGraph(typeAt: (path: readonly string[]) => ComponentType | undefin
         feeder(scope, target) {
             const source = scope.type ? feedingSource(connectorsOf(scope.type), target) : undefined;
             return source ? { source } : undefined;
-        }
+        },
     };
 }
 
@@ -74,7 +84,11 @@ function shownGraph(typeAt: (path: readonly string[]) => ComponentType | undefin
  * (`unit.sensor.value`), or `""` when the value comes from outside the shown component or no
  * connector feeds it.
  */
-export function atomicSourcePath(typeAt: (path: readonly string[]) => ComponentType | undefined, path: readonly string[], access: PortName): string {
+export function atomicSourcePath(
+    typeAt: (path: readonly string[]) => ComponentType | undefined,
+    path: readonly string[],
+    access: PortName,
+): string {
     const end = chainSource(shownGraph(typeAt), { path, type: typeAt(path) }, access);
     return end?.kind === 'atomic' ? [...end.scope.path, end.port].join('.') : '';
 }

@@ -29,18 +29,22 @@ Options:
  */
 function survive(): void {
     let reporting = false;
-    const report = (what: string) => (e: unknown): void => {
-        // Never recurse: logging itself may fail (a closed pipe to the client).
-        if (reporting) return;
-        reporting = true;
-        try {
-            console.error(`maa-language-server: ${what} (the server goes on): ${e instanceof Error ? e.stack ?? e.message : String(e)}`);
-        } catch {
-            // nowhere left to report to
-        } finally {
-            reporting = false;
-        }
-    };
+    const report =
+        (what: string) =>
+        (e: unknown): void => {
+            // Never recurse: logging itself may fail (a closed pipe to the client).
+            if (reporting) return;
+            reporting = true;
+            try {
+                console.error(
+                    `maa-language-server: ${what} (the server goes on): ${e instanceof Error ? (e.stack ?? e.message) : String(e)}`,
+                );
+            } catch {
+                // nowhere left to report to
+            } finally {
+                reporting = false;
+            }
+        };
     process.on('uncaughtException', report('uncaught exception'));
     process.on('unhandledRejection', report('unhandled rejection'));
 }

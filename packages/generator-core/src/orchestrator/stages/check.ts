@@ -38,7 +38,8 @@ export function check(run: GenerationRun, loaded: Loaded): StageResult<Checked> 
         const otherPlatforms = loaded.app.platforms.filter((p) => !platforms.includes(p));
         for (const d of loaded.found) {
             if (!relevant.has(d.file)) continue;
-            if (d.file === appFile && (d.code.startsWith('app/') && d.code !== 'app/unknown-component' && d.code !== 'app/unknown-generator')) continue;
+            if (d.file === appFile && d.code.startsWith('app/') && d.code !== 'app/unknown-component' && d.code !== 'app/unknown-generator')
+                continue;
             if (d.file === appFile && otherPlatforms.some((p) => inside(d, p))) continue;
             diagnostics.push(d);
         }
@@ -75,7 +76,9 @@ export function selectPlatforms(app: Application, names: readonly string[] | und
     return names.map((n) => {
         const p = app.platforms.find((q) => q.name === n);
         if (!p) {
-            throw new GenerateInputError(`application '${app.name}' has no platform '${n}' (platforms: ${app.platforms.map((q) => q.name).join(', ') || 'none'})`);
+            throw new GenerateInputError(
+                `application '${app.name}' has no platform '${n}' (platforms: ${app.platforms.map((q) => q.name).join(', ') || 'none'})`,
+            );
         }
         return p;
     });
@@ -83,5 +86,12 @@ export function selectPlatforms(app: Application, names: readonly string[] | und
 
 function architectureFiles(a: ArchitectureModel): string[] {
     const nodes: AstNode[] = [...a.components.map((c) => c.node), ...a.dataTypes.map((t) => t.node)];
-    return [...new Set(nodes.map((n) => AstUtils.getDocument(n).uri).filter((u) => u.scheme === 'file').map((u) => u.fsPath))];
+    return [
+        ...new Set(
+            nodes
+                .map((n) => AstUtils.getDocument(n).uri)
+                .filter((u) => u.scheme === 'file')
+                .map((u) => u.fsPath),
+        ),
+    ];
 }

@@ -31,12 +31,24 @@ export async function configure(run: GenerationRun, checked: Checked, selected: 
         for (const [p, selection] of selected.selections) {
             for (const { ref, generator } of selection.references) {
                 if (instances.has(generator.manifest.name)) continue;
-                run.progress({ phase: 'instantiate', message: `loading ${generator.manifest.name}`, platform: p.name, generator: generator.manifest.name });
+                run.progress({
+                    phase: 'instantiate',
+                    message: `loading ${generator.manifest.name}`,
+                    platform: p.name,
+                    generator: generator.manifest.name,
+                });
                 try {
                     instances.set(generator.manifest.name, await instantiate(generator, run.options.loadModule));
                 } catch (e) {
-                    diagnostics.push(nodeDiagnostic(modelRoot, ref, 'error', GenCodes.LoadFailed,
-                        `Generator '${generator.manifest.name}' (package ${generator.source.packageName}) cannot be loaded: ${(e as Error).message}`));
+                    diagnostics.push(
+                        nodeDiagnostic(
+                            modelRoot,
+                            ref,
+                            'error',
+                            GenCodes.LoadFailed,
+                            `Generator '${generator.manifest.name}' (package ${generator.source.packageName}) cannot be loaded: ${(e as Error).message}`,
+                        ),
+                    );
                 }
             }
         }
@@ -49,8 +61,16 @@ export async function configure(run: GenerationRun, checked: Checked, selected: 
             const findings = checkGeneratorRules(selection, checked.architecture, {
                 rule,
                 only: (name) => !standardRule(name),
-                onUnknownRule: (g, name, ref) => diagnostics.push(nodeDiagnostic(modelRoot, ref, 'error', GenCodes.UnknownCheck,
-                    `Generator '${g.manifest.name}' declares the check '${name}', which neither the standard rules nor the generator define.`))
+                onUnknownRule: (g, name, ref) =>
+                    diagnostics.push(
+                        nodeDiagnostic(
+                            modelRoot,
+                            ref,
+                            'error',
+                            GenCodes.UnknownCheck,
+                            `Generator '${g.manifest.name}' declares the check '${name}', which neither the standard rules nor the generator define.`,
+                        ),
+                    ),
             });
             for (const f of findings) diagnostics.push(findingDiagnostic(modelRoot, f));
         }
@@ -59,7 +79,10 @@ export async function configure(run: GenerationRun, checked: Checked, selected: 
 }
 
 /** Loads a generator's entry module and instantiates its export with the manifest and a template renderer. */
-export async function instantiate(g: RegisteredGenerator, load: ((url: string) => Promise<unknown>) | undefined): Promise<GeneratorInstance> {
+export async function instantiate(
+    g: RegisteredGenerator,
+    load: ((url: string) => Promise<unknown>) | undefined,
+): Promise<GeneratorInstance> {
     const m = g.manifest;
     const entry = path.resolve(g.source.packageDir, m.entry);
     if (!load && !existsSync(entry)) throw new Error(`its entry module ${m.entry} does not exist (${entry})`);
@@ -67,11 +90,15 @@ export async function instantiate(g: RegisteredGenerator, load: ((url: string) =
     const exported = mod[m.export ?? 'default'];
     if (exported === undefined) throw new Error(`its entry module ${m.entry} has no export '${m.export ?? 'default'}'`);
     const templates = createTemplateRenderer(m.templates ? path.resolve(g.source.packageDir, m.templates) : undefined);
-    const generator = (typeof exported === 'function'
-        ? await (exported as (i: object) => unknown)({ manifest: m, packageDir: g.source.packageDir, templates })
-        : exported) as Generator;
+    const generator = (
+        typeof exported === 'function'
+            ? await (exported as (i: object) => unknown)({ manifest: m, packageDir: g.source.packageDir, templates })
+            : exported
+    ) as Generator;
     if (!generator || typeof (generator as { generate?: unknown }).generate !== 'function') {
-        throw new Error(`its export '${m.export ?? 'default'}' is not a generator (an object with a generate function, or a function returning one)`);
+        throw new Error(
+            `its export '${m.export ?? 'default'}' is not a generator (an object with a generate function, or a function returning one)`,
+        );
     }
     if (generator.kind !== undefined && generator.kind !== m.kind) {
         throw new Error(`its code implements a ${generator.kind} generator, but its manifest declares kind '${m.kind}'`);

@@ -2,13 +2,30 @@ import path from 'node:path';
 import { generatorForLanguage, type PlatformSelection } from '../../app/app-checks.js';
 import type { AppPlatform } from '../../generated/ast.js';
 import type {
-    BehaviorGenerationContext, BehaviorGenerator, BehaviorResult, ComponentGenerator, DataTypeGenerator, DataTypeResult, DelegatedBehavior, PlatformInfo
+    BehaviorGenerationContext,
+    BehaviorGenerator,
+    BehaviorResult,
+    ComponentGenerator,
+    DataTypeGenerator,
+    DataTypeResult,
+    DelegatedBehavior,
+    PlatformInfo,
 } from '../../generators/types.js';
 import type { BehaviorView, ComponentView } from '../../model/architecture.js';
 import { OutputCollector, OutputError, type FinishedFile } from '../../output/file-builder.js';
 import { nodeDiagnostic } from '../diagnostics.js';
 import { GenCodes } from '../gen-codes.js';
-import { failure, hasErrors, outcome, timed, timedAsync, type GeneratorInstance, type GenerationRun, type PlatformOutput, type StageResult } from '../run.js';
+import {
+    failure,
+    hasErrors,
+    outcome,
+    timed,
+    timedAsync,
+    type GeneratorInstance,
+    type GenerationRun,
+    type PlatformOutput,
+    type StageResult,
+} from '../run.js';
 import { GenerationError, type GenerationDiagnostic } from '../types.js';
 import type { Checked } from './check.js';
 import type { Configured } from './configure.js';
@@ -30,7 +47,13 @@ export function platformInfo(loaded: Loaded, checked: Checked, p: AppPlatform): 
  * hands each behavior to the behavior generator of its language (or translates it itself), and
  * collect the files in memory. A generator's failure stops generation (nothing is written).
  */
-export async function generateFiles(run: GenerationRun, loaded: Loaded, checked: Checked, selected: Selected, configured: Configured): Promise<StageResult<Generated>> {
+export async function generateFiles(
+    run: GenerationRun,
+    loaded: Loaded,
+    checked: Checked,
+    selected: Selected,
+    configured: Configured,
+): Promise<StageResult<Generated>> {
     const outputs: PlatformOutput[] = [];
     const diagnostics: GenerationDiagnostic[] = [];
     for (const [p, selection] of selected.selections) {
@@ -43,7 +66,11 @@ export async function generateFiles(run: GenerationRun, loaded: Loaded, checked:
 }
 
 async function generatePlatform(
-    run: GenerationRun, info: PlatformInfo, checked: Checked, selection: PlatformSelection, instances: ReadonlyMap<string, GeneratorInstance>
+    run: GenerationRun,
+    info: PlatformInfo,
+    checked: Checked,
+    selection: PlatformSelection,
+    instances: ReadonlyMap<string, GeneratorInstance>,
 ): Promise<StageResult<PlatformOutput>> {
     const { architecture } = checked;
     const p = selection.platform;
@@ -61,10 +88,17 @@ async function generatePlatform(
     };
     const generated = await timedAsync(run, 'generate', async () => {
         const dt = instances.get(selection.datatype!.manifest.name)!;
-        const datatypes = (await runGenerator(dt, async () => (await (dt.generator as DataTypeGenerator).generate({
-            architecture, platform: info, out: collector.sink(dt.registered.manifest.name, dt.templates),
-            templates: dt.templates, dataTypes: architecture.dataTypes
-        })) ?? {})) as DataTypeResult | undefined;
+        const datatypes = (await runGenerator(
+            dt,
+            async () =>
+                (await (dt.generator as DataTypeGenerator).generate({
+                    architecture,
+                    platform: info,
+                    out: collector.sink(dt.registered.manifest.name, dt.templates),
+                    templates: dt.templates,
+                    dataTypes: architecture.dataTypes,
+                })) ?? {},
+        )) as DataTypeResult | undefined;
         if (hasErrors(diagnostics)) return false;
 
         const comp = instances.get(selection.component!.manifest.name)!;
@@ -77,13 +111,20 @@ async function generatePlatform(
             }
             return d;
         };
-        await runGenerator(comp, async () => (comp.generator as ComponentGenerator).generate({
-            architecture, platform: info, out: collector.sink(comp.registered.manifest.name, comp.templates),
-            templates: comp.templates, datatypes: datatypes ?? {}, behavior: delegate
-        }));
+        await runGenerator(comp, async () =>
+            (comp.generator as ComponentGenerator).generate({
+                architecture,
+                platform: info,
+                out: collector.sink(comp.registered.manifest.name, comp.templates),
+                templates: comp.templates,
+                datatypes: datatypes ?? {},
+                behavior: delegate,
+            }),
+        );
         // A component generator that does not wait for its behaviors must not lose their failures.
         for (const settled of await Promise.allSettled(delegated.values())) {
-            if (settled.status === 'rejected') diagnostics.push(generatorFailure(run.modelRoot, selection, comp.registered.manifest.name, settled.reason));
+            if (settled.status === 'rejected')
+                diagnostics.push(generatorFailure(run.modelRoot, selection, comp.registered.manifest.name, settled.reason));
         }
         return !hasErrors(diagnostics);
     });
@@ -96,21 +137,40 @@ async function generatePlatform(
     }
     const counts = selection.references
         .filter((r, i, all) => all.findIndex((q) => q.generator === r.generator) === i)
-        .map((r) => ({ name: r.generator.manifest.name, kind: r.generator.manifest.kind, files: files.filter((f) => f.generator === r.generator.manifest.name).length }));
+        .map((r) => ({
+            name: r.generator.manifest.name,
+            kind: r.generator.manifest.kind,
+            files: files.filter((f) => f.generator === r.generator.manifest.name).length,
+        }));
     for (const c of counts) {
-        run.progress({ phase: 'generate', message: `${p.name}: ${c.name}: ${c.files} file${c.files === 1 ? '' : 's'}`, platform: p.name, generator: c.name, files: c.files });
+        run.progress({
+            phase: 'generate',
+            message: `${p.name}: ${c.name}: ${c.files} file${c.files === 1 ? '' : 's'}`,
+            platform: p.name,
+            generator: c.name,
+            files: c.files,
+        });
     }
     return outcome({ platform: p, outDir: path.join(run.outRoot, p.name), files, generators: counts }, diagnostics);
 }
 
 async function delegateBehavior(
-    c: ComponentView, selection: PlatformSelection, instances: ReadonlyMap<string, GeneratorInstance>, platform: PlatformInfo,
-    datatypes: DataTypeResult, collector: OutputCollector
+    c: ComponentView,
+    selection: PlatformSelection,
+    instances: ReadonlyMap<string, GeneratorInstance>,
+    platform: PlatformInfo,
+    datatypes: DataTypeResult,
+    collector: OutputCollector,
 ): Promise<DelegatedBehavior | undefined> {
-    const behavior: BehaviorView | undefined = c.behavior ?? (c.init ? { language: 'compute', node: c.init, component: c.qualifiedName } : undefined);
+    const behavior: BehaviorView | undefined =
+        c.behavior ?? (c.init ? { language: 'compute', node: c.init, component: c.qualifiedName } : undefined);
     if (!behavior) return undefined;
     const target = generatorForLanguage(selection, behavior.language);
-    if (!target) throw new GenerationError(`no generator of platform '${platform.platform}' translates the '${behavior.language}' behavior of '${c.qualifiedName}'`, behavior.node);
+    if (!target)
+        throw new GenerationError(
+            `no generator of platform '${platform.platform}' translates the '${behavior.language}' behavior of '${c.qualifiedName}'`,
+            behavior.node,
+        );
     if (target.role === 'component') return { handledBy: 'component-generator', language: behavior.language, behavior };
     const inst = instances.get(target.generator.manifest.name)!;
     const m = inst.registered.manifest;
@@ -124,7 +184,7 @@ async function delegateBehavior(
         ...(requires.has('component') ? { component: c } : {}),
         ...(requires.has('package') ? { packageName: c.packageName } : {}),
         ...(requires.has('platform') ? { platform } : {}),
-        ...(requires.has('datatypes') ? { datatypes } : {})
+        ...(requires.has('datatypes') ? { datatypes } : {}),
     };
     let result: BehaviorResult;
     try {
@@ -137,12 +197,20 @@ async function delegateBehavior(
 
 /** A behavior generator failed while the component generator waited for it. */
 class DelegatedFailure extends Error {
-    constructor(readonly generator: string, readonly error: unknown) {
+    constructor(
+        readonly generator: string,
+        readonly error: unknown,
+    ) {
         super(error instanceof Error ? error.message : String(error));
     }
 }
 
-function generatorFailure(modelRoot: string, selection: PlatformSelection, generator: string | undefined, e: unknown): GenerationDiagnostic {
+function generatorFailure(
+    modelRoot: string,
+    selection: PlatformSelection,
+    generator: string | undefined,
+    e: unknown,
+): GenerationDiagnostic {
     let name = generator;
     let error = e;
     if (e instanceof DelegatedFailure) {

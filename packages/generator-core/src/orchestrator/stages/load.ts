@@ -23,7 +23,8 @@ export interface Loaded {
 /** The family's `.arcapp` services, or an input error naming what is missing. */
 export function arcAppOf(run: GenerationRun): ArcAppServices {
     const services = arcAppServices(run.options.services.shared);
-    if (!services) throw new GenerateInputError('the language family has no .arcapp language (register @maa/generator-core in its maa.family)');
+    if (!services)
+        throw new GenerateInputError('the language family has no .arcapp language (register @maa/generator-core in its maa.family)');
     return services;
 }
 
@@ -39,15 +40,19 @@ export async function load(run: GenerationRun): Promise<StageResult<Loaded>> {
     const registry = timed(run, 'discover', () => {
         run.progress({ phase: 'load', message: 'discovering generators' });
         const installed = installationRoot();
-        const found = options.registry ?? discoverGenerators(shared.workspace.FileSystemProvider, URI.file(modelRoot), {
-            extraRoots: [...(installed ? [installed] : []), ...(options.discoveryRoots ?? []).map((d) => URI.file(path.resolve(d)))]
-        });
+        const found =
+            options.registry ??
+            discoverGenerators(shared.workspace.FileSystemProvider, URI.file(modelRoot), {
+                extraRoots: [...(installed ? [installed] : []), ...(options.discoveryRoots ?? []).map((d) => URI.file(path.resolve(d)))],
+            });
         arcApp.generators.Registry.configure(found);
         return found;
     });
     const found = await timedAsync(run, 'load', async () => {
         try {
-            return await checkRoots(options.services, [{ root: modelRoot }], { onProgress: (m) => run.progress({ phase: 'load', message: m }) });
+            return await checkRoots(options.services, [{ root: modelRoot }], {
+                onProgress: (m) => run.progress({ phase: 'load', message: m }),
+            });
         } catch (e) {
             if (e instanceof CheckInputError) throw new GenerateInputError(e.message);
             throw e;
@@ -58,7 +63,16 @@ export async function load(run: GenerationRun): Promise<StageResult<Loaded>> {
     if (!doc || !app) {
         const diagnostics = found.filter((d) => d.file === appFile);
         if (!diagnostics.some((d) => d.severity === 'error')) {
-            diagnostics.push(at(modelRoot, appFile, undefined, 'error', GenCodes.NoApplication, 'The file declares no application (`application NAME for COMPONENT { platform P { ... } }`).'));
+            diagnostics.push(
+                at(
+                    modelRoot,
+                    appFile,
+                    undefined,
+                    'error',
+                    GenCodes.NoApplication,
+                    'The file declares no application (`application NAME for COMPONENT { platform P { ... } }`).',
+                ),
+            );
         }
         return failure(diagnostics);
     }

@@ -10,7 +10,16 @@ import { OutputTransaction } from '../../output/transaction.js';
 import { planOutput, sha256, TRACE_FILE, type WritePlan } from '../../output/writer.js';
 import { at } from '../diagnostics.js';
 import { GenCodes } from '../gen-codes.js';
-import { failure, hasErrors, outcome, timed, type GeneratorInstance, type GenerationRun, type PlatformOutput, type StageResult } from '../run.js';
+import {
+    failure,
+    hasErrors,
+    outcome,
+    timed,
+    type GeneratorInstance,
+    type GenerationRun,
+    type PlatformOutput,
+    type StageResult,
+} from '../run.js';
 import type { GenerationDiagnostic, PlatformResult } from '../types.js';
 import type { Checked } from './check.js';
 import type { Configured } from './configure.js';
@@ -25,12 +34,22 @@ import type { Selected } from './select.js';
  * locked and cleaned up after killed runs before anything of it is read. Nothing is written
  * when a regenerated file would drop user content of a protected region.
  */
-export function write(run: GenerationRun, loaded: Loaded, checked: Checked, selected: Selected, configured: Configured, generated: Generated): StageResult<PlatformResult[]> {
+export function write(
+    run: GenerationRun,
+    loaded: Loaded,
+    checked: Checked,
+    selected: Selected,
+    configured: Configured,
+    generated: Generated,
+): StageResult<PlatformResult[]> {
     const { modelRoot, appFile, shown } = run;
     const diagnostics: GenerationDiagnostic[] = [];
     const writeFailed = (e: unknown): StageResult<never> => {
         const problem = e instanceof OutputWriteError ? `${shown(e.path)}: ${e.reason}` : (e as Error).message;
-        return failure([...diagnostics, at(modelRoot, appFile, undefined, 'error', GenCodes.WriteFailed, `Cannot write the output: ${problem}. Nothing was changed.`)]);
+        return failure([
+            ...diagnostics,
+            at(modelRoot, appFile, undefined, 'error', GenCodes.WriteFailed, `Cannot write the output: ${problem}. Nothing was changed.`),
+        ]);
     };
     let tx: OutputTransaction;
     try {
@@ -41,19 +60,44 @@ export function write(run: GenerationRun, loaded: Loaded, checked: Checked, sele
     try {
         const written: Array<{ plan: WritePlan; output: PlatformOutput }> = [];
         for (const output of generated.outputs) {
-            const trace = timed(run, 'trace', () => traceFile(run.options.services, modelRoot, output.outDir, platformInfo(loaded, checked, output.platform),
-                output.files, selected.selections.get(output.platform)!, configured.instances));
+            const trace = timed(run, 'trace', () =>
+                traceFile(
+                    run.options.services,
+                    modelRoot,
+                    output.outDir,
+                    platformInfo(loaded, checked, output.platform),
+                    output.files,
+                    selected.selections.get(output.platform)!,
+                    configured.instances,
+                ),
+            );
             written.push({ plan: timed(run, 'write', () => planOutput(output.outDir, output.files, trace)), output });
         }
         for (const { plan, output } of written) {
             const platform = output.platform;
             for (const d of plan.droppedRegions) {
-                diagnostics.push(at(modelRoot, appFile, platform.$cstNode?.range, 'error', GenCodes.ProtectedRegionDropped,
-                    `Platform '${platform.name}': ${shown(path.join(output.outDir, d.path))} has user content in protected region${d.regions.length > 1 ? 's' : ''} ${d.regions.map((r) => `'${r}'`).join(', ')}, which the regenerated file no longer has; move that content and run again (nothing was written).`));
+                diagnostics.push(
+                    at(
+                        modelRoot,
+                        appFile,
+                        platform.$cstNode?.range,
+                        'error',
+                        GenCodes.ProtectedRegionDropped,
+                        `Platform '${platform.name}': ${shown(path.join(output.outDir, d.path))} has user content in protected region${d.regions.length > 1 ? 's' : ''} ${d.regions.map((r) => `'${r}'`).join(', ')}, which the regenerated file no longer has; move that content and run again (nothing was written).`,
+                    ),
+                );
             }
             for (const stale of plan.keptStale) {
-                diagnostics.push(at(modelRoot, appFile, platform.$cstNode?.range, 'warning', GenCodes.StaleFileKept,
-                    `Platform '${platform.name}': ${shown(path.join(output.outDir, stale))} is no longer generated but holds user content in protected regions; it was kept (delete it when done).`));
+                diagnostics.push(
+                    at(
+                        modelRoot,
+                        appFile,
+                        platform.$cstNode?.range,
+                        'warning',
+                        GenCodes.StaleFileKept,
+                        `Platform '${platform.name}': ${shown(path.join(output.outDir, stale))} is no longer generated but holds user content in protected regions; it was kept (delete it when done).`,
+                    ),
+                );
             }
         }
         if (hasErrors(diagnostics)) return failure(diagnostics);
@@ -66,7 +110,10 @@ export function write(run: GenerationRun, loaded: Loaded, checked: Checked, sele
         } catch (e) {
             return writeFailed(e);
         }
-        return outcome(written.map(({ plan, output }) => platformResult(plan, output)), diagnostics);
+        return outcome(
+            written.map(({ plan, output }) => platformResult(plan, output)),
+            diagnostics,
+        );
     } finally {
         tx.close();
     }
@@ -84,7 +131,7 @@ function platformResult(plan: WritePlan, output: PlatformOutput): PlatformResult
         kept: plan.kept,
         removed: plan.remove,
         preservedRegions: plan.preservedRegions,
-        keptStale: plan.keptStale
+        keptStale: plan.keptStale,
     };
 }
 
@@ -95,8 +142,13 @@ function platformResult(plan: WritePlan, output: PlatformOutput): PlatformResult
  * range as it is), generated line spans 0-based with both ends inclusive.
  */
 export function traceFile(
-    services: HostLanguageServices, modelRoot: string, outDir: string, platform: PlatformInfo, files: readonly FinishedFile[],
-    selection: PlatformSelection, instances: ReadonlyMap<string, GeneratorInstance>
+    services: HostLanguageServices,
+    modelRoot: string,
+    outDir: string,
+    platform: PlatformInfo,
+    files: readonly FinishedFile[],
+    selection: PlatformSelection,
+    instances: ReadonlyMap<string, GeneratorInstance>,
 ): string {
     const locator = services.Arc.workspace.AstNodeLocator;
     const relRoot = path.relative(outDir, modelRoot).split(path.sep).join('/') || '.';
@@ -112,10 +164,12 @@ export function traceFile(
         const name = (node as { name?: unknown }).name;
         return {
             file: doc.uri.scheme === 'file' ? path.relative(modelRoot, doc.uri.fsPath).split(path.sep).join('/') : doc.uri.toString(),
-            range: r ? { start: { line: r.start.line, character: r.start.character }, end: { line: r.end.line, character: r.end.character } } : null,
+            range: r
+                ? { start: { line: r.start.line, character: r.start.character }, end: { line: r.end.line, character: r.end.character } }
+                : null,
             path: locator.getAstNodePath(node),
             type: node.$type,
-            ...(typeof name === 'string' ? { name } : {})
+            ...(typeof name === 'string' ? { name } : {}),
         };
     };
     const generators: TraceFile['generators'] = selection.references
@@ -124,7 +178,7 @@ export function traceFile(
             name: r.generator.manifest.name,
             kind: r.generator.manifest.kind,
             package: r.generator.source.packageName,
-            version: r.generator.source.packageVersion
+            version: r.generator.source.packageVersion,
         }));
     const trace: TraceFile = {
         version: TRACE_FORMAT_VERSION,
@@ -140,8 +194,14 @@ export function traceFile(
             sha256: sha256(f.content),
             lines: f.content.length === 0 ? 0 : f.content.split('\n').length - (f.content.endsWith('\n') ? 1 : 0),
             // FileBuilder counts lines from 1.
-            traces: f.traces.map((t): Trace => ({ lines: { first: t.startLine - 1, last: t.endLine - 1 }, generator: t.generator, element: element(t.element) }))
-        }))
+            traces: f.traces.map(
+                (t): Trace => ({
+                    lines: { first: t.startLine - 1, last: t.endLine - 1 },
+                    generator: t.generator,
+                    element: element(t.element),
+                }),
+            ),
+        })),
     };
     return `${JSON.stringify(trace, null, 1)}\n`;
 }

@@ -2,7 +2,17 @@ import type { ArchitectureModel, ComponentView, InstanceView } from '@maa/genera
 import type { ConstantValue } from '@maa/language-adl';
 import { rosName, type RosDataTypeResult } from '../naming.js';
 import { PyImports } from './imports.js';
-import type { BehaviorRef, ComponentNode, Gate, ModeManagerNode, NodeIdentity, NodePort, Relay, Ros2Application, TopicRef } from './model.js';
+import type {
+    BehaviorRef,
+    ComponentNode,
+    Gate,
+    ModeManagerNode,
+    NodeIdentity,
+    NodePort,
+    Relay,
+    Ros2Application,
+    TopicRef,
+} from './model.js';
 import { instanceParameters, rosParameter } from './parameters.js';
 import { codecNames, portCodec } from './ports.js';
 import { TopicNames } from './topics.js';
@@ -29,7 +39,7 @@ export function buildApplication(input: BuildInput): Ros2Application {
         ifacePkg: input.ifacePkg,
         rootNs: builder.topics.rootNs,
         nodes: input.arch.instances.filter((i) => i.component.atomic).map((i) => builder.componentNode(i)),
-        managers: input.arch.instances.filter((i) => i.component.modes).map((i) => builder.modeManager(i))
+        managers: input.arch.instances.filter((i) => i.component.modes).map((i) => builder.modeManager(i)),
     };
 }
 
@@ -46,15 +56,27 @@ class ApplicationBuilder {
     }
 
     /** Name, module, file and parameters of the node of `inst` (module `moduleName` in `<pkg>.nodes`). */
-    private identity(inst: InstanceView, name: string, namespace: string, fqn: string, moduleName: string, imports: PyImports): NodeIdentity {
+    private identity(
+        inst: InstanceView,
+        name: string,
+        namespace: string,
+        fqn: string,
+        moduleName: string,
+        imports: PyImports,
+    ): NodeIdentity {
         const { pkg, dt } = this.input;
         const values = this.params.get(inst)!;
         return {
-            instance: inst, name, namespace, fqn, moduleName, imports,
+            instance: inst,
+            name,
+            namespace,
+            fqn,
+            moduleName,
+            imports,
             module: `${pkg}.nodes.${moduleName}`,
             file: `${pkg}/${pkg}/nodes/${moduleName}.py`,
             instancePath: [this.rootInstance, ...inst.path].join('.'),
-            parameters: inst.component.parameters.map((p) => rosParameter(p, values.get(p.name)!, dt, imports))
+            parameters: inst.component.parameters.map((p) => rosParameter(p, values.get(p.name)!, dt, imports)),
         };
     }
 
@@ -78,7 +100,14 @@ class ApplicationBuilder {
         const inputs = this.inputs(inst, imports);
         const outputs: NodePort[] = c.ports
             .filter((p) => p.direction === 'out')
-            .map((p) => ({ port: p.name, topic: this.topics.outTopic(inst, p.name), ...portCodec(p, this.input.dt, imports), sampled: false, delayed: p.delayed, node: p.node }));
+            .map((p) => ({
+                port: p.name,
+                topic: this.topics.outTopic(inst, p.name),
+                ...portCodec(p, this.input.dt, imports),
+                sampled: false,
+                delayed: p.delayed,
+                node: p.node,
+            }));
         const identity = this.identity(inst, name, namespace, this.topics.fqnOf(inst), moduleName, imports);
         const behavior = this.input.behaviors.get(c)!;
         const gates = this.gates(inst);
@@ -105,7 +134,14 @@ class ApplicationBuilder {
         const inputs = this.inputs(inst, imports);
         const relays = this.relays(inst, imports);
         const base = inst.path.length === 0 ? '' : `${inst.path.map(rosName).join('__')}__`;
-        const identity = this.identity(inst, 'maa_modes', this.topics.fqnOf(inst), this.topics.managerFqn(inst), `${base}maa_modes`, imports);
+        const identity = this.identity(
+            inst,
+            'maa_modes',
+            this.topics.fqnOf(inst),
+            this.topics.managerFqn(inst),
+            `${base}maa_modes`,
+            imports,
+        );
         imports.add('collections.abc', 'Mapping');
         imports.addAll('maa_ros2', ['InPort', 'ModeManagerNode', 'Relay', 'run_node', ...codecNames([...inputs, ...relays])]);
         return { ...identity, kind: 'manager', modeTopic: this.topics.modeTopic(inst), inputs, relays };
@@ -120,12 +156,21 @@ class ApplicationBuilder {
                 const source = this.topics.sourceTopic(inst, { sub: k.source.subcomponent, port: k.source.port });
                 if (!source) continue;
                 for (const t of k.targets) {
-                    const port = t.subcomponent ? this.topics.instance([...inst.path, t.subcomponent])?.component.ports.find((x) => x.name === t.port) : c.ports.find((x) => x.name === t.port);
+                    const port = t.subcomponent
+                        ? this.topics.instance([...inst.path, t.subcomponent])?.component.ports.find((x) => x.name === t.port)
+                        : c.ports.find((x) => x.name === t.port);
                     if (!port) continue;
                     const target = this.topics.relayTopic(inst, t.subcomponent, t.port);
                     const known = relays.find((r) => r.source === source && r.target === target);
                     if (known) known.modes.push(mode.name);
-                    else relays.push({ source, target, ...portCodec(port, this.input.dt, imports), modes: [mode.name], ...(t.subcomponent ? {} : { port: t.port }) });
+                    else
+                        relays.push({
+                            source,
+                            target,
+                            ...portCodec(port, this.input.dt, imports),
+                            modes: [mode.name],
+                            ...(t.subcomponent ? {} : { port: t.port }),
+                        });
                 }
             }
         }

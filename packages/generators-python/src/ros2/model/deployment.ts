@@ -1,5 +1,12 @@
 import { DEPLOYMENT_FORMAT, type Deployment, type DeploymentNode, type PortTopic } from '@maa/protocol';
-import { publishedTopics, subscribedTopics, type ComponentNode, type ModeManagerNode, type Parameter, type Ros2Application } from './model.js';
+import {
+    publishedTopics,
+    subscribedTopics,
+    type ComponentNode,
+    type ModeManagerNode,
+    type Parameter,
+    type Ros2Application,
+} from './model.js';
 
 /**
  * `deployment.json` (the contract `Deployment` of `@maa/protocol`, docs/simulation.md): the
@@ -12,7 +19,7 @@ export function deploymentOf(app: Ros2Application, application: string): Deploym
         package: app.pkg,
         python_path: ['.'],
         env: {},
-        nodes: [...app.nodes, ...app.managers].map(deploymentNode)
+        nodes: [...app.nodes, ...app.managers].map(deploymentNode),
     };
 }
 
@@ -26,7 +33,7 @@ function deploymentNode(n: ComponentNode | ModeManagerNode): DeploymentNode {
         args: [],
         parameters: Object.fromEntries(n.parameters.map((p) => [p.name, p.value])),
         subscribes: subscribedTopics(n).map(portTopic),
-        publishes: publishedTopics(n).map(portTopic)
+        publishes: publishedTopics(n).map(portTopic),
     };
 }
 
@@ -57,7 +64,12 @@ function isFloat(p: Parameter): boolean {
  * JSON.stringify(value, null, 2) with the text of numbers chosen by `number` (given the path
  * of keys and indices to the number).
  */
-export function formatJson(value: unknown, number: (n: number, path: ReadonlyArray<string | number>) => string, path: ReadonlyArray<string | number> = [], indent = ''): string {
+export function formatJson(
+    value: unknown,
+    number: (n: number, path: ReadonlyArray<string | number>) => string,
+    path: ReadonlyArray<string | number> = [],
+    indent = '',
+): string {
     if (typeof value === 'number') return number(value, path);
     if (value === null || typeof value !== 'object') return JSON.stringify(value);
     const inner = `${indent}  `;

@@ -48,6 +48,9 @@ export function importLines(imports: ReadonlyMap<string, ReadonlySet<string>>): 
     const from = modules
         .map((m) => [m, [...imports.get(m)!].filter((n) => n !== '')] as const)
         .filter(([, names]) => names.length > 0)
-        .map(([m, names]) => `from ${m} import ${names.sort((a, b) => rank(a) - rank(b) || compare(a.toLowerCase(), b.toLowerCase()) || compare(a, b)).join(', ')}`);
+        .map(
+            ([m, names]) =>
+                `from ${m} import ${names.sort((a, b) => rank(a) - rank(b) || compare(a.toLowerCase(), b.toLowerCase()) || compare(a, b)).join(', ')}`,
+        );
     return [...plain, ...from];
 }

@@ -121,13 +121,18 @@ export function publishedTopics(n: ComponentNode | ModeManagerNode): Array<Topic
     if (n.kind === 'component') {
         return [
             ...n.outputs.map((o) => ({ port: o.port, topic: o.topic, type: o.rosType, node: o.node })),
-            ...n.platform.publishes.map((t) => ({ ...t, node: n.component.node }))
+            ...n.platform.publishes.map((t) => ({ ...t, node: n.component.node })),
         ];
     }
     const node = n.instance.component.node;
     return [
         { topic: n.modeTopic, type: MODE_TYPE, node },
-        ...[...new Map(n.relays.map((r) => [r.target, r])).values()].map((r) => ({ ...(r.port ? { port: r.port } : {}), topic: r.target, type: r.rosType, node }))
+        ...[...new Map(n.relays.map((r) => [r.target, r])).values()].map((r) => ({
+            ...(r.port ? { port: r.port } : {}),
+            topic: r.target,
+            type: r.rosType,
+            node,
+        })),
     ];
 }
 
@@ -137,14 +142,16 @@ export function subscribedTopics(n: ComponentNode | ModeManagerNode): Array<Topi
         return [
             ...n.inputs.map((i) => ({ port: i.port, topic: i.topic, type: i.rosType, node: i.node })),
             ...n.platform.subscribes.map((t) => ({ ...t, node: n.component.node })),
-            ...n.gates.map((g) => ({ topic: g.topic, type: MODE_TYPE, node: n.component.node }))
+            ...n.gates.map((g) => ({ topic: g.topic, type: MODE_TYPE, node: n.component.node })),
         ];
     }
     const node = n.instance.component.node;
-    const relayed = [...new Map(n.relays.map((r) => [r.source, r.rosType])).entries()].filter(([t]) => !n.inputs.some((i) => i.topic === t));
+    const relayed = [...new Map(n.relays.map((r) => [r.source, r.rosType])).entries()].filter(
+        ([t]) => !n.inputs.some((i) => i.topic === t),
+    );
     return [
         ...n.inputs.map((i) => ({ port: i.port, topic: i.topic, type: i.rosType, node: i.node })),
-        ...relayed.map(([topic, type]) => ({ topic, type, node }))
+        ...relayed.map(([topic, type]) => ({ topic, type, node })),
     ];
 }
 

@@ -38,7 +38,8 @@ function parametersOf(inst: InstanceView, outer: ReadonlyMap<string, ConstantVal
 function argumentsByName(inst: InstanceView): Map<string, ast.Expression> {
     const given = new Map<string, ast.Expression>();
     inst.args.forEach((arg, i) => {
-        if (ast.isAssignmentExpression(arg) && arg.op === '=') given.set(ast.isNameExpression(arg.left) ? arg.left.ref.$refText : arg.left.$cstNode?.text ?? '', arg.right);
+        if (ast.isAssignmentExpression(arg) && arg.op === '=')
+            given.set(ast.isNameExpression(arg.left) ? arg.left.ref.$refText : (arg.left.$cstNode?.text ?? ''), arg.right);
         else if (inst.component.parameters[i] && ast.isExpression(arg)) given.set(inst.component.parameters[i]!.name, arg);
     });
     return given;
@@ -57,8 +58,18 @@ function constant(expr: AstNode, p: ParameterView, env: ReadonlyMap<string, Cons
 }
 
 /** A ROS parameter of a node or mode manager: its value (an enum's by ordinal) and the enum type to convert it back to. */
-export function rosParameter(p: ComponentView['parameters'][number], value: ConstantValue, dt: RosDataTypeResult, imports: PyImports): Parameter {
+export function rosParameter(
+    p: ComponentView['parameters'][number],
+    value: ConstantValue,
+    dt: RosDataTypeResult,
+    imports: PyImports,
+): Parameter {
     const enumType = p.type.kind === 'object' && !primitiveOf(p.type) ? dt.types?.[typeKey(p.type)] : undefined;
     if (enumType?.module && enumType.name) imports.add(enumType.module, enumType.name);
-    return { name: p.name, value: value.kind === 'enum' ? value.ordinal : value.value, enumType: enumType?.name, float: primitiveOf(p.type)?.py === 'float' };
+    return {
+        name: p.name,
+        value: value.kind === 'enum' ? value.ordinal : value.value,
+        enumType: enumType?.name,
+        float: primitiveOf(p.type)?.py === 'float',
+    };
 }

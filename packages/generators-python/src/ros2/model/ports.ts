@@ -16,7 +16,12 @@ export function portCodec(p: PortView, dt: RosDataTypeResult, imports: PyImports
         // A char is its code inside the behavior and a one-character string on the topic.
         const isChar = p.typeName === 'char' || p.typeName === 'Character';
         const helper = isChar ? 'char_port' : 'std_port';
-        return { rosType: `std_msgs/msg/${prim.std}`, helper, codec: isChar ? `${helper}(${prim.std})` : `${helper}(${prim.std}, ${prim.py})`, sampled: true };
+        return {
+            rosType: `std_msgs/msg/${prim.std}`,
+            helper,
+            codec: isChar ? `${helper}(${prim.std})` : `${helper}(${prim.std}, ${prim.py})`,
+            sampled: true,
+        };
     }
     if (p.type.kind === 'object') {
         const msg = dt.messages[typeKey(p.type)];
@@ -28,7 +33,10 @@ export function portCodec(p: PortView, dt: RosDataTypeResult, imports: PyImports
             return { rosType: msg.type, helper, codec: `${helper}(${qualified}, ${py.name})`, sampled: false };
         }
     }
-    throw new GenerationError(`ros2.Components cannot carry port '${p.name}' of type ${p.typeName} on a ROS 2 topic (primitives, enums and non-generic classes can)`, p.node);
+    throw new GenerationError(
+        `ros2.Components cannot carry port '${p.name}' of type ${p.typeName} on a ROS 2 topic (primitives, enums and non-generic classes can)`,
+        p.node,
+    );
 }
 
 /** The `maa_ros2` names the codecs of some ports use (`std_port`, `enum_port`). */

@@ -18,17 +18,21 @@ export interface TopicRule {
 export const TOPIC_RULES: readonly TopicRule[] = [
     {
         name: 'ros2.OnePublisherPerTopic',
-        description: 'A topic has exactly one publisher: a node\'s out port, a handwritten node\'s PUBLISHES, or a mode manager.',
+        description: "A topic has exactly one publisher: a node's out port, a handwritten node's PUBLISHES, or a mode manager.",
         *check(app) {
             const publishers = new Map<string, string>();
             for (const n of [...app.managers, ...app.nodes]) {
                 for (const t of publishedTopics(n)) {
                     const other = publishers.get(t.topic);
-                    if (other) yield { node: t.node, message: `topic ${t.topic} would have two publishers, ${other} and ${n.fqn}; a topic has exactly one publisher` };
+                    if (other)
+                        yield {
+                            node: t.node,
+                            message: `topic ${t.topic} would have two publishers, ${other} and ${n.fqn}; a topic has exactly one publisher`,
+                        };
                     publishers.set(t.topic, n.fqn);
                 }
             }
-        }
+        },
     },
     {
         name: 'ros2.OneTypePerTopic',
@@ -36,18 +40,22 @@ export const TOPIC_RULES: readonly TopicRule[] = [
         *check(app) {
             const types = new Map<string, string>();
             for (const n of app.nodes) {
-                const read = [...n.inputs.map((i) => ({ topic: i.topic, type: i.rosType, node: i.node })), ...n.platform.subscribes.map((t) => ({ ...t, node: n.component.node }))];
+                const read = [
+                    ...n.inputs.map((i) => ({ topic: i.topic, type: i.rosType, node: i.node })),
+                    ...n.platform.subscribes.map((t) => ({ ...t, node: n.component.node })),
+                ];
                 for (const t of [...publishedTopics(n), ...read]) {
                     const known = types.get(t.topic);
-                    if (known && known !== t.type) yield { node: t.node, message: `topic ${t.topic} would carry two types, ${known} and ${t.type}` };
+                    if (known && known !== t.type)
+                        yield { node: t.node, message: `topic ${t.topic} would carry two types, ${known} and ${t.type}` };
                     types.set(t.topic, t.type);
                 }
             }
-        }
+        },
     },
     {
         name: 'ros2.ReadTopicsArePublished',
-        description: 'A topic a node\'s in port reads has a publisher, unless it is an in port of the application (fed from outside).',
+        description: "A topic a node's in port reads has a publisher, unless it is an in port of the application (fed from outside).",
         *check(app) {
             const published = new Set([...app.managers, ...app.nodes].flatMap((n) => publishedTopics(n).map((t) => t.topic)));
             for (const n of app.nodes) {
@@ -57,8 +65,8 @@ export const TOPIC_RULES: readonly TopicRule[] = [
                     }
                 }
             }
-        }
-    }
+        },
+    },
 ];
 
 /** Throws a GenerationError for the first violation of a topic rule. */

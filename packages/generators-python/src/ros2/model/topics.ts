@@ -19,13 +19,15 @@ export class TopicNames {
         this.byPath = new Map(arch.instances.map((i) => [i.path.join('.'), i]));
         this.graph = {
             child: (inst, sub) => this.byPath.get([...inst.path, sub].join('.')),
-            parent: (inst) => (inst.path.length === 0 ? undefined : { scope: this.parentOf(inst)!, name: inst.path[inst.path.length - 1]! }),
+            parent: (inst) =>
+                inst.path.length === 0 ? undefined : { scope: this.parentOf(inst)!, name: inst.path[inst.path.length - 1]! },
             isAtomic: (inst) => inst.component.atomic,
             feeder: (inst, target) => {
-                if (feedingSource(modeConnectors(inst).map(portEnds), target)) return { stop: this.relayTopic(inst, target.sub, target.port) };
+                if (feedingSource(modeConnectors(inst).map(portEnds), target))
+                    return { stop: this.relayTopic(inst, target.sub, target.port) };
                 const source = feedingSource(inst.component.connectors.map(portEnds), target);
                 return source ? { source } : undefined;
-            }
+            },
         };
     }
 
@@ -40,7 +42,10 @@ export class TopicNames {
     /** The node name and namespace of an instance's node (the root's node is in `/`). */
     nodeOf(inst: InstanceView): { name: string; namespace: string } {
         if (inst.path.length === 0) return { name: rosName(this.arch.root.name), namespace: '/' };
-        return { name: rosName(inst.path[inst.path.length - 1]!), namespace: [this.rootNs, ...inst.path.slice(0, -1).map(rosName)].join('/') };
+        return {
+            name: rosName(inst.path[inst.path.length - 1]!),
+            namespace: [this.rootNs, ...inst.path.slice(0, -1).map(rosName)].join('/'),
+        };
     }
 
     fqnOf(inst: InstanceView): string {

@@ -15,7 +15,7 @@ export class AutoConnectChecks {
         ComponentType: (c, accept) => {
             this.checkAutoConnects(c, accept);
             this.checkBehaviorInDecomposed(c, accept);
-        }
+        },
     };
 
     private checkAutoConnects(c: ComponentType, accept: ValidationAcceptor): void {
@@ -23,11 +23,19 @@ export class AutoConnectChecks {
         if (decls.length === 0) return;
         if (!isComposed(c)) {
             for (const d of decls) {
-                accept('error', `Component '${c.name}' has no subcomponents, so 'autoconnect ${d.kind};' has nothing to connect; autoconnect is only allowed in decomposed components.`, { node: d, code: Codes.AutoConnectInAtomic });
+                accept(
+                    'error',
+                    `Component '${c.name}' has no subcomponents, so 'autoconnect ${d.kind};' has nothing to connect; autoconnect is only allowed in decomposed components.`,
+                    { node: d, code: Codes.AutoConnectInAtomic },
+                );
             }
         }
         for (const d of decls.slice(1)) {
-            accept('error', `Component '${c.name}' declares more than one autoconnect ('autoconnect ${decls.map((x) => x.kind).join(";', 'autoconnect ")};'); at most one is allowed.`, { node: d, code: Codes.MultipleAutoConnects });
+            accept(
+                'error',
+                `Component '${c.name}' declares more than one autoconnect ('autoconnect ${decls.map((x) => x.kind).join(";', 'autoconnect ")};'); at most one is allowed.`,
+                { node: d, code: Codes.MultipleAutoConnects },
+            );
         }
     }
 
@@ -36,7 +44,11 @@ export class AutoConnectChecks {
         for (const b of behaviorsOf(c)) {
             if (!isComputingBehavior(b)) continue;
             const keyword = behaviorKeyword(b);
-            accept('error', `Component '${c.name}' has subcomponents and declares a behavior ('${keyword}'); the behavior of a decomposed component is that of its subcomponents and connectors, so this ${keyword} would never run. Move it into an atomic subcomponent or remove the subcomponents.`, { node: b, code: Codes.BehaviorInDecomposed });
+            accept(
+                'error',
+                `Component '${c.name}' has subcomponents and declares a behavior ('${keyword}'); the behavior of a decomposed component is that of its subcomponents and connectors, so this ${keyword} would never run. Move it into an atomic subcomponent or remove the subcomponents.`,
+                { node: b, code: Codes.BehaviorInDecomposed },
+            );
         }
     }
 }

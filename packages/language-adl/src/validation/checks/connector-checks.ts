@@ -2,7 +2,15 @@ import type { AstNode, ValidationAcceptor, ValidationChecks } from 'langium';
 import type { AdlAstType, AutoConnect, ComponentType, Connector, PortAccess, Subcomponent } from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import {
-    allPorts, behaviorsOf, isComposed, subcomponentType, subcomponentsOf, type PortInfo, type Timing, elementsOf } from '../../components/component-model.js';
+    allPorts,
+    behaviorsOf,
+    isComposed,
+    subcomponentType,
+    subcomponentsOf,
+    type PortInfo,
+    type Timing,
+    elementsOf,
+} from '../../components/component-model.js';
 import { currentVariant, inSubcomponent } from '../../components/variant-context.js';
 import type { TypeRelations } from '../../types/type-relations.js';
 import { isErroneous, printType } from '../../types/sym-type.js';
@@ -48,7 +56,11 @@ export class ConnectorChecks {
         ComponentType: (c, accept) => {
             const connectors = elementsOf(c).filter((e): e is Connector => e.$type === 'Connector');
             const tables = new PortTables();
-            const resolved = connectors.map((con) => ({ con, source: this.end(c, con.source, tables), targets: con.targets.map((t) => this.end(c, t, tables)) }));
+            const resolved = connectors.map((con) => ({
+                con,
+                source: this.end(c, con.source, tables),
+                targets: con.targets.map((t) => this.end(c, t, tables)),
+            }));
             for (const r of resolved) this.checkConnector(r.source, r.targets, accept);
             if (isComposed(c)) {
                 // Connectors implied by `autoconnect` feed only ports no written connector feeds
@@ -57,18 +69,24 @@ export class ConnectorChecks {
                 this.checkSenders(resolved, accept);
                 // The connectors of modes (checked with their mode, language-automata) connect
                 // ports too: a port connected in some mode is connected.
-                const inModes = modeConnectors(c).map((con) => ({ con, source: this.end(c, con.source, tables), targets: con.targets.map((t) => this.end(c, t, tables)) }));
+                const inModes = modeConnectors(c).map((con) => ({
+                    con,
+                    source: this.end(c, con.source, tables),
+                    targets: con.targets.map((t) => this.end(c, t, tables)),
+                }));
                 this.checkConnectedness(c, [...resolved, ...inModes], implied, accept);
                 this.checkCausality(c, resolved, implied, accept);
             }
-        }
+        },
     };
 
     private end(c: ComponentType, access: PortAccess, tables: PortTables): End | undefined {
         const name = access.port?.$refText ?? ''; // no port: partially parsed
         if (access.subcomponent) {
             // In a configuration, the subcomponent of that name the configuration has (variation points may declare several).
-            const sub = currentVariant() ? subcomponentsOf(c).find((x) => x.name === access.subcomponent?.$refText) : access.subcomponent.ref;
+            const sub = currentVariant()
+                ? subcomponentsOf(c).find((x) => x.name === access.subcomponent?.$refText)
+                : access.subcomponent.ref;
             if (!sub) return undefined;
             const { decl, subst } = subcomponentType(sub);
             const info = decl && tables.port(sub, name, () => inSubcomponent(sub, () => allPorts(decl, subst)));
@@ -84,26 +102,42 @@ export class ConnectorChecks {
             const ok = source.sub ? source.info.direction === 'out' : source.info.direction === 'in';
             if (!ok) {
                 sourceOk = false;
-                accept('error', `Connector source '${text(source)}' must be an incoming port of the component or an outgoing port of a subcomponent, but it is ${source.sub ? 'an incoming port of subcomponent' : 'an outgoing port of component'} '${source.sub?.name ?? source.info.owner.name}'.`, { node: source.access, code: Codes.SourceDirectionMismatch });
+                accept(
+                    'error',
+                    `Connector source '${text(source)}' must be an incoming port of the component or an outgoing port of a subcomponent, but it is ${source.sub ? 'an incoming port of subcomponent' : 'an outgoing port of component'} '${source.sub?.name ?? source.info.owner.name}'.`,
+                    { node: source.access, code: Codes.SourceDirectionMismatch },
+                );
             }
         }
         for (const target of targets) {
             if (!target) continue;
             const ok = target.sub ? target.info.direction === 'in' : target.info.direction === 'out';
             if (!ok) {
-                accept('error', `Connector target '${text(target)}' must be an outgoing port of the component or an incoming port of a subcomponent, but it is ${target.sub ? 'an outgoing port of subcomponent' : 'an incoming port of component'} '${target.sub?.name ?? target.info.owner.name}'.`, { node: target.access, code: Codes.TargetDirectionMismatch });
+                accept(
+                    'error',
+                    `Connector target '${text(target)}' must be an outgoing port of the component or an incoming port of a subcomponent, but it is ${target.sub ? 'an outgoing port of subcomponent' : 'an incoming port of component'} '${target.sub?.name ?? target.info.owner.name}'.`,
+                    { node: target.access, code: Codes.TargetDirectionMismatch },
+                );
                 continue;
             }
             if (!source || !sourceOk) continue;
             const st = source.info.type;
             const tt = target.info.type;
             if (!isErroneous(st) && !isErroneous(tt) && !this.rel.isAssignable(tt, st)) {
-                accept('error', `Connector '${text(source)} -> ${text(target)}' connects a port of type ${printType(st)} to a port of type ${printType(tt)}; ${printType(st)} is not assignable to ${printType(tt)}.`, { node: target.access, code: Codes.ConnectorTypeMismatch });
+                accept(
+                    'error',
+                    `Connector '${text(source)} -> ${text(target)}' connects a port of type ${printType(st)} to a port of type ${printType(tt)}; ${printType(st)} is not assignable to ${printType(tt)}.`,
+                    { node: target.access, code: Codes.ConnectorTypeMismatch },
+                );
             }
             // An incoming port of a composed component without a declared timing takes the timing of the subcomponents it feeds.
             const inferred = !source.sub && !source.info.explicitTiming && target.sub !== undefined;
             if (!inferred && STRENGTH[source.info.timing] < STRENGTH[target.info.timing]) {
-                accept('error', `Connector '${text(source)} -> ${text(target)}' connects a ${source.info.timing} port to a ${target.info.timing} port; a ${target.info.timing} port needs a source that is at least as strongly timed.`, { node: target.access, code: Codes.TimingMismatch });
+                accept(
+                    'error',
+                    `Connector '${text(source)} -> ${text(target)}' connects a ${source.info.timing} port to a ${target.info.timing} port; a ${target.info.timing} port needs a source that is at least as strongly timed.`,
+                    { node: target.access, code: Codes.TimingMismatch },
+                );
             }
         }
     }
@@ -115,13 +149,23 @@ export class ConnectorChecks {
                 if (!t) continue;
                 const key = `${t.sub?.name ?? ''}.${t.info.name}`;
                 const first = seen.get(key);
-                if (first) accept('error', `Port '${text(t)}' receives messages from more than one connector; every port has at most one sender.`, { node: t.access, code: Codes.MultipleSenders });
+                if (first)
+                    accept(
+                        'error',
+                        `Port '${text(t)}' receives messages from more than one connector; every port has at most one sender.`,
+                        { node: t.access, code: Codes.MultipleSenders },
+                    );
                 else seen.set(key, t.access);
             }
         }
     }
 
-    private checkConnectedness(c: ComponentType, resolved: Array<{ source?: End; targets: Array<End | undefined> }>, implied: readonly ImpliedConnector[], accept: ValidationAcceptor): void {
+    private checkConnectedness(
+        c: ComponentType,
+        resolved: Array<{ source?: End; targets: Array<End | undefined> }>,
+        implied: readonly ImpliedConnector[],
+        accept: ValidationAcceptor,
+    ): void {
         const used = new Set<string>();
         for (const r of resolved) {
             for (const e of [r.source, ...r.targets]) if (e) used.add(`${e.sub?.name ?? ''}.${e.info.name}`);
@@ -135,18 +179,34 @@ export class ConnectorChecks {
             for (const p of inSubcomponent(sub, () => allPorts(decl, subst))) {
                 if (used.has(`${sub.name}.${p.name}`)) continue;
                 if (p.direction === 'in') {
-                    accept('error', `Incoming port '${p.name}' of subcomponent '${sub.name}' is not connected; it would never receive a message.`, { node: sub, property: 'name', code: Codes.UnconnectedSubInPort });
+                    accept(
+                        'error',
+                        `Incoming port '${p.name}' of subcomponent '${sub.name}' is not connected; it would never receive a message.`,
+                        { node: sub, property: 'name', code: Codes.UnconnectedSubInPort },
+                    );
                 } else {
-                    accept('warning', `Outgoing port '${p.name}' of subcomponent '${sub.name}' is not connected; its messages are lost.`, { node: sub, property: 'name', code: Codes.UnconnectedSubOutPort });
+                    accept('warning', `Outgoing port '${p.name}' of subcomponent '${sub.name}' is not connected; its messages are lost.`, {
+                        node: sub,
+                        property: 'name',
+                        code: Codes.UnconnectedSubOutPort,
+                    });
                 }
             }
         }
         for (const p of allPorts(c)) {
             if (used.has(`.${p.name}`)) continue;
             if (p.direction === 'in') {
-                accept('warning', `Incoming port '${p.name}' of composed component '${c.name}' is not forwarded to any subcomponent.`, { node: p.owner === c ? p.port : c, property: 'name', code: Codes.UnusedInPort });
+                accept('warning', `Incoming port '${p.name}' of composed component '${c.name}' is not forwarded to any subcomponent.`, {
+                    node: p.owner === c ? p.port : c,
+                    property: 'name',
+                    code: Codes.UnusedInPort,
+                });
             } else {
-                accept('warning', `Outgoing port '${p.name}' of composed component '${c.name}' has no sender.`, { node: p.owner === c ? p.port : c, property: 'name', code: Codes.UnusedOutPort });
+                accept('warning', `Outgoing port '${p.name}' of composed component '${c.name}' has no sender.`, {
+                    node: p.owner === c ? p.port : c,
+                    property: 'name',
+                    code: Codes.UnusedOutPort,
+                });
             }
         }
     }
@@ -156,7 +216,12 @@ export class ConnectorChecks {
      * delayed port (directly or inside a composed subcomponent), else its value in a time slice
      * would depend on itself.
      */
-    private checkCausality(c: ComponentType, resolved: Array<{ con: Connector; source?: End; targets: Array<End | undefined> }>, implied: readonly ImpliedConnector[], accept: ValidationAcceptor): void {
+    private checkCausality(
+        c: ComponentType,
+        resolved: Array<{ con: Connector; source?: End; targets: Array<End | undefined> }>,
+        implied: readonly ImpliedConnector[],
+        accept: ValidationAcceptor,
+    ): void {
         const edges = new Map<string, Array<{ to: string; con?: Connector | AutoConnect }>>();
         const add = (from: string, to: string, con?: Connector | AutoConnect): void => {
             const list = edges.get(from) ?? [];
@@ -168,7 +233,8 @@ export class ConnectorChecks {
             for (const t of r.targets) if (t?.sub) add(`${r.source.sub.name}.${r.source.info.name}`, `${t.sub.name}.${t.info.name}`, r.con);
         }
         for (const i of implied) {
-            if (i.source.sub && i.target.sub) add(`${i.source.sub.name}.${i.source.info.name}`, `${i.target.sub.name}.${i.target.info.name}`, i.declaration);
+            if (i.source.sub && i.target.sub)
+                add(`${i.source.sub.name}.${i.source.info.name}`, `${i.target.sub.name}.${i.target.info.name}`, i.declaration);
         }
         for (const sub of subcomponentsOf(c)) {
             const decl = subcomponentType(sub).decl;
@@ -183,7 +249,8 @@ export class ConnectorChecks {
                 }
                 continue;
             }
-            for (const [i, o] of inSubcomponent(sub, () => this.instantaneousPaths(decl, new Set()))) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
+            for (const [i, o] of inSubcomponent(sub, () => this.instantaneousPaths(decl, new Set())))
+                add(`${sub.name}.${i}`, `${sub.name}.${o}`);
         }
         const state = new Map<string, 1 | 2>();
         const reported = new Set<Connector | AutoConnect>();
@@ -205,7 +272,11 @@ export class ConnectorChecks {
                 if (s === 1) {
                     if (last && !reported.has(last)) {
                         reported.add(last);
-                        accept('error', `The feedback loop through port '${e.to}' has no delay: its value in a time slice would depend on itself. Make an outgoing port on the loop <<delayed>>.`, { node: last, code: Codes.FeedbackNotCausal });
+                        accept(
+                            'error',
+                            `The feedback loop through port '${e.to}' has no delay: its value in a time slice would depend on itself. Make an outgoing port on the loop <<delayed>>.`,
+                            { node: last, code: Codes.FeedbackNotCausal },
+                        );
                     }
                 } else if (s === undefined) {
                     state.set(e.to, 1);
@@ -234,10 +305,13 @@ export class ConnectorChecks {
             const s = `${con.source.subcomponent?.$refText ?? ''}.${con.source.port?.$refText ?? ''}`;
             for (const t of con.targets) add(s, `${t.subcomponent?.$refText ?? ''}.${t.port?.$refText ?? ''}`);
         }
-        for (const i of impliedConnectors(decl)) add(`${i.source.sub?.name ?? ''}.${i.source.info.name}`, `${i.target.sub?.name ?? ''}.${i.target.info.name}`);
+        for (const i of impliedConnectors(decl))
+            add(`${i.source.sub?.name ?? ''}.${i.source.info.name}`, `${i.target.sub?.name ?? ''}.${i.target.info.name}`);
         for (const sub of subcomponentsOf(decl)) {
             const d = subcomponentType(sub).decl;
-            if (d) for (const [i, o] of inSubcomponent(sub, () => this.instantaneousPaths(d, seen))) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
+            if (d)
+                for (const [i, o] of inSubcomponent(sub, () => this.instantaneousPaths(d, seen)))
+                    add(`${sub.name}.${i}`, `${sub.name}.${o}`);
         }
         const result: Array<[string, string]> = [];
         for (const i of ins) {
@@ -245,7 +319,11 @@ export class ConnectorChecks {
             const stack = [`.${i.name}`];
             while (stack.length > 0) {
                 const n = stack.pop()!;
-                for (const m of edges.get(n) ?? []) if (!reach.has(m)) { reach.add(m); stack.push(m); }
+                for (const m of edges.get(n) ?? [])
+                    if (!reach.has(m)) {
+                        reach.add(m);
+                        stack.push(m);
+                    }
             }
             for (const o of outs) if (reach.has(`.${o.name}`) && !o.delayed) result.push([i.name, o.name]);
         }

@@ -37,7 +37,10 @@ export class ExpressionChecks {
     expectType(expr: Expression, expected: SymType, accept: ValidationAcceptor, code: string, what: string): void {
         const t = this.checkExpression(expr, accept);
         if (!isErroneous(t) && !isErroneous(expected) && !this.rel.isAssignable(expected, t)) {
-            accept('error', `${what} must be of type ${printType(expected)}, but the expression is of type ${printType(t)}.`, { node: expr, code });
+            accept('error', `${what} must be of type ${printType(expected)}, but the expression is of type ${printType(t)}.`, {
+                node: expr,
+                code,
+            });
         }
     }
 
@@ -45,7 +48,11 @@ export class ExpressionChecks {
     checkStaticContext(expr: Expression, accept: ValidationAcceptor, where: string): void {
         for (const n of [expr, ...AstUtils.streamAllContents(expr)]) {
             if (isNameExpression(n) && isPort(n.ref?.ref)) {
-                accept('error', `Port '${n.ref?.$refText ?? ''}' cannot be used in ${where}: ports carry values only while the component runs.`, { node: n, code: Codes.PortInStaticContext });
+                accept(
+                    'error',
+                    `Port '${n.ref?.$refText ?? ''}' cannot be used in ${where}: ports carry values only while the component runs.`,
+                    { node: n, code: Codes.PortInStaticContext },
+                );
             }
         }
     }
@@ -61,7 +68,13 @@ export class ExpressionChecks {
         Parameter: (p: Parameter, accept) => {
             if (!p.default || !p.type) return;
             this.checkStaticContext(p.default, accept, `the default value of parameter '${p.name}'`);
-            this.expectType(p.default, typeOfMCType(p.type), accept, Codes.ParamDefaultTypeMismatch, `The default value of parameter '${p.name}'`);
+            this.expectType(
+                p.default,
+                typeOfMCType(p.type),
+                accept,
+                Codes.ParamDefaultTypeMismatch,
+                `The default value of parameter '${p.name}'`,
+            );
         },
         ExpressionStatement: (s, accept) => {
             this.checkExpression(s.expression, accept);
@@ -77,7 +90,7 @@ export class ExpressionChecks {
         ForStatement: (s, accept) => {
             if (s.condition) this.condition(s.condition, accept);
             for (const u of s.updates) this.checkExpression(u, accept);
-        }
+        },
     };
 
     private condition(e: Expression, accept: ValidationAcceptor): void {

@@ -1,8 +1,21 @@
 import { AstUtils, type AstNode, type ValidationAcceptor, type ValidationChecks } from 'langium';
 import type {
-    AdlAstType, ComponentType, ComponentTypeRef, Expression, Parameter, ParentComponent, ReferenceType, Subcomponent
+    AdlAstType,
+    ComponentType,
+    ComponentTypeRef,
+    Expression,
+    Parameter,
+    ParentComponent,
+    ReferenceType,
+    Subcomponent,
 } from '../../generated/ast.js';
-import { isAssignmentExpression, isNameExpression, isParentComponent, isPostfixExpression, isPrefixExpression } from '../../generated/ast.js';
+import {
+    isAssignmentExpression,
+    isNameExpression,
+    isParentComponent,
+    isPostfixExpression,
+    isPrefixExpression,
+} from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import { allPorts, ownPorts, parentsOf, substitutionFor } from '../../components/component-model.js';
 import type { TypeRelations } from '../../types/type-relations.js';
@@ -41,10 +54,16 @@ export class InstantiationChecks {
         },
         ComponentTypeRef: (r, accept) => this.checkTypeArguments(r, accept),
         ReferenceType: (r, accept) => this.checkDataTypeArguments(r, accept),
-        ComponentType: (c, accept) => this.checkInheritedPorts(c, accept)
+        ComponentType: (c, accept) => this.checkInheritedPorts(c, accept),
     };
 
-    private checkArguments(owner: Subcomponent | ParentComponent, decl: ComponentType, subst: Substitution, args: readonly Expression[], accept: ValidationAcceptor): void {
+    private checkArguments(
+        owner: Subcomponent | ParentComponent,
+        decl: ComponentType,
+        subst: Substitution,
+        args: readonly Expression[],
+        accept: ValidationAcceptor,
+    ): void {
         const what = isParentComponent(owner) ? `parent '${decl.name}'` : `subcomponent '${owner.name}'`;
         const bound = new Map<Parameter, Expression>();
         let sawKey = false;
@@ -61,8 +80,18 @@ export class InstantiationChecks {
                 const target = key.ref?.ref;
                 if (target?.$type === 'Feature') {
                     // A feature binding (`sub(f = true)`): a boolean, once per feature.
-                    this.expressions.expectType(value, BOOLEAN, accept, Codes.ArgumentTypeMismatch, `The binding of feature '${key.ref?.$refText ?? ''}'`);
-                    if (boundFeatures.has(target)) accept('error', `Feature '${key.ref?.$refText ?? ''}' of ${decl.name} gets more than one value.`, { node: arg, code: Codes.ArgumentMultipleValues });
+                    this.expressions.expectType(
+                        value,
+                        BOOLEAN,
+                        accept,
+                        Codes.ArgumentTypeMismatch,
+                        `The binding of feature '${key.ref?.$refText ?? ''}'`,
+                    );
+                    if (boundFeatures.has(target))
+                        accept('error', `Feature '${key.ref?.$refText ?? ''}' of ${decl.name} gets more than one value.`, {
+                            node: arg,
+                            code: Codes.ArgumentMultipleValues,
+                        });
                     boundFeatures.add(target);
                     return;
                 }
@@ -70,7 +99,11 @@ export class InstantiationChecks {
                 if (!param) return; // unknown key, reported by linking as arc/unknown-argument-key
             } else {
                 if (sawKey) {
-                    accept('error', `Positional argument ${index + 1} of ${what} follows a key argument; positional arguments come first.`, { node: arg, code: Codes.PositionalAfterKey });
+                    accept(
+                        'error',
+                        `Positional argument ${index + 1} of ${what} follows a key argument; positional arguments come first.`,
+                        { node: arg, code: Codes.PositionalAfterKey },
+                    );
                     return;
                 }
                 param = decl.params[index];
@@ -82,19 +115,29 @@ export class InstantiationChecks {
             }
             if (!param) return;
             if (bound.has(param)) {
-                accept('error', `Parameter '${param.name}' of ${decl.name} gets more than one value.`, { node: arg, code: Codes.ArgumentMultipleValues });
+                accept('error', `Parameter '${param.name}' of ${decl.name} gets more than one value.`, {
+                    node: arg,
+                    code: Codes.ArgumentMultipleValues,
+                });
                 return;
             }
             bound.set(param, arg);
             const expected = typeOfMCType(param.type, subst);
             const actual = this.expressions.checkExpression(value, accept);
             if (!isErroneous(expected) && !isErroneous(actual) && !this.rel.isAssignable(expected, actual)) {
-                accept('error', `Argument for parameter '${param.name}' of ${decl.name} must be of type ${printType(expected)}, but is of type ${printType(actual)}.`, { node: value, code: Codes.ArgumentTypeMismatch });
+                accept(
+                    'error',
+                    `Argument for parameter '${param.name}' of ${decl.name} must be of type ${printType(expected)}, but is of type ${printType(actual)}.`,
+                    { node: value, code: Codes.ArgumentTypeMismatch },
+                );
             }
         });
         const valueArgs = args.filter((a) => keyOf(a)?.ref?.ref?.$type !== 'Feature');
         if (valueArgs.length > decl.params.length) {
-            accept('error', `${cap(what)} gets ${valueArgs.length} argument(s), but ${decl.name} has ${decl.params.length} parameter(s).`, { node: valueArgs[decl.params.length]!, code: Codes.TooManyArguments });
+            accept('error', `${cap(what)} gets ${valueArgs.length} argument(s), but ${decl.name} has ${decl.params.length} parameter(s).`, {
+                node: valueArgs[decl.params.length]!,
+                code: Codes.TooManyArguments,
+            });
         }
         const missing = decl.params.filter((p) => !p.default && !bound.has(p));
         if (missing.length > 0) {
@@ -107,14 +150,21 @@ export class InstantiationChecks {
     /** Arguments configure a component once: no assignments, increments or decrements in them. */
     private checkSideEffects(arg: Expression, isKey: boolean, accept: ValidationAcceptor): void {
         if (isAssignmentExpression(arg) && !isKey) {
-            accept('error', `An argument cannot contain the assignment '${arg.op}'; write 'key = value' to name a parameter.`, { node: arg, code: Codes.AssignmentInArgument });
+            accept('error', `An argument cannot contain the assignment '${arg.op}'; write 'key = value' to name a parameter.`, {
+                node: arg,
+                code: Codes.AssignmentInArgument,
+            });
             return;
         }
         const start: AstNode | undefined = isKey ? (arg as { right?: Expression }).right : arg;
         if (!start) return; // `key =` without a value: partially parsed
         for (const n of [start, ...AstUtils.streamAllContents(start)]) {
             if (isAssignmentExpression(n) || ((isPrefixExpression(n) || isPostfixExpression(n)) && (n.op === '++' || n.op === '--'))) {
-                accept('error', `An argument cannot ${isAssignmentExpression(n) ? `contain the assignment '${n.op}'` : `use '${(n as { op: string }).op}'`}: arguments must not have side effects.`, { node: n, code: Codes.AssignmentInArgument });
+                accept(
+                    'error',
+                    `An argument cannot ${isAssignmentExpression(n) ? `contain the assignment '${n.op}'` : `use '${(n as { op: string }).op}'`}: arguments must not have side effects.`,
+                    { node: n, code: Codes.AssignmentInArgument },
+                );
                 return;
             }
         }
@@ -126,7 +176,11 @@ export class InstantiationChecks {
         const params = decl.typeParams;
         if (r.typeArgs.length === 0) {
             if (params.length > 0) {
-                accept('warning', `Generic component type '${decl.name}' is used without type arguments; give ${params.map((p) => p.name).join(', ')}.`, { node: r, code: Codes.RawGeneric });
+                accept(
+                    'warning',
+                    `Generic component type '${decl.name}' is used without type arguments; give ${params.map((p) => p.name).join(', ')}.`,
+                    { node: r, code: Codes.RawGeneric },
+                );
             }
             return;
         }
@@ -136,7 +190,11 @@ export class InstantiationChecks {
         params.forEach((p, i) => {
             const a = args[i];
             if (a && !isErroneous(a) && !this.rel.satisfiesBounds(p, a, subst)) {
-                accept('error', `Type argument ${printType(a)} does not satisfy the bound of type parameter '${p.name}' of ${decl.name} (${p.bounds.map((b) => printType(substitute(typeOfMCType(b), subst))).join(' & ')}).`, { node: r.typeArgs[i]!, code: Codes.TypeArgBound });
+                accept(
+                    'error',
+                    `Type argument ${printType(a)} does not satisfy the bound of type parameter '${p.name}' of ${decl.name} (${p.bounds.map((b) => printType(substitute(typeOfMCType(b), subst))).join(' & ')}).`,
+                    { node: r.typeArgs[i]!, code: Codes.TypeArgBound },
+                );
             }
         });
     }
@@ -151,16 +209,25 @@ export class InstantiationChecks {
         params.forEach((p, i) => {
             const a = args[i];
             if (a && a.kind !== 'wildcard' && !isErroneous(a) && !this.rel.satisfiesBounds(p, a, subst)) {
-                accept('error', `Type argument ${printType(a)} does not satisfy the bound of type parameter '${p.name}' of ${decl.name}.`, { node: r.typeArgs[i]!, code: Codes.TypeArgBound });
+                accept('error', `Type argument ${printType(a)} does not satisfy the bound of type parameter '${p.name}' of ${decl.name}.`, {
+                    node: r.typeArgs[i]!,
+                    code: Codes.TypeArgBound,
+                });
             }
         });
     }
 
     private checkArity(node: AstNode, name: string, expected: number, actual: number, accept: ValidationAcceptor): void {
         if (actual > expected) {
-            accept('error', `${name} has ${expected} type parameter(s) but gets ${actual} type argument(s).`, { node, code: Codes.TooManyTypeArgs });
+            accept('error', `${name} has ${expected} type parameter(s) but gets ${actual} type argument(s).`, {
+                node,
+                code: Codes.TooManyTypeArgs,
+            });
         } else if (actual < expected) {
-            accept('error', `${name} has ${expected} type parameter(s) but gets only ${actual} type argument(s).`, { node, code: Codes.TooFewTypeArgs });
+            accept('error', `${name} has ${expected} type parameter(s) but gets only ${actual} type argument(s).`, {
+                node,
+                code: Codes.TooFewTypeArgs,
+            });
         }
     }
 
@@ -171,13 +238,21 @@ export class InstantiationChecks {
         for (const own of ownPorts(c)) {
             for (const sup of inherited.filter((p) => p.name === own.name)) {
                 if (sup.direction !== own.direction) {
-                    accept('error', `Port '${own.name}' is ${own.direction === 'in' ? 'incoming' : 'outgoing'} but redeclares the ${sup.direction === 'in' ? 'incoming' : 'outgoing'} port '${sup.name}' of '${sup.owner.name}'.`, { node: own.port, property: 'name', code: Codes.InheritedPortDirectionMismatch });
+                    accept(
+                        'error',
+                        `Port '${own.name}' is ${own.direction === 'in' ? 'incoming' : 'outgoing'} but redeclares the ${sup.direction === 'in' ? 'incoming' : 'outgoing'} port '${sup.name}' of '${sup.owner.name}'.`,
+                        { node: own.port, property: 'name', code: Codes.InheritedPortDirectionMismatch },
+                    );
                     continue;
                 }
                 if (isErroneous(own.type) || isErroneous(sup.type)) continue;
                 const ok = own.direction === 'in' ? this.rel.isAssignable(sup.type, own.type) : this.rel.isAssignable(own.type, sup.type);
                 if (!ok) {
-                    accept('error', `Port '${own.name}' of type ${printType(own.type)} redeclares port '${sup.name}' of '${sup.owner.name}' of type ${printType(sup.type)}; ${own.direction === 'in' ? 'an incoming port may only narrow' : 'an outgoing port may only widen'} the inherited type.`, { node: own.port, property: 'name', code: Codes.InheritedPortTypeMismatch });
+                    accept(
+                        'error',
+                        `Port '${own.name}' of type ${printType(own.type)} redeclares port '${sup.name}' of '${sup.owner.name}' of type ${printType(sup.type)}; ${own.direction === 'in' ? 'an incoming port may only narrow' : 'an outgoing port may only widen'} the inherited type.`,
+                        { node: own.port, property: 'name', code: Codes.InheritedPortTypeMismatch },
+                    );
                 }
             }
         }

@@ -1,6 +1,14 @@
-import { type AstNode, type ValidationAcceptor, type ValidationChecks } from 'langium';
+import type { AstNode, ValidationAcceptor, ValidationChecks } from 'langium';
 import type { AdlAstType, CDEnum, Expression, Statement, SwitchExpression, SwitchLabel, SwitchStatement } from '../../generated/ast.js';
-import { isBlock, isCDEnumConstant, isCDEnum, isFieldAccessExpression, isIfStatement, isNameExpression, isYieldStatement } from '../../generated/ast.js';
+import {
+    isBlock,
+    isCDEnumConstant,
+    isCDEnum,
+    isFieldAccessExpression,
+    isIfStatement,
+    isNameExpression,
+    isYieldStatement,
+} from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import type { ExpressionChecks } from './expression-checks.js';
 import type { ExpressionTyper } from '../../types/expression-typer.js';
@@ -23,7 +31,10 @@ export class StatementChecks {
     private readonly rel: TypeRelations;
     private readonly typer: ExpressionTyper;
 
-    constructor(services: AdlServices, private readonly expressions: ExpressionChecks) {
+    constructor(
+        services: AdlServices,
+        private readonly expressions: ExpressionChecks,
+    ) {
         this.rel = services.maa.TypeRelations;
         this.typer = services.maa.ExpressionTyper;
     }
@@ -38,25 +49,38 @@ export class StatementChecks {
             // The value is typed here (the switch expression's type takes it without reporting).
             this.expressions.checkExpression(s.value, accept);
             if (!switchOfYield(s)) {
-                accept('error', "'yield' gives a block arm of a switch expression its value ('case 1 -> { ...; yield v; }'); it is not allowed elsewhere.", { node: s, code: Codes.YieldOutsideSwitchExpression });
+                accept(
+                    'error',
+                    "'yield' gives a block arm of a switch expression its value ('case 1 -> { ...; yield v; }'); it is not allowed elsewhere.",
+                    { node: s, code: Codes.YieldOutsideSwitchExpression },
+                );
             }
         },
         BreakStatement: (s, accept) => {
             const target = jumpTarget(s, true);
             if (target === 'switch-expression') {
-                accept('error', "'break' cannot leave a switch expression; give the arm its value with 'yield'.", { node: s, code: Codes.JumpOutOfSwitchExpression });
+                accept('error', "'break' cannot leave a switch expression; give the arm its value with 'yield'.", {
+                    node: s,
+                    code: Codes.JumpOutOfSwitchExpression,
+                });
             } else if (!target) {
-                accept('error', "'break' is only allowed inside a loop (while, do, for) or a switch.", { node: s, code: Codes.BreakOutsideLoop });
+                accept('error', "'break' is only allowed inside a loop (while, do, for) or a switch.", {
+                    node: s,
+                    code: Codes.BreakOutsideLoop,
+                });
             }
         },
         ContinueStatement: (s, accept) => {
             const target = jumpTarget(s, false);
             if (target === 'switch-expression') {
-                accept('error', "'continue' cannot leave a switch expression; give the arm its value with 'yield'.", { node: s, code: Codes.JumpOutOfSwitchExpression });
+                accept('error', "'continue' cannot leave a switch expression; give the arm its value with 'yield'.", {
+                    node: s,
+                    code: Codes.JumpOutOfSwitchExpression,
+                });
             } else if (!target) {
                 accept('error', "'continue' is only allowed inside a loop (while, do, for).", { node: s, code: Codes.ContinueOutsideLoop });
             }
-        }
+        },
     };
 
     private checkSwitch(s: SwitchStatement, accept: ValidationAcceptor): void {
@@ -71,11 +95,19 @@ export class StatementChecks {
                 else colons++;
             }
             if (g.labels.some((l) => l.arrow) && (g.labels.length > 1 || g.statements.length !== 1)) {
-                accept('error', "A 'case ... ->' rule has one label and one statement (a block, an expression statement or a throw); list several values in one label: 'case 1, 2 -> ...'.", { node: g, code: Codes.MixedSwitchLabels });
+                accept(
+                    'error',
+                    "A 'case ... ->' rule has one label and one statement (a block, an expression statement or a throw); list several values in one label: 'case 1, 2 -> ...'.",
+                    { node: g, code: Codes.MixedSwitchLabels },
+                );
             }
         }
         if (arrows > 0 && colons > 0) {
-            accept('error', "A switch uses either 'case ...:' groups or 'case ... ->' rules, not both.", { node: s, property: 'selector', code: Codes.MixedSwitchLabels });
+            accept('error', "A switch uses either 'case ...:' groups or 'case ... ->' rules, not both.", {
+                node: s,
+                property: 'selector',
+                code: Codes.MixedSwitchLabels,
+            });
         }
     }
 
@@ -91,10 +123,17 @@ export class StatementChecks {
         const covered = this.checkLabels(s.selector, selector, labels, accept, false);
         for (const arm of s.arms) {
             if (arm.label && !arm.label.arrow) {
-                accept('error', "The arms of a switch expression are 'case ... -> value;' or 'case ... -> { ... yield value; }', not 'case ...:'.", { node: arm.label, code: Codes.MixedSwitchLabels });
+                accept(
+                    'error',
+                    "The arms of a switch expression are 'case ... -> value;' or 'case ... -> { ... yield value; }', not 'case ...:'.",
+                    { node: arm.label, code: Codes.MixedSwitchLabels },
+                );
             }
             if (arm.body && !completesAbruptly(arm.body)) {
-                accept('error', "A block arm of a switch expression must end with 'yield value;' (on every path).", { node: arm.body, code: Codes.MissingYield });
+                accept('error', "A block arm of a switch expression must end with 'yield value;' (on every path).", {
+                    node: arm.body,
+                    code: Codes.MissingYield,
+                });
             }
         }
         const en = enumOf(selector);
@@ -102,9 +141,13 @@ export class StatementChecks {
         if (hasDefault || isErroneous(selector)) return;
         const missing = en ? en.constants.filter((c) => !covered.has(c.name)).map((c) => c.name) : undefined;
         if (missing && missing.length === 0) return;
-        accept('error', missing
-            ? `A switch expression must be exhaustive: add a 'default' arm or arms for ${missing.join(', ')}.`
-            : `A switch expression over ${printType(selector)} must be exhaustive: add a 'default' arm.`, { node: s, property: 'selector', code: Codes.SwitchNotExhaustive });
+        accept(
+            'error',
+            missing
+                ? `A switch expression must be exhaustive: add a 'default' arm or arms for ${missing.join(', ')}.`
+                : `A switch expression over ${printType(selector)} must be exhaustive: add a 'default' arm.`,
+            { node: s, property: 'selector', code: Codes.SwitchNotExhaustive },
+        );
     }
 
     /**
@@ -112,10 +155,20 @@ export class StatementChecks {
      * `default`. `report`: type the labels here and report their problems (a statement; a switch
      * expression's labels are reported with its root expression). Returns the enum constants labelled.
      */
-    private checkLabels(selectorNode: Expression, selector: SymType, labels: readonly SwitchLabel[], accept: ValidationAcceptor, report: boolean): Set<string> {
+    private checkLabels(
+        selectorNode: Expression,
+        selector: SymType,
+        labels: readonly SwitchLabel[],
+        accept: ValidationAcceptor,
+        report: boolean,
+    ): Set<string> {
         const selectorOk = isErroneous(selector) || this.isSwitchable(selector);
         if (!selectorOk) {
-            accept('error', `A switch selector must be of type char, byte, short, int (or their boxes), String or an enum, but the expression is of type ${printType(selector)}.`, { node: selectorNode, code: Codes.ExprTypeMismatch });
+            accept(
+                'error',
+                `A switch selector must be of type char, byte, short, int (or their boxes), String or an enum, but the expression is of type ${printType(selector)}.`,
+                { node: selectorNode, code: Codes.ExprTypeMismatch },
+            );
         }
         const selectorEnum = enumOf(selector);
         const seen = new Map<string, AstNode>();
@@ -124,7 +177,8 @@ export class StatementChecks {
         for (const label of labels) {
             if (label.default) {
                 defaults++;
-                if (defaults > 1) accept('error', 'A switch has at most one default label.', { node: label, code: Codes.DuplicateCaseLabel });
+                if (defaults > 1)
+                    accept('error', 'A switch has at most one default label.', { node: label, code: Codes.DuplicateCaseLabel });
             }
             for (const v of label.values) {
                 if (selectorEnum && isNameExpression(v) && !v.ref.ref) {
@@ -134,14 +188,21 @@ export class StatementChecks {
                 }
                 const t = report ? this.expressions.checkExpression(v, accept) : this.typer.typeOf(v, []);
                 if (selectorOk && !isErroneous(selector) && !isErroneous(t) && !this.rel.isAssignable(selector, t)) {
-                    accept('error', `A case label of a switch over ${printType(selector)} must be of that type, but it is of type ${printType(t)}.`, { node: v, code: Codes.ExprTypeMismatch });
+                    accept(
+                        'error',
+                        `A case label of a switch over ${printType(selector)} must be of that type, but it is of type ${printType(t)}.`,
+                        { node: v, code: Codes.ExprTypeMismatch },
+                    );
                 }
                 // `RED` and `Color.RED` label the same constant of an enum switch.
                 const constant = selectorEnum && t.kind === 'object' && t.decl === selectorEnum ? enumConstantName(v) : undefined;
                 if (constant) constants.add(constant);
                 const key = constant ?? v.$cstNode?.text.replace(/\s+/g, '') ?? '';
                 if (key && seen.has(key)) {
-                    accept('error', `Duplicate case label '${key}': every value may label one case only.`, { node: v, code: Codes.DuplicateCaseLabel });
+                    accept('error', `Duplicate case label '${key}': every value may label one case only.`, {
+                        node: v,
+                        code: Codes.DuplicateCaseLabel,
+                    });
                 } else if (key) seen.set(key, v);
             }
         }

@@ -3,7 +3,14 @@ import type { AdlAstType, ComponentType, Expression } from '../../generated/ast.
 import type { AdlServices } from '../../adl-module.js';
 import { elementsOf, findPort, subcomponentType, subcomponentsOf } from '../../components/component-model.js';
 import { ownFeatures } from '../../components/features.js';
-import { configurationSpace, isVariable, MAX_VARIABLES, MAX_VARIANTS, type Assignment, type ConfigurationSpace } from '../../components/variability.js';
+import {
+    configurationSpace,
+    isVariable,
+    MAX_VARIABLES,
+    MAX_VARIANTS,
+    type Assignment,
+    type ConfigurationSpace,
+} from '../../components/variability.js';
 import { currentVariant, inSubcomponent, withVariant } from '../../components/variant-context.js';
 import { Codes } from '../codes.js';
 import { BOOLEAN } from '../../types/sym-type.js';
@@ -32,14 +39,17 @@ export class VariabilityChecks {
 
     /** The configurations of a variable component (undefined for a component without variability). */
     space(c: ComponentType): ConfigurationSpace | undefined {
-        const memo = { get: (x: ComponentType) => (this.variable.has(x) ? this.variable.get(x) : undefined), set: (x: ComponentType, v: boolean) => this.variable.set(x, v) };
+        const memo = {
+            get: (x: ComponentType) => (this.variable.has(x) ? this.variable.get(x) : undefined),
+            set: (x: ComponentType, v: boolean) => this.variable.set(x, v),
+        };
         return this.spaces.get(c, () => (isVariable(c, memo) ? configurationSpace(c) : undefined));
     }
 
     readonly checks: ValidationChecks<AdlAstType> = {
         ComponentType: (c, accept) => this.checkComponent(c, accept),
         ConstraintDeclaration: (d, accept) => this.checkExpression(d.expression, 'constraint', accept),
-        VarIf: (v, accept) => this.checkExpression(v.condition, 'varif', accept)
+        VarIf: (v, accept) => this.checkExpression(v.condition, 'varif', accept),
     };
 
     /**
@@ -94,14 +104,23 @@ export class VariabilityChecks {
         const space = this.space(c);
         if (!space) return;
         if (space.tooLarge) {
-            const why = space.variables.size > MAX_VARIABLES
-                ? `${space.variables.size} features, parameters and conditions decide its configurations (more than ${MAX_VARIABLES})`
-                : `its constraints admit more than ${MAX_VARIANTS} different selections of variation points`;
-            accept('warning', `Component '${c.name}' is not checked configuration by configuration: ${why}. It is checked with all variation points included.`, { node: c, property: 'name', code: Codes.VariabilityTooManyFeatures });
+            const why =
+                space.variables.size > MAX_VARIABLES
+                    ? `${space.variables.size} features, parameters and conditions decide its configurations (more than ${MAX_VARIABLES})`
+                    : `its constraints admit more than ${MAX_VARIANTS} different selections of variation points`;
+            accept(
+                'warning',
+                `Component '${c.name}' is not checked configuration by configuration: ${why}. It is checked with all variation points included.`,
+                { node: c, property: 'name', code: Codes.VariabilityTooManyFeatures },
+            );
             return;
         }
         if (space.configurations.length === 0) {
-            accept('error', `The constraints of component '${c.name}' (its own, inherited and those of its subcomponents) admit no configuration.`, { node: c, property: 'name', code: Codes.VariabilityConstraintUnsatisfied });
+            accept(
+                'error',
+                `The constraints of component '${c.name}' (its own, inherited and those of its subcomponents) admit no configuration.`,
+                { node: c, property: 'name', code: Codes.VariabilityConstraintUnsatisfied },
+            );
             return;
         }
         this.checkSubcomponentFeatures(c, space, accept);
@@ -114,12 +133,12 @@ export class VariabilityChecks {
         const own = [...space.variables.values()].filter((v) => v.path.length === 0).map((v) => v.key);
         const subFeatures = [...space.variables.values()].filter((v) => v.kind === 'feature' && v.path.length === 1);
         if (subFeatures.length === 0) return;
-        const valueOf = new Map<string, Map<string, boolean>>();
+        const valuesOf = new Map<string, Map<string, boolean>>();
         const free = new Set<string>();
         for (const a of space.configurations) {
             const key = own.map((k) => (space.value(a, k) ? '1' : '0')).join('');
-            let values = valueOf.get(key);
-            if (!values) valueOf.set(key, (values = new Map()));
+            let values = valuesOf.get(key);
+            if (!values) valuesOf.set(key, (values = new Map()));
             for (const v of subFeatures) {
                 const prev = values.get(v.key);
                 const now = space.value(a, v.key);
@@ -131,7 +150,11 @@ export class VariabilityChecks {
             if (!free.has(v.key)) continue;
             const sub = v.path[0]!;
             if (sub.$container && !isOwnedBy(sub, c)) continue; // an inherited subcomponent: reported at its declaration
-            accept('error', `Feature '${v.key}' of subcomponent '${sub.name}' is not fixed by the constraints of component '${c.name}'; add a constraint that determines it (e.g. 'constraint(${v.key});').`, { node: sub, property: 'name', code: Codes.VariabilitySubcomponentFeaturesUnconstrained });
+            accept(
+                'error',
+                `Feature '${v.key}' of subcomponent '${sub.name}' is not fixed by the constraints of component '${c.name}'; add a constraint that determines it (e.g. 'constraint(${v.key});').`,
+                { node: sub, property: 'name', code: Codes.VariabilitySubcomponentFeaturesUnconstrained },
+            );
         }
     }
 
@@ -146,15 +169,27 @@ export class VariabilityChecks {
                     const subName = access.subcomponent.$refText;
                     const sub = subcomponentsOf(c).find((s) => s.name === subName);
                     if (!sub) {
-                        accept('error', `Subcomponent '${subName}' does not exist in this configuration.`, { node: access, property: 'subcomponent', code: Codes.MissingSubcomponent });
+                        accept('error', `Subcomponent '${subName}' does not exist in this configuration.`, {
+                            node: access,
+                            property: 'subcomponent',
+                            code: Codes.MissingSubcomponent,
+                        });
                         continue;
                     }
                     const { decl, subst } = subcomponentType(sub);
                     if (decl && !inSubcomponent(sub, () => findPort(decl, name, subst))) {
-                        accept('error', `Port '${name}' does not exist in the type of subcomponent '${subName}' in this configuration.`, { node: access, property: 'port', code: Codes.MissingPort });
+                        accept('error', `Port '${name}' does not exist in the type of subcomponent '${subName}' in this configuration.`, {
+                            node: access,
+                            property: 'port',
+                            code: Codes.MissingPort,
+                        });
                     }
                 } else if (!findPort(c, name)) {
-                    accept('error', `Port '${name}' does not exist in this configuration.`, { node: access, property: 'port', code: Codes.MissingPort });
+                    accept('error', `Port '${name}' does not exist in this configuration.`, {
+                        node: access,
+                        property: 'port',
+                        code: Codes.MissingPort,
+                    });
                 }
             }
         }
@@ -165,7 +200,11 @@ export class VariabilityChecks {
         const seen = new Set(c.params.map((p) => p.name));
         for (const f of ownFeatures(c)) {
             if (seen.has(f.name)) {
-                accept('error', `The name '${f.name}' is declared more than once in component '${c.name}'.`, { node: f, property: 'name', code: Codes.DuplicateName });
+                accept('error', `The name '${f.name}' is declared more than once in component '${c.name}'.`, {
+                    node: f,
+                    property: 'name',
+                    code: Codes.DuplicateName,
+                });
             }
             seen.add(f.name);
         }
@@ -178,17 +217,28 @@ export class VariabilityChecks {
         const visit = (n: AstNode): void => {
             switch (n.$type) {
                 case 'AssignmentExpression':
-                    accept('error', `The condition of a ${where} must not assign ('${(n as { op?: string }).op ?? '='}').`, { node: n, code: Codes.AssignmentInArgument });
+                    accept('error', `The condition of a ${where} must not assign ('${(n as { op?: string }).op ?? '='}').`, {
+                        node: n,
+                        code: Codes.AssignmentInArgument,
+                    });
                     break;
                 case 'PrefixExpression':
                 case 'PostfixExpression': {
                     const op = (n as { op?: string }).op;
-                    if (op === '++' || op === '--') accept('error', `The condition of a ${where} must not change a value ('${op}').`, { node: n, code: Codes.AssignmentInArgument });
+                    if (op === '++' || op === '--')
+                        accept('error', `The condition of a ${where} must not change a value ('${op}').`, {
+                            node: n,
+                            code: Codes.AssignmentInArgument,
+                        });
                     break;
                 }
                 case 'CallExpression':
                 case 'ArrayAccessExpression':
-                    accept('error', `The condition of a ${where} can only use features, parameters, literals and boolean, comparison and arithmetic operators; '${n.$cstNode?.text ?? ''}' cannot be checked for satisfiability.`, { node: n, code: Codes.VariabilityExpressionNotCheckable });
+                    accept(
+                        'error',
+                        `The condition of a ${where} can only use features, parameters, literals and boolean, comparison and arithmetic operators; '${n.$cstNode?.text ?? ''}' cannot be checked for satisfiability.`,
+                        { node: n, code: Codes.VariabilityExpressionNotCheckable },
+                    );
                     return;
                 default:
                     break;
@@ -203,7 +253,10 @@ function childExpressions(n: AstNode): AstNode[] {
     const result: AstNode[] = [];
     for (const [k, v] of Object.entries(n)) {
         if (k.startsWith('$')) continue;
-        if (Array.isArray(v)) for (const x of v) { if (isNode(x)) result.push(x); }
+        if (Array.isArray(v))
+            for (const x of v) {
+                if (isNode(x)) result.push(x);
+            }
         else if (isNode(v)) result.push(v);
     }
     return result;
@@ -230,7 +283,11 @@ function nodeKey(n: AstNode): number {
 
 /** The features (and boolean parameters) of a configuration, e.g. `f = true, sub.ff = false`. */
 function describe(space: ConfigurationSpace, a: Assignment): string {
-    const parts = [...space.variables.values()].filter((v) => v.kind !== 'atom').map((v) => `${v.key} = ${space.value(a, v.key) ? 'true' : 'false'}`);
-    const atoms = [...space.variables.values()].filter((v) => v.kind === 'atom').map((v) => `(${v.key.substring(v.key.indexOf('#') + 1)}) = ${space.value(a, v.key) ? 'true' : 'false'}`);
+    const parts = [...space.variables.values()]
+        .filter((v) => v.kind !== 'atom')
+        .map((v) => `${v.key} = ${space.value(a, v.key) ? 'true' : 'false'}`);
+    const atoms = [...space.variables.values()]
+        .filter((v) => v.kind === 'atom')
+        .map((v) => `(${v.key.substring(v.key.indexOf('#') + 1)}) = ${space.value(a, v.key) ? 'true' : 'false'}`);
     return [...parts, ...atoms].join(', ') || 'without features';
 }
