@@ -1,3 +1,4 @@
+import { PYTHON_KEYWORDS as ADL_PYTHON_KEYWORDS, PYTHON_SOFT_KEYWORDS } from '@maa/language-adl';
 /**
  * Naming conventions and escaping for generated code; the shared Nunjucks environment offers
  * them as filters (`{{ c.name | snake_case }}`), generator code can call them directly.
@@ -55,46 +56,8 @@ export function indentLines(text: string, width: number | string = 4): string {
         .join('\n');
 }
 
-const PYTHON_KEYWORDS = new Set([
-    'False',
-    'None',
-    'True',
-    'and',
-    'as',
-    'assert',
-    'async',
-    'await',
-    'break',
-    'class',
-    'continue',
-    'def',
-    'del',
-    'elif',
-    'else',
-    'except',
-    'finally',
-    'for',
-    'from',
-    'global',
-    'if',
-    'import',
-    'in',
-    'is',
-    'lambda',
-    'nonlocal',
-    'not',
-    'or',
-    'pass',
-    'raise',
-    'return',
-    'try',
-    'while',
-    'with',
-    'yield',
-    'match',
-    'case',
-    'type',
-]);
+/** What a generated Python identifier must not be: a keyword, soft ones included. */
+const PYTHON_KEYWORDS = new Set([...ADL_PYTHON_KEYWORDS, ...PYTHON_SOFT_KEYWORDS]);
 
 /** A Python identifier for a name: keywords get a trailing underscore. */
 export function pythonIdentifier(name: string): string {

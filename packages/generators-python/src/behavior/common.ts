@@ -92,7 +92,8 @@ function cmp(a: string, b: string): number {
     return a < b ? -1 : a > b ? 1 : 0;
 }
 
-const PRIMITIVE_PY: Record<string, string> = {
+/** Python's type for a Java primitive or boxed type (the one table; the data types add collections). */
+export const PRIMITIVE_PY: Readonly<Record<string, string>> = {
     int: 'int',
     Integer: 'int',
     long: 'int',

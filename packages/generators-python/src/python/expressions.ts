@@ -1,6 +1,6 @@
 import type { AstNode } from 'langium';
 import { GenerationError } from '@maa/generator-core/node';
-import { ast as adlAst, portHeader, printType, typeOfMCType } from '@maa/language-adl';
+import { ast as adlAst, PYTHON_KEYWORDS, PYTHON_SOFT_KEYWORDS, portHeader, printType, typeOfMCType } from '@maa/language-adl';
 import { JAVA_LIBRARY } from './java-library.js';
 import { ControlFlow } from './control-flow.js';
 
@@ -30,46 +30,8 @@ function qualifiedParts(e: Node): string[] | undefined {
     return undefined;
 }
 
-const PY_KEYWORDS = new Set([
-    'False',
-    'None',
-    'True',
-    'and',
-    'as',
-    'assert',
-    'async',
-    'await',
-    'break',
-    'class',
-    'continue',
-    'def',
-    'del',
-    'elif',
-    'else',
-    'except',
-    'finally',
-    'for',
-    'from',
-    'global',
-    'if',
-    'import',
-    'in',
-    'is',
-    'lambda',
-    'nonlocal',
-    'not',
-    'or',
-    'pass',
-    'raise',
-    'return',
-    'try',
-    'while',
-    'with',
-    'yield',
-    'match',
-    'case',
-    'type',
-]);
+/** What a generated Python identifier must not be: a keyword, soft ones included. */
+const PY_KEYWORDS = new Set([...PYTHON_KEYWORDS, ...PYTHON_SOFT_KEYWORDS]);
 
 /** A Python-safe identifier for a model name. */
 export function pyName(name: string): string {

@@ -1,28 +1,12 @@
 import type { DataTypeGeneratorFactory, DataTypeView, TypeMapping } from '@maa/generator-core';
-import { Imports, modulePath, snake } from '../behavior/common.js';
+import { Imports, modulePath, PRIMITIVE_PY, snake } from '../behavior/common.js';
 import { pyName } from '../python/expressions.js';
 import { methodViews } from '../python/cd-methods.js';
 import { renderPython } from '../python/templates.js';
 import type { DataTypeView as DataTypeChunkView } from './views.js';
 
 const PRIMITIVES: Record<string, string> = {
-    int: 'int',
-    Integer: 'int',
-    long: 'int',
-    Long: 'int',
-    short: 'int',
-    Short: 'int',
-    byte: 'int',
-    Byte: 'int',
-    char: 'int',
-    Character: 'int',
-    float: 'float',
-    Float: 'float',
-    double: 'float',
-    Double: 'float',
-    boolean: 'bool',
-    Boolean: 'bool',
-    String: 'str',
+    ...PRIMITIVE_PY,
     List: 'list',
     Set: 'set',
     Map: 'dict',

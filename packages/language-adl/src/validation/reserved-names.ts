@@ -63,8 +63,11 @@ const JAVA = [
     'null',
 ];
 
-/** Names the Python generators cannot emit as identifiers. */
-const PYTHON = [
+/**
+ * Python's keywords: names the Python generators cannot emit as identifiers (the one list; the
+ * generators rename them, the reserved-name check reports them).
+ */
+export const PYTHON_KEYWORDS: readonly string[] = [
     'False',
     'None',
     'True',
@@ -102,6 +105,9 @@ const PYTHON = [
     'yield',
 ];
 
+/** Python's soft keywords: valid identifiers, but the generators rename them too (a model may use `type`). */
+export const PYTHON_SOFT_KEYWORDS: readonly string[] = ['match', 'case', 'type'];
+
 /** Project configuration (`maa.json` at a model root) as far as the checks read it. */
 export interface RootConfiguration {
     /** Further reserved names per kind of named element (e.g. words a target platform reserves). */
@@ -115,7 +121,7 @@ export interface RootConfiguration {
  */
 export class ReservedNames {
     static readonly CONFIG_FILE = 'maa.json';
-    private readonly defaults = new Set([...SEMANTIC, ...JAVA, ...PYTHON]);
+    private readonly defaults = new Set([...SEMANTIC, ...JAVA, ...PYTHON_KEYWORDS]);
     private readonly perRoot = new Map<string, RootConfiguration>();
 
     constructor(private readonly roots: ModelRoots) {}
