@@ -385,7 +385,9 @@ _STRING: dict[str, Method] = {
     "length/0": len,
     "isEmpty/0": lambda s: len(s) == 0,
     "charAt/1": lambda s, i: (
-        _char(ord(s[i])) if 0 <= i < len(s) else _raise(f"java.lang.StringIndexOutOfBoundsException: index {i}, length {len(s)}")
+        _char(ord(s[i]))
+        if 0 <= i < len(s)
+        else _raise(f"java.lang.StringIndexOutOfBoundsException: index {i}, length {len(s)}")
     ),
     "substring/1": _substring,
     "substring/2": _substring,
@@ -394,7 +396,9 @@ _STRING: dict[str, Method] = {
     "contains/1": lambda s, x: x in s,
     "indexOf/1": lambda s, x: s.find(x),
     "lastIndexOf/1": lambda s, x: s.rfind(x),
-    "equalsIgnoreCase/1": lambda s, o: isinstance(o, str) and len(s) == len(o) and (s.upper() == o.upper() or s.lower() == o.lower()),
+    "equalsIgnoreCase/1": lambda s, o: (
+        isinstance(o, str) and len(s) == len(o) and (s.upper() == o.upper() or s.lower() == o.lower())
+    ),
     "replace/2": lambda s, a, b: s.replace(a, b),
     "repeat/1": lambda s, n: s * n if n >= 0 else _raise(f"java.lang.IllegalArgumentException: count is negative: {n}"),
     "toUpperCase/0": str.upper,

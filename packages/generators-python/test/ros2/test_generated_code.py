@@ -81,7 +81,9 @@ def test_sim_server_accepts_the_deployment(generated: Generated) -> None:
         "from pathlib import Path; from maa_sim.deployment import Deployment;"
         "d = Deployment.load(Path(sys.argv[2])); print(len(d.nodes))"
     )
-    result = subprocess.run([sys.executable, "-c", code, str(src), str(generated.package)], capture_output=True, text=True, check=False)
+    result = subprocess.run(
+        [sys.executable, "-c", code, str(src), str(generated.package)], capture_output=True, text=True, check=False
+    )
     if "No module named" in result.stderr and "maa_sim" not in result.stderr:
         return  # a dependency of maa_sim's package is not in this venv
     assert result.returncode == 0, result.stderr

@@ -57,7 +57,10 @@ class Probe:
         for name, topic in outputs.items():
             self.node.create_subscription(Int32, topic, self._recorder(name), 10)
         latched = QoSProfile(
-            history=HistoryPolicy.KEEP_LAST, depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL
+            history=HistoryPolicy.KEEP_LAST,
+            depth=1,
+            reliability=ReliabilityPolicy.RELIABLE,
+            durability=DurabilityPolicy.TRANSIENT_LOCAL,
         )
         for name, topic in modes.items():
             self.node.create_subscription(String, topic, self._recorder(name), latched)
@@ -169,7 +172,9 @@ def test_deployment_has_a_mode_manager_and_gated_nodes(package: Path) -> None:
 
 
 @contextlib.contextmanager
-def probing(package: Path, log_dir: Path, speed: str, outputs: Mapping[str, str], modes: Mapping[str, str]) -> Iterator[Probe]:
+def probing(
+    package: Path, log_dir: Path, speed: str, outputs: Mapping[str, str], modes: Mapping[str, str]
+) -> Iterator[Probe]:
     """A probe on the deployed nodes of ``package`` while the block runs."""
     p = Probe(speed, outputs, modes)
     try:
@@ -183,7 +188,11 @@ def probing(package: Path, log_dir: Path, speed: str, outputs: Mapping[str, str]
 def probe(package: Path, ros_domain: int, tmp_path: Path) -> Iterator[Probe]:
     del ros_domain
     with probing(
-        package, tmp_path, "/gearbox/speed", {"o": "/gearbox/o", "total": "/gearbox/total"}, {"mode": "/gearbox/maa_modes/mode"}
+        package,
+        tmp_path,
+        "/gearbox/speed",
+        {"o": "/gearbox/o", "total": "/gearbox/total"},
+        {"mode": "/gearbox/maa_modes/mode"},
     ) as p:
         yield p
 

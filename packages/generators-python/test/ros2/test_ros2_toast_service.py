@@ -133,7 +133,10 @@ class FakeSimulator:
         while time.monotonic() < start + timeout:
             names = {f"{ns.rstrip('/')}/{name}" for name, ns in self.node.get_node_names_and_namespaces()}
             nodes_up = all(f"{n['namespace'].rstrip('/')}/{n['name']}" in names for n in deployment["nodes"])
-            matched = all(self.node.count_publishers(t) >= 1 and self.node.count_subscribers(t) >= subscribers.get(t, 0) for t in ports)
+            matched = all(
+                self.node.count_publishers(t) >= 1 and self.node.count_subscribers(t) >= subscribers.get(t, 0)
+                for t in ports
+            )
             if nodes_up and matched:
                 time.sleep(0.5)  # the subscriptions' own matching completes
                 return time.monotonic() - start
@@ -178,7 +181,14 @@ def start_nodes(package: Path, log_dir: Path) -> list[tuple[str, subprocess.Pope
             "--params-file",
             str(params),
         ]
-        processes.append((stem, subprocess.Popen(cmd, cwd=package, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)))
+        processes.append(
+            (
+                stem,
+                subprocess.Popen(
+                    cmd, cwd=package, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True
+                ),
+            )
+        )
     return processes
 
 
