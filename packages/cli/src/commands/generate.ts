@@ -5,6 +5,7 @@ import { Command, Option } from 'commander';
 import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
 import { modelRootOfApp } from '../roots.js';
+import { jsonDiagnostic } from '../format/json.js';
 import { displayPath, formatDiagnosticsText } from '../format/text.js';
 import type { CliIo } from '../io.js';
 import { createProgress } from '../progress.js';
@@ -101,17 +102,7 @@ export async function runGenerate(appArg: string, options: GenerateCommandOption
         io.out(
             `${JSON.stringify(
                 {
-                    diagnostics: diagnostics.map((d) => ({
-                        root: d.root,
-                        file: d.file,
-                        line: d.line,
-                        column: d.column,
-                        endLine: d.endLine,
-                        endColumn: d.endColumn,
-                        severity: d.severity,
-                        code: d.code,
-                        message: d.message,
-                    })),
+                    diagnostics: diagnostics.map(jsonDiagnostic),
                     platforms: result.platforms.map((p) => ({
                         platform: p.platform,
                         outDir: p.outDir,

@@ -7,20 +7,24 @@ export interface JsonReport {
     summary: CheckSummary;
 }
 
+/** A diagnostic in the JSON reports of `check` and `generate`: the documented fields, picked explicitly so the shape stays stable. */
+export function jsonDiagnostic(d: CheckDiagnostic): CheckDiagnostic {
+    return {
+        root: d.root,
+        file: d.file,
+        line: d.line,
+        column: d.column,
+        endLine: d.endLine,
+        endColumn: d.endColumn,
+        severity: d.severity,
+        code: d.code,
+        message: d.message,
+    };
+}
+
 export function formatJson(diagnostics: readonly CheckDiagnostic[], summary: CheckSummary): string {
     const report: JsonReport = {
-        // Pick the documented fields explicitly so the shape stays stable.
-        diagnostics: diagnostics.map((d) => ({
-            root: d.root,
-            file: d.file,
-            line: d.line,
-            column: d.column,
-            endLine: d.endLine,
-            endColumn: d.endColumn,
-            severity: d.severity,
-            code: d.code,
-            message: d.message,
-        })),
+        diagnostics: diagnostics.map(jsonDiagnostic),
         summary: {
             errors: summary.errors,
             warnings: summary.warnings,
