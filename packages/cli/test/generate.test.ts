@@ -113,9 +113,15 @@ function tree(dir: string, rel = ''): Record<string, string> {
 
 /** Runs maa-gen as a user whom file permissions bind (root is not bound: then as nobody). */
 function runCliAs(args: string[], cwd: string): Promise<{ code: number | null; stdout: string; stderr: string }> {
-    const asUser = process.getuid?.() === 0 ? { uid: 65534, gid: 65534 } : {};
+    // Root ignores permissions: it runs maa-gen without capabilities (setpriv), still able to read a
+    // clone only root may enter (mktemp -d), or else as nobody.
+    const root = process.getuid?.() === 0;
+    const setpriv = root && existsSync('/usr/bin/setpriv');
+    const command = setpriv ? '/usr/bin/setpriv' : process.execPath;
+    const commandArgs = setpriv ? ['--bounding-set=-all', '--inh-caps=-all', '--', process.execPath, BIN, ...args] : [BIN, ...args];
+    const asUser = root && !setpriv ? { uid: 65534, gid: 65534 } : {};
     return new Promise((resolve, reject) => {
-        execFile(process.execPath, [BIN, ...args], { cwd, env: { ...process.env, NO_COLOR: '1' }, ...asUser }, (error, stdout, stderr) => {
+        execFile(command, commandArgs, { cwd, env: { ...process.env, NO_COLOR: '1' }, ...asUser }, (error, stdout, stderr) => {
             if (error && typeof error.code !== 'number') reject(error);
             else resolve({ code: error ? (error.code as number) : 0, stdout, stderr });
         });
@@ -279,7 +285,7 @@ describe('maa-gen generate', () => {
             'models/robot/Sensor.arc',
             'package robot;\n\n<<handwritten>> component Sensor {\n  port out int value;\n  port out int extra;\n}\n',
         );
-        // Read-only, as a full disk or a read-only mount would be. Root ignores permissions: it runs maa-gen as nobody.
+        // Read-only, as a full disk or a read-only mount would be (runCliAs: root runs maa-gen without capabilities).
         chmodSync(w.dir, 0o755);
         chmodSync(w.path('out'), 0o555);
         chmodSync(w.path('out/.maa-gen'), 0o555);
