@@ -1,16 +1,18 @@
 import { realpathSync, statSync } from 'node:fs';
-import { createServer, type IncomingMessage, type ServerResponse } from 'node:http';
+import { createServer, type IncomingMessage, type Server, type ServerResponse } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import path from 'node:path';
 import type { Duplex } from 'node:stream';
 import { fileURLToPath } from 'node:url';
-import { AccessGuard, generateToken, loginPage, tokenProblem, type AccessRefusal } from './access.js';
+import { generateToken, tokenProblem } from './access.js';
 import { createApiRouter } from './api.js';
 import { GenerationService } from './generation.js';
-import { sendError, sendJson, sendText } from './http-util.js';
+import { Gate, isUnder } from './gate.js';
+import { sendError, sendJson } from './http-util.js';
 import { rejectUpgrade, SimProxy } from './proxy.js';
 import { PathRedactor } from './redact.js';
 import { Ros2Environment } from './ros2-environment.js';
+import type { Router } from './router.js';
 import { SimSessions } from './sim-session.js';
 import { StaticApp } from './static.js';
 import { Workspace } from './workspace.js';
@@ -72,6 +74,43 @@ export interface IdeServer {
 
 /** Starts the IDE backend (docs/ide.md): the app, the workspace API, generation, sim sessions and their proxy. */
 export async function startIdeServer(options: IdeServerOptions): Promise<IdeServer> {
+    const settings = checkedSettings(options);
+    const services = createServices(options, settings);
+    // Saves killed before their rename left temp files; nothing else writes them, so once is enough.
+    const orphans = await services.workspace.removeOrphanTemps();
+    if (orphans.length > 0) console.error(`maa-ide: removed ${orphans.length} temp file(s) of interrupted saves: ${orphans.join(', ')}`);
+
+    const gate = new Gate();
+    const server = createServer(requestHandler(gate, services));
+    const upgraded = handleUpgrades(server, gate, services.proxy);
+    server.on('clientError', (_err, socket) => {
+        if (socket.writable) socket.end('HTTP/1.1 400 Bad Request\r\nConnection: close\r\n\r\n');
+        else socket.destroy();
+    });
+    const port = await listen(server, options.port ?? defaults.port, settings.host, (port) =>
+        gate.open(settings.host, port, settings.token),
+    );
+    const shownHost = displayHost(settings.host);
+    return {
+        url: `http://${shownHost}:${port}/`,
+        loginUrl: `http://${shownHost}:${port}/?token=${settings.token}`,
+        token: settings.token,
+        port,
+        workspace: settings.workspaceDir,
+        close: shutdown(server, services, upgraded),
+    };
+}
+
+/** The options every start needs, checked before anything is built. */
+interface Settings {
+    workspaceDir: string;
+    host: string;
+    token: string;
+    idleSeconds: number;
+}
+
+/** The options' workspace, host, token and idle time, each checked (an Error says what is wrong). */
+function checkedSettings(options: IdeServerOptions): Settings {
     const workspaceDir = path.resolve(options.workspace);
     let isDir = false;
     try {
@@ -86,9 +125,24 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
     if (problem) throw new Error(problem);
     const idleSeconds = options.sessionIdleSeconds ?? defaults.sessionIdleSeconds;
     if (!(idleSeconds > 0)) throw new Error(`the session idle time must be a positive number of seconds, not ${idleSeconds}`);
+    return { workspaceDir, host, token, idleSeconds };
+}
+
+/** What answers the requests behind the gate. */
+interface Services {
+    workspace: Workspace;
+    redact: PathRedactor;
+    sims: SimSessions;
+    api: Router;
+    proxy: SimProxy;
+    app: StaticApp;
+}
+
+function createServices(options: IdeServerOptions, { workspaceDir, idleSeconds }: Settings): Services {
     const workspace = new Workspace(workspaceDir);
     const outDir = path.resolve(options.outDir ?? path.join(workspaceDir, '..', '.maa-ide-out'));
     const maaSim = path.resolve(options.maaSim ?? defaults.maaSim);
+    // What error messages and answers must not reveal of this machine's folders.
     const redact = new PathRedactor([
         [workspaceDir, ''],
         [realpathSync(workspaceDir), ''],
@@ -107,129 +161,80 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
     const proxy = new SimProxy(sims);
     const appDir = path.resolve(options.appDir ?? defaults.appDir);
     const app = new StaticApp(appDir, redact.text(appDir));
+    return { workspace, redact, sims, api, proxy, app };
+}
 
-    // Saves killed before their rename left temp files; nothing else writes them, so once is enough.
-    const orphans = await workspace.removeOrphanTemps();
-    if (orphans.length > 0) console.error(`maa-ide: removed ${orphans.length} temp file(s) of interrupted saves: ${orphans.join(', ')}`);
-
-    // Known once the server listens (the port may be 0 until then); no request arrives before.
-    let guard!: AccessGuard;
-
+/** Every request goes through the gate, then to its route; a failure is answered as a (redacted) error. */
+function requestHandler(gate: Gate, services: Services): (req: IncomingMessage, res: ServerResponse) => void {
     const handle = async (req: IncomingMessage, res: ServerResponse): Promise<void> => {
-        const admission = guard.admit(req);
-        if (!admission.ok) {
-            refuse(req, res, admission.refusal, admission.unauthenticated);
-            return;
-        }
-        const { url } = admission;
-        if (admission.via === 'query') {
-            res.setHeader('Set-Cookie', guard.setCookie());
-            if (isPage(req, url.pathname)) {
-                // The token leaves the address bar (and history); the cookie carries it from now on.
-                res.writeHead(302, { Location: withoutToken(url), 'Content-Length': 0, 'Cache-Control': 'no-store' });
-                res.end();
-                return;
-            }
-        }
-        await route(req, res, url);
+        const url = gate.admitRequest(req, res);
+        if (url) await route(services, req, res, url);
     };
-
-    /** Where an admitted request goes: the REST API, the simulator's proxy, or the app's files. */
-    const route = async (req: IncomingMessage, res: ServerResponse, url: URL): Promise<void> => {
-        const pathname = url.pathname;
-        if (pathname.startsWith('/api/sim/')) sims.signOfLife();
-        if (isUnder(pathname, '/api')) await api.dispatch(req, res, pathname, url.searchParams);
-        else if (isUnder(pathname, '/sim')) {
-            if (!proxy.handleRequest(req, res, pathname)) sendJson(res, 404, { error: `unknown route: ${req.method} ${pathname}` });
-        } else await app.handle(req, res, pathname);
+    return (req, res) => {
+        handle(req, res).catch((e: unknown) => sendError(res, e, services.redact, `${req.method} ${req.url?.split('?')[0]}`));
     };
+}
 
-    const server = createServer((req, res) => {
-        handle(req, res).catch((e: unknown) => sendError(res, e, redact, `${req.method} ${req.url?.split('?')[0]}`));
-    });
-    // Upgraded sockets leave the server's bookkeeping, so close() ends them itself.
+/** Where an admitted request goes: the REST API, the simulator's proxy, or the app's files. */
+async function route({ sims, api, proxy, app }: Services, req: IncomingMessage, res: ServerResponse, url: URL): Promise<void> {
+    const pathname = url.pathname;
+    if (pathname.startsWith('/api/sim/')) sims.signOfLife();
+    if (isUnder(pathname, '/api')) await api.dispatch(req, res, pathname, url.searchParams);
+    else if (isUnder(pathname, '/sim')) {
+        if (!proxy.handleRequest(req, res, pathname)) sendJson(res, 404, { error: `unknown route: ${req.method} ${pathname}` });
+    } else await app.handle(req, res, pathname);
+}
+
+/**
+ * WebSocket upgrades go through the gate to the simulator's proxy. Upgraded sockets leave the
+ * server's bookkeeping, so the returned set holds them for the shutdown to end.
+ */
+function handleUpgrades(server: Server, gate: Gate, proxy: SimProxy): Set<Duplex> {
     const upgraded = new Set<Duplex>();
     server.on('upgrade', (req: IncomingMessage, socket: Duplex, head: Buffer) => {
         upgraded.add(socket);
         socket.on('close', () => upgraded.delete(socket));
         socket.on('error', () => socket.destroy());
-        const admission = guard.admit(req);
-        if (!admission.ok) {
-            rejectUpgrade(socket, admission.refusal.status, admission.refusal.message);
-            return;
-        }
-        const { url } = admission;
-        // maa-ide's token is not the simulator's business.
-        req.url = withoutToken(url);
+        const url = gate.admitUpgrade(req, socket);
+        if (!url) return;
         if (!proxy.handleUpgrade(req, socket, head, url.pathname)) rejectUpgrade(socket, 404, `no WebSocket endpoint at ${url.pathname}`);
     });
-    server.on('clientError', (_err, socket) => {
-        if (socket.writable) socket.end('HTTP/1.1 400 Bad Request\r\nConnection: close\r\n\r\n');
-        else socket.destroy();
-    });
+    return upgraded;
+}
 
+/** Listens; `onListening` runs with the real port before any request can arrive. Resolves with that port. */
+async function listen(server: Server, port: number, host: string, onListening: (port: number) => void): Promise<number> {
     await new Promise<void>((resolve, reject) => {
         server.once('error', reject);
-        server.listen(options.port ?? defaults.port, host, () => {
+        server.listen(port, host, () => {
             server.off('error', reject);
-            guard = new AccessGuard(host, (server.address() as AddressInfo).port, token);
+            onListening((server.address() as AddressInfo).port);
             resolve();
         });
     });
-    const port = (server.address() as AddressInfo).port;
-    // A wildcard address is no name a browser may use (the Host check refuses it): print loopback.
-    const shownHost = host === '0.0.0.0' || host === '::' ? '127.0.0.1' : host.includes(':') ? `[${host}]` : host;
+    return (server.address() as AddressInfo).port;
+}
+
+/** A wildcard address is no name a browser may use (the Host check refuses it): print loopback. */
+function displayHost(host: string): string {
+    return host === '0.0.0.0' || host === '::' ? '127.0.0.1' : host.includes(':') ? `[${host}]` : host;
+}
+
+/** `IdeServer.close`: stops the simulation session, then every connection and the listener; later calls share the first one's promise. */
+function shutdown(server: Server, { sims, proxy }: Services, upgraded: Set<Duplex>): () => Promise<void> {
     let closing: Promise<void> | undefined;
-    return {
-        url: `http://${shownHost}:${port}/`,
-        loginUrl: `http://${shownHost}:${port}/?token=${token}`,
-        token,
-        port,
-        workspace: workspaceDir,
-        close() {
-            closing ??= (async () => {
-                await sims.stop().catch(() => undefined);
-                sims.dispose();
-                const closed = new Promise<void>((resolve) => server.close(() => resolve()));
-                server.closeAllConnections();
-                for (const s of upgraded) s.destroy();
-                proxy.close();
-                await closed;
-            })();
-            return closing;
-        },
+    return () => {
+        closing ??= (async () => {
+            await sims.stop().catch(() => undefined);
+            sims.dispose();
+            const closed = new Promise<void>((resolve) => server.close(() => resolve()));
+            server.closeAllConnections();
+            for (const s of upgraded) s.destroy();
+            proxy.close();
+            await closed;
+        })();
+        return closing;
     };
-}
-
-/** The path and query of a URL without its `token` parameter. */
-/** Whether `pathname` is `prefix` or below it. */
-function isUnder(pathname: string, prefix: string): boolean {
-    return pathname === prefix || pathname.startsWith(`${prefix}/`);
-}
-
-/** A page a browser navigates to (not the API or the simulator): gets HTML, and redirects. */
-function isPage(req: IncomingMessage, pathname: string): boolean {
-    return (req.method === 'GET' || req.method === 'HEAD') && !isUnder(pathname, '/api') && !isUnder(pathname, '/sim');
-}
-
-/** Answers a refused request: a page that asks for the token gets the login page, the rest JSON. */
-function refuse(req: IncomingMessage, res: ServerResponse, refusal: AccessRefusal, unauthenticated: boolean): void {
-    if (!unauthenticated) {
-        sendJson(res, refusal.status, { error: refusal.message });
-        return;
-    }
-    res.setHeader('WWW-Authenticate', 'Bearer realm="maa-ide"');
-    const pathname = (req.url ?? '/').split('?')[0] ?? '/';
-    if (isPage(req, pathname) && (req.headers.accept ?? '').includes('text/html'))
-        sendText(res, 401, loginPage(), 'text/html; charset=utf-8');
-    else sendJson(res, refusal.status, { error: refusal.message });
-}
-
-function withoutToken(url: URL): string {
-    const query = new URLSearchParams(url.searchParams);
-    query.delete('token');
-    const rest = query.toString();
-    return `${url.pathname}${rest ? `?${rest}` : ''}`;
 }
 
 /** The default venv is created by its setup script when missing; another one must exist. */

@@ -198,8 +198,33 @@ export class SimSessions {
         return run;
     }
 
+    /** Starts maa-sim for the request (after preparing the ros2 environment) and waits until it is ready. */
     private async spawnSession(request: SimStartRequest): Promise<{ session: string }> {
         const ros2 = request.mode === 'ros2' ? this.ros2 : undefined;
+        const packageDir = this.packageToRun(request, ros2);
+        const { log, push } = boundedLog();
+        const maaSim = ros2 ? await this.prepareRos2(ros2, request, log, push) : this.maaSim;
+        if (request.mode === 'ros2') push(`maa-ide: starting ${maaSim} (ros2 mode)`);
+        const token = randomBytes(32).toString('base64url');
+        const child = spawnMaaSim(maaSim, maaSimArgs(request, packageDir), packageDir, token);
+        let markExited!: () => void;
+        const session: Session = {
+            // A ros2 session keeps the id it was shown with while preparing.
+            id: this.current?.request === request ? this.current.id : randomUUID(),
+            request,
+            child,
+            log,
+            token,
+            clients: 0,
+            exited: new Promise<void>((resolve) => (markExited = resolve)),
+        };
+        this.current = session;
+        const ready = watchUntilReady(session, child, maaSim, push, markExited);
+        return this.whenReady(session, ready);
+    }
+
+    /** The folder maa-sim runs (it holds the mode's package file); an HttpError when it or the simulator is missing. */
+    private packageToRun(request: SimStartRequest, ros2: Ros2Environment | undefined): string {
         if (!ros2 && !existsSync(this.maaSim)) {
             throw new HttpError(
                 500,
@@ -213,95 +238,39 @@ export class SimSessions {
                 `the generated platform ${request.platform} has no ${PACKAGE_FILE[request.mode]}, so it cannot run in ${request.mode} mode`,
             );
         }
-        const log: string[] = [];
-        const push = (line: string): void => {
-            log.push(line);
-            if (log.length > LOG_LINES) log.splice(0, log.length - LOG_LINES);
-        };
-        let maaSim = this.maaSim;
-        const extraArgs: string[] = [];
-        if (ros2) {
-            // The session is visible (status: preparing, with the progress in its log) while the venv is
-            // set up and the interface package built; a stop cancels it.
-            const preparing = new AbortController();
-            const session: Session = { id: randomUUID(), request, log, preparing, token: '', clients: 0 };
-            this.current = session;
-            try {
-                maaSim = await ros2.prepare(request.platformDir, push, preparing.signal);
-            } catch (e) {
-                const message = e instanceof Error ? e.message : String(e);
-                push(`maa-ide: ${message.split('\n')[0]}`);
-                if (e instanceof HttpError && !(e.extra && 'log' in e.extra)) throw withLog(e.status, e.message, log);
-                throw e;
-            } finally {
-                delete session.preparing;
-            }
-        }
-        if (request.mode === 'ros2') extraArgs.push(...ROS2_SUPERVISION);
-        const args = [
-            'run',
-            '--package',
-            packageDir,
-            '--mode',
-            request.mode,
-            '--rosbridge-port',
-            '0',
-            '--viser-port',
-            '0',
-            '--host',
-            '127.0.0.1',
-            '--status-json',
-            ...extraArgs,
-        ];
-        if (request.speed !== undefined) args.push('--speed', String(request.speed));
-        if (request.mode === 'ros2') push(`maa-ide: starting ${maaSim} (ros2 mode)`);
-        const token = randomBytes(32).toString('base64url');
-        const env: NodeJS.ProcessEnv = { ...process.env, PYTHONUNBUFFERED: '1', MAA_SIM_TOKEN: token };
-        delete env['MAA_IDE_TOKEN']; // the simulation (it runs the user's components) needs only its own
-        // detached: a process group of its own, so a stop reaches everything maa-sim started.
-        const child = spawn(maaSim, args, { cwd: packageDir, stdio: ['ignore', 'pipe', 'pipe'], env, detached: true });
-        let markExited!: () => void;
-        const session: Session = {
-            id: this.current?.request === request ? this.current.id : randomUUID(),
-            request,
-            child,
-            log,
-            token,
-            clients: 0,
-            exited: new Promise<void>((resolve) => (markExited = resolve)),
-        };
+        return packageDir;
+    }
+
+    /**
+     * Sets up the ros2 venv and builds the interface package; resolves with the venv's maa-sim.
+     * The session is visible meanwhile (status: preparing, with the progress in its log); a stop cancels it.
+     */
+    private async prepareRos2(
+        ros2: Ros2Environment,
+        request: SimStartRequest,
+        log: string[],
+        push: (line: string) => void,
+    ): Promise<string> {
+        const preparing = new AbortController();
+        const session: Session = { id: randomUUID(), request, log, preparing, token: '', clients: 0 };
         this.current = session;
-        const ready = new Promise<SimEndpoints>((resolve, reject) => {
-            createInterface({ input: child.stdout! }).on('line', (line) => {
-                const endpoints = parseReadyLine(line);
-                if (endpoints) resolve(endpoints);
-                push(line);
-            });
-            createInterface({ input: child.stderr! }).on('line', push);
-            // 'close' comes after the last output line was read; 'exit' is the fallback should a
-            // grandchild keep the pipes open.
-            let finished = false;
-            const finish = (code: number | null, signal: NodeJS.Signals | null): void => {
-                if (finished) return;
-                finished = true;
-                session.exitCode = code ?? (signal ? null : -1);
-                clearTimeout(session.idleTimer);
-                // What maa-sim left in its group (it crashed, or was killed) goes with it.
-                if (child.pid !== undefined && groupAlive(child.pid)) signalGroup(child.pid, 'SIGKILL');
-                const how = signal ? `signal ${signal}` : `exit code ${code}`;
-                push(`maa-ide: maa-sim ended (${how})`);
-                markExited();
-                reject(withLog(500, `the simulator exited before it was ready (${how})`, session.log));
-            };
-            child.on('close', finish);
-            child.on('error', (e) => {
-                // Failing to spawn, or (rarely) to signal the process.
-                push(`maa-ide: maa-sim process error: ${e.message}`);
-                reject(new HttpError(500, `cannot start the simulator ${maaSim}: ${e.message}`));
-                if (child.pid === undefined) finish(null, null); // never started: no 'exit' will come
-            });
-            child.on('exit', (code, signal) => setTimeout(() => finish(code, signal), 2_000).unref());
-        });
+        try {
+            return await ros2.prepare(request.platformDir, push, preparing.signal);
+        } catch (e) {
+            const message = e instanceof Error ? e.message : String(e);
+            push(`maa-ide: ${message.split('\n')[0]}`);
+            if (e instanceof HttpError && !(e.extra && 'log' in e.extra)) throw withLog(e.status, e.message, log);
+            throw e;
+        } finally {
+            delete session.preparing;
+        }
+    }
+
+    /**
+     * Waits for maa-sim's ready line (at most readyTimeoutMs) and for its rosbridge to accept
+     * connections; then the idle time starts. A session that does not get there is stopped.
+     */
+    private async whenReady(session: Session, ready: Promise<SimEndpoints>): Promise<{ session: string }> {
         // The race below may be decided by the timeout; a later rejection must not be unhandled.
         ready.catch(() => undefined);
         let timer: NodeJS.Timeout | undefined;
@@ -345,6 +314,102 @@ export class SimSessions {
         clearTimeout(killed);
         for (const g of groups) if (groupAlive(g)) signalGroup(g, 'SIGKILL');
     }
+}
+
+/** A session's log, which keeps its last LOG_LINES lines, and the function that adds one. */
+function boundedLog(): { log: string[]; push: (line: string) => void } {
+    const log: string[] = [];
+    const push = (line: string): void => {
+        log.push(line);
+        if (log.length > LOG_LINES) log.splice(0, log.length - LOG_LINES);
+    };
+    return { log, push };
+}
+
+/** `maa-sim run` for the package: ports chosen by maa-sim, announced in its `--status-json` ready line. */
+function maaSimArgs(request: SimStartRequest, packageDir: string): string[] {
+    const args = [
+        'run',
+        '--package',
+        packageDir,
+        '--mode',
+        request.mode,
+        '--rosbridge-port',
+        '0',
+        '--viser-port',
+        '0',
+        '--host',
+        '127.0.0.1',
+        '--status-json',
+        ...(request.mode === 'ros2' ? ROS2_SUPERVISION : []),
+    ];
+    if (request.speed !== undefined) args.push('--speed', String(request.speed));
+    return args;
+}
+
+/** Spawns maa-sim as the leader of a process group of its own, with its own token and not maa-ide's. */
+function spawnMaaSim(maaSim: string, args: string[], packageDir: string, token: string): ChildProcess {
+    const env: NodeJS.ProcessEnv = { ...process.env, PYTHONUNBUFFERED: '1', MAA_SIM_TOKEN: token };
+    delete env['MAA_IDE_TOKEN']; // the simulation (it runs the user's components) needs only its own
+    // detached: a process group of its own, so a stop reaches everything maa-sim started.
+    return spawn(maaSim, args, { cwd: packageDir, stdio: ['ignore', 'pipe', 'pipe'], env, detached: true });
+}
+
+/**
+ * Pumps maa-sim's output into the session log and watches it end. Resolves with the endpoints
+ * of its ready line; rejects when it ends (or cannot be spawned) before that. Its end is
+ * recorded in the session whenever it comes (`exitCode`, `exited`).
+ */
+function watchUntilReady(
+    session: Session,
+    child: ChildProcess,
+    maaSim: string,
+    push: (line: string) => void,
+    markExited: () => void,
+): Promise<SimEndpoints> {
+    return new Promise<SimEndpoints>((resolve, reject) => {
+        createInterface({ input: child.stdout! }).on('line', (line) => {
+            const endpoints = parseReadyLine(line);
+            if (endpoints) resolve(endpoints);
+            push(line);
+        });
+        createInterface({ input: child.stderr! }).on('line', push);
+        // 'close' comes after the last output line was read; 'exit' is the fallback should a
+        // grandchild keep the pipes open.
+        let finished = false;
+        const finish = (code: number | null, signal: NodeJS.Signals | null): void => {
+            if (finished) return;
+            finished = true;
+            const how = recordEnd(session, child, code, signal, push);
+            markExited();
+            reject(withLog(500, `the simulator exited before it was ready (${how})`, session.log));
+        };
+        child.on('close', finish);
+        child.on('error', (e) => {
+            // Failing to spawn, or (rarely) to signal the process.
+            push(`maa-ide: maa-sim process error: ${e.message}`);
+            reject(new HttpError(500, `cannot start the simulator ${maaSim}: ${e.message}`));
+            if (child.pid === undefined) finish(null, null); // never started: no 'exit' will come
+        });
+        child.on('exit', (code, signal) => setTimeout(() => finish(code, signal), 2_000).unref());
+    });
+}
+
+/** Records how maa-sim ended in its session and its log; returns that as words ("exit code 1"). */
+function recordEnd(
+    session: Session,
+    child: ChildProcess,
+    code: number | null,
+    signal: NodeJS.Signals | null,
+    push: (line: string) => void,
+): string {
+    session.exitCode = code ?? (signal ? null : -1);
+    clearTimeout(session.idleTimer);
+    // What maa-sim left in its group (it crashed, or was killed) goes with it.
+    if (child.pid !== undefined && groupAlive(child.pid)) signalGroup(child.pid, 'SIGKILL');
+    const how = signal ? `signal ${signal}` : `exit code ${code}`;
+    push(`maa-ide: maa-sim ended (${how})`);
+    return how;
 }
 
 /** An error whose message ends with the log tail; the answer also carries the tail as `log`. */
