@@ -54,7 +54,10 @@ export function modulePath(packageName: string, moduleName: string): { module: s
     return { module: [...parts, moduleName].join('.'), file: [...parts, `${moduleName}.py`].join('/') };
 }
 
-/** Keeps the imports of a generated module, sorted. */
+/**
+ * Keeps the imports of a generated module, sorted; the name '' stands for `import module` (as in
+ * ros2's PyImports, which the mode managers hand to this builder).
+ */
 export class Imports {
     private readonly from = new Map<string, Set<string>>();
     add(module: string, name: string): void {
@@ -65,17 +68,24 @@ export class Imports {
     lines(): string[] {
         // isort sections: standard library, then the build's own packages (model packages and
         // run-time environments; ruff run inside the generated folder sees both as first-party).
-        const groups: string[][] = [[], []];
+        // Within a section, `import m` lines precede the `from m import ...` lines (isort's default).
+        const groups: Array<{ straight: string[]; from: string[] }> = [
+            { straight: [], from: [] },
+            { straight: [], from: [] },
+        ];
         const modules = [...this.from.keys()].sort((a, b) => cmp(a.toLowerCase(), b.toLowerCase()));
         for (const module of modules) {
             const names = [...this.from.get(module)!].sort();
-            const top = module.split('.')[0];
-            const group = STDLIB.has(top) ? 0 : 1;
-            for (const n of names.filter((x) => x.includes(' as '))) groups[group].push(...importLine(module, [n]));
-            const plain = names.filter((n) => !n.includes(' as '));
-            if (plain.length) groups[group].push(...importLine(module, plain));
+            const group = groups[STDLIB.has(module.split('.')[0]) ? 0 : 1];
+            if (names.includes('')) group.straight.push(`import ${module}`);
+            for (const n of names.filter((x) => x.includes(' as '))) group.from.push(...importLine(module, [n]));
+            const plain = names.filter((n) => n !== '' && !n.includes(' as '));
+            if (plain.length) group.from.push(...importLine(module, plain));
         }
-        return groups.filter((g) => g.length).flatMap((g, i) => (i === 0 ? g : ['', ...g]));
+        return groups
+            .map((g) => [...g.straight, ...g.from])
+            .filter((g) => g.length)
+            .flatMap((g, i) => (i === 0 ? g : ['', ...g]));
     }
 }
 
