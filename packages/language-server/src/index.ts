@@ -4,3 +4,4 @@ export { CheckInputError, type CheckDiagnostic, type CheckOptions, type RootSpec
 export { familyDiagnostics, renderDiagnosticsMarkdown } from './diagnostic-catalog/render-diagnostics.js';
 export * from './diagram/index.js';
 export { LANGUAGE_FACTS, type LanguageFact, type LanguageFacts, type LanguageScopes } from './generated/language-facts.js';
+export { loadDiagramWorkspace, type DiagramWorkspace } from './diagram-workspace.js';

@@ -10,3 +10,12 @@ export * from './layout.js';
 export { buildComponentDiagram, behaviorKind, allElements } from './cc-diagram.js';
 export { buildAutomatonDiagram, transitionLabel } from './automaton-diagram.js';
 export { atomicSourcePath } from './source-ports.js';
+export {
+    standaloneDiagram,
+    expandedToDepth,
+    workspaceComponents,
+    type StandaloneDiagramRequest,
+    type WorkspaceComponent,
+} from './standalone.js';
+export { renderDiagramSvg, DEFAULT_ID_PREFIX, type SvgRenderOptions } from './svg/render.js';
+export { IDE_DIAGRAM_CSS, standaloneStylesheet } from './svg/stylesheet.js';
