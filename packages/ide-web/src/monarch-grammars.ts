@@ -4,6 +4,7 @@
  * language facts (see languages.ts), plain `.stream` word lists and Python.
  */
 import type * as monaco from '@codingame/monaco-vscode-editor-api';
+import { PYTHON_KEYWORDS, PYTHON_SOFT_KEYWORDS } from '@maa/language-adl/python-keywords';
 import type { LanguageFact } from '@maa/language-server/language-facts';
 import { highlightWords, LANGUAGE_FACT_BY_ID, TYPES } from './language-table.js';
 
@@ -121,48 +122,19 @@ export function simpleGrammar(keywords: string[]): monaco.languages.IMonarchLang
     } as monaco.languages.IMonarchLanguage;
 }
 
+/**
+ * Python's keywords as the highlighting shows them: language-adl's lists (the one definition),
+ * less the soft keyword `type`, which generated code reads far more often as the builtin.
+ */
+export const PYTHON_HIGHLIGHTED_KEYWORDS: readonly string[] = [
+    ...PYTHON_KEYWORDS,
+    ...PYTHON_SOFT_KEYWORDS.filter((word) => word !== 'type'),
+];
+
 export function pythonGrammar(): monaco.languages.IMonarchLanguage {
     return {
         defaultToken: '',
-        keywords: [
-            'False',
-            'None',
-            'True',
-            'and',
-            'as',
-            'assert',
-            'async',
-            'await',
-            'break',
-            'class',
-            'continue',
-            'def',
-            'del',
-            'elif',
-            'else',
-            'except',
-            'finally',
-            'for',
-            'from',
-            'global',
-            'if',
-            'import',
-            'in',
-            'is',
-            'lambda',
-            'nonlocal',
-            'not',
-            'or',
-            'pass',
-            'raise',
-            'return',
-            'try',
-            'while',
-            'with',
-            'yield',
-            'match',
-            'case',
-        ],
+        keywords: PYTHON_HIGHLIGHTED_KEYWORDS,
         builtins: ['self', 'print', 'len', 'range', 'int', 'float', 'str', 'bool', 'dict', 'list', 'tuple', 'set', 'super', 'isinstance'],
         tokenizer: {
             root: [

@@ -4,6 +4,7 @@ import { existsSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { describe, expect, test } from 'vitest';
+import { PYTHON_KEYWORDS, PYTHON_SOFT_KEYWORDS } from '@maa/language-adl/python-keywords';
 import { LANGUAGE_FACTS } from '@maa/language-server/language-facts';
 import {
     FAMILY_LANGUAGES,
@@ -109,6 +110,17 @@ describe('Monarch grammars from the language facts', () => {
             for (const e of embedded)
                 expect(grammar[`keywords_${e}`], `${lang.id} > ${e}`).toEqual(highlightWords(LANGUAGE_FACT_BY_ID.get(e)!).keywords);
         }
+    });
+
+    test("the Python grammar compiles and highlights language-adl's Python keywords, hard and soft", async () => {
+        const { pythonGrammar } = await import('../src/monarch-grammars.js');
+        const grammar = pythonGrammar() as unknown as { keywords: string[] };
+        await compile('python', grammar);
+        expect(grammar.keywords).toEqual(expect.arrayContaining([...PYTHON_KEYWORDS, 'match', 'case']));
+        expect(PYTHON_SOFT_KEYWORDS).toContain('type');
+        // `type` is the builtin in generated code far more often than the soft keyword.
+        expect(grammar.keywords).not.toContain('type');
+        expect(grammar.keywords).toHaveLength(PYTHON_KEYWORDS.length + PYTHON_SOFT_KEYWORDS.length - 1);
     });
 
     test("the .arc grammar opens an automaton block at the behavior language's block keyword", async () => {

@@ -1,5 +1,6 @@
 import { type URI, UriUtils } from 'langium';
 import type { ModelRoots } from '../model-roots.js';
+import { PYTHON_KEYWORDS } from '../python-keywords.js';
 
 export type NamedKind = 'component' | 'port' | 'field' | 'parameter' | 'subcomponent' | 'typeParameter' | 'state';
 export const NAMED_KINDS: readonly NamedKind[] = ['component', 'port', 'field', 'parameter', 'subcomponent', 'typeParameter', 'state'];
@@ -63,50 +64,9 @@ const JAVA = [
     'null',
 ];
 
-/**
- * Python's keywords: names the Python generators cannot emit as identifiers (the one list; the
- * generators rename them, the reserved-name check reports them).
- */
-export const PYTHON_KEYWORDS: readonly string[] = [
-    'False',
-    'None',
-    'True',
-    'and',
-    'as',
-    'assert',
-    'async',
-    'await',
-    'break',
-    'class',
-    'continue',
-    'def',
-    'del',
-    'elif',
-    'else',
-    'except',
-    'finally',
-    'for',
-    'from',
-    'global',
-    'if',
-    'import',
-    'in',
-    'is',
-    'lambda',
-    'nonlocal',
-    'not',
-    'or',
-    'pass',
-    'raise',
-    'return',
-    'try',
-    'while',
-    'with',
-    'yield',
-];
-
-/** Python's soft keywords: valid identifiers, but the generators rename them too (a model may use `type`). */
-export const PYTHON_SOFT_KEYWORDS: readonly string[] = ['match', 'case', 'type'];
+// Python's keyword lists live in a file of their own (no imports), so the browser IDE can read
+// them through the `@maa/language-adl/python-keywords` subpath without loading Langium.
+export { PYTHON_KEYWORDS, PYTHON_SOFT_KEYWORDS } from '../python-keywords.js';
 
 /** Project configuration (`maa.json` at a model root) as far as the checks read it. */
 export interface RootConfiguration {
