@@ -65,6 +65,10 @@ const BINARY: Record<string, string> = {
     '>>': '>>',
 };
 
+function isNullLiteral(n: Node | undefined): boolean {
+    return n?.$type === 'NullLiteral';
+}
+
 function stripSuffix(text: string): string {
     return text.replace(/[lLfFdD]$/, '');
 }
@@ -148,6 +152,10 @@ export class PythonTranslator {
                 if (e.op === '+' && (this.isStringy(e.left) || this.isStringy(e.right))) {
                     // chars are their codes at run time; in a string they are characters again
                     return `jconcat(${isChar(e.left) ? `chr(${l})` : l}, ${isChar(e.right) ? `chr(${r})` : r})`;
+                }
+                // a comparison with null tests identity, as in Java (and ruff's E711 asks for `is`)
+                if ((e.op === '==' || e.op === '!=') && (isNullLiteral(e.left) || isNullLiteral(e.right))) {
+                    return `(${l} ${e.op === '==' ? 'is' : 'is not'} ${r})`;
                 }
                 const op = BINARY[e.op as string];
                 if (!op) throw new GenerationError(`operator '${e.op}' is not supported by the Python generators`, e);

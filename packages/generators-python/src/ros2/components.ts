@@ -122,12 +122,29 @@ function renderModeManager(ctx: ComponentGenerationContext, app: Ros2Application
         instance: mg.instancePath,
         qualifiedName: c.qualifiedName,
         imports: mg.imports.into(imports).lines(),
-        relays: mg.relays.map((r) => ({ ...r, modes: pyTuple(r.modes) })),
+        inputLines: mg.inputs.flatMap((p) =>
+            tupleItem('InPort', [JSON.stringify(p.port), JSON.stringify(p.topic), p.codec, `sampled=${p.sampled ? 'True' : 'False'}`]),
+        ),
+        relayLines: mg.relays.flatMap((r) =>
+            tupleItem('Relay', [JSON.stringify(r.source), JSON.stringify(r.target), r.codec, pyTuple(r.modes)]),
+        ),
         ...parameterViews(mg),
         body: body.map((l) => `    ${l}`),
         initial: c.modes!.initial,
         timing: c.modes!.timing,
     });
+}
+
+/** The line length the generated ROS 2 packages are checked with (test/ros2/ruff-generated.toml). */
+const LINE_LENGTH = 120;
+
+/**
+ * One item of a tuple of calls, `    Call(a, b),`; longer than a line, one argument a line (as the
+ * node files write theirs), since topic names and message modules grow with the model's names.
+ */
+function tupleItem(call: string, args: readonly string[]): string[] {
+    const line = `    ${call}(${args.join(', ')}),`;
+    return line.length <= LINE_LENGTH ? [line] : [`    ${call}(`, ...args.map((a) => `        ${a},`), '    ),'];
 }
 
 /** `__init__.py` of every Python package of the ament package (behavior generators wrote their modules); returns the packages. */
