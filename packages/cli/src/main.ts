@@ -1,5 +1,6 @@
 import { Command, CommanderError } from 'commander';
 import { checkCommand } from './commands/check.js';
+import { diagramCommand } from './commands/diagram.js';
 import { generateCommand } from './commands/generate.js';
 import { generatorsCommand } from './commands/generators.js';
 import { testCommand } from './commands/test.js';
@@ -8,6 +9,7 @@ import { processIo, type CliIo } from './io.js';
 import { cliVersion } from './version.js';
 
 export { runCheck, type CheckOptions, type CheckFormat } from './commands/check.js';
+export { runDiagram, type DiagramCommandOptions } from './commands/diagram.js';
 export { runGenerate, type GenerateCommandOptions, type GenerateFormat } from './commands/generate.js';
 export { runGenerators, type GeneratorsCommandOptions } from './commands/generators.js';
 export { runTest, type TestCommandOptions } from './commands/test.js';
@@ -16,7 +18,9 @@ export type { CliIo } from './io.js';
 
 export function createProgram(io: CliIo, setExitCode: (code: ExitCode) => void): Command {
     const program = new Command('maa-gen')
-        .description('MontiArcAutomaton for the web: check models, generate code for a platform, list generators, run stream tests')
+        .description(
+            'MontiArcAutomaton for the web: check models, generate code for a platform, list generators, run stream tests, draw diagrams',
+        )
         .version(cliVersion(), '-V, --version', 'print the version')
         .helpOption('-h, --help', 'show help')
         .helpCommand('help [command]', 'show help for a command')
@@ -27,6 +31,7 @@ export function createProgram(io: CliIo, setExitCode: (code: ExitCode) => void):
     program.addCommand(generateCommand(io, setExitCode));
     program.addCommand(generatorsCommand(io, setExitCode));
     program.addCommand(testCommand(io, setExitCode));
+    program.addCommand(diagramCommand(io, setExitCode));
     // Subcommands added with addCommand do not inherit these settings.
     for (const sub of program.commands) {
         sub.helpOption('-h, --help', 'show help')
