@@ -277,6 +277,42 @@ describe('maa-gen generate', () => {
         expect(platform.stderr).toBe("maa-gen: error: application 'Demo' has no platform 'gamma' (platforms: alpha, beta)\n");
     });
 
+    it('the JSON report is one object on stdout, two-space indented, with the documented fields in order', async () => {
+        const w = workspace();
+        const r = await runCli(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out', '--format', 'json'], w.dir);
+        expect(r.code).toBe(0);
+        expect(r.stderr).toBe('');
+        const report = JSON.parse(r.stdout) as {
+            diagnostics: unknown[];
+            platforms: Array<Record<string, unknown> & { files: string[]; written: string[] }>;
+            summary: unknown;
+        };
+        expect(r.stdout).toBe(`${JSON.stringify(report, null, 2)}\n`);
+        expect(Object.keys(report)).toEqual(['diagnostics', 'platforms', 'summary']);
+        expect(report.diagnostics).toEqual([]);
+        expect(report.platforms.map((p) => Object.keys(p))).toEqual([
+            ['platform', 'outDir', 'generators', 'files', 'written', 'unchanged', 'kept', 'removed', 'keptStale'],
+        ]);
+        expect(report.platforms[0]!.platform).toBe('alpha');
+        expect(report.platforms[0]!.files).toHaveLength(6);
+        expect(report.platforms[0]!.written).toHaveLength(6);
+        expect(JSON.stringify(report.summary)).toBe('{"ok":true,"errors":0,"warnings":0,"files":6,"platforms":1}');
+    });
+
+    it('a folder as the application or a missing --root folder is a usage problem (exit 2)', async () => {
+        const w = workspace();
+        const folder = await runCli(['generate', 'models'], w.dir);
+        expect(folder.code).toBe(2);
+        expect(folder.stderr).toBe('maa-gen: error: not a file: models\n');
+        const root = await runCli(['generate', 'models/App.arcapp', '--root', 'nowhere'], w.dir);
+        expect(root.code).toBe(2);
+        expect(root.stderr).toBe('maa-gen: error: model root not found: nowhere\n');
+        const fileRoot = await runCli(['generate', 'models/App.arcapp', '--root', 'models/App.arcapp'], w.dir);
+        expect(fileRoot.code).toBe(2);
+        expect(fileRoot.stderr).toBe('maa-gen: error: model root not found: models/App.arcapp\n');
+        expect(existsSync(w.path('models/generated'))).toBe(false);
+    });
+
     it('an output that cannot be written exits 2, names the folder and changes nothing', async () => {
         const w = workspace();
         expect((await runCli(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out'], w.dir)).code).toBe(0);

@@ -50,6 +50,47 @@ describe('app checks', () => {
         ]);
     });
 
+    test('the role and compatibility checks of a platform report each problem once, in order, with its message', async () => {
+        const files = entry('app/rte-mismatch').valid.files;
+        const generators = [
+            'py.Components',
+            'py.TracingComponents',
+            'py.Components',
+            'py.DataTypes',
+            'py.Dataclasses',
+            'py.Automata',
+            'py.LegacyAutomata',
+            'java.Automata',
+        ];
+        const appText = [
+            'application App for robot.Robot {',
+            '  platform p {',
+            ...generators.map((g) => `    ${g};`),
+            '  }',
+            '  platform q {',
+            '    py.DataTypes;',
+            '  }',
+            '  platform r {',
+            '    py.Components;',
+            '  }',
+            '}',
+        ].join('\n');
+        const found = await validate({ ...files, 'App.arcapp': appText });
+        const behaviors = "('py.Automata', 'py.LegacyAutomata', 'java.Automata')";
+        expect(found.map((f) => `${f.severity} ${f.code}@${f.text}: ${f.message}`)).toEqual([
+            "warning app/repeated-generator@py.Components: Generator 'py.Components' is listed more than once in platform 'p'.",
+            "error app/duplicate-component-generator@py.TracingComponents: Platform 'p' has more than one component generator ('py.Components', 'py.TracingComponents'); keep exactly one.",
+            "error app/duplicate-datatype-generator@py.Dataclasses: Platform 'p' has more than one data type generator ('py.DataTypes', 'py.Dataclasses'); keep exactly one.",
+            `error app/duplicate-behavior-generator@py.LegacyAutomata: Platform 'p' has more than one behavior generator for 'automaton' ${behaviors}; keep exactly one.`,
+            `error app/duplicate-behavior-generator@java.Automata: Platform 'p' has more than one behavior generator for 'automaton' ${behaviors}; keep exactly one.`,
+            "error app/gpl-mismatch@java.Automata: Generator 'java.Automata' produces java, but 'py.Components' produces python: all generators of platform 'p' must produce the same language.",
+            "error app/rte-mismatch@py.LegacyAutomata: Behavior generator 'py.LegacyAutomata' writes against the run-time environment 'legacy-rte', but component generator 'py.Components' wraps 'py-rte'.",
+            "error app/missing-component-generator@q: Platform 'q' has no component generator: add one (e.g. 'py.Components').",
+            "error app/missing-datatype-generator@r: Platform 'r' has no data type generator: add one (e.g. 'py.DataTypes').",
+            "error app/uncovered-behavior-language@r: Platform 'r' has no generator for the behavior language 'automaton' (used by robot.Robot): add a behavior generator for 'automaton' (installed: 'java.Automata', 'py.Automata', 'py.FlatAutomata', 'py.LegacyAutomata').",
+        ]);
+    });
+
     test('every prefix of a configuration is checked without a failing check', async () => {
         const files = entry('app/generator-rule-violated').invalid.files;
         const text = files['App.arcapp']!;

@@ -27,6 +27,16 @@ function installationDir(): string {
     return path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 }
 
+/** The outcome of @maa/generator-core's generate (a type only: the module is loaded on demand). */
+type GenerateResult = Awaited<ReturnType<typeof import('@maa/generator-core/node').generate>>;
+
+/** Where generation reads and writes, resolved against the current folder. */
+interface GenerateInputs {
+    readonly appFile: string;
+    readonly modelRoot: string;
+    readonly outDir: string;
+}
+
 /**
  * `maa-gen generate APP.arcapp [--platform P]... [--out DIR] [--root DIR]`: generates code for
  * the platforms of an application configuration. Exit 0 when generated (warnings allowed),
@@ -34,6 +44,17 @@ function installationDir(): string {
  * then: the diagnostic `gen/write-failed` names the path); usage problems throw.
  */
 export async function runGenerate(appArg: string, options: GenerateCommandOptions, io: CliIo): Promise<ExitCode> {
+    const inputs = resolveInputs(appArg, options, io);
+    const json = options.format === 'json';
+    const result = await runGenerator(inputs, options.platform, json, io);
+    const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
+    if (json) reportJson(result, diagnostics, io);
+    else reportText(result, diagnostics, io);
+    return exitCodeOf(result.ok, diagnostics);
+}
+
+/** The application file, model root and output folder of the command line; usage problems throw. */
+function resolveInputs(appArg: string, options: GenerateCommandOptions, io: CliIo): GenerateInputs {
     const appFile = path.resolve(io.cwd, appArg);
     let isFile = false;
     try {
@@ -43,18 +64,30 @@ export async function runGenerate(appArg: string, options: GenerateCommandOption
     }
     if (!isFile) throw new CliError(`not a file: ${appArg}`);
     if (path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
-    const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
-    if (options.root) {
-        let dir = false;
-        try {
-            dir = statSync(root).isDirectory();
-        } catch {
-            dir = false;
-        }
-        if (!dir) throw new CliError(`model root not found: ${options.root}`);
-    }
+    const modelRoot = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
+    if (options.root && !isDirectory(modelRoot)) throw new CliError(`model root not found: ${options.root}`);
     const outDir = path.resolve(io.cwd, options.out ?? path.join(path.dirname(appFile), 'generated'));
-    const json = options.format === 'json';
+    return { appFile, modelRoot, outDir };
+}
+
+function isDirectory(p: string): boolean {
+    try {
+        return statSync(p).isDirectory();
+    } catch {
+        return false;
+    }
+}
+
+/**
+ * Runs the generator core with progress on stderr; the text report (not JSON) also gets one
+ * line per generator there as it finishes. An input problem the core reports is a usage error.
+ */
+async function runGenerator(
+    { appFile, modelRoot, outDir }: GenerateInputs,
+    platforms: string[] | undefined,
+    json: boolean,
+    io: CliIo,
+): Promise<GenerateResult> {
     const progress = createProgress(io);
     // Per-generator lines are part of the text report (stderr), not just progress.
     const report = (line: string): void => {
@@ -62,8 +95,6 @@ export async function runGenerate(appArg: string, options: GenerateCommandOption
         progress?.done();
         io.err(`${line}\n`);
     };
-
-    let result: Awaited<ReturnType<typeof import('@maa/generator-core/node').generate>>;
     try {
         progress?.update('loading the language services');
         // Loaded on demand, so that --help and usage errors stay fast.
@@ -73,11 +104,11 @@ export async function runGenerate(appArg: string, options: GenerateCommandOption
             import('langium/node'),
         ]);
         try {
-            result = await generate({
+            return await generate({
                 services: createMaaServices(NodeFileSystem),
                 appFile,
-                modelRoot: root,
-                platforms: options.platform,
+                modelRoot,
+                platforms,
                 outDir,
                 discoveryRoots: [installationDir()],
                 displayPath: (p) => displayPath(p, io.cwd),
@@ -93,50 +124,60 @@ export async function runGenerate(appArg: string, options: GenerateCommandOption
     } finally {
         progress?.done();
     }
+}
 
-    const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
-    const errors = diagnostics.filter((d) => d.severity === 'error').length;
-    const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
-    const files = result.platforms.reduce((n, p) => n + p.files.length, 0);
-    if (json) {
-        io.out(
-            `${JSON.stringify(
-                {
-                    diagnostics: diagnostics.map(jsonDiagnostic),
-                    platforms: result.platforms.map((p) => ({
-                        platform: p.platform,
-                        outDir: p.outDir,
-                        generators: p.generators,
-                        files: p.files,
-                        written: p.written,
-                        unchanged: p.unchanged,
-                        kept: p.kept,
-                        removed: p.removed,
-                        keptStale: p.keptStale,
-                    })),
-                    summary: { ok: result.ok, errors, warnings, files, platforms: result.platforms.length },
-                },
-                null,
-                2,
-            )}\n`,
-        );
-    } else {
-        const color = io.stdoutIsTTY && !io.env['NO_COLOR'];
-        io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color }));
-        for (const p of result.platforms) {
-            const parts = [`${p.written.length} written`, `${p.unchanged.length} unchanged`];
-            if (p.kept.length > 0) parts.push(`${p.kept.length} user file${p.kept.length === 1 ? '' : 's'} kept`);
-            if (p.removed.length > 0) parts.push(`${p.removed.length} stale removed`);
-            io.err(`${p.platform}: ${plural(p.files.length, 'file')} in ${displayPath(p.outDir, io.cwd)} (${parts.join(', ')})\n`);
-        }
-        const counts = `${plural(errors, 'error')}, ${plural(warnings, 'warning')}`;
-        io.err(
-            result.ok
-                ? `${counts}; generated ${plural(files, 'file')} for ${plural(result.platforms.length, 'platform')}\n`
-                : `${counts}; nothing was generated\n`,
-        );
+/** The numbers of the summary: the JSON `summary` and the text report's last line. */
+function countsOf(result: GenerateResult, diagnostics: readonly CheckDiagnostic[]): { errors: number; warnings: number; files: number } {
+    return {
+        errors: diagnostics.filter((d) => d.severity === 'error').length,
+        warnings: diagnostics.filter((d) => d.severity === 'warning').length,
+        files: result.platforms.reduce((n, p) => n + p.files.length, 0),
+    };
+}
+
+/** `--format json`: exactly one object on stdout (docs/cli.md documents its fields). */
+function reportJson(result: GenerateResult, diagnostics: readonly CheckDiagnostic[], io: CliIo): void {
+    const { errors, warnings, files } = countsOf(result, diagnostics);
+    io.out(
+        `${JSON.stringify(
+            {
+                diagnostics: diagnostics.map(jsonDiagnostic),
+                platforms: result.platforms.map((p) => ({
+                    platform: p.platform,
+                    outDir: p.outDir,
+                    generators: p.generators,
+                    files: p.files,
+                    written: p.written,
+                    unchanged: p.unchanged,
+                    kept: p.kept,
+                    removed: p.removed,
+                    keptStale: p.keptStale,
+                })),
+                summary: { ok: result.ok, errors, warnings, files, platforms: result.platforms.length },
+            },
+            null,
+            2,
+        )}\n`,
+    );
+}
+
+/** `--format text`: the diagnostics on stdout, a line per platform and the summary on stderr. */
+function reportText(result: GenerateResult, diagnostics: readonly CheckDiagnostic[], io: CliIo): void {
+    const { errors, warnings, files } = countsOf(result, diagnostics);
+    const color = io.stdoutIsTTY && !io.env['NO_COLOR'];
+    io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color }));
+    for (const p of result.platforms) {
+        const parts = [`${p.written.length} written`, `${p.unchanged.length} unchanged`];
+        if (p.kept.length > 0) parts.push(`${p.kept.length} user file${p.kept.length === 1 ? '' : 's'} kept`);
+        if (p.removed.length > 0) parts.push(`${p.removed.length} stale removed`);
+        io.err(`${p.platform}: ${plural(p.files.length, 'file')} in ${displayPath(p.outDir, io.cwd)} (${parts.join(', ')})\n`);
     }
-    return exitCodeOf(result.ok, diagnostics);
+    const counts = `${plural(errors, 'error')}, ${plural(warnings, 'warning')}`;
+    io.err(
+        result.ok
+            ? `${counts}; generated ${plural(files, 'file')} for ${plural(result.platforms.length, 'platform')}\n`
+            : `${counts}; nothing was generated\n`,
+    );
 }
 
 /** 0 generated; 2 when the output could not be written (an I/O problem, docs/cli.md); 1 for other errors. */

@@ -125,6 +125,27 @@ export function checkApplication(app: Application, registry: GeneratorRegistry, 
     return findings;
 }
 
+/** A generator as a platform lists it: the reference in the `.arcapp` file and what it resolved to. */
+type ListedGenerator = PlatformSelection['references'][number];
+
+/** Records a finding; its severity is 'error' unless given. */
+type Report = (finding: Omit<AppFinding, 'severity'> & { severity?: 'error' | 'warning' }) => void;
+
+/** What the checks of one platform share. */
+interface PlatformContext {
+    readonly platform: AppPlatform;
+    readonly registry: GeneratorRegistry;
+    readonly selection: PlatformSelection;
+    /** `platform 'P'`, as the messages name it. */
+    readonly where: string;
+    /**
+     * Every listed generator is known. An unknown one (reported by linking) may be the one that
+     * fills a role or covers a language: no follow-up findings about missing ones then.
+     */
+    readonly complete: boolean;
+}
+
+/** The checks of one platform, in the order their findings are reported. */
 function checkPlatform(
     platform: AppPlatform,
     registry: GeneratorRegistry,
@@ -132,19 +153,43 @@ function checkPlatform(
     options: AppCheckOptions,
 ): AppFinding[] {
     const findings: AppFinding[] = [];
-    const add = (f: Omit<AppFinding, 'severity'> & { severity?: 'error' | 'warning' }): void => {
+    const report: Report = (f) => {
         findings.push({ severity: 'error', ...f });
     };
     const selection = selectGenerators(platform, registry);
-    const where = `platform '${platform.name}'`;
+    const context: PlatformContext = {
+        platform,
+        registry,
+        selection,
+        where: `platform '${platform.name}'`,
+        complete: selection.references.length === platform.generators.length,
+    };
+    const distinct = distinctGenerators(context, report);
+    checkSingleRoles(context, distinct, report);
+    checkBehaviorRoles(context, distinct, report);
+    checkCompatibility(context, distinct, report);
 
-    // Each generator once.
-    const distinct: Array<{ ref: AppGeneratorRef; generator: RegisteredGenerator }> = [];
+    // The model-dependent checks need the architecture (built on first use, once per application).
+    const architecture = arch();
+    if (!architecture) return findings;
+    checkCoverage(context, ofKind(distinct, 'component')[0], architecture, report);
+    findings.push(
+        ...checkGeneratorRules(selection, architecture, {
+            rule: (generator, name) => standardRule(name) ?? options.rules?.(generator, name),
+            onUnknownRule: options.onUnknownRule,
+        }),
+    );
+    return findings;
+}
+
+/** Each generator once: a repeated one is a warning, and the rest of the checks see it once. */
+function distinctGenerators({ selection, where }: PlatformContext, report: Report): ListedGenerator[] {
+    const distinct: ListedGenerator[] = [];
     const seen = new Set<string>();
     for (const r of selection.references) {
         const name = r.generator.manifest.name;
         if (seen.has(name)) {
-            add({
+            report({
                 code: AppCodes.RepeatedGenerator,
                 severity: 'warning',
                 node: r.ref,
@@ -156,47 +201,60 @@ function checkPlatform(
         seen.add(name);
         distinct.push(r);
     }
+    return distinct;
+}
 
-    // Roles: exactly one component and one data type generator, one behavior generator per language.
-    const ofKind = (kind: GeneratorManifest['kind']) => distinct.filter((r) => r.generator.manifest.kind === kind);
-    const components = ofKind('component');
-    const datatypes = ofKind('datatype');
-    // An unknown generator (reported by linking) may be the one that fills a role: no follow-ups.
-    const complete = selection.references.length === platform.generators.length;
-    if (components.length === 0 && complete) {
-        add({
-            code: AppCodes.MissingComponentGenerator,
-            node: platform,
-            property: 'name',
-            message: `${capital(where)} has no component generator: add one (e.g. '${suggest(registry, 'component')}').`,
-        });
+function ofKind(listed: readonly ListedGenerator[], kind: GeneratorManifest['kind']): ListedGenerator[] {
+    return listed.filter((r) => r.generator.manifest.kind === kind);
+}
+
+/** The roles a platform fills exactly once, in the order they are checked. */
+const SINGLE_ROLES = [
+    {
+        kind: 'component',
+        label: 'component generator',
+        missing: AppCodes.MissingComponentGenerator,
+        duplicate: AppCodes.DuplicateComponentGenerator,
+    },
+    {
+        kind: 'datatype',
+        label: 'data type generator',
+        missing: AppCodes.MissingDataTypeGenerator,
+        duplicate: AppCodes.DuplicateDataTypeGenerator,
+    },
+] as const;
+
+/** Exactly one component generator and one data type generator. */
+function checkSingleRoles(
+    { platform, registry, where, complete }: PlatformContext,
+    distinct: readonly ListedGenerator[],
+    report: Report,
+): void {
+    for (const role of SINGLE_ROLES) {
+        const filling = ofKind(distinct, role.kind);
+        if (filling.length === 0 && complete) {
+            report({
+                code: role.missing,
+                node: platform,
+                property: 'name',
+                message: `${capital(where)} has no ${role.label}: add one (e.g. '${suggest(registry, role.kind)}').`,
+            });
+        }
+        for (const extra of filling.slice(1)) {
+            report({
+                code: role.duplicate,
+                node: extra.ref,
+                property: 'generator',
+                message: `${capital(where)} has more than one ${role.label} ('${names(filling)}'); keep exactly one.`,
+            });
+        }
     }
-    for (const extra of components.slice(1)) {
-        add({
-            code: AppCodes.DuplicateComponentGenerator,
-            node: extra.ref,
-            property: 'generator',
-            message: `${capital(where)} has more than one component generator ('${components.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`,
-        });
-    }
-    if (datatypes.length === 0 && complete) {
-        add({
-            code: AppCodes.MissingDataTypeGenerator,
-            node: platform,
-            property: 'name',
-            message: `${capital(where)} has no data type generator: add one (e.g. '${suggest(registry, 'datatype')}').`,
-        });
-    }
-    for (const extra of datatypes.slice(1)) {
-        add({
-            code: AppCodes.DuplicateDataTypeGenerator,
-            node: extra.ref,
-            property: 'generator',
-            message: `${capital(where)} has more than one data type generator ('${datatypes.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`,
-        });
-    }
-    const byLanguage = new Map<string, Array<{ ref: AppGeneratorRef; generator: RegisteredGenerator }>>();
-    for (const r of ofKind('behavior')) {
+}
+
+/** One behavior generator per behavior language. */
+function checkBehaviorRoles({ where }: PlatformContext, distinct: readonly ListedGenerator[], report: Report): void {
+    const byLanguage = new Map<string, ListedGenerator[]>();
+    for (const r of ofKind(distinct, 'behavior')) {
         const m = r.generator.manifest;
         if (m.kind !== 'behavior') continue;
         const list = byLanguage.get(m.language) ?? [];
@@ -205,22 +263,26 @@ function checkPlatform(
     }
     for (const [language, list] of byLanguage) {
         for (const extra of list.slice(1)) {
-            add({
+            report({
                 code: AppCodes.DuplicateBehaviorGenerator,
                 node: extra.ref,
                 property: 'generator',
-                message: `${capital(where)} has more than one behavior generator for '${language}' ('${list.map((c) => c.generator.manifest.name).join("', '")}'); keep exactly one.`,
+                message: `${capital(where)} has more than one behavior generator for '${language}' ('${names(list)}'); keep exactly one.`,
             });
         }
     }
+}
 
-    // Compatibility: one GPL for the family, one RTE for component and behavior generators.
-    const reference = components[0] ?? distinct[0];
+/** One GPL for the family, one RTE for the component generator and the behavior generators. */
+function checkCompatibility({ where }: PlatformContext, distinct: readonly ListedGenerator[], report: Report): void {
+    const component = ofKind(distinct, 'component')[0];
+    // The GPL is the component generator's; without one, the first generator's.
+    const reference = component ?? distinct[0];
     if (reference) {
         const gpl = reference.generator.manifest.output.gpl;
         for (const r of distinct) {
             if (r === reference || r.generator.manifest.output.gpl === gpl) continue;
-            add({
+            report({
                 code: AppCodes.GplMismatch,
                 node: r.ref,
                 property: 'generator',
@@ -229,13 +291,13 @@ function checkPlatform(
             });
         }
     }
-    const component = components[0];
     if (component) {
         const rte = component.generator.manifest.output.rte;
         for (const r of distinct) {
             const m = r.generator.manifest;
+            // A behavior generator of another GPL has its GPL mismatch already.
             if (m.kind !== 'behavior' || m.output.rte === rte || m.output.gpl !== component.generator.manifest.output.gpl) continue;
-            add({
+            report({
                 code: AppCodes.RteMismatch,
                 node: r.ref,
                 property: 'generator',
@@ -244,37 +306,31 @@ function checkPlatform(
             });
         }
     }
+}
 
-    const architecture = arch();
-    if (!architecture) return findings;
-
-    // Coverage: every behavior language of the architecture has exactly one translator.
-    if (component && complete) {
-        for (const language of architecture.languages) {
-            if (generatorForLanguage(selection, language)) continue;
-            const users = architecture.components.filter((c) => c.behavior?.language === language || (language === 'compute' && c.init));
-            const shown =
-                users
-                    .slice(0, 3)
-                    .map((c) => c.qualifiedName)
-                    .join(', ') + (users.length > 3 ? ', ...' : '');
-            add({
-                code: AppCodes.UncoveredBehaviorLanguage,
-                node: platform,
-                property: 'name',
-                message: `${capital(where)} has no generator for the behavior language '${language}' (used by ${shown}): add a behavior generator for '${language}'${suggestBehavior(registry, language)}.`,
-            });
-        }
+/** Every behavior language of the architecture has a translator (checked once a component generator is listed). */
+function checkCoverage(
+    { platform, registry, selection, where, complete }: PlatformContext,
+    component: ListedGenerator | undefined,
+    architecture: ArchitectureModel,
+    report: Report,
+): void {
+    if (!component || !complete) return;
+    for (const language of architecture.languages) {
+        if (generatorForLanguage(selection, language)) continue;
+        const users = architecture.components.filter((c) => c.behavior?.language === language || (language === 'compute' && c.init));
+        const shown =
+            users
+                .slice(0, 3)
+                .map((c) => c.qualifiedName)
+                .join(', ') + (users.length > 3 ? ', ...' : '');
+        report({
+            code: AppCodes.UncoveredBehaviorLanguage,
+            node: platform,
+            property: 'name',
+            message: `${capital(where)} has no generator for the behavior language '${language}' (used by ${shown}): add a behavior generator for '${language}'${suggestBehavior(registry, language)}.`,
+        });
     }
-
-    // The generators' own well-formedness rules, on the models each will translate.
-    findings.push(
-        ...checkGeneratorRules(selection, architecture, {
-            rule: (generator, name) => standardRule(name) ?? options.rules?.(generator, name),
-            onUnknownRule: options.onUnknownRule,
-        }),
-    );
-    return findings;
 }
 
 export interface GeneratorRuleOptions {
@@ -349,6 +405,11 @@ function suggestBehavior(registry: GeneratorRegistry, language: string): string 
         .filter((g) => g.manifest.kind === 'behavior' && g.manifest.language === language)
         .map((g) => `'${g.manifest.name}'`);
     return found.length > 0 ? ` (installed: ${found.join(', ')})` : '';
+}
+
+/** The generators' names as a message lists them: `a', 'b` (the message adds the outer quotes). */
+function names(listed: readonly ListedGenerator[]): string {
+    return listed.map((c) => c.generator.manifest.name).join("', '");
 }
 
 function capital(s: string): string {
