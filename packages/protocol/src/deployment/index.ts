@@ -4,7 +4,7 @@ import { Deployment } from './schema.js';
 export * from './schema.js';
 
 /** The name of the file in a generated ROS 2 package folder. */
-export const DEPLOYMENT_FILE_NAME = 'deployment.json';
+export { DEPLOYMENT_FILE_NAME } from '../formats.js';
 
 /** Checks a parsed `deployment.json` (the per-file rules: unique node names etc. are the reader's). */
 export const deploymentContract = contract('deployment', Deployment);

@@ -9,8 +9,9 @@
  * breaks its schema; `{key}` stands for the field's name.
  */
 import { Type, type Static } from '@sinclair/typebox';
+import { DEPLOYMENT_FORMAT } from '../formats.js';
 
-export const DEPLOYMENT_FORMAT = 'maa-deployment/1';
+export { DEPLOYMENT_FORMAT } from '../formats.js';
 
 /** A ROS node or namespace segment. */
 const ROS_SEGMENT = '[A-Za-z][A-Za-z0-9_]*';

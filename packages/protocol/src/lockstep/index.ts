@@ -3,7 +3,7 @@ import { Lockstep, StepOutputs } from './schema.js';
 
 export * from './schema.js';
 
-export const LOCKSTEP_FILE_NAME = 'lockstep.json';
+export { LOCKSTEP_FILE_NAME } from '../formats.js';
 
 /** Checks a parsed `lockstep.json`. */
 export const lockstepContract = contract('lockstep.json', Lockstep);

@@ -6,8 +6,9 @@
  * period: `step({topic: message})` returns `{topic: message | [message, ...]}`.
  */
 import { Type, type Static } from '@sinclair/typebox';
+import { LOCKSTEP_FORMAT } from '../formats.js';
 
-export const LOCKSTEP_FORMAT = 'maa-lockstep/1';
+export { LOCKSTEP_FORMAT } from '../formats.js';
 
 export const Lockstep = Type.Object(
     {

@@ -4,7 +4,7 @@ import { TraceFile } from './schema.js';
 export * from './schema.js';
 
 /** The name of the trace file in a generated platform folder. */
-export const TRACE_FILE_NAME = '.maa-trace.json';
+export { TRACE_FILE_NAME } from '../formats.js';
 
 /** Checks a parsed `.maa-trace.json`. */
 export const traceFileContract = contract('trace file', TraceFile);

@@ -6,9 +6,10 @@
  * Positions follow the package's one convention (position.ts): 0-based lines and characters.
  */
 import { Type, type Static } from '@sinclair/typebox';
+import { TRACE_FORMAT_VERSION } from '../formats.js';
 import { Range } from '../position.js';
 
-export const TRACE_FORMAT_VERSION = 2;
+export { TRACE_FORMAT_VERSION } from '../formats.js';
 
 export const TraceElement = Type.Object(
     {

@@ -1,7 +1,8 @@
 import path from 'node:path';
 import { AstUtils, type AstNode, type LangiumDocument } from 'langium';
 import type { HostLanguageServices } from '@maa/language-adl';
-import { TRACE_FORMAT_VERSION, type Trace, type TraceElement, type TraceFile } from '@maa/protocol';
+import type { Trace, TraceElement, TraceFile } from '@maa/protocol';
+import { TRACE_FORMAT_VERSION } from '@maa/protocol/formats';
 import type { PlatformSelection } from '../../app/app-checks.js';
 import type { PlatformInfo } from '../../generators/types.js';
 import type { FinishedFile } from '../../output/file-builder.js';

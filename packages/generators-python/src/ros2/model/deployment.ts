@@ -1,4 +1,5 @@
-import { DEPLOYMENT_FORMAT, type Deployment, type DeploymentNode, type PortTopic } from '@maa/protocol';
+import type { Deployment, DeploymentNode, PortTopic } from '@maa/protocol';
+import { DEPLOYMENT_FORMAT } from '@maa/protocol/formats';
 import {
     publishedTopics,
     subscribedTopics,
