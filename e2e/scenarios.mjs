@@ -1,6 +1,7 @@
-import { readFileSync } from 'node:fs';
+import { readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { writeLargeModel } from './lib.mjs';
+import { artifacts, writeLargeModel } from './lib.mjs';
+import { cliDiagram, diagramClasses, diagramIds, diagramRoutes, diagramTexts, idDifference, sameRoute } from './svg-compare.mjs';
 
 // The e2e scenarios of issue 7, in order. Each gets { page, url, workspace, shot(name) }.
 const ROBOT = 'toast-service/toast/ToastServiceRobot.arc';
@@ -40,6 +41,52 @@ async function waitForModelText(page, path, predicate, what, timeout = 15_000) {
 }
 
 const diagram = (page) => page.locator('[data-testid=diagram]');
+
+/** Exports the shown diagram in the IDE and compares its element ids and label texts with `maa-gen diagram ARGS`'s SVG. */
+async function compareExport(page, args, what) {
+    const download = page.waitForEvent('download', { timeout: 15_000 });
+    await page.locator('[data-testid=diagram-export]').click();
+    const ide = readFileSync(await (await download).path(), 'utf8');
+    const cli = await cliDiagram(args);
+    const ideIds = diagramIds(ide);
+    const cliIds = diagramIds(cli);
+    if (ideIds.length < 10) await fail(`${what}: the IDE's export has only ${ideIds.length} elements with ids`);
+    const { onlyFirst, onlySecond } = idDifference(ideIds, cliIds);
+    if (onlyFirst.length || onlySecond.length || ideIds.length !== cliIds.length) {
+        await fail(
+            `${what}: the IDE's export and maa-gen diagram differ (${ideIds.length} vs ${cliIds.length} ids)\n` +
+                `  only in the IDE's: ${onlyFirst.join(', ')}\n  only in maa-gen's: ${onlySecond.join(', ')}`,
+        );
+    }
+    // Both documents beside the screenshots, for a look at what differs.
+    const name = args[0].split('.').pop() + (args.includes('--automaton') ? '-automaton' : '');
+    writeFileSync(path.join(artifacts, `5c-ide-${name}.svg`), ide);
+    writeFileSync(path.join(artifacts, `5c-maa-gen-${name}.svg`), cli);
+    const ideTexts = diagramTexts(ide);
+    const cliTexts = diagramTexts(cli);
+    const differing = [...ideTexts].filter(([id, text]) => cliTexts.get(id) !== text);
+    if (differing.length || ideTexts.size !== cliTexts.size) {
+        await fail(
+            `${what}: labels differ: ${differing.map(([id, text]) => `${id}: "${text}" vs "${cliTexts.get(id)}"`).join('; ')} (${ideTexts.size} vs ${cliTexts.size} texts)`,
+        );
+    }
+    const ideClasses = diagramClasses(ide);
+    const cliClasses = diagramClasses(cli);
+    const otherClasses = [...ideClasses].filter(([id, cls]) => cliClasses.get(id) !== cls);
+    if (otherClasses.length) {
+        await fail(`${what}: classes differ: ${otherClasses.map(([id, cls]) => `${id}: "${cls}" vs "${cliClasses.get(id)}"`).join('; ')}`);
+    }
+    // Connectors and transitions take the same way (maa-gen routes them as Sprotty does).
+    const ideRoutes = diagramRoutes(ide);
+    const cliRoutes = diagramRoutes(cli);
+    const otherRoutes = [...ideRoutes].filter(([id, route]) => !sameRoute(route, cliRoutes.get(id)));
+    if (ideRoutes.size === 0 || otherRoutes.length) {
+        await fail(`${what}: ${ideRoutes.size} routes, these differ: ${otherRoutes.map(([id]) => id).join(', ')}`);
+    }
+    console.log(
+        `    ${what}: ${ideIds.length} elements with their classes, ${ideTexts.size} labels and ${ideRoutes.size} edge routes alike`,
+    );
+}
 
 export const scenarios = [
     {
@@ -242,6 +289,24 @@ export const scenarios = [
                 await fail(`the exported SVG lacks the diagram (${svgText.length} bytes: ${svgText.slice(0, 200)})`);
             }
             await shot('diagram');
+        },
+    },
+    {
+        id: '5c-diagram-export',
+        name: "diagram export: the IDE's Export SVG and maa-gen diagram hold the same elements, classes, labels and edge routes",
+        async run({ page, url, workspace, shot }) {
+            await openIde(page, url);
+            await diagram(page).locator('.maa-component[data-instance-path=arm]').first().waitFor({ timeout: 20_000 });
+            const root = path.join(workspace, 'toast-service');
+            // The C&C view of the example's robot, then the state machine of its Controller.
+            await compareExport(page, ['toast.ToastServiceRobot', '--root', root], 'C&C view of toast.ToastServiceRobot');
+            await openFile(page, 'toast-service/toast/Controller.arc');
+            const toggle = page.locator('[data-testid=diagram-switch]');
+            await toggle.waitFor({ state: 'visible' });
+            await toggle.click();
+            await diagram(page).locator('.maa-state', { hasText: 'Toasting' }).first().waitFor({ timeout: 15_000 });
+            await compareExport(page, ['toast.Controller', '--automaton', '--root', root], 'state machine of toast.Controller');
+            await shot('automaton');
         },
     },
     {

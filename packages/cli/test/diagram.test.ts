@@ -185,7 +185,7 @@ describe('maa-gen diagram --automaton', () => {
             '--root',
             EXAMPLE,
         ]);
-        expect(svg.attrs['class']).toContain('maa-graph-automaton');
+        expect(svg.attrs['class']).toBe('sprotty-graph maa-graph');
         const labels = withClass(svg, 'maa-label-transition').map((n) => n.attrs['data-full-text'] ?? n.text.trim());
         expect(labels).toEqual(expect.arrayContaining(['[armStatus == ArmStatus.DONE] / { served++; }']));
     });

@@ -41,7 +41,8 @@ export function renderDiagramSvg(root: SModelRoot, options: SvgRenderOptions = {
         {
             xmlns: 'http://www.w3.org/2000/svg',
             id: ctx.idPrefix + root.id,
-            class: root.id.startsWith('automaton:') ? 'sprotty-graph maa-graph maa-graph-automaton' : 'sprotty-graph maa-graph',
+            // As the IDE's graph view has it (it would add maa-graph-automaton for a graph with diagramType, which the server's has not).
+            class: 'sprotty-graph maa-graph',
             version: '1.1',
             viewBox: [view.x, view.y, view.width, view.height].map(num).join(' '),
             width: num(view.width),

@@ -65,6 +65,7 @@ export function componentView(node: ComponentNode, ctx: ViewContext): XmlElement
         'maa-variable': !!node.variationPoint,
         [`maa-kind-${kind || 'none'}`]: true,
         ...severityClasses(node.severity),
+        component: true, // Sprotty's sub-type class (node:component)
     });
     return el(
         'g',
@@ -128,7 +129,7 @@ export function stateView(node: StateNode, ctx: ViewContext): XmlElement {
         'g',
         {
             id: ctx.idPrefix + node.id,
-            class: classes({ 'maa-state': true, 'maa-state-initial': !!node.initial, ...severityClasses(node.severity) }),
+            class: classes({ 'maa-state': true, 'maa-state-initial': !!node.initial, ...severityClasses(node.severity), state: true }),
             'data-state-path': node.statePath ?? '',
             transform: translate(node),
         },
@@ -158,6 +159,8 @@ export function edgeView(edge: ConnectorEdge | TransitionEdge | SEdge, ctx: View
     if (route.length === 0) return undefined; // an end is missing: nothing to draw
     const d = route.map((p, i) => `${i === 0 ? 'M' : 'L'} ${num(p.x)},${num(p.y)}`).join(' ');
     const kind = edge.type === 'edge:connector' ? 'maa-connector' : edge.type === 'edge:transition' ? 'maa-transition' : undefined;
+    // Sprotty's sub-type class: that of the type the IDE registers the edge as (others are `edge:generic`).
+    const subType = kind ? edge.type.slice('edge:'.length) : 'generic';
     return el(
         'g',
         {
@@ -166,6 +169,7 @@ export function edgeView(edge: ConnectorEdge | TransitionEdge | SEdge, ctx: View
                 'sprotty-edge': true,
                 ...(kind ? { [kind]: true } : {}),
                 ...severityClasses((edge as { severity?: unknown }).severity),
+                [subType]: true,
             }),
         },
         el('path', { d }),
@@ -183,21 +187,25 @@ export function labelView(label: SLabel & Partial<MaaLabel>, ctx: ViewContext): 
     // The server lays out label boxes (top left): the baseline about three quarters down the box.
     const y = Math.round(h * 0.75);
     const common = { id: ctx.idPrefix + label.id, transform: translate(label) };
+    // Labels are registered as `label:text` in the IDE: Sprotty adds the sub-type class `text`.
     if (type === 'label:badge') {
         const text = BADGE_TEXT[label.text] ?? label.text;
         return el(
             'g',
-            { ...common, class: classes({ 'maa-badge': true, [`maa-badge-${label.text}`]: true, 'maa-label': true, [cls]: true }) },
+            {
+                ...common,
+                class: classes({ 'maa-badge': true, [`maa-badge-${label.text}`]: true, 'maa-label': true, [cls]: true, text: true }),
+            },
             el('title', {}, `behavior: ${text}`),
             el('rect', { x: 0, y: 1, width: w, height: h - 2, rx: (h - 2) / 2, ry: (h - 2) / 2 }),
             el('text', { x: w / 2, y: y - 1, 'text-anchor': 'middle' }, text),
         );
     }
     const full = typeof label.fullText === 'string' && label.fullText !== label.text ? label.fullText : undefined;
-    if (full === undefined) return el('text', { ...common, class: `sprotty-label maa-label ${cls}`, y }, label.text);
+    if (full === undefined) return el('text', { ...common, class: `sprotty-label maa-label ${cls} text`, y }, label.text);
     return el(
         'text',
-        { ...common, class: `sprotty-label maa-label maa-label-shortened ${cls}`, y, 'data-full-text': full },
+        { ...common, class: `sprotty-label maa-label maa-label-shortened ${cls} text`, y, 'data-full-text': full },
         el('title', {}, full),
         label.text,
     );
@@ -212,10 +220,10 @@ export function genericView(element: SModelElement, ctx: ViewContext): XmlElemen
         const { width, height } = sizeOf(element);
         return el(
             'g',
-            { id, transform: translate(element) },
+            { id, class: 'generic', transform: translate(element) },
             el('rect', { class: 'sprotty-node', x: 0, y: 0, width, height }),
             ...ctx.renderChildren(element),
         );
     }
-    return el('g', { id, transform: translate(element) }, ...ctx.renderChildren(element));
+    return el('g', { id, class: 'default', transform: translate(element) }, ...ctx.renderChildren(element));
 }
