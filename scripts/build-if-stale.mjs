@@ -129,7 +129,7 @@ export function buildKey({ own, root, deps, declarations }) {
  * outputs now. Returns `{ stale, reason }`.
  */
 export function staleness(record, key, outputs) {
-    if (!record) return { stale: true, reason: 'not built by this script before' };
+    if (!record) return { stale: true, reason: 'no build recorded' };
     if (record.key !== key) return { stale: true, reason: 'inputs changed' };
     if (outputs === NO_FILES) return { stale: true, reason: 'outputs missing' };
     if (record.outputs !== outputs) return { stale: true, reason: 'outputs changed since its build' };

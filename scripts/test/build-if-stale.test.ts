@@ -187,7 +187,7 @@ describe('build-if-stale', () => {
 describe('staleness', () => {
     const record = { key: 'k1', outputs: 'o1' };
     it('is stale without a record of a build', () => {
-        expect(staleness(undefined, 'k1', 'o1')).toEqual({ stale: true, reason: 'not built by this script before' });
+        expect(staleness(undefined, 'k1', 'o1')).toEqual({ stale: true, reason: 'no build recorded' });
     });
     it('is stale when the key changed', () => {
         expect(staleness(record, 'k2', 'o1')).toEqual({ stale: true, reason: 'inputs changed' });
