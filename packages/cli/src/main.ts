@@ -3,6 +3,8 @@ import { checkCommand } from './commands/check.js';
 import { diagramCommand } from './commands/diagram.js';
 import { generateCommand } from './commands/generate.js';
 import { generatorsCommand } from './commands/generators.js';
+import { lspCommand } from './commands/lsp.js';
+import { newCommand } from './commands/new.js';
 import { testCommand } from './commands/test.js';
 import { CliError, ExitCode } from './errors.js';
 import { processIo, type CliIo } from './io.js';
@@ -13,13 +15,17 @@ export { runDiagram, type DiagramCommandOptions } from './commands/diagram.js';
 export { runGenerate, type GenerateCommandOptions, type GenerateFormat } from './commands/generate.js';
 export { runGenerators, type GeneratorsCommandOptions } from './commands/generators.js';
 export { runTest, type TestCommandOptions } from './commands/test.js';
+export { runNew, listTemplates, type NewCommandOptions, type ProjectTemplate } from './commands/new.js';
+export { runLsp, type LspCommandOptions } from './commands/lsp.js';
 export { ExitCode, CliError } from './errors.js';
 export type { CliIo } from './io.js';
 
 export function createProgram(io: CliIo, setExitCode: (code: ExitCode) => void): Command {
     const program = new Command('maa-gen')
         .description(
-            'MontiArcAutomaton for the web: check models, generate code for a platform, list generators, run stream tests, draw diagrams',
+            'MontiArcAutomaton for the web: create a project from a template (new), check models (check), generate code for a ' +
+                "platform (generate), list the installed generators (generators), run stream tests (test), draw a component's " +
+                'diagram as SVG or PNG (diagram), run the language server for an editor (lsp)',
         )
         .version(cliVersion(), '-V, --version', 'print the version')
         .helpOption('-h, --help', 'show help')
@@ -27,11 +33,13 @@ export function createProgram(io: CliIo, setExitCode: (code: ExitCode) => void):
         .showHelpAfterError('(run "maa-gen --help" for usage)')
         .configureOutput({ writeOut: (s) => io.out(s), writeErr: (s) => io.err(s) })
         .exitOverride();
+    program.addCommand(newCommand(io, setExitCode));
     program.addCommand(checkCommand(io, setExitCode));
     program.addCommand(generateCommand(io, setExitCode));
     program.addCommand(generatorsCommand(io, setExitCode));
     program.addCommand(testCommand(io, setExitCode));
     program.addCommand(diagramCommand(io, setExitCode));
+    program.addCommand(lspCommand(io, setExitCode));
     // Subcommands added with addCommand do not inherit these settings.
     for (const sub of program.commands) {
         sub.helpOption('-h, --help', 'show help')

@@ -1,11 +1,13 @@
+import path from 'node:path';
 import { Command, Option } from 'commander';
+import type { RootSpec } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
 import { formatJson } from '../format/json.js';
-import { formatDiagnosticsText, formatSummaryText } from '../format/text.js';
+import { displayPath, formatDiagnosticsText, formatSummaryText } from '../format/text.js';
 import type { CliIo } from '../io.js';
 import { createProgress } from '../progress.js';
-import { resolveRoots } from '../roots.js';
-import { sortDiagnostics, summarize } from '../summary.js';
+import { MODEL_FILE_EXTENSIONS, resolveRoots } from '../roots.js';
+import { listModelFiles, sortDiagnostics, summarize } from '../summary.js';
 
 export type CheckFormat = 'text' | 'json';
 
@@ -19,6 +21,7 @@ export interface CheckOptions {
  */
 export async function runCheck(paths: readonly string[], options: CheckOptions, io: CliIo): Promise<ExitCode> {
     const roots = resolveRoots(paths, io.cwd);
+    refuseRootsWithoutModels(roots, io.cwd);
     const progress = createProgress(io);
     let found: Awaited<ReturnType<typeof import('@maa/language-server').checkModelRoots>>;
     try {
@@ -48,6 +51,19 @@ export async function runCheck(paths: readonly string[], options: CheckOptions, 
     return summary.errors > 0 ? ExitCode.errors : ExitCode.ok;
 }
 
+/**
+ * A folder argument without a single model file is almost always a wrong path (the parent or a
+ * sibling of the project): said plainly, exit 2, instead of a clean "0 errors in 0 files".
+ */
+function refuseRootsWithoutModels(roots: readonly RootSpec[], cwd: string): void {
+    const empty = roots.filter((r) => r.files === undefined && listModelFiles(r.root).length === 0);
+    if (empty.length === 0) return;
+    const shown = (root: string): string => (root === path.resolve(cwd) ? '.' : displayPath(root, cwd));
+    throw new CliError(
+        empty.map((r) => `no models found in ${shown(r.root)} (no ${MODEL_FILE_EXTENSIONS.join(', ')} files below it)`).join('\n'),
+    );
+}
+
 export function checkCommand(io: CliIo, setExitCode: (code: ExitCode) => void): Command {
     return new Command('check')
         .description('check model roots (folders) or single model files and report diagnostics')
@@ -68,7 +84,7 @@ Output:
 Exit codes:
   0  no errors (warnings and infos allowed)
   1  at least one error
-  2  usage or I/O problem (missing path, unreadable file)
+  2  usage or I/O problem (missing path, unreadable file, a folder without models)
   3  internal error (a bug; MAA_GEN_DEBUG=1 prints the stack trace)
 
 Examples:
