@@ -15,13 +15,16 @@
 //   - the generator declarations of every workspace package (the `maa.generators` field of its
 //     package.json and the manifest files it names), which language-server's build reads
 //     (bin/write-generator-manifests.mjs) without depending on those packages.
+//   - the folders outside the package that its build copies (outsideInputs below: the project
+//     templates of @maa/cli, one of which is examples/toast-service).
 // Contents, not modification times: a checkout or a copy that keeps the contents rebuilds nothing,
 // and an edit that restores a file's old contents too. The records live in
 // node_modules/.cache/maa-build/ (so `npm ci` starts over with a full build).
 //
-// Usage: node scripts/build-if-stale.mjs [--force] [--verbose]
+// Usage: node scripts/build-if-stale.mjs [--force] [--verbose] [--dry-run]
 //   --force     build every package, whatever the records say
 //   --verbose   show the output of every build (otherwise only of a build that fails)
+//   --dry-run   build nothing; say which packages would be built and why
 import { spawn } from 'node:child_process';
 import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
@@ -113,10 +116,11 @@ export const NO_FILES = hashFiles('.', []);
 /**
  * The build key of a package from the hashes of everything its build reads (see the header):
  * `own` its sources, `root` the root inputs, `deps` one `{ name, sources, outputs }` per
- * workspace package it depends on, `declarations` the generator declarations.
+ * workspace package it depends on, `declarations` the generator declarations, `outside` the
+ * folders outside the package that its build reads.
  */
-export function buildKey({ own, root, deps, declarations }) {
-    const hash = createHash('sha256').update(`own ${own}\nroot ${root}\ndeclarations ${declarations}\n`);
+export function buildKey({ own, root, deps, declarations, outside = NO_FILES }) {
+    const hash = createHash('sha256').update(`own ${own}\nroot ${root}\ndeclarations ${declarations}\noutside ${outside}\n`);
     for (const dep of [...deps].sort((a, b) => a.name.localeCompare(b.name))) {
         hash.update(`dep ${dep.name} ${dep.sources} ${dep.outputs}\n`);
     }
@@ -184,6 +188,34 @@ function dependencyOrder(listed) {
     return order;
 }
 
+/**
+ * The folders outside a package (relative to the repository) that its build reads: the `from`
+ * folders of its templates/templates.json that lie outside it (@maa/cli's scripts/copy-templates.mjs
+ * copies each into dist/templates; the toast-service template is examples/toast-service).
+ */
+export function outsideInputs(repo, w) {
+    let manifest;
+    try {
+        manifest = JSON.parse(readFileSync(path.join(w.dir, 'templates', 'templates.json'), 'utf8'));
+    } catch {
+        return []; // no templates (or none readable: its build reports that)
+    }
+    const folders = (Array.isArray(manifest?.templates) ? manifest.templates : [])
+        .filter((t) => typeof t?.from === 'string')
+        .map((t) => path.resolve(w.dir, t.from))
+        .filter((dir) => path.relative(w.dir, dir).startsWith('..'))
+        .map((dir) => path.relative(repo, dir).split(path.sep).join('/'));
+    return [...new Set(folders)].sort();
+}
+
+/** One hash of the files of the given folders of the repository. */
+function foldersHash(repo, folders) {
+    return hashFiles(
+        repo,
+        folders.flatMap((folder) => listFiles(path.join(repo, folder)).map((f) => `${folder}/${f}`)),
+    );
+}
+
 /** The hash of every workspace package's generator declarations (package.json `maa.generators` and the manifest files named there). */
 export function declarationsHash(workspaces) {
     const hash = createHash('sha256');
@@ -239,17 +271,19 @@ class PackageHashes {
     }
 }
 
-function keyOf(w, byName, hashes, root, declarations) {
+function keyOf(repo, w, byName, hashes, root, declarations) {
     const deps = w.closure.map((name) => {
         const dep = byName.get(name);
         return { name, sources: hashes.get(dep, 'interface'), outputs: hashes.get(dep, 'outputs') };
     });
-    return buildKey({ own: hashes.get(w, 'sources'), root, deps, declarations });
+    const outside = foldersHash(repo, outsideInputs(repo, w));
+    return buildKey({ own: hashes.get(w, 'sources'), root, deps, declarations, outside });
 }
 
 /**
  * Builds the stale packages of the workspace at `repo`, one after the other in dependency order.
- * Options: `force` (build all), `verbose` (stream build output), `write` (where the progress
+ * Options: `force` (build all), `verbose` (stream build output), `dryRun` (build nothing, say
+ * what would be built: `built` lists those), `write` (where the progress
  * lines go, default stdout), `first`/`total` (the phase numbers of the progress lines, default
  * 1 and the number of packages with a build script), `stampDir` (default
  * node_modules/.cache/maa-build), `runBuild(w)` (default `npm run build`; resolves
@@ -257,7 +291,7 @@ function keyOf(w, byName, hashes, root, declarations) {
  * whose build failed, after which nothing else is built).
  */
 export async function buildStale(repo, options = {}) {
-    const { force = false, verbose = false, write = (text) => process.stdout.write(text) } = options;
+    const { force = false, verbose = false, dryRun = false, write = (text) => process.stdout.write(text) } = options;
     const stampDir = options.stampDir ?? path.join(repo, 'node_modules', '.cache', 'maa-build');
     const runBuild = options.runBuild ?? ((w) => npmBuild(repo, w, verbose));
     const workspaces = readWorkspaces(repo);
@@ -272,10 +306,18 @@ export async function buildStale(repo, options = {}) {
     for (const [i, w] of buildable.entries()) {
         const phase = `[${first + i}/${total}]`;
         const started = Date.now();
-        const key = keyOf(w, byName, hashes, root, declarations);
+        const key = keyOf(repo, w, byName, hashes, root, declarations);
         const { stale, reason } = force
             ? { stale: true, reason: 'forced' }
             : staleness(readRecord(stampDir, w), key, hashes.get(w, 'outputs'));
+        if (dryRun) {
+            // a dependent of a package that would be built is rebuilt only when that build changes its outputs
+            const after = w.closure.filter((d) => result.built.includes(d));
+            const maybe = !stale && after.length > 0 ? `, unless the build of ${after.join(', ')} changes what it depends on` : '';
+            write(`${phase} ${w.name}: ${stale ? `would be built (${reason})` : `up to date${maybe}`}\n`);
+            (stale ? result.built : result.skipped).push(w.name);
+            continue;
+        }
         if (!stale) {
             write(`${phase} ${w.name} is up to date (${seconds(started)})\n`);
             result.skipped.push(w.name);
@@ -307,10 +349,14 @@ const isMain = process.argv[1] && pathToFileURL(path.resolve(process.argv[1])).h
 if (isMain) {
     const args = process.argv.slice(2);
     if (args.includes('--help') || args.includes('-h')) {
-        console.log('usage: node scripts/build-if-stale.mjs [--force] [--verbose]\n  builds the workspace packages whose inputs changed');
+        console.log(
+            'usage: node scripts/build-if-stale.mjs [--force] [--verbose] [--dry-run]\n' +
+                '  builds the workspace packages whose inputs changed since their last build (--force: all of them;\n' +
+                "  --verbose: show the builds' output; --dry-run: only say what would be built and why)",
+        );
         process.exit(0);
     }
-    const unknown = args.find((a) => a !== '--force' && a !== '--verbose');
+    const unknown = args.find((a) => !['--force', '--verbose', '--dry-run'].includes(a));
     if (unknown) {
         console.error(`build-if-stale: unknown argument ${unknown} (see --help)`);
         process.exit(2);
@@ -320,6 +366,10 @@ if (isMain) {
         console.error('build-if-stale: node_modules is missing; run "npm ci" first');
         process.exit(2);
     }
-    const result = await buildStale(repo, { force: args.includes('--force'), verbose: args.includes('--verbose') });
+    const result = await buildStale(repo, {
+        force: args.includes('--force'),
+        verbose: args.includes('--verbose'),
+        dryRun: args.includes('--dry-run'),
+    });
     process.exit(result.ok ? 0 : 1);
 }

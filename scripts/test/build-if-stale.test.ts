@@ -7,7 +7,7 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
 // @ts-expect-error -- a plain .mjs script without type declarations
-import { buildStale, NO_FILES, readWorkspaces, staleness } from '../build-if-stale.mjs';
+import { buildStale, NO_FILES, outsideInputs, readWorkspaces, staleness } from '../build-if-stale.mjs';
 
 interface Workspace {
     name: string;
@@ -56,6 +56,11 @@ function makeWorkspace(): void {
     pkg('packages/c', { name: '@t/c', scripts: { build: 'compile' }, maa: { generators: ['manifests/gen.json'] } });
     put('packages/c/src/c.ts', 'export const c = 3;\n');
     put('packages/c/manifests/gen.json', '{"name": "g"}\n');
+    // c copies a template from the repository's examples/ and one of its own
+    put('packages/c/templates/templates.json', JSON.stringify({ templates: [{ from: '../../examples/demo' }, { from: 'templates/own' }] }));
+    put('packages/c/templates/own/App.arc', 'component Own {}\n');
+    put('examples/demo/Demo.arc', 'component Demo {}\n');
+    put('examples/other/Other.arc', 'component Other {}\n');
 }
 
 /** The stand-in build: dist/index.js is the concatenation of the package's src/ files; a package named in `failing` fails. */
@@ -152,6 +157,14 @@ describe('build-if-stale', () => {
         expect((await build()).ran).toEqual(['@t/a', '@t/b', '@t/c']);
     });
 
+    it('rebuilds a package when a folder outside it that its build copies changes, not for other folders', async () => {
+        expect(outsideInputs(repo, readWorkspaces(repo).find((w: Workspace) => w.name === '@t/c'))).toEqual(['examples/demo']);
+        put('examples/demo/Demo.arc', 'component Demo { port in int i; }\n');
+        expect((await build()).ran).toEqual(['@t/c']);
+        put('examples/other/Other.arc', 'component Other { port in int i; }\n');
+        expect((await build()).ran).toEqual([]);
+    });
+
     it('rebuilds a package whose outputs were deleted or changed by someone else', async () => {
         rmSync(path.join(repo, 'packages/b/dist'), { recursive: true });
         const deleted = await build();
@@ -177,6 +190,25 @@ describe('build-if-stale', () => {
         expect(failed.ran).toEqual(['@t/a']);
         expect(failed.lines).toMatch(/building @t\/a \(inputs changed\) \.\.\. failed \(exit 1\) after \d+\.\d s/);
         expect((await build()).ran).toEqual(['@t/a', '@t/b']);
+    });
+
+    it('says in a dry run what would be built and why, and builds nothing', async () => {
+        put('packages/a/test/a.test.ts', 'test a, more\n');
+        const ran: string[] = [];
+        let lines = '';
+        const dry: BuildResult = await buildStale(repo, {
+            dryRun: true,
+            runBuild: compile(new Set(), ran),
+            write: (text: string) => {
+                lines += text;
+            },
+        });
+        expect(ran).toEqual([]);
+        expect(dry.built).toEqual(['@t/a']);
+        expect(lines).toContain('[1/3] @t/a: would be built (inputs changed)');
+        expect(lines).toContain('[2/3] @t/b: up to date, unless the build of @t/a changes what it depends on');
+        expect(lines).toContain('[3/3] @t/c: up to date\n');
+        expect((await build()).ran).toEqual(['@t/a']);
     });
 
     it('builds everything with force', async () => {
