@@ -1,4 +1,4 @@
-import type { DataTypeGeneratorFactory, DataTypeView, TypeMapping } from '@maa/generator-core';
+import type { DataTypeGenerationContext, DataTypeGeneratorFactory, DataTypeView, TypeMapping } from '@maa/generator-core';
 import { Imports, modulePath, PRIMITIVE_PY, snake } from '../behavior/common.js';
 import { pyName } from '../python/expressions.js';
 import { methodViews } from '../python/cd-methods.js';
@@ -53,87 +53,113 @@ function splitArgs(text: string): string[] {
 const create: DataTypeGeneratorFactory = () => ({
     kind: 'datatype',
     generate(ctx) {
-        const byModule = new Map<string, DataTypeView[]>();
-        const types: Record<string, TypeMapping> = {};
-        for (const t of ctx.dataTypes) {
-            const { module } = diagramModule(t);
-            let list = byModule.get(module);
-            if (!list) byModule.set(module, (list = []));
-            list.push(t);
-            types[t.qualifiedName] = { module, name: pyName(t.name) };
-        }
+        const { byModule, types } = groupByModule(ctx.dataTypes);
         for (const [module, list] of [...byModule].sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0))) {
-            const first = list[0];
-            const { file } = diagramModule(first);
-            const out = ctx.out.file(file);
-            const imports = new Imports();
-            const local = new Map(list.map((t) => [t.name, pyName(t.name)]));
-            // Types of other diagrams referenced by attributes.
-            for (const t of ctx.dataTypes) {
-                if (!local.has(t.name) && diagramModule(t).module !== module) local.set(t.name, pyName(t.name));
-            }
-            const chunks: Array<{ t: DataTypeView; view: DataTypeChunkView }> = [];
-            const order = [...list.filter((t) => t.kind === 'enum'), ...list.filter((t) => t.kind !== 'enum')];
-            for (const t of order) {
-                if (t.kind === 'enum') {
-                    imports.add('enum', 'Enum');
-                    const methods = methodViews(t, (n) => annotation(n, local, []));
-                    chunks.push({
-                        t,
-                        view: {
-                            name: pyName(t.name),
-                            qualifiedName: t.qualifiedName,
-                            enum: { constants: t.constants.map(pyName) },
-                            data: undefined,
-                            empty: t.constants.length === 0 && methods.length === 0,
-                            methods,
-                        },
-                    });
-                    continue;
-                }
-                imports.add('dataclasses', 'dataclass');
-                const bases: string[] = [];
-                if (t.typeParameters.length) {
-                    imports.add('typing', 'Generic');
-                    imports.add('typing', 'TypeVar');
-                    bases.push(`Generic[${t.typeParameters.join(', ')}]`);
-                }
-                for (const s of t.superTypes) {
-                    const simple = s.split('.').pop()!.replace(/<.*$/, '');
-                    if (local.has(simple)) bases.unshift(local.get(simple)!);
-                }
-                const attributes = t.attributes.map((a) => {
-                    const ann = annotation(a.typeName, local, t.typeParameters);
-                    const enumType = ctx.dataTypes.find((d) => d.name === a.typeName && d.kind === 'enum');
-                    const value =
-                        DEFAULTS[ann] ??
-                        (enumType?.constants.length ? `${pyName(enumType.name)}.${pyName(enumType.constants[0])}` : undefined);
-                    if (value === undefined)
-                        return { name: pyName(a.name), annotation: ann.endsWith('| None') ? ann : `${ann} | None`, value: 'None' };
-                    return { name: pyName(a.name), annotation: ann, value };
-                });
-                const methods = methodViews(t, (n) => annotation(n, local, t.typeParameters));
-                chunks.push({
-                    t,
-                    view: {
-                        name: pyName(t.name),
-                        qualifiedName: t.qualifiedName,
-                        enum: undefined,
-                        data: { kind: t.kind === 'interface' ? 'Interface' : 'Class', typeParameters: t.typeParameters, bases, attributes },
-                        empty: t.attributes.length === 0 && methods.length === 0,
-                        methods,
-                    },
-                });
-            }
-            const diagrams = [...new Set(list.map((t) => `${t.packageName ? `${t.packageName}.` : ''}${t.diagram}`))].join(', ');
-            out.write(renderPython('timesync/datatypes-module.njk', { diagrams, imports: imports.lines() }));
-            for (const { t, view } of chunks) {
-                out.write('\n\n');
-                out.write(renderPython('timesync/datatype.njk', view), t.node);
-            }
+            writeDiagramModule(ctx, module, list);
         }
         return { types };
     },
 });
 
 export default create;
+
+/** The types by the module of their diagram, and where each one lives (the generator's result). */
+function groupByModule(dataTypes: readonly DataTypeView[]): { byModule: Map<string, DataTypeView[]>; types: Record<string, TypeMapping> } {
+    const byModule = new Map<string, DataTypeView[]>();
+    const types: Record<string, TypeMapping> = {};
+    for (const t of dataTypes) {
+        const { module } = diagramModule(t);
+        let list = byModule.get(module);
+        if (!list) byModule.set(module, (list = []));
+        list.push(t);
+        types[t.qualifiedName] = { module, name: pyName(t.name) };
+    }
+    return { byModule, types };
+}
+
+/** The module of one diagram (or of the diagrams sharing a module): its enums first, then its classes. */
+function writeDiagramModule(ctx: DataTypeGenerationContext, module: string, list: readonly DataTypeView[]): void {
+    const out = ctx.out.file(diagramModule(list[0]).file);
+    const imports = new Imports();
+    const local = new Map(list.map((t) => [t.name, pyName(t.name)]));
+    // Types of other diagrams referenced by attributes.
+    for (const t of ctx.dataTypes) {
+        if (!local.has(t.name) && diagramModule(t).module !== module) local.set(t.name, pyName(t.name));
+    }
+    const order = [...list.filter((t) => t.kind === 'enum'), ...list.filter((t) => t.kind !== 'enum')];
+    const chunks = order.map((t) => ({
+        t,
+        view: t.kind === 'enum' ? enumView(t, local, imports) : dataClassView(t, local, imports, ctx.dataTypes),
+    }));
+    const diagrams = [...new Set(list.map((t) => `${t.packageName ? `${t.packageName}.` : ''}${t.diagram}`))].join(', ');
+    out.write(renderPython('timesync/datatypes-module.njk', { diagrams, imports: imports.lines() }));
+    for (const { t, view } of chunks) {
+        out.write('\n\n');
+        out.write(renderPython('timesync/datatype.njk', view), t.node);
+    }
+}
+
+/** An enum.Enum of the enum's constants (and its methods). */
+function enumView(t: DataTypeView, local: Map<string, string>, imports: Imports): DataTypeChunkView {
+    imports.add('enum', 'Enum');
+    const methods = methodViews(t, (n) => annotation(n, local, []));
+    return {
+        name: pyName(t.name),
+        qualifiedName: t.qualifiedName,
+        enum: { constants: t.constants.map(pyName) },
+        data: undefined,
+        empty: t.constants.length === 0 && methods.length === 0,
+        methods,
+    };
+}
+
+/** A dataclass of a class or interface: its bases, attributes with defaults, methods. */
+function dataClassView(
+    t: DataTypeView,
+    local: Map<string, string>,
+    imports: Imports,
+    dataTypes: readonly DataTypeView[],
+): DataTypeChunkView {
+    imports.add('dataclasses', 'dataclass');
+    const bases = baseClasses(t, local, imports);
+    const attributes = t.attributes.map((a) => attributeView(a, annotation(a.typeName, local, t.typeParameters), dataTypes));
+    const methods = methodViews(t, (n) => annotation(n, local, t.typeParameters));
+    return {
+        name: pyName(t.name),
+        qualifiedName: t.qualifiedName,
+        enum: undefined,
+        data: { kind: t.kind === 'interface' ? 'Interface' : 'Class', typeParameters: t.typeParameters, bases, attributes },
+        empty: t.attributes.length === 0 && methods.length === 0,
+        methods,
+    };
+}
+
+/** The super types the build knows (in front), then `Generic[...]` for a generic type. */
+function baseClasses(t: DataTypeView, local: Map<string, string>, imports: Imports): string[] {
+    const bases: string[] = [];
+    if (t.typeParameters.length) {
+        imports.add('typing', 'Generic');
+        imports.add('typing', 'TypeVar');
+        bases.push(`Generic[${t.typeParameters.join(', ')}]`);
+    }
+    for (const s of t.superTypes) {
+        const simple = s.split('.').pop()!.replace(/<.*$/, '');
+        if (local.has(simple)) bases.unshift(local.get(simple)!);
+    }
+    return bases;
+}
+
+/**
+ * An attribute with its default: the primitive's zero, an enum's first constant, else `None`
+ * (and the annotation made optional for it).
+ */
+function attributeView(
+    a: DataTypeView['attributes'][number],
+    ann: string,
+    dataTypes: readonly DataTypeView[],
+): NonNullable<DataTypeChunkView['data']>['attributes'][number] {
+    const enumType = dataTypes.find((d) => d.name === a.typeName && d.kind === 'enum');
+    const value = DEFAULTS[ann] ?? (enumType?.constants.length ? `${pyName(enumType.name)}.${pyName(enumType.constants[0])}` : undefined);
+    if (value === undefined) return { name: pyName(a.name), annotation: ann.endsWith('| None') ? ann : `${ann} | None`, value: 'None' };
+    return { name: pyName(a.name), annotation: ann, value };
+}
