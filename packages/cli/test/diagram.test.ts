@@ -238,6 +238,17 @@ describe('maa-gen diagram: PNG and errors', () => {
         expect(none.stderr).toContain('unknown component "Nothing"; the model root has: toast.ArmController');
     });
 
+    it('draws a model with errors, marks them as the IDE does and says so', async () => {
+        dir = new ModelDir();
+        dir.write('maa.json', '{}\n');
+        dir.write('Broken.arc', 'component Broken {\n  port in Missing x;\n  port out int o;\n}\n');
+        const result = await runCli(['diagram', 'Broken', '--out', '-'], dir.dir);
+        expect(result.code, result.stderr).toBe(0);
+        const port = withClass(parseSvg(result.stdout), 'maa-port').find((n) => n.attrs['data-port-path'] === 'x');
+        expect(port?.attrs['class']).toContain('maa-error');
+        expect(result.stderr).toMatch(/^note: the model root has 1 error \(maa-gen check lists them\); the diagram marks them$/m);
+    });
+
     it('an output that cannot be written is an I/O problem (exit 2)', async () => {
         dir = new ModelDir();
         dir.write('blocker', 'a file, not a folder\n');
