@@ -3,7 +3,7 @@
 // publishDiagnostics with an error that follows; shutdown and exit end the stdio server with 0.
 import { spawn, type ChildProcessWithoutNullStreams } from 'node:child_process';
 import { once } from 'node:events';
-import { connect, type Socket } from 'node:net';
+import { connect, createServer, type AddressInfo, type Socket } from 'node:net';
 import { networkInterfaces } from 'node:os';
 import { pathToFileURL } from 'node:url';
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
@@ -39,7 +39,9 @@ afterEach(() => {
 function startLsp(args: string[], cwd: string): ChildProcessWithoutNullStreams {
     const child = spawn(process.execPath, [BIN, 'lsp', ...args], { cwd, stdio: ['pipe', 'pipe', 'pipe'] });
     cleanups.push(() => {
-        if (child.exitCode === null && child.signalCode === null) child.kill('SIGKILL');
+        // SIGTERM, not SIGKILL: maa-gen passes it on to the language server it started.
+        child.stdin.end();
+        if (child.exitCode === null && child.signalCode === null) child.kill('SIGTERM');
     });
     return child;
 }
@@ -155,6 +157,17 @@ describe('maa-gen lsp --socket', () => {
         const r = await runCli(['lsp', '--socket', 'http'], tempFolder().dir);
         expect(r.code).toBe(2);
         expect(r.stderr).toContain('maa-gen: error: not a port number (0-65535): http');
+    });
+
+    it('a port in use exits 2 and says so', async () => {
+        const taken = createServer();
+        taken.listen(0, '127.0.0.1');
+        await once(taken, 'listening');
+        cleanups.push(() => taken.close());
+        const port = (taken.address() as AddressInfo).port;
+        const r = await runCli(['lsp', '--socket', String(port)], tempFolder().dir);
+        expect(r.code).toBe(2);
+        expect(r.stderr).toContain(`maa-gen: error: cannot listen on 127.0.0.1:${port} (EADDRINUSE)`);
     });
 
     it('refuses --stdio together with --socket with exit 2', async () => {
