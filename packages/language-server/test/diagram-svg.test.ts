@@ -48,7 +48,8 @@ const GUARDED = `component Guarded {
   }
 }
 `;
-const WRAP = 'component Wrap {\n  port in int i;\n  port in boolean f;\n  port out int o;\n  Shift s;\n  i -> s.i;\n  f -> s.flip;\n  s.o -> o;\n}\n';
+const WRAP =
+    'component Wrap {\n  port in int i;\n  port in boolean f;\n  port out int o;\n  Shift s;\n  i -> s.i;\n  f -> s.flip;\n  s.o -> o;\n}\n';
 
 async function diagram(ws: DiagramWorkspace, name: string, diagramType: 'maa-cc' | 'maa-automaton', depth = 1): Promise<MaaGraph> {
     const component = workspaceComponents(ws.family.shared.workspace.LangiumDocuments).find((c) => c.name === name)?.node;
@@ -90,6 +91,18 @@ describe('standalone diagrams', () => {
         const open = renderDiagramSvg(await diagram(ws, 'Wrap', 'maa-cc', 2));
         expect(element(open, 'root.s')['class']).toBe('maa-component maa-composed maa-expanded maa-kind-mode component');
         expect(element(open, 'root.s.p')).toMatchObject({ 'data-instance-path': 's.p', 'data-mode': 'Up' });
+    });
+
+    test('a component that contains itself (an error) is opened once at any depth', async () => {
+        const ws = await diagramWorkspace({
+            'Loop.arc': 'component Loop {\n  port in int i;\n  Inner n;\n}\n',
+            'Inner.arc': 'component Inner {\n  port in int i;\n  Loop back;\n}\n',
+        });
+        const loop = workspaceComponents(ws.family.shared.workspace.LangiumDocuments).find((c) => c.name === 'Loop')!.node;
+        expect(expandedToDepth(loop, Number.POSITIVE_INFINITY)).toEqual(['n']);
+        expect(expandedToDepth(loop, 1)).toEqual([]);
+        const svg = renderDiagramSvg(await diagram(ws, 'Loop', 'maa-cc', Number.POSITIVE_INFINITY));
+        expect(element(svg, 'root.n.back')['data-instance-path']).toBe('n.back');
     });
 
     test('texts are escaped: a guard with < and && reads back as written', async () => {

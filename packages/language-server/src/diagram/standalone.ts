@@ -39,17 +39,18 @@ export async function standaloneDiagram(services: MaaDiagramServices, request: S
  */
 export function expandedToDepth(component: ast.ComponentType, depth: number): string[] {
     const paths: string[] = [];
-    const walk = (type: ast.ComponentType, path: readonly string[], level: number): void => {
+    // `above`: the types on the way down; a model that contains itself (an error) is opened once.
+    const walk = (type: ast.ComponentType, path: readonly string[], level: number, above: ReadonlySet<ast.ComponentType>): void => {
         for (const sub of [...subcomponentsOf(type), ...modeSubcomponentsOf(type)]) {
             const subType = subcomponentType(sub).decl;
             // Level of this subcomponent: the component's own are level 1.
-            if (!subType || level + 1 >= depth) continue;
+            if (!subType || level + 1 >= depth || above.has(subType)) continue;
             const subPath = [...path, sub.name];
             paths.push(subPath.join('.'));
-            walk(subType, subPath, level + 1);
+            walk(subType, subPath, level + 1, new Set([...above, subType]));
         }
     };
-    walk(component, [], 0);
+    walk(component, [], 0, new Set([component]));
     return [...new Set(paths)].sort();
 }
 
