@@ -12,7 +12,8 @@
 // Installs no npm packages: run `npm ci` first (the README's test command does).
 // Extra arguments go to Vitest, e.g. `npm test -- packages/cli`; MAA_TEST_PYTHON=0 skips the
 // Python suites except ROS 2, MAA_TEST_ROS2=0 skips ROS 2, MAA_TEST_E2E=0 the browser tests,
-// MAA_TEST_BUILD=0 the build (for a tree that is built already), MAA_TEST_LINT=0 the linters.
+// MAA_TEST_BUILD=0 the build (for a tree that is built already), MAA_TEST_LINT=0 the linters,
+// MAA_TEST_PACK=0 the pack-and-install test.
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -88,6 +89,10 @@ vitestSuite(process.argv.slice(2));
 // examples/, driven through playwright-core in Debian's chromium (installed here when missing).
 // Its results (one per scenario) are in e2e/artifacts/results.json, screenshots beside them.
 if (process.env.MAA_TEST_E2E !== '0') e2eSuite();
+
+// The pack-and-install test (scripts/pack-install.mjs): the public packages packed, installed into
+// an empty folder outside the repository, and used there as a user would (one result per step).
+if (process.env.MAA_TEST_PACK !== '0') packInstallSuite();
 
 // The Python suites: each sets up its venv (idempotent scripts), runs pytest (JUnit XML for the
 // counts), then its linters; a failing linter counts as one failure.
@@ -223,6 +228,28 @@ function pythonSuite(suite) {
         const lintStatus = step(`${suite.title} ${name}`, python, args, path.join(repo, suite.dir));
         if (lintStatus !== 0) tally.fail('linters that failed', `${suite.title} ${name} exited with ${lintStatus}`);
     }
+}
+
+function packInstallSuite() {
+    const resultsDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-pack-'));
+    const resultsFile = path.join(resultsDir, 'results.json');
+    const status = step('pack and install', process.execPath, [path.join(repo, 'scripts', 'pack-install.mjs'), '--results', resultsFile]);
+    let results;
+    try {
+        results = JSON.parse(readFileSync(resultsFile, 'utf8')).results;
+    } catch {
+        tally.fail('runners that reported nothing', `the pack-and-install test exited with ${status} and wrote no results`);
+        return;
+    } finally {
+        rmSync(resultsDir, { recursive: true, force: true });
+    }
+    for (const r of results) {
+        if (r.skipped) tally.skipped += 1;
+        else if (r.ok) tally.passed += 1;
+        else tally.fail('failed tests', `pack-install: ${r.name}: ${String(r.error ?? '').split('\n')[0]}`);
+    }
+    if (status !== 0 && results.every((r) => r.ok))
+        tally.fail('runners that failed without a reason', `the pack-and-install test exited with ${status}`);
 }
 
 function e2eSuite() {

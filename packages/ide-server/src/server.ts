@@ -1,5 +1,6 @@
-import { realpathSync, statSync } from 'node:fs';
+import { existsSync, realpathSync, statSync } from 'node:fs';
 import { createServer, type IncomingMessage, type Server, type ServerResponse } from 'node:http';
+import { createRequire } from 'node:module';
 import type { AddressInfo } from 'node:net';
 import path from 'node:path';
 import type { Duplex } from 'node:stream';
@@ -21,11 +22,36 @@ import { Workspace } from './workspace.js';
 export const packageDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const repoDir = path.resolve(packageDir, '..', '..');
 
+/** The folder of an installed package (the workspace's in a clone), or undefined when it is not installed. */
+function installedPackageDir(name: string): string | undefined {
+    try {
+        return path.dirname(createRequire(import.meta.url).resolve(`${name}/package.json`));
+    } catch {
+        return undefined;
+    }
+}
+
+/** The built web app: @maa/ide-web's dist/. */
+function defaultAppDir(): string {
+    return path.join(installedPackageDir('@maa/ide-web') ?? path.join(repoDir, 'packages', 'ide-web'), 'dist');
+}
+
+/**
+ * maa-sim: in a clone the development venv's (sim-server/scripts/setup_env.sh creates it); installed
+ * from the registry @maa/sim-server's launcher, which installs maa-sim into a cached venv on first use.
+ */
+function defaultMaaSim(): string {
+    const simServer = installedPackageDir('@maa/sim-server') ?? path.join(repoDir, 'sim-server');
+    const development = path.join(simServer, '.venv', 'bin', 'maa-sim');
+    const inClone = existsSync(path.join(simServer, 'scripts', 'setup_env.sh'));
+    return inClone || existsSync(development) ? development : path.join(simServer, 'bin', 'maa-sim.mjs');
+}
+
 export const defaults = {
     port: 3000,
     host: '127.0.0.1',
-    appDir: path.join(repoDir, 'packages', 'ide-web', 'dist'),
-    maaSim: path.join(repoDir, 'sim-server', '.venv', 'bin', 'maa-sim'),
+    appDir: defaultAppDir(),
+    maaSim: defaultMaaSim(),
     ros2Venv: path.join(repoDir, 'packages', 'generators-python', '.venv-ros2'),
     maxFileBytes: 5 * 1024 * 1024,
     sessionIdleSeconds: 60,
@@ -38,7 +64,7 @@ export interface IdeServerOptions {
     host?: string;
     /** The built web app (default: packages/ide-web/dist). */
     appDir?: string;
-    /** The `maa-sim` executable (default: sim-server/.venv/bin/maa-sim). */
+    /** The `maa-sim` executable (default: sim-server/.venv/bin/maa-sim in a clone, @maa/sim-server's launcher when installed). */
     maaSim?: string;
     /**
      * The Python venv ROS 2 sessions run in: its maa-sim, the generated interface packages installed
