@@ -1,7 +1,7 @@
 /** This package's folder: pyproject.toml and src/maa_sim/ (sim-server/ in a clone). */
 export declare const packageDir: string;
 /** The development venv's maa-sim (a clone with `bash sim-server/scripts/setup_env.sh` run). */
-export declare function developmentMaaSim(): string;
+export declare function developmentMaaSim(dir?: string): string;
 /** The folder of cached venvs: $MAA_CACHE_DIR, else $XDG_CACHE_HOME/maa, else ~/.cache/maa. */
 export declare function cacheDir(env?: NodeJS.ProcessEnv): string;
 /** A hash of what pip installs (pyproject.toml and src/maa_sim). */
@@ -14,6 +14,8 @@ export interface EnsureMaaSimOptions {
     python?: string;
     /** Receives the progress lines of a first-use install (default: stderr). */
     onProgress?: (line: string) => void;
+    /** The folder with pyproject.toml and src/maa_sim (default: this package's). */
+    dir?: string;
 }
 /**
  * The maa-sim to run, installing it first when needed: $MAA_SIM when set, else the development

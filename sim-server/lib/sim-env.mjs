@@ -16,8 +16,8 @@ export const packageDir = path.resolve(path.dirname(fileURLToPath(import.meta.ur
 const STAMP = '.maa-sim-installed';
 
 /** The development venv's maa-sim (a clone with `bash sim-server/scripts/setup_env.sh` run). */
-export function developmentMaaSim() {
-    return path.join(packageDir, '.venv', 'bin', 'maa-sim');
+export function developmentMaaSim(dir = packageDir) {
+    return path.join(dir, '.venv', 'bin', 'maa-sim');
 }
 
 /** The folder of cached venvs: $MAA_CACHE_DIR, else $XDG_CACHE_HOME/maa, else ~/.cache/maa. */
@@ -54,20 +54,22 @@ export function cachedVenv(env = process.env, dir = packageDir) {
 /**
  * The maa-sim to run, installing it first when needed: $MAA_SIM when set, else the development
  * venv's when it exists, else the cached venv's (created with `python` on first use, which takes
- * minutes: MuJoCo, rclpy, viser come from PyPI). Progress lines go to `onProgress`.
+ * minutes: MuJoCo, rclpy, viser come from PyPI). Progress lines go to `onProgress`; `dir` is the
+ * folder with pyproject.toml and src/maa_sim (this package's; tests pass another).
  */
 export async function ensureMaaSim({
     env = process.env,
     python = env.MAA_PYTHON || 'python3',
     onProgress = (line) => console.error(line),
+    dir = packageDir,
 } = {}) {
     if (env.MAA_SIM) return env.MAA_SIM;
-    if (existsSync(developmentMaaSim())) return developmentMaaSim();
-    const venv = cachedVenv(env);
+    if (existsSync(developmentMaaSim(dir))) return developmentMaaSim(dir);
+    const venv = cachedVenv(env, dir);
     const maaSim = path.join(venv, 'bin', 'maa-sim');
-    const want = `${sourcesHash()} ${await pythonVersion(python)}`;
+    const want = `${sourcesHash(dir)} ${await pythonVersion(python)}`;
     if (existsSync(maaSim) && readIfExists(path.join(venv, STAMP)) === want) return maaSim;
-    await installVenv(venv, python, want, onProgress);
+    await installVenv(dir, venv, python, want, onProgress);
     return maaSim;
 }
 
@@ -87,15 +89,14 @@ async function pythonVersion(python) {
  * Installs maa-sim into `venv` (venvs cannot be moved, so in place); the stamp is written last,
  * so a venv an interrupted install left behind has none and is removed and made again.
  */
-async function installVenv(venv, python, stamp, onProgress) {
+async function installVenv(dir, venv, python, stamp, onProgress) {
     rmSync(venv, { recursive: true, force: true });
     mkdirSync(path.dirname(venv), { recursive: true });
     // pip builds in the source tree; the installed package's folder may be read-only, so build from a copy.
     const sources = mkdtempSync(path.join(tmpdir(), 'maa-sim-src-'));
     try {
         for (const entry of ['pyproject.toml', 'README.md', path.join('src', 'maa_sim')]) {
-            if (existsSync(path.join(packageDir, entry)))
-                cpSync(path.join(packageDir, entry), path.join(sources, entry), { recursive: true });
+            if (existsSync(path.join(dir, entry))) cpSync(path.join(dir, entry), path.join(sources, entry), { recursive: true });
         }
         onProgress(`maa-sim: first use: installing the simulator into ${venv} (MuJoCo, rclpy, viser from PyPI; a few minutes)`);
         await streamed(python, ['-m', 'venv', venv], onProgress, 'creating the venv');
