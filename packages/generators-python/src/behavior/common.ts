@@ -10,6 +10,7 @@ import type {
 import { dataTypeQualifiedName } from '@maa/generator-core';
 import { GenerationError } from '@maa/generator-core/node';
 import { PythonTranslator, isInPort, isOutPort, pyName, type NameContext, type Node } from '../python/expressions.js';
+import { checkOneBindingPerName, fromStatements, localNameFor } from './import-names.js';
 import type { AttributeView, PrologueView } from './views.js';
 
 /** Names of the base class a generated attribute must not shadow. */
@@ -65,7 +66,14 @@ export class Imports {
         if (!set) this.from.set(module, (set = new Set()));
         set.add(name);
     }
+    /** Imports a model type and returns the name the module refers to it by (an alias where its own name is taken). */
+    use(module: string, name: string): string {
+        const local = localNameFor(this.from, module, name);
+        this.add(module, local === name ? name : `${name} as ${local}`);
+        return local;
+    }
     lines(): string[] {
+        checkOneBindingPerName(this.from);
         // isort sections: standard library, then the build's own packages (model packages and
         // run-time environments; ruff run inside the generated folder sees both as first-party).
         // Within a section, `import m` lines precede the `from m import ...` lines (isort's default).
@@ -75,12 +83,10 @@ export class Imports {
         ];
         const modules = [...this.from.keys()].sort((a, b) => cmp(a.toLowerCase(), b.toLowerCase()));
         for (const module of modules) {
-            const names = [...this.from.get(module)!].sort();
+            const names = this.from.get(module)!;
             const group = groups[STDLIB.has(module.split('.')[0]) ? 0 : 1];
-            if (names.includes('')) group.straight.push(`import ${module}`);
-            for (const n of names.filter((x) => x.includes(' as '))) group.from.push(...importLine(module, [n]));
-            const plain = names.filter((n) => n !== '' && !n.includes(' as '));
-            if (plain.length) group.from.push(...importLine(module, plain));
+            if (names.has('')) group.straight.push(`import ${module}`);
+            for (const statement of fromStatements(names)) group.from.push(...importLine(module, statement));
         }
         return groups
             .map((g) => [...g.straight, ...g.from])
@@ -127,8 +133,7 @@ export const PRIMITIVE_PY: Readonly<Record<string, string>> = {
 export function typeRef(datatypes: DataTypeResult | undefined, imports: Imports, decl: Node): string {
     const mapping = isNamed(decl) ? datatypes?.types?.[dataTypeQualifiedName(decl)] : undefined;
     if (mapping?.module && mapping.name) {
-        imports.add(mapping.module, mapping.name);
-        return mapping.name;
+        return imports.use(mapping.module, mapping.name);
     }
     return pyName(String(decl.name));
 }
@@ -138,15 +143,16 @@ function isNamed(n: Node): n is Node & { name: string } {
     return typeof n.name === 'string';
 }
 
-/** A data type by its simple name (for qualified references such as `pkg.Types.Color.RED`). */
+/**
+ * A data type by the name a qualified reference such as `pkg.Types.Color.RED` gives it (`pkg.Types.Color`):
+ * the type of that qualified name, else the first whose name ends so (`Types.Color`, `Color`).
+ */
 export function typeBySimpleName(datatypes: DataTypeResult | undefined, imports: Imports, name: string): string | undefined {
-    const key = Object.keys(datatypes?.types ?? {})
-        .sort()
-        .find((q) => q.split('.').pop() === name);
+    const keys = Object.keys(datatypes?.types ?? {}).sort();
+    const key = keys.includes(name) ? name : keys.find((q) => q.endsWith(`.${name}`));
     const mapping = key ? datatypes?.types?.[key] : undefined;
     if (!mapping?.module || !mapping.name) return undefined;
-    imports.add(mapping.module, mapping.name);
-    return mapping.name;
+    return imports.use(mapping.module, mapping.name);
 }
 
 /** A Python annotation for a model type. */

@@ -16,7 +16,7 @@ export interface NameContext {
     send?(target: Node, value: string): string | undefined;
     /** Python for a class-diagram type (enum/class). */
     type(decl: Node): string;
-    /** Python for a type named by its simple name (from a qualified name like `pkg.Types.Color`), if known. */
+    /** Python for a type named as written in a qualified reference (`pkg.Types.Color` of `pkg.Types.Color.RED`), if known. */
     typeBySimpleName?(name: string): string | undefined;
 }
 
@@ -65,8 +65,11 @@ const BINARY: Record<string, string> = {
     '>>': '>>',
 };
 
-function isNullLiteral(n: Node | undefined): boolean {
-    return n?.$type === 'NullLiteral';
+/** `x == null` as `(x is None)`: a comparison with null tests identity, as in Java (and ruff's E711 asks for `is`). */
+function nullComparison(e: Node, l: string, r: string): string | undefined {
+    const isNull = (n: unknown): boolean => (n as Node | undefined)?.$type === 'NullLiteral';
+    if ((e.op !== '==' && e.op !== '!=') || !(isNull(e.left) || isNull(e.right))) return undefined;
+    return `(${l} ${e.op === '==' ? 'is' : 'is not'} ${r})`;
 }
 
 function stripSuffix(text: string): string {
@@ -125,7 +128,7 @@ export class PythonTranslator {
                 if (libType) return `jfield(${pyString(libType)}, ${pyString(String(e.member))})`;
                 const parts = qualifiedParts(e);
                 if (parts && parts.length >= 2) {
-                    const type = this.names.typeBySimpleName?.(parts[parts.length - 2]);
+                    const type = this.names.typeBySimpleName?.(parts.slice(0, -1).join('.'));
                     if (type) return `${type}.${pyName(parts[parts.length - 1])}`;
                     throw new GenerationError(`unresolved name '${parts.join('.')}'`, e);
                 }
@@ -153,10 +156,8 @@ export class PythonTranslator {
                     // chars are their codes at run time; in a string they are characters again
                     return `jconcat(${isChar(e.left) ? `chr(${l})` : l}, ${isChar(e.right) ? `chr(${r})` : r})`;
                 }
-                // a comparison with null tests identity, as in Java (and ruff's E711 asks for `is`)
-                if ((e.op === '==' || e.op === '!=') && (isNullLiteral(e.left) || isNullLiteral(e.right))) {
-                    return `(${l} ${e.op === '==' ? 'is' : 'is not'} ${r})`;
-                }
+                const nullTest = nullComparison(e, l, r);
+                if (nullTest) return nullTest;
                 const op = BINARY[e.op as string];
                 if (!op) throw new GenerationError(`operator '${e.op}' is not supported by the Python generators`, e);
                 return `(${l} ${op} ${r})`;

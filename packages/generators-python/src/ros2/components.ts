@@ -114,14 +114,15 @@ function renderNode(ctx: ComponentGenerationContext, app: Ros2Application, n: Co
 
 function renderModeManager(ctx: ComponentGenerationContext, app: Ros2Application, mg: ModeManagerNode, dt: RosDataTypeResult): string {
     const c = mg.instance.component;
-    const imports = new Imports();
+    // the node's imports first, so that the guards' model types take the names (or aliases) they have there
+    const imports = mg.imports.into(new Imports());
     const body = modeTransitionBody(c, dt, imports, 'maa_ros2.modes');
     return ctx.templates.render('mode_manager.py.njk', {
         mg,
         pkg: app.pkg,
         instance: mg.instancePath,
         qualifiedName: c.qualifiedName,
-        imports: mg.imports.into(imports).lines(),
+        imports: imports.lines(),
         inputLines: mg.inputs.flatMap((p) =>
             tupleItem('InPort', [JSON.stringify(p.port), JSON.stringify(p.topic), p.codec, `sampled=${p.sampled ? 'True' : 'False'}`]),
         ),

@@ -108,7 +108,7 @@ function writeHandwritten(
 ): { subscribes: TopicRef[]; publishes: TopicRef[] } {
     const ins = c.ports.filter((p) => p.direction === 'in');
     const outs = c.ports.filter((p) => p.direction === 'out');
-    const typeImports = new PyImports();
+    const typeImports = new PyImports().add('maa_ros2', 'PlatformBehavior');
     const annotations = new Map(c.ports.map((p) => [p.name, pythonType(p, dt, typeImports)]));
     const base = `${pkg}/${pkg}/handwritten/${rosName(c.name)}_base.py`;
     emit(
@@ -121,7 +121,7 @@ function writeHandwritten(
             delayed: outs.filter((p) => p.delayed).map((p) => JSON.stringify(p.name)),
             outs: outs.map((p) => ({ name: p.name, method: `send_${rosName(p.name)}`, type: annotations.get(p.name), node: p.node })),
             ins: ins.map((p) => ({ name: p.name, type: annotations.get(p.name) })),
-            typeImports: typeImports.add('maa_ros2', 'PlatformBehavior').lines(),
+            typeImports: typeImports.lines(),
         }),
         c.node,
     );
@@ -142,8 +142,7 @@ function pythonType(p: PortView, dt: RosDataTypeResult, typeImports: PyImports):
     if (prim) return prim.py;
     const py = p.type.kind === 'object' ? dt.types?.[typeKey({ kind: 'object', decl: p.type.decl, args: [] })] : undefined;
     if (!py?.module || !py.name) throw new GenerationError(`port type ${p.typeName} has no Python type`, p.node);
-    if (p.direction === 'out') typeImports.add(py.module, py.name);
-    return py.name;
+    return p.direction === 'out' ? typeImports.use(py.module, py.name) : py.name;
 }
 
 /** A Python tuple of strings. */

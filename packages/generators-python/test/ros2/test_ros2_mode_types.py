@@ -57,7 +57,7 @@ def test_the_mode_manager_imports_the_message_module(package: Path) -> None:
     assert f"from {IFACE}.msg import" not in text
     known = f"lint.isort.known-third-party=['{PKG}','{IFACE}','maa_behavior','maa_ros2']"
     cmd = [sys.executable, "-m", "ruff", "check", "--no-cache", "--config", str(RUFF_CONFIG), "--config", known, "."]
-    # from the platform folder, as test_generated_code.py runs it (inside the package, its launch/ folder is first-party)
+    # from the platform folder, as test_generated_code.py runs it (in the package its launch/ folder is first-party)
     result = subprocess.run(cmd, cwd=package.parent, capture_output=True, text=True, check=False)
     assert result.returncode == 0, result.stdout + result.stderr
 

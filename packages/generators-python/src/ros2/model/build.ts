@@ -93,7 +93,12 @@ class ApplicationBuilder {
 
     componentNode(inst: InstanceView): ComponentNode {
         const c = inst.component;
-        const imports = new PyImports();
+        const behavior = this.input.behaviors.get(c)!;
+        const gates = this.gates(inst);
+        // the run-time names first: a model type of the same name is imported under an alias
+        const imports = new PyImports().add(behavior.module, behavior.cls);
+        imports.addAll('maa_ros2', ['ComponentNode', 'InPort', 'OutPort', 'run_node']);
+        if (gates.length > 0) imports.add('maa_ros2', 'ModeGate');
         const { name, namespace } = this.topics.nodeOf(inst);
         const moduleName = inst.path.length === 0 ? rosName(this.input.arch.root.name) : inst.path.map(rosName).join('__');
         // Codecs in port declaration order (the imports do not depend on it, the lists keep it).
@@ -109,11 +114,7 @@ class ApplicationBuilder {
                 node: p.node,
             }));
         const identity = this.identity(inst, name, namespace, this.topics.fqnOf(inst), moduleName, imports);
-        const behavior = this.input.behaviors.get(c)!;
-        const gates = this.gates(inst);
-        imports.add(behavior.module, behavior.cls);
-        imports.addAll('maa_ros2', ['ComponentNode', 'InPort', 'OutPort', 'run_node', ...codecNames([...inputs, ...outputs])]);
-        if (gates.length > 0) imports.add('maa_ros2', 'ModeGate');
+        imports.addAll('maa_ros2', codecNames([...inputs, ...outputs]));
         return { ...identity, kind: 'component', component: c, behavior, inputs, outputs, platform: behavior.platform, gates };
     }
 
@@ -130,7 +131,9 @@ class ApplicationBuilder {
     }
 
     modeManager(inst: InstanceView): ModeManagerNode {
-        const imports = new PyImports();
+        // the run-time names first: a model type of the same name is imported under an alias
+        const imports = new PyImports().add('collections.abc', 'Mapping');
+        imports.addAll('maa_ros2', ['InPort', 'ModeManagerNode', 'Relay', 'run_node']);
         const inputs = this.inputs(inst, imports);
         const relays = this.relays(inst, imports);
         const base = inst.path.length === 0 ? '' : `${inst.path.map(rosName).join('__')}__`;
@@ -142,8 +145,7 @@ class ApplicationBuilder {
             `${base}maa_modes`,
             imports,
         );
-        imports.add('collections.abc', 'Mapping');
-        imports.addAll('maa_ros2', ['InPort', 'ModeManagerNode', 'Relay', 'run_node', ...codecNames([...inputs, ...relays])]);
+        imports.addAll('maa_ros2', codecNames([...inputs, ...relays]));
         return { ...identity, kind: 'manager', modeTopic: this.topics.modeTopic(inst), inputs, relays };
     }
 

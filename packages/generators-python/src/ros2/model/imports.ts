@@ -1,4 +1,5 @@
 import type { Imports } from '../../behavior/common.js';
+import { checkOneBindingPerName, fromStatements, localNameFor } from '../../behavior/import-names.js';
 
 function compare(a: string, b: string): number {
     return a < b ? -1 : a > b ? 1 : 0;
@@ -25,8 +26,16 @@ export class PyImports {
         return this;
     }
 
+    /** Imports a model type and returns the name the file refers to it by (an alias where its own name is taken). */
+    use(module: string, name: string): string {
+        const local = localNameFor(this.modules, module, name);
+        this.add(module, local === name ? name : `${name} as ${local}`);
+        return local;
+    }
+
     /** The import lines in isort order (ruff `I`), see importLines. */
     lines(): string[] {
+        checkOneBindingPerName(this.modules);
         return importLines(this.modules);
     }
 
@@ -39,18 +48,12 @@ export class PyImports {
 
 /**
  * One import block in isort order (ruff `I`): `import m` lines, then `from m import ...` lines, each
- * sorted by module; names: constants, classes, then functions. The name '' stands for `import m`.
+ * sorted by module; names: constants, classes, then functions. The name '' stands for `import m`;
+ * an aliased name (`X as Y`) gets a statement of its own (fromStatements).
  */
 export function importLines(imports: ReadonlyMap<string, ReadonlySet<string>>): string[] {
     const modules = [...imports.keys()].sort((a, b) => compare(a.toLowerCase(), b.toLowerCase()));
     const plain = modules.filter((m) => imports.get(m)!.has('')).map((m) => `import ${m}`);
-    const rank = (n: string): number => (/^[A-Z0-9_]+$/.test(n) && n.length > 1 ? 0 : /^[A-Z]/.test(n) ? 1 : 2);
-    const from = modules
-        .map((m) => [m, [...imports.get(m)!].filter((n) => n !== '')] as const)
-        .filter(([, names]) => names.length > 0)
-        .map(
-            ([m, names]) =>
-                `from ${m} import ${names.sort((a, b) => rank(a) - rank(b) || compare(a.toLowerCase(), b.toLowerCase()) || compare(a, b)).join(', ')}`,
-        );
+    const from = modules.flatMap((m) => fromStatements(imports.get(m)!).map((names) => `from ${m} import ${names.join(', ')}`));
     return [...plain, ...from];
 }

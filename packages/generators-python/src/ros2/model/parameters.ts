@@ -65,11 +65,11 @@ export function rosParameter(
     imports: PyImports,
 ): Parameter {
     const enumType = p.type.kind === 'object' && !primitiveOf(p.type) ? dt.types?.[typeKey(p.type)] : undefined;
-    if (enumType?.module && enumType.name) imports.add(enumType.module, enumType.name);
+    const local = enumType?.module && enumType.name ? imports.use(enumType.module, enumType.name) : enumType?.name;
     return {
         name: p.name,
         value: value.kind === 'enum' ? value.ordinal : value.value,
-        enumType: enumType?.name,
+        enumType: local,
         float: primitiveOf(p.type)?.py === 'float',
     };
 }

@@ -27,10 +27,10 @@ export function portCodec(p: PortView, dt: RosDataTypeResult, imports: PyImports
         const msg = dt.messages[typeKey(p.type)];
         const py = dt.types?.[typeKey({ kind: 'object', decl: p.type.decl, args: [] })];
         if (msg && py?.module && py.name) {
-            imports.add(msg.module, '').add(py.module, py.name);
+            const local = imports.add(msg.module, '').use(py.module, py.name);
             const qualified = `${msg.module}.${msg.name}`;
             const helper = msg.kind === 'enum' ? 'enum_port' : 'class_port';
-            return { rosType: msg.type, helper, codec: `${helper}(${qualified}, ${py.name})`, sampled: false };
+            return { rosType: msg.type, helper, codec: `${helper}(${qualified}, ${local})`, sampled: false };
         }
     }
     throw new GenerationError(

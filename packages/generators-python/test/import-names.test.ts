@@ -1,0 +1,222 @@
+import { readFileSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { describe, expect, it } from 'vitest';
+import { checkOneBindingPerName, localNameFor } from '../src/behavior/import-names.js';
+import { Imports } from '../src/behavior/common.js';
+import { PyImports } from '../src/ros2/model/imports.js';
+import { generate, tempModelRoot } from './maa-gen.js';
+import { ensureVenv, packageDir, pythonFiles, ruffConfig, run, venvPython } from './python-env.js';
+
+// One name, one import: a generated module that imported a name from two modules silently used the
+// later one (`from a.types import Kind` then `from b.types import Kind`). Model types now yield an
+// alias where their name is taken; a run-time name added after a model type took it is refused.
+describe('the names imports bind', () => {
+    it('a model type whose name another module took is imported under an alias, the same one every time', () => {
+        const imports = new Imports();
+        expect(imports.use('a.types', 'Kind')).toBe('Kind');
+        expect(imports.use('b.types', 'Kind')).toBe('b_types_Kind');
+        expect(imports.use('a.types', 'Kind')).toBe('Kind');
+        expect(imports.use('b.types', 'Kind')).toBe('b_types_Kind');
+        expect(imports.lines()).toEqual(['from a.types import Kind', 'from b.types import Kind as b_types_Kind']);
+    });
+
+    it('a model type named like a run-time name gives way to it', () => {
+        const imports = new PyImports().add('maa_ros2', 'Relay').add('app_interfaces.msg', '');
+        expect(imports.use('app.model.types', 'Relay')).toBe('app_model_types_Relay');
+        expect(imports.use('app.model.types', 'Mode')).toBe('Mode');
+        expect(imports.lines()).toEqual([
+            'import app_interfaces.msg',
+            'from app.model.types import Mode',
+            'from app.model.types import Relay as app_model_types_Relay',
+            'from maa_ros2 import Relay',
+        ]);
+        // handed to the behavior generators' builder, the alias stays the type's name there
+        const target = imports.into(new Imports());
+        expect(target.use('app.model.types', 'Relay')).toBe('app_model_types_Relay');
+    });
+
+    it('numbers an alias that is taken too', () => {
+        const taken = new Map([
+            ['x', new Set(['Kind'])],
+            ['y', new Set(['Z as b_types_Kind'])],
+        ]);
+        expect(localNameFor(taken, 'b.types', 'Kind')).toBe('b_types_Kind_2');
+    });
+
+    it('refuses a run-time name added after a model type took it, and a module bound to two things', () => {
+        const imports = new Imports();
+        imports.use('app.types', 'Mapping');
+        imports.add('collections.abc', 'Mapping');
+        expect(() => imports.lines()).toThrow(/import the name 'Mapping' twice \(app\.types\.Mapping, collections\.abc\.Mapping\)/);
+        expect(() =>
+            checkOneBindingPerName(
+                new Map([
+                    ['a.b', new Set([''])],
+                    ['a.c', new Set([''])],
+                ]),
+            ),
+        ).not.toThrow();
+        expect(() =>
+            checkOneBindingPerName(
+                new Map([
+                    ['a.b', new Set([''])],
+                    ['m', new Set(['a'])],
+                ]),
+            ),
+        ).toThrow(/'a' twice/);
+    });
+});
+
+const APP = `application Both for app.Both {
+  platform timesync {
+    timesync.Components;
+    timesync.AutomataBehavior;
+    timesync.DataTypes;
+  }
+}
+application Gated for app.Gated {
+  platform rospython {
+    ros2.Components;
+    ros2.AutomataBehavior;
+    ros2.DataTypes;
+  }
+}
+`;
+
+const root = tempModelRoot('import-names', {
+    'a/Types.cd': 'package a;\n\nclassdiagram Types {\n  enum Kind { ON, OFF; }\n}\n',
+    'b/Types.cd': 'package b;\n\nclassdiagram Types {\n  enum Kind { OFF, ON; }\n}\n',
+    // both enums in one component: ports, parameters defaults and guards over each
+    'app/Both.arc': `package app;
+
+component Both {
+  port in a.Types.Kind x;
+  port in b.Types.Kind y;
+  port out boolean same;
+
+  <<sync>> compute {
+    same = x == a.Types.Kind.ON && y == b.Types.Kind.ON;
+  }
+}
+`,
+    // model types named like maa_ros2's Relay (read by a mode guard) and ModeGate (a gated node's port)
+    'app/Names.cd': 'package app;\n\nclassdiagram Names {\n  enum Relay { OPEN, CLOSED; }\n  class ModeGate {\n    int v;\n  }\n}\n',
+    'app/Pass.arc': `package app;
+
+import app.Names.*;
+
+component Pass {
+  port in ModeGate i;
+  port out ModeGate o;
+
+  <<sync>> compute {
+    if (i != null) {
+      o = i;
+    }
+  }
+}
+`,
+    'app/Gated.arc': `package app;
+
+import app.Names.*;
+
+component Gated {
+  port in Relay r;
+  port in ModeGate g;
+  port out ModeGate o;
+
+  <<sync>> mode automaton {
+    initial mode Open {
+      Pass p;
+      g -> p.i;
+      p.o -> o;
+    }
+    mode Closed {
+    }
+    Open -> Closed [r == Relay.CLOSED];
+    Closed -> Open [r == Relay.OPEN];
+  }
+}
+`,
+    'Both.arcapp': APP.split('application Gated')[0]!,
+    'Gated.arcapp': `application Gated${APP.split('application Gated')[1]!}`,
+});
+
+// Both fed one slice: a's ON on x and b's ON on y (whose ordinals differ) make `same` true only if
+// each guard compares with its own enum.
+const DRIVER = `import json, sys
+sys.path.insert(0, sys.argv[1])
+import a.types, b.types
+from app.both import Both
+from maa_timesync import TICK, System
+system = System(Both)
+system.init()
+for port, item in [("x", a.types.Kind.ON), ("x", TICK), ("y", b.types.Kind.ON), ("y", TICK), ("x", a.types.Kind.OFF), ("x", TICK), ("y", b.types.Kind.ON), ("y", TICK)]:
+    system.receive(port, item)
+system.run()
+print(json.dumps(["Tk" if v is TICK else v for v in system.outputs["same"]]))
+`;
+
+describe('a component with two types of one name (python-timesync)', () => {
+    it('imports the second under an alias, and its guards compare with the right one', async () => {
+        await ensureVenv();
+        const gen = await generate(path.join(root.dir, 'Both.arcapp'), 'timesync', path.join(root.dir, 'out'), root.dir);
+        expect(gen.status, gen.stdout + gen.stderr).toBe(0);
+        const build = path.join(root.dir, 'out', 'timesync');
+        const both = readFileSync(path.join(build, 'app', 'both.py'), 'utf8');
+        expect(both).toContain('from a.types import Kind\nfrom b.types import Kind as b_types_Kind\n');
+        expect(both).toContain('((self.x == Kind.ON) and (self.y == b_types_Kind.ON))');
+        // the model's packages (maa_app.py's ENUMS, by simple name, lists both as "Kind": not an import)
+        const ruff = await run(
+            venvPython,
+            ['-m', 'ruff', 'check', '--config', ruffConfig, '--no-cache', '--output-format', 'concise', 'app', 'a', 'b'],
+            build,
+        );
+        expect(ruff.status, ruff.stdout + ruff.stderr).toBe(0);
+        writeFileSync(path.join(root.dir, 'driver.py'), DRIVER);
+        const r = await run(venvPython, [path.join(root.dir, 'driver.py'), build], root.dir);
+        expect(r.status, r.stderr).toBe(0);
+        expect(JSON.parse(r.stdout)).toEqual([true, 'Tk', false, 'Tk']);
+    }, 180_000);
+});
+
+describe('model types named like run-time names (ROS 2)', () => {
+    it('are imported under an alias in the node files and the mode manager, which stay ruff-clean', async () => {
+        await ensureVenv();
+        const gen = await generate(path.join(root.dir, 'Gated.arcapp'), 'rospython', path.join(root.dir, 'ros'), root.dir);
+        expect(gen.status, gen.stdout + gen.stderr).toBe(0);
+        const platform = path.join(root.dir, 'ros', 'rospython');
+        const nodes = path.join(platform, 'gated', 'gated', 'nodes');
+        const manager = readFileSync(path.join(nodes, 'maa_modes.py'), 'utf8');
+        expect(manager).toContain('from gated.model.app.names import Relay as gated_model_app_names_Relay\n');
+        expect(manager).toContain('from maa_ros2 import InPort, ModeManagerNode, Relay,');
+        expect(manager).toContain('enum_port(gated_interfaces.msg.Relay, gated_model_app_names_Relay)');
+        expect(manager).toContain('inputs.get("r") == gated_model_app_names_Relay.CLOSED');
+        const node = readFileSync(path.join(nodes, 'p.py'), 'utf8');
+        expect(node).toContain('from gated.model.app.names import ModeGate as gated_model_app_names_ModeGate\n');
+        expect(node).toContain('class_port(gated_interfaces.msg.ModeGate, gated_model_app_names_ModeGate)');
+        expect(node).toContain('ModeGate(');
+        const known = ['gated', 'gated_interfaces', 'maa_behavior', 'maa_ros2'].map((x) => `'${x}'`).join(',');
+        const ruff = await run(
+            venvPython,
+            [
+                '-m',
+                'ruff',
+                'check',
+                '--no-cache',
+                '--output-format',
+                'concise',
+                '--config',
+                path.join(packageDir, 'test', 'ros2', 'ruff-generated.toml'),
+                '--config',
+                `lint.isort.known-third-party=[${known}]`,
+                '--extend-exclude',
+                'maa_behavior',
+                '.',
+            ],
+            platform,
+        );
+        expect(ruff.status, ruff.stdout + ruff.stderr).toBe(0);
+        expect(pythonFiles(platform).length).toBeGreaterThan(10);
+    }, 180_000);
+});
