@@ -1,18 +1,17 @@
 import { spawn, type ChildProcess } from 'node:child_process';
 import { randomBytes, randomUUID } from 'node:crypto';
-import { type Dirent, existsSync, readdirSync } from 'node:fs';
+import { existsSync } from 'node:fs';
 import { connect } from 'node:net';
-import path from 'node:path';
 import { createInterface } from 'node:readline';
 import type { SimMode, SimStatusAnswer } from '@maa/protocol';
+import { findPackageDir, SIM_PACKAGE_FILE } from '@maa/protocol/sim-package';
 import { HttpError } from './http-util.js';
 import { descendantGroups, groupAlive, signalGroup } from './process-group.js';
 import type { Ros2Environment } from './ros2-environment.js';
 
 export type { SimMode } from '@maa/protocol';
 
-/** The file a generated package must hold for a mode (docs/simulation.md). */
-const PACKAGE_FILE: Record<SimMode, string> = { lockstep: 'lockstep.json', ros2: 'deployment.json' };
+export { findPackageDir } from '@maa/protocol/sim-package';
 const LOG_LINES = 200;
 const STATUS_LOG_LINES = 60;
 /**
@@ -231,11 +230,11 @@ export class SimSessions {
                 `the simulator is not installed (${this.maaSim} is missing); run "bash sim-server/scripts/setup_env.sh"`,
             );
         }
-        const packageDir = findPackageDir(request.platformDir, PACKAGE_FILE[request.mode]);
+        const packageDir = findPackageDir(request.platformDir, SIM_PACKAGE_FILE[request.mode]);
         if (!packageDir) {
             throw new HttpError(
                 409,
-                `the generated platform ${request.platform} has no ${PACKAGE_FILE[request.mode]}, so it cannot run in ${request.mode} mode`,
+                `the generated platform ${request.platform} has no ${SIM_PACKAGE_FILE[request.mode]}, so it cannot run in ${request.mode} mode`,
             );
         }
         return packageDir;
@@ -431,26 +430,6 @@ export function parseReadyLine(line: string): SimEndpoints | undefined {
     } catch {
         return undefined;
     }
-}
-
-/** The platform folder itself or a folder at most two levels below it that holds `file`. */
-export function findPackageDir(platformDir: string, file: string): string | undefined {
-    const queue: Array<[string, number]> = [[platformDir, 0]];
-    while (queue.length > 0) {
-        const [dir, depth] = queue.shift()!;
-        if (existsSync(path.join(dir, file))) return dir;
-        if (depth === 2) continue;
-        let entries: Dirent[];
-        try {
-            entries = readdirSync(dir, { withFileTypes: true });
-        } catch {
-            continue;
-        }
-        for (const e of entries.sort((a, b) => a.name.localeCompare(b.name))) {
-            if (e.isDirectory() && !e.name.startsWith('.')) queue.push([path.join(dir, e.name), depth + 1]);
-        }
-    }
-    return undefined;
 }
 
 /** Resolves once a TCP connection to the URL's port succeeds ("once its rosbridge answers"). */

@@ -20,6 +20,8 @@ export const SCHEMA_FILES = {
     lockstep: protocol.Lockstep,
     'step-outputs': protocol.StepOutputs,
     'simulator-status': protocol.SimulatorStatus,
+    'simulator-progress': protocol.SimulatorProgress,
+    'simulator-finished': protocol.SimulatorFinished,
 };
 
 /** The contracts maa-sim reads, by Python constant prefix. */
@@ -28,6 +30,8 @@ const PYTHON_SCHEMAS = {
     LOCKSTEP: protocol.Lockstep,
     STEP_OUTPUTS: protocol.StepOutputs,
     SIMULATOR_STATUS: protocol.SimulatorStatus,
+    SIMULATOR_PROGRESS: protocol.SimulatorProgress,
+    SIMULATOR_FINISHED: protocol.SimulatorFinished,
 };
 
 /** A schema as plain JSON (TypeBox's symbol keys dropped). */

@@ -23,6 +23,7 @@ from .access import AccessPolicy, resolve_token
 from .deployment import Deployment
 from .lockstep import LockstepPackage
 from .messages import JsonMessage, MessageError
+from .recorder import McapRecorder, record_scene, record_topics
 from .rosbridge import BlockingService, RosbridgeServer, ServiceError, ServiceHandler
 from .runs import lockstep_session
 from .session import DEFAULT_PERIOD, Runner, SimEvent, SimSession
@@ -55,6 +56,8 @@ class RunOptions:
     golden_seconds: float = WorldConfig.golden_seconds
     #: the secret of the rosbridge and viser endpoints (None: MAA_SIM_TOKEN, else a random one)
     token: str | None = None
+    #: an MCAP file of every topic and the scene state (maa_sim.recorder), None: no recording
+    record: Path | None = None
 
 
 class SimApp:
@@ -67,6 +70,8 @@ class SimApp:
         self.supervisor: Any = None
         self.transport: Any = None
         self.lease: Any = None
+        self.deployment: Deployment | None = None
+        self.recorder: McapRecorder | None = None
         self.domain_id: int | None = None
         self.log_dir: Path | None = None
         self._own_log_dir = False
@@ -91,6 +96,8 @@ class SimApp:
             assert self.session is not None and self.runner is not None
             self.session.event_listeners.append(self._on_event)
             self._watch_states()
+            if self.options.record is not None:
+                self._start_recording(self.options.record)
             if self.options.rosbridge_port is not None:
                 self.rosbridge = RosbridgeServer(
                     self.session.transport,
@@ -150,7 +157,7 @@ class SimApp:
     def _start_ros2(self) -> None:
         from .ros2 import DomainLease, NodeSupervisor, RosTransport
 
-        deployment = Deployment.load(self.options.package)
+        deployment = self.deployment = Deployment.load(self.options.package)
         for entry in reversed(deployment.python_path):
             if str(entry) not in sys.path:
                 sys.path.insert(0, str(entry))  # custom message packages of the application
@@ -186,6 +193,30 @@ class SimApp:
         self.supervisor.start()
         if not self.supervisor.wait_ready(self.options.startup_timeout):
             self.session.report("warning", "supervisor", "not every node came up; starting the simulation anyway")
+
+    def _recorded_topics(self) -> list[tuple[str, str]]:
+        """Every topic of the run: the simulator's, the application's port topics, the automaton states."""
+        assert self.session is not None
+        transport = self.session.transport
+        if isinstance(transport, LocalBus):
+            return transport.topics()  # lock-step: the controller declared its port topics
+        topics = {spec.name: spec.type for spec in interface.ALL_TOPICS.values()}
+        if self.deployment is not None:
+            topics.update(self.deployment.topics())
+        topics[STATES_TOPIC] = "std_msgs/msg/String"
+        return sorted(topics.items())
+
+    def _start_recording(self, path: Path) -> None:
+        """Subscribes an MCAP recorder to every topic and the scene state after every period."""
+        assert self.session is not None
+        session = self.session
+        self.recorder = McapRecorder(path)
+
+        def warn(text: str) -> None:
+            session.report("warning", "recorder", text)
+
+        record_topics(self.recorder, self._recorded_topics(), session.transport.subscribe, lambda: session.clock, warn)
+        session.period_listeners.append(record_scene(self.recorder))
 
     def _watch_states(self) -> None:
         """Keeps the latest automaton state of every node (`/maa/automaton_states`, docs/ide.md):
@@ -390,6 +421,11 @@ class SimApp:
             self.transport.close()
         if self.lease is not None:
             self.lease.release()
+        if self.recorder is not None:
+            try:
+                self.recorder.close()
+            except OSError as exc:
+                print(f"maa-sim: the recording {self.recorder.part} could not be completed: {exc}", file=sys.stderr)
         if self._own_log_dir and self.log_dir is not None and not self.failed.is_set():
             with contextlib.suppress(OSError):
                 shutil.rmtree(self.log_dir)

@@ -7,6 +7,7 @@ import json
 import signal
 import sys
 import threading
+import time
 from collections.abc import Sequence
 from pathlib import Path
 from types import FrameType
@@ -15,6 +16,7 @@ from . import __version__
 from .app import RunOptions, SimApp
 from .deployment import DeploymentError
 from .messages import MessageError
+from .protocol import SimulatorFinished, SimulatorProgress
 
 
 def _positive_float(text: str) -> float:
@@ -109,14 +111,48 @@ def build_parser() -> argparse.ArgumentParser:
     )
     run.add_argument("--log-dir", type=Path, default=None, help="where node logs go (default: a temporary directory)")
     run.add_argument(
-        "--status-json", action="store_true", help="print one JSON line with ports and node pids once running"
+        "--status-json",
+        action="store_true",
+        help="print one JSON line with ports and node pids once running, and one when finished",
     )
+    run.add_argument(
+        "--progress-json",
+        action="store_true",
+        help="print a JSON progress line (simulated time, real-time factor, goal) about once a second",
+    )
+    run.add_argument(
+        "--record",
+        type=Path,
+        default=None,
+        metavar="FILE.mcap",
+        help="record every topic and the scene state into an MCAP file (ROS 2 schemas, CDR)",
+    )
+    inspect = commands.add_parser(
+        "inspect",
+        help="what a recording holds (decodes every message)",
+        description="Reads an MCAP file written by `maa-sim run --record`, decodes every message with its ROS 2 "
+        "schema and prints one JSON object: the profile, the message count and per channel the topic, schema and "
+        "message count. Exit 2 when the file cannot be read.",
+    )
+    inspect.add_argument("file", type=Path, metavar="FILE.mcap")
     return parser
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
-    options = RunOptions(
+def _inspect(path: Path) -> int:
+    from mcap.exceptions import McapError
+
+    from .recorder import inspect_recording
+
+    try:
+        print(json.dumps(inspect_recording(path), indent=2))
+    except (OSError, McapError, ValueError) as exc:
+        print(f"maa-sim: cannot read {path}: {exc}", file=sys.stderr)
+        return 2
+    return 0
+
+
+def _options(args: argparse.Namespace) -> RunOptions:
+    return RunOptions(
         package=args.package.resolve(),
         mode=args.mode,
         scene=args.scene,
@@ -134,15 +170,82 @@ def main(argv: Sequence[str] | None = None) -> int:
         hang_timeout=args.hang_timeout,
         log_dir=args.log_dir,
         golden_seconds=args.golden_seconds,
+        record=args.record.resolve() if args.record is not None else None,
     )
-    try:
-        app = SimApp(options)
-    except ValueError as exc:  # e.g. an MAA_SIM_TOKEN a URL cannot carry
-        print(f"maa-sim: {exc}", file=sys.stderr)
-        return 2
-    interrupted = threading.Event()
-    received: list[str] = []
 
+
+def _print_ready(app: SimApp, status_json: bool) -> None:
+    status = app.status()
+    if status_json:
+        # the token for the program that started maa-sim (the IDE backend), which presents it
+        print(json.dumps({"event": "ready", **status, "token": app.token}), flush=True)
+        return
+    # the URLs a person opens carry the token (viser keeps it in a cookie for its page)
+    print(f"maa-sim: {app.options.mode} mode, scene {app.options.scene}", flush=True)
+    if app.rosbridge is not None:
+        print(f"  rosbridge  {app.rosbridge.url_with_token}", flush=True)
+    if app.viewer is not None:
+        print(f"  viser      {app.viewer.url_with_token}", flush=True)
+    for node in status["nodes"]:
+        print(f"  node       {node['name']} (pid {node['pid']}, {node['state']})", flush=True)
+    if app.recorder is not None:
+        print(f"  recording  {app.recorder.part} (renamed to {app.recorder.path.name} at the end)", flush=True)
+
+
+def progress_line(app: SimApp, wall_seconds: float) -> SimulatorProgress:
+    """The `--progress-json` line (@maa/protocol SimulatorProgress)."""
+    status = app.status()
+    return {
+        "event": "progress",
+        "time": status["time"],
+        "wall_seconds": wall_seconds,
+        "real_time_factor": status["real_time_factor"],
+        "periods": status["periods"],
+        "paused": status["paused"],
+        "toast_level": status["toast_level"],
+        "goal_reached": status["toast_on_plate"],
+        "recorded_messages": app.recorder.messages if app.recorder is not None else None,
+    }
+
+
+def _wait(app: SimApp, interrupted: threading.Event, progress: bool) -> None:
+    """Waits for the end of the run (or a signal), printing a progress line about once a second."""
+    start = time.monotonic()
+    last = start
+    while not app.wait(0.2) and not interrupted.is_set():
+        now = time.monotonic()
+        if progress and now - last >= 1.0:
+            last = now
+            print(json.dumps(progress_line(app, now - start)), flush=True)
+
+
+def _finished_line(app: SimApp, reason: str, reached: bool, sim_time: float, wall: float) -> SimulatorFinished:
+    """The `--status-json` finished line (@maa/protocol SimulatorFinished), after the recording is complete."""
+    return {
+        "event": "finished",
+        "reason": reason,
+        "time": sim_time,
+        "goal_reached": reached,
+        "wall_seconds": wall,
+        "real_time_factor": sim_time / wall if wall > 0 else 0.0,
+        "record": app.recorder.summary() if app.recorder is not None else None,
+    }
+
+
+def _print_finished(app: SimApp, line: SimulatorFinished, status_json: bool) -> None:
+    if status_json:
+        print(json.dumps(line), flush=True)
+        return
+    print(
+        f"maa-sim: finished ({line['reason']}) at {line['time']:.2f} s; toast on the plate: {line['goal_reached']}",
+        flush=True,
+    )
+    record = line["record"]
+    if record is not None:
+        print(f"maa-sim: recorded {record['messages']} messages into {record['path']}", flush=True)
+
+
+def _install_signal_handlers(interrupted: threading.Event, received: list[str]) -> None:
     def on_signal(signum: int, _frame: FrameType | None) -> None:
         # Only flag it: the handler runs between two bytecodes of the main thread, which may
         # hold a lock that finishing the run needs.
@@ -151,40 +254,40 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     signal.signal(signal.SIGINT, on_signal)
     signal.signal(signal.SIGTERM, on_signal)
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    if args.command == "inspect":
+        return _inspect(args.file)
+    options = _options(args)
     try:
-        app.start()
-    except (DeploymentError, MessageError, ValueError, FileNotFoundError, ImportError, TypeError) as exc:
+        app = SimApp(options)
+    except ValueError as exc:  # e.g. an MAA_SIM_TOKEN a URL cannot carry
         print(f"maa-sim: {exc}", file=sys.stderr)
         return 2
+    interrupted = threading.Event()
+    received: list[str] = []
+    _install_signal_handlers(interrupted, received)
     try:
-        status = app.status()
-        if args.status_json:
-            # the token for the program that started maa-sim (the IDE backend), which presents it
-            print(json.dumps({"event": "ready", **status, "token": app.token}), flush=True)
-        else:
-            # the URLs a person opens carry the token (viser keeps it in a cookie for its page)
-            print(f"maa-sim: {options.mode} mode, scene {options.scene}", flush=True)
-            if app.rosbridge is not None:
-                print(f"  rosbridge  {app.rosbridge.url_with_token}", flush=True)
-            if app.viewer is not None:
-                print(f"  viser      {app.viewer.url_with_token}", flush=True)
-            for node in status["nodes"]:
-                print(f"  node       {node['name']} (pid {node['pid']}, {node['state']})", flush=True)
-        while not app.wait(0.2) and not interrupted.is_set():
-            pass
+        app.start()
+    except (DeploymentError, MessageError, ValueError, FileNotFoundError, ImportError, TypeError, OSError) as exc:
+        print(f"maa-sim: {exc}", file=sys.stderr)
+        return 2
+    start = time.monotonic()
+    try:
+        _print_ready(app, args.status_json)
+        _wait(app, interrupted, args.progress_json)
         assert app.runner is not None
         if interrupted.is_set():
             app.runner.finish(f"signal {received[0]}")
         reason = app.runner.finish_reason
         reached = app.session is not None and app.session.world.toast_on_plate()
-        print(
-            json.dumps({"event": "finished", "reason": reason, "time": app.status()["time"], "goal_reached": reached})
-            if args.status_json
-            else f"maa-sim: finished ({reason}) at {app.status()['time']:.2f} s; toast on the plate: {reached}",
-            flush=True,
-        )
+        sim_time = float(app.status()["time"])
+        wall = time.monotonic() - start
     finally:
-        app.stop()
+        app.stop()  # completes the recording
+    _print_finished(app, _finished_line(app, reason, reached, sim_time, wall), args.status_json)
     if args.until_goal:
         return 0 if reached else 1
     if interrupted.is_set():

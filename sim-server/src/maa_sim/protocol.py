@@ -513,6 +513,145 @@ SIMULATOR_STATUS_SCHEMA: Final[dict[str, Any]] = json.loads(
 """
 )
 
+SIMULATOR_PROGRESS_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "$id": "urn:maa:protocol:simulator-progress",
+ "title": "SimulatorProgress",
+ "description": "maa-sim run's progress line (--progress-json)",
+ "type": "object",
+ "required": [
+  "event",
+  "time",
+  "wall_seconds",
+  "real_time_factor",
+  "periods",
+  "paused",
+  "toast_level",
+  "goal_reached",
+  "recorded_messages"
+ ],
+ "properties": {
+  "event": {
+   "const": "progress",
+   "type": "string"
+  },
+  "time": {
+   "type": "number"
+  },
+  "wall_seconds": {
+   "minimum": 0,
+   "type": "number"
+  },
+  "real_time_factor": {
+   "type": "number"
+  },
+  "periods": {
+   "minimum": 0,
+   "type": "integer"
+  },
+  "paused": {
+   "type": "boolean"
+  },
+  "toast_level": {
+   "type": "number"
+  },
+  "goal_reached": {
+   "type": "boolean"
+  },
+  "recorded_messages": {
+   "anyOf": [
+    {
+     "minimum": 0,
+     "type": "integer"
+    },
+    {
+     "type": "null"
+    }
+   ]
+  }
+ }
+}
+"""
+)
+
+SIMULATOR_FINISHED_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "$id": "urn:maa:protocol:simulator-finished",
+ "title": "SimulatorFinished",
+ "description": "maa-sim run's last line (--status-json)",
+ "type": "object",
+ "required": [
+  "event",
+  "reason",
+  "time",
+  "goal_reached",
+  "wall_seconds",
+  "real_time_factor",
+  "record"
+ ],
+ "properties": {
+  "event": {
+   "const": "finished",
+   "type": "string"
+  },
+  "reason": {
+   "type": "string"
+  },
+  "time": {
+   "type": "number"
+  },
+  "goal_reached": {
+   "type": "boolean"
+  },
+  "wall_seconds": {
+   "minimum": 0,
+   "type": "number"
+  },
+  "real_time_factor": {
+   "type": "number"
+  },
+  "record": {
+   "anyOf": [
+    {
+     "title": "SimulatorRecording",
+     "description": "the recording of a run (--record)",
+     "type": "object",
+     "required": [
+      "path",
+      "messages",
+      "topics"
+     ],
+     "properties": {
+      "path": {
+       "type": "string"
+      },
+      "messages": {
+       "minimum": 0,
+       "type": "integer"
+      },
+      "topics": {
+       "type": "object",
+       "patternProperties": {
+        "^(.*)$": {
+         "minimum": 0,
+         "type": "integer"
+        }
+       }
+      }
+     }
+    },
+    {
+     "type": "null"
+    }
+   ]
+  }
+ }
+}
+"""
+)
+
 #: The simulator's platform topics (@maa/protocol SIMULATOR_TOPICS): name, type, publisher, description.
 SIMULATOR_TOPICS: Final[list[dict[str, str]]] = json.loads(
     r"""
@@ -629,3 +768,37 @@ class SimulatorStatus(TypedDict):
     events: list[dict[str, Any]]
     rosbridge: str | None
     viser: str | None
+
+
+class SimulatorProgress(TypedDict):
+    """maa-sim run's progress line (--progress-json)"""
+
+    event: Literal["progress"]
+    time: float
+    wall_seconds: float
+    real_time_factor: float
+    periods: int
+    paused: bool
+    toast_level: float
+    goal_reached: bool
+    recorded_messages: int | None
+
+
+class SimulatorRecording(TypedDict):
+    """the recording of a run (--record)"""
+
+    path: str
+    messages: int
+    topics: dict[str, int]
+
+
+class SimulatorFinished(TypedDict):
+    """maa-sim run's last line (--status-json)"""
+
+    event: Literal["finished"]
+    reason: str
+    time: float
+    goal_reached: bool
+    wall_seconds: float
+    real_time_factor: float
+    record: SimulatorRecording | None

@@ -74,6 +74,8 @@ class SimSession:
         self._pending_lock = threading.Lock()
         self.events: deque[SimEvent] = deque(maxlen=200)
         self.event_listeners: list[Callable[[SimEvent], None]] = []
+        #: called after every period with the world and the clock, under the session lock (the recorder)
+        self.period_listeners: list[Callable[[ToastKitchen, float], None]] = []
         if isinstance(transport, LocalBus):
             for spec in (*interface.SIM_OUTPUTS, *interface.SIM_INPUTS):
                 transport.declare(spec.name, spec.type)
@@ -124,6 +126,8 @@ class SimSession:
             self.world.step(self.steps_per_period)
             self.periods += 1
             outputs = self.observe()
+            for listener in self.period_listeners:
+                listener(self.world, self.clock)
         if self.publish_outputs:
             self.publish(outputs)
         return outputs

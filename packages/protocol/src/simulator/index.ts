@@ -1,7 +1,13 @@
 import { contract } from '../contract.js';
+import { SimulatorFinished, SimulatorProgress } from './run-lines.js';
 import { SimulatorStatus } from './schema.js';
 
 export * from './schema.js';
+export * from './run-lines.js';
 
 /** Checks a `/sim/get_status` answer. */
 export const simulatorStatusContract = contract('/sim/get_status answer', SimulatorStatus);
+/** Checks a `maa-sim run --progress-json` line. */
+export const simulatorProgressContract = contract('maa-sim progress line', SimulatorProgress);
+/** Checks the `maa-sim run --status-json` finished line. */
+export const simulatorFinishedContract = contract('maa-sim finished line', SimulatorFinished);
