@@ -23,7 +23,6 @@ from .access import AccessPolicy, resolve_token
 from .deployment import Deployment
 from .lockstep import LockstepPackage
 from .messages import JsonMessage, MessageError
-from .recorder import McapRecorder, record_scene, record_topics
 from .rosbridge import BlockingService, RosbridgeServer, ServiceError, ServiceHandler
 from .runs import lockstep_session
 from .session import DEFAULT_PERIOD, Runner, SimEvent, SimSession
@@ -71,7 +70,7 @@ class SimApp:
         self.transport: Any = None
         self.lease: Any = None
         self.deployment: Deployment | None = None
-        self.recorder: McapRecorder | None = None
+        self.recorder: Any = None  # a maa_sim.recorder.McapRecorder with --record
         self.domain_id: int | None = None
         self.log_dir: Path | None = None
         self._own_log_dir = False
@@ -210,6 +209,11 @@ class SimApp:
         """Subscribes an MCAP recorder to every topic and the scene state after every period."""
         assert self.session is not None
         session = self.session
+        try:
+            # imported here: a Python with maa-sim but without the mcap packages runs everything else
+            from .recorder import McapRecorder, record_scene, record_topics
+        except ImportError as exc:
+            raise ImportError(f"--record needs the packages mcap and mcap-ros2-support ({exc})") from None
         self.recorder = McapRecorder(path)
 
         def warn(text: str) -> None:
