@@ -282,11 +282,50 @@ export function isVariable(
     return result;
 }
 
+/** A variation point of one instance, with its condition compiled for that instance. */
+interface InstancePoint {
+    readonly point: VarIf;
+    readonly inst: Instance;
+    readonly formula: Formula;
+}
+
+/** The variables, constraints and variation points of an instance tree, compiled. */
+interface CompiledTree {
+    readonly compiler: Compiler;
+    readonly constraints: readonly Formula[];
+    readonly points: readonly InstancePoint[];
+}
+
 /** Variation points and constraints of the instance tree of `c` (for diagnostics on a component's own ones). */
 export function configurationSpace(c: ComponentType): ConfigurationSpace {
+    const tree = compileInstanceTree(c);
+    const keys = [...tree.compiler.variables.keys()];
+    const tooLarge = keys.length > MAX_VARIABLES;
+    const configurations = tooLarge ? [] : validConfigurations(tree, keys);
+    const signature = (a: Assignment): string => tree.points.map((p) => (p.formula(a) ? '1' : '0')).join('');
+    const variants = distinctVariants(configurations, signature);
+    const formulaOf = formulasByInstance(tree.points);
+    const value = (a: Assignment, key: string): boolean => {
+        const i = keys.indexOf(key);
+        return i >= 0 && Math.floor(a / 2 ** i) % 2 === 1;
+    };
+    return {
+        variables: tree.compiler.variables,
+        tooLarge: tooLarge || variants.length > MAX_VARIANTS,
+        configurations,
+        variants,
+        env: (a) => analysisEnv(a, formulaOf),
+        generationEnv: (a) => generationEnv(a, formulaOf, tree.points, value),
+        value,
+        signature,
+    };
+}
+
+/** Walks the instance tree of `c` (to MAX_DEPTH, no type twice on a path) and compiles its features, constraints and variation points. */
+function compileInstanceTree(c: ComponentType): CompiledTree {
     const compiler = new Compiler();
     const constraints: Formula[] = [];
-    const points: Array<{ point: VarIf; inst: Instance; formula: Formula }> = [];
+    const points: InstancePoint[] = [];
     const visit = (inst: Instance, depth: number, active: ReadonlySet<ComponentType>): void => {
         // Every own and inherited feature is a variable even when no constraint names it.
         for (const f of allFeatures(inst.decl)) compiler.variable(inst.prefix + f.name, 'feature', inst.path);
@@ -307,49 +346,41 @@ export function configurationSpace(c: ComponentType): ConfigurationSpace {
                 path: [...inst.path, s],
                 bindings: bindingsOf(s, decl, inst),
             };
-            // Feature bindings of the instantiation (`sub(f = true)`) fix the subcomponent's features.
-            for (const arg of s.args) {
-                if (arg.$type !== 'AssignmentExpression' || arg.op !== '=' || arg.left.$type !== 'NameExpression') continue;
-                const target = arg.left.ref?.ref;
-                if (target?.$type !== 'Feature') continue;
-                const feature = compiler.variable(child.prefix + target.name, 'feature', child.path);
-                const value = compiler.compile(arg.right, inst);
-                constraints.push((a) => feature(a) === value(a));
-            }
+            constraints.push(...featureBindings(compiler, s, inst, child));
             visit(child, depth + 1, new Set([...active, decl]));
         }
     };
-    const root: Instance = { decl: c, prefix: '', path: [], bindings: new Map() };
-    visit(root, 0, new Set([c]));
+    visit({ decl: c, prefix: '', path: [], bindings: new Map() }, 0, new Set([c]));
+    return { compiler, constraints, points };
+}
 
-    const keys = [...compiler.variables.keys()];
-    const tooLarge = keys.length > MAX_VARIABLES;
+/** Feature bindings of an instantiation (`sub(f = true)`) fix the subcomponent's features: one constraint each. */
+function featureBindings(compiler: Compiler, s: Subcomponent, inst: Instance, child: Instance): Formula[] {
+    const bound: Formula[] = [];
+    for (const arg of s.args) {
+        if (arg.$type !== 'AssignmentExpression' || arg.op !== '=' || arg.left.$type !== 'NameExpression') continue;
+        const target = arg.left.ref?.ref;
+        if (target?.$type !== 'Feature') continue;
+        const feature = compiler.variable(child.prefix + target.name, 'feature', child.path);
+        const value = compiler.compile(arg.right, inst);
+        bound.push((a) => feature(a) === value(a));
+    }
+    return bound;
+}
+
+/** Every assignment of the variables that keeps the constraints, with at most one variable of each exclusive group set. */
+function validConfigurations(tree: CompiledTree, keys: readonly string[]): Assignment[] {
+    const groups = [...tree.compiler.exclusive.values()].filter((g) => g.length > 1).map((g) => g.map((k) => 2 ** keys.indexOf(k)));
     const configurations: Assignment[] = [];
-    if (!tooLarge) {
-        const groups = [...compiler.exclusive.values()].filter((g) => g.length > 1).map((g) => g.map((k) => 2 ** keys.indexOf(k)));
-        for (let a = 0; a < 2 ** keys.length; a++) {
-            if (groups.some((g) => g.filter((bit) => Math.floor(a / bit) % 2 === 1).length > 1)) continue;
-            if (constraints.every((f) => f(a))) configurations.push(a);
-        }
+    for (let a = 0; a < 2 ** keys.length; a++) {
+        if (groups.some((g) => g.filter((bit) => Math.floor(a / bit) % 2 === 1).length > 1)) continue;
+        if (tree.constraints.every((f) => f(a))) configurations.push(a);
     }
-    const formulaOf = new Map<string, Map<VarIf, Formula>>();
-    for (const p of points) {
-        const m = formulaOf.get(p.inst.prefix) ?? new Map<VarIf, Formula>();
-        m.set(p.point, p.formula);
-        formulaOf.set(p.inst.prefix, m);
-    }
-    const envFor = (a: Assignment, prefix: string, cache: Map<string, VariantEnv>): VariantEnv => {
-        const cached = cache.get(prefix);
-        if (cached) return cached;
-        const env: VariantEnv = {
-            // A variation point outside the analysed tree (deeper than MAX_DEPTH): all of it.
-            decide: (v) => formulaOf.get(prefix)?.get(v)?.(a) ?? true,
-            sub: (s) => envFor(a, `${prefix}${s.name}.`, cache),
-        };
-        cache.set(prefix, env);
-        return env;
-    };
-    const signature = (a: Assignment): string => points.map((p) => (p.formula(a) ? '1' : '0')).join('');
+    return configurations;
+}
+
+/** One configuration per distinct decision of the variation points (up to one more than MAX_VARIANTS, to tell "too many"). */
+function distinctVariants(configurations: readonly Assignment[], signature: (a: Assignment) => string): Assignment[] {
     const variants: Assignment[] = [];
     const seen = new Set<string>();
     for (const a of configurations) {
@@ -359,46 +390,65 @@ export function configurationSpace(c: ComponentType): ConfigurationSpace {
         variants.push(a);
         if (variants.length > MAX_VARIANTS) break;
     }
-    return {
-        variables: compiler.variables,
-        tooLarge: tooLarge || variants.length > MAX_VARIANTS,
-        configurations: tooLarge ? [] : configurations,
-        variants,
-        env: (a) => envFor(a, '', new Map()),
-        generationEnv: (a) => {
-            // Deeper than MAX_DEPTH an instance has no formulas of its own: it follows the first instance of its type.
-            const first = new Map<VarIf, Formula>();
-            for (const p of points) if (!first.has(p.point)) first.set(p.point, p.formula);
-            const cache = new Map<string, VariantEnv>();
-            const instanceEnv = (prefix: string): VariantEnv => {
-                const cached = cache.get(prefix);
-                if (cached) return cached;
-                const own = formulaOf.get(prefix);
-                const env: VariantEnv = {
-                    decide: (v) => (own?.get(v) ?? first.get(v))?.(a) ?? true,
-                    sub: (s) => instanceEnv(`${prefix}${s.name}.`),
-                    featureValues: (c) => {
-                        const features = allFeatures(c);
-                        if (features.length === 0) return undefined;
-                        return Object.fromEntries(
-                            features.map((f) => {
-                                const i = keys.indexOf(prefix + f.name);
-                                return [f.name, i >= 0 && Math.floor(a / 2 ** i) % 2 === 1];
-                            }),
-                        );
-                    },
-                };
-                cache.set(prefix, env);
-                return env;
-            };
-            return instanceEnv('');
-        },
-        value: (a, key) => {
-            const i = keys.indexOf(key);
-            return i >= 0 && Math.floor(a / 2 ** i) % 2 === 1;
-        },
-        signature,
+    return variants;
+}
+
+/** Instance prefix -> the compiled condition of each of its variation points. */
+function formulasByInstance(points: readonly InstancePoint[]): Map<string, Map<VarIf, Formula>> {
+    const formulaOf = new Map<string, Map<VarIf, Formula>>();
+    for (const p of points) {
+        const m = formulaOf.get(p.inst.prefix) ?? new Map<VarIf, Formula>();
+        m.set(p.point, p.formula);
+        formulaOf.set(p.inst.prefix, m);
+    }
+    return formulaOf;
+}
+
+/** The decisions of configuration `a` for the checks, instance by instance. */
+function analysisEnv(a: Assignment, formulaOf: ReadonlyMap<string, ReadonlyMap<VarIf, Formula>>): VariantEnv {
+    const cache = new Map<string, VariantEnv>();
+    const envFor = (prefix: string): VariantEnv => {
+        const cached = cache.get(prefix);
+        if (cached) return cached;
+        const env: VariantEnv = {
+            // A variation point outside the analysed tree (deeper than MAX_DEPTH): all of it.
+            decide: (v) => formulaOf.get(prefix)?.get(v)?.(a) ?? true,
+            sub: (s) => envFor(`${prefix}${s.name}.`),
+        };
+        cache.set(prefix, env);
+        return env;
     };
+    return envFor('');
+}
+
+/** The decisions of configuration `a` for the generators: as for the checks, plus each instance's feature values. */
+function generationEnv(
+    a: Assignment,
+    formulaOf: ReadonlyMap<string, ReadonlyMap<VarIf, Formula>>,
+    points: readonly InstancePoint[],
+    value: (a: Assignment, key: string) => boolean,
+): VariantEnv {
+    // Deeper than MAX_DEPTH an instance has no formulas of its own: it follows the first instance of its type.
+    const first = new Map<VarIf, Formula>();
+    for (const p of points) if (!first.has(p.point)) first.set(p.point, p.formula);
+    const cache = new Map<string, VariantEnv>();
+    const instanceEnv = (prefix: string): VariantEnv => {
+        const cached = cache.get(prefix);
+        if (cached) return cached;
+        const own = formulaOf.get(prefix);
+        const env: VariantEnv = {
+            decide: (v) => (own?.get(v) ?? first.get(v))?.(a) ?? true,
+            sub: (s) => instanceEnv(`${prefix}${s.name}.`),
+            featureValues: (c) => {
+                const features = allFeatures(c);
+                if (features.length === 0) return undefined;
+                return Object.fromEntries(features.map((f) => [f.name, value(a, prefix + f.name)]));
+            },
+        };
+        cache.set(prefix, env);
+        return env;
+    };
+    return instanceEnv('');
 }
 
 /** The node a diagnostic about a variable of a subcomponent is reported on. */
