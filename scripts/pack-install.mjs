@@ -172,61 +172,74 @@ async function serveIde(project, workspace) {
     }
 }
 
-async function main() {
+/** Runs a step whose failure leaves the later steps nothing to work on (they are reported as not run). */
+async function fatal(name, body) {
+    if (await step(name, body)) blockedBy = name;
+}
+
+/** The folders of one run, in the system's temporary folder (never inside the repository). */
+function createContext() {
     const root = mkdtempSync(path.join(tmpdir(), 'maa-pack-install-'));
     expect(path.relative(repo, root).startsWith('..'), `the install folder ${root} lies inside the repository`);
-    const tarballs = path.join(root, 'tarballs');
-    const project = path.join(root, 'project');
-    const demo = path.join(project, 'demo');
-    mkdirSync(tarballs);
-    mkdirSync(project);
-    const packages = publicPackages(readWorkspace(repo));
-    const version = packages.find((p) => p.json.name === '@maa/cli')?.json.version;
-    let packed = [];
-    let commands = new Set();
-    console.log(`pack-install: packing ${packages.length} public packages, installing them into ${project}`);
-
-    const fatal = async (name, body) => {
-        if (await step(name, body)) blockedBy = name;
+    const ctx = {
+        root,
+        tarballs: path.join(root, 'tarballs'),
+        project: path.join(root, 'project'),
+        demo: path.join(root, 'project', 'demo'),
+        packages: publicPackages(readWorkspace(repo)),
+        packed: [],
+        commands: new Set(),
     };
+    mkdirSync(ctx.tarballs);
+    mkdirSync(ctx.project);
+    return ctx;
+}
+
+async function packAndInstall(ctx) {
     await fatal('npm pack of every public package', async () => {
-        packed = await packPackages(
+        ctx.packed = await packPackages(
             repo,
-            packages.map((p) => p.json.name),
-            tarballs,
+            ctx.packages.map((p) => p.json.name),
+            ctx.tarballs,
         );
-        const unpacked = packages.filter((p) => !packed.some((t) => t.name === p.json.name)).map((p) => p.json.name);
+        const unpacked = ctx.packages.filter((p) => !ctx.packed.some((t) => t.name === p.json.name)).map((p) => p.json.name);
         expect(unpacked.length === 0, `not packed: ${unpacked.join(', ')}`);
-        facts.tarballs = Object.fromEntries(packed.map((t) => [t.filename, t.size]));
+        facts.tarballs = Object.fromEntries(ctx.packed.map((t) => [t.filename, t.size]));
     });
     await step('every file bin and exports name is in the tarball', async () => {
-        const problems = packages.flatMap((p) => {
-            const missing = missingPackedTargets(p.json, packed.find((t) => t.name === p.json.name).files);
+        const problems = ctx.packages.flatMap((p) => {
+            const missing = missingPackedTargets(p.json, ctx.packed.find((t) => t.name === p.json.name).files);
             return missing.length > 0 ? [`${p.json.name}: ${missing.join(', ')}`] : [];
         });
         expect(problems.length === 0, `bin/exports name files the tarballs lack: ${problems.join('; ')}`);
     });
     await fatal('npm install of the tarballs into an empty folder', async () => {
-        writeFileSync(path.join(project, 'package.json'), `${JSON.stringify({ name: 'maa-install-test', private: true }, null, 2)}\n`);
+        writeFileSync(path.join(ctx.project, 'package.json'), `${JSON.stringify({ name: 'maa-install-test', private: true }, null, 2)}\n`);
         const started = Date.now();
-        const files = packed.map((t) => path.join(tarballs, t.filename));
-        const install = await exec(npm, ['install', '--no-audit', '--no-fund', '--prefer-offline', ...files], project);
+        const files = ctx.packed.map((t) => path.join(ctx.tarballs, t.filename));
+        const install = await exec(npm, ['install', '--no-audit', '--no-fund', '--prefer-offline', ...files], ctx.project);
         facts.installSeconds = (Date.now() - started) / 1000;
         expectExit(install, 0, 'npm install');
-        const lock = JSON.parse(readFileSync(path.join(project, 'package-lock.json'), 'utf8'));
+        // every @maa package must be a tarball of this run, never a namesake from the registry
+        const lock = JSON.parse(readFileSync(path.join(ctx.project, 'package-lock.json'), 'utf8'));
         const fromRegistry = Object.entries(lock.packages)
             .filter(([where, p]) => /node_modules\/@maa\//.test(where) && !String(p.resolved).startsWith('file:'))
             .map(([where]) => where);
         expect(fromRegistry.length === 0, `@maa packages not from the tarballs: ${fromRegistry.join(', ')}`);
     });
+}
+
+async function createProject(ctx) {
+    const { project, demo } = ctx;
     await fatal('npx maa-gen --version', async () => {
+        const version = ctx.packages.find((p) => p.json.name === '@maa/cli')?.json.version;
         const run = await npxRun(project, 'maa-gen', ['--version']);
         expectExit(run, 0, 'maa-gen --version');
         expect(run.stdout.trim() === version, `maa-gen --version printed '${run.stdout.trim()}', not ${version}`);
-        commands = await maaGenCommands(project);
+        ctx.commands = await maaGenCommands(project);
     });
     await fatal('npx maa-gen new toast-service demo', async () => {
-        if (!commands.has('new')) {
+        if (!ctx.commands.has('new')) {
             copyDir(path.join(repo, 'examples', 'toast-service'), demo);
             return { skip: 'this maa-gen has no `new`; examples/toast-service copied instead' };
         }
@@ -237,6 +250,9 @@ async function main() {
         expect(again.code !== 0, 'a second `maa-gen new` into demo/ did not refuse');
         return undefined;
     });
+}
+
+async function useMaaGen({ project, demo, commands }) {
     await step('npx maa-gen check .', async () => {
         const run = await npxRun(demo, 'maa-gen', ['check', '.']);
         expectExit(run, 0, 'maa-gen check .');
@@ -273,6 +289,9 @@ async function main() {
         expect(/<svg[\s>]/.test(text) && text.includes('ToastServiceRobot'), 'the diagram is not an SVG naming ToastServiceRobot');
         return undefined;
     });
+}
+
+async function useSimulatorAndIde({ project, demo, commands }) {
     await step('npx maa-sim --help (the first use installs the simulator into its cached venv)', async () => {
         // Through the launcher of @maa/sim-server, as maa-gen sim and maa-ide start it; the venv
         // lands in the user's cache (~/.cache/maa/sim-<hash>) and is reused while the sources stay the same.
@@ -287,9 +306,17 @@ async function main() {
         return undefined;
     });
     await step('npx maa-ide serving the project', () => serveIde(project, demo));
+}
 
-    if (keep) console.log(`pack-install: kept ${root}`);
-    else rmSync(root, { recursive: true, force: true });
+async function main() {
+    const ctx = createContext();
+    console.log(`pack-install: packing ${ctx.packages.length} public packages, installing them into ${ctx.project}`);
+    await packAndInstall(ctx);
+    await createProject(ctx);
+    await useMaaGen(ctx);
+    await useSimulatorAndIde(ctx);
+    if (keep) console.log(`pack-install: kept ${ctx.root}`);
+    else rmSync(ctx.root, { recursive: true, force: true });
 }
 
 function report() {
