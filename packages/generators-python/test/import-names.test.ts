@@ -4,8 +4,8 @@ import { describe, expect, it } from 'vitest';
 import { checkOneBindingPerName, localNameFor } from '../src/behavior/import-names.js';
 import { Imports } from '../src/behavior/common.js';
 import { PyImports } from '../src/ros2/model/imports.js';
-import { generate, tempModelRoot } from './maa-gen.js';
-import { ensureVenv, packageDir, pythonFiles, ruffConfig, run, venvPython } from './python-env.js';
+import { generate, maaGen, tempModelRoot } from './maa-gen.js';
+import { ensureVenv, packageDir, pythonFiles, type RunResult, ruffConfig, run, venvPython } from './python-env.js';
 
 // One name, one import: a generated module that imported a name from two modules silently used the
 // later one (`from a.types import Kind` then `from b.types import Kind`). Model types now yield an
@@ -41,6 +41,25 @@ describe('the names imports bind', () => {
             ['y', new Set(['Z as b_types_Kind'])],
         ]);
         expect(localNameFor(taken, 'b.types', 'Kind')).toBe('b_types_Kind_2');
+    });
+
+    it('wrap long from-imports one name a line: at 140 columns in timesync builds, at 120 in ROS 2 packages', () => {
+        const names = ['AlphaReadingValue', 'BetaReadingValue', 'GammaReadingValue', 'DeltaReadingValue', 'EpsilonReadingValue'];
+        const line = `from station.model.app.sensor_types import ${[...names].sort().join(', ')}`;
+        expect(line.length).toBeGreaterThan(120);
+        expect(line.length).toBeLessThanOrEqual(140);
+        const timesync = new Imports();
+        const ros2 = new Imports(120);
+        const node = new PyImports();
+        for (const n of names) {
+            timesync.add('station.model.app.sensor_types', n);
+            ros2.add('station.model.app.sensor_types', n);
+            node.add('station.model.app.sensor_types', n);
+        }
+        expect(timesync.lines()).toEqual([line]);
+        const wrapped = ['from station.model.app.sensor_types import (', ...names.sort().map((n) => `    ${n},`), ')'];
+        expect(ros2.lines()).toEqual(wrapped);
+        expect(node.lines()).toEqual(wrapped);
     });
 
     it('refuses a run-time name added after a model type took it, and a module bound to two things', () => {
@@ -138,6 +157,55 @@ component Gated {
   }
 }
 `,
+    // five port types whose one import line is 136 columns in the ROS 2 package (wrapped there at 120)
+    'app/Readings.cd': `package app;
+
+classdiagram Readings {
+  class TemperatureValue { int v; }
+  class HumidityReading { int v; }
+  class PressureReading { int v; }
+  class LuminosityValue { int v; }
+  class WindSpeedReading { int v; }
+}
+`,
+    'app/WeatherStationHub.arc': `package app;
+
+import app.Readings.*;
+
+component WeatherStationHub {
+  port in TemperatureValue t;
+  port in HumidityReading h;
+  port in PressureReading p;
+  port in LuminosityValue l;
+  port in WindSpeedReading w;
+  port out TemperatureValue t2;
+  port out HumidityReading h2;
+  port out PressureReading p2;
+  port out LuminosityValue l2;
+  port out WindSpeedReading w2;
+
+  <<sync>> compute {
+    t2 = t;
+    h2 = h;
+    p2 = p;
+    l2 = l;
+    w2 = w;
+  }
+}
+`,
+    'Hub.arcapp': `application Hub for app.WeatherStationHub {
+  platform rospython {
+    ros2.Components;
+    ros2.AutomataBehavior;
+    ros2.DataTypes;
+  }
+  platform timesync {
+    timesync.Components;
+    timesync.AutomataBehavior;
+    timesync.DataTypes;
+  }
+}
+`,
     'Both.arcapp': APP.split('application Gated')[0]!,
     'Gated.arcapp': `application Gated${APP.split('application Gated')[1]!}`,
 });
@@ -196,27 +264,47 @@ describe('model types named like run-time names (ROS 2)', () => {
         expect(node).toContain('from gated.model.app.names import ModeGate as gated_model_app_names_ModeGate\n');
         expect(node).toContain('class_port(gated_interfaces.msg.ModeGate, gated_model_app_names_ModeGate)');
         expect(node).toContain('ModeGate(');
-        const known = ['gated', 'gated_interfaces', 'maa_behavior', 'maa_ros2'].map((x) => `'${x}'`).join(',');
-        const ruff = await run(
-            venvPython,
-            [
-                '-m',
-                'ruff',
-                'check',
-                '--no-cache',
-                '--output-format',
-                'concise',
-                '--config',
-                path.join(packageDir, 'test', 'ros2', 'ruff-generated.toml'),
-                '--config',
-                `lint.isort.known-third-party=[${known}]`,
-                '--extend-exclude',
-                'maa_behavior',
-                '.',
-            ],
-            platform,
-        );
+        const ruff = await ruffRos2(platform, 'gated');
         expect(ruff.status, ruff.stdout + ruff.stderr).toBe(0);
         expect(pythonFiles(platform).length).toBeGreaterThan(10);
+    }, 180_000);
+});
+
+/** `ruff check` of a generated ROS 2 platform folder with the settings of test/ros2 (as the golden test runs it). */
+function ruffRos2(platform: string, pkg: string): Promise<RunResult> {
+    const known = [pkg, `${pkg}_interfaces`, 'maa_behavior', 'maa_ros2'].map((x) => `'${x}'`).join(',');
+    const config = path.join(packageDir, 'test', 'ros2', 'ruff-generated.toml');
+    const args = [
+        'check',
+        '--no-cache',
+        '--output-format',
+        'concise',
+        '--config',
+        config,
+        '--config',
+        `lint.isort.known-third-party=[${known}]`,
+    ];
+    return run(venvPython, ['-m', 'ruff', ...args, '--extend-exclude', 'maa_behavior', '.'], platform);
+}
+
+describe('long import lines', () => {
+    it('wrap at 120 columns in the node and behavior files of a ROS 2 package, at 140 in timesync builds', async () => {
+        await ensureVenv();
+        const gen = await run(
+            process.execPath,
+            [maaGen, 'generate', path.join(root.dir, 'Hub.arcapp'), '--out', path.join(root.dir, 'hub')],
+            root.dir,
+        );
+        expect(gen.status, gen.stdout + gen.stderr).toBe(0);
+        const pkg = path.join(root.dir, 'hub', 'rospython', 'weather_station_hub', 'weather_station_hub');
+        const wrapped = 'from weather_station_hub.model.app.readings import (\n    HumidityReading,\n    LuminosityValue,\n';
+        expect(readFileSync(path.join(pkg, 'nodes', 'weather_station_hub.py'), 'utf8')).toContain(wrapped);
+        expect(readFileSync(path.join(pkg, 'model', 'app', 'weather_station_hub_behavior.py'), 'utf8')).toContain(wrapped);
+        const ruff = await ruffRos2(path.join(root.dir, 'hub', 'rospython'), 'weather_station_hub');
+        expect(ruff.status, ruff.stdout + ruff.stderr).toBe(0);
+        const timesync = readFileSync(path.join(root.dir, 'hub', 'timesync', 'app', 'weather_station_hub.py'), 'utf8');
+        expect(timesync).toContain(
+            'from app.readings import HumidityReading, LuminosityValue, PressureReading, TemperatureValue, WindSpeedReading\n',
+        );
     }, 180_000);
 });

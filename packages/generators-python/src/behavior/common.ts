@@ -10,7 +10,7 @@ import type {
 import { dataTypeQualifiedName } from '@maa/generator-core';
 import { GenerationError } from '@maa/generator-core/node';
 import { PythonTranslator, isInPort, isOutPort, pyName, type NameContext, type Node } from '../python/expressions.js';
-import { checkOneBindingPerName, fromStatements, localNameFor } from './import-names.js';
+import { checkOneBindingPerName, fromImport, fromStatements, localNameFor } from './import-names.js';
 import type { AttributeView, PrologueView } from './views.js';
 
 /** Names of the base class a generated attribute must not shadow. */
@@ -61,6 +61,8 @@ export function modulePath(packageName: string, moduleName: string): { module: s
  */
 export class Imports {
     private readonly from = new Map<string, Set<string>>();
+    /** @param lineLength where import lines wrap: 140 in timesync builds, 120 in ROS 2 packages (their ruff settings) */
+    constructor(private readonly lineLength = 140) {}
     add(module: string, name: string): void {
         let set = this.from.get(module);
         if (!set) this.from.set(module, (set = new Set()));
@@ -86,20 +88,13 @@ export class Imports {
             const names = this.from.get(module)!;
             const group = groups[STDLIB.has(module.split('.')[0]) ? 0 : 1];
             if (names.has('')) group.straight.push(`import ${module}`);
-            for (const statement of fromStatements(names)) group.from.push(...importLine(module, statement));
+            for (const statement of fromStatements(names)) group.from.push(...fromImport(module, statement, this.lineLength));
         }
         return groups
             .map((g) => [...g.straight, ...g.from])
             .filter((g) => g.length)
             .flatMap((g, i) => (i === 0 ? g : ['', ...g]));
     }
-}
-
-/** `from m import a, b`, wrapped like isort when longer than the line length (140). */
-function importLine(module: string, names: readonly string[]): string[] {
-    const line = `from ${module} import ${names.join(', ')}`;
-    if (line.length <= 140) return [line];
-    return [`from ${module} import (`, ...names.map((n) => `    ${n},`), ')'];
 }
 
 const STDLIB = new Set(['collections', 'typing', 'enum', 'dataclasses', 'json', 'math', 'sys', 'importlib', 'struct', 'abc']);

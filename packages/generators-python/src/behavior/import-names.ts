@@ -90,3 +90,10 @@ export function fromStatements(names: Iterable<string>): string[][] {
         return compareMembers(x!, y!) || compare(xs, ys);
     });
 }
+
+/** `from m import a, b`, wrapped as isort wraps it (one name a line) when longer than the line length. */
+export function fromImport(module: string, names: readonly string[], lineLength: number): string[] {
+    const line = `from ${module} import ${names.join(', ')}`;
+    if (line.length <= lineLength) return [line];
+    return [`from ${module} import (`, ...names.map((n) => `    ${n},`), ')'];
+}

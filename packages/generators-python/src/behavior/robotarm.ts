@@ -1,4 +1,4 @@
-import type { BehaviorGeneratorFactory, BehaviorView, RuleViolation, WellFormednessRule } from '@maa/generator-core';
+import type { BehaviorGenerator, BehaviorGeneratorFactory, BehaviorView, RuleViolation, WellFormednessRule } from '@maa/generator-core';
 import { GenerationError } from '@maa/generator-core/node';
 import {
     commandTable,
@@ -50,65 +50,71 @@ export const robotArmRule: WellFormednessRule = {
     },
 };
 
-const create: BehaviorGeneratorFactory = () => ({
-    kind: 'behavior',
-    rules: [robotArmRule],
-    generate(behavior: BehaviorView, ctx) {
-        const component = ctx.component;
-        if (!component) throw new GenerationError('the RobotArm generator needs the component (requires: component)', behavior.node);
-        const body = behavior.node;
-        if (!isRobotArmBody(body) || !isEmbedded(body))
-            throw new GenerationError('only embedded robot arms can be translated', behavior.node);
-        const spec = specFrom(ctx, component, 'sync');
-        const imports = new Imports();
-        imports.add('maa_behavior.robotarm', 'RobotArmExecutor');
-        imports.add('typing', 'ClassVar');
-        imports.add('collections.abc', 'Mapping');
-        const statusPort = spec.ports.find((p) => p.name === 'status');
-        const statusDecl = statusPort?.type.kind === 'object' ? statusPort.type.decl : undefined;
-        const statusType = statusDecl ? typeRef(ctx.datatypes, imports, statusDecl) : 'None';
-        const programs: Array<{ name: string; steps: string[] }> = [];
-        let stepKinds = new Set<string>();
-        for (const p of programsOf(body)) {
-            const steps = programSteps(p).map((s) => {
-                if (s.kind !== 'move') {
-                    stepKinds.add('Gripper');
-                    return `Gripper(close=${s.kind === 'close' ? 'True' : 'False'})`;
-                }
-                stepKinds.add('Move');
-                for (const j of [s.angle, s.height]) stepKinds.add(j.kind === 'fixed' ? 'Fixed' : j.kind === 'keep' ? 'Keep' : 'FromPort');
-                return `Move(${joint(s.angle)}, ${joint(s.height)}${s.target ? `, ${str(s.target.name)}` : ''})`;
+/** The behavior generator; its import lines wrap at `lineLength` (see Imports). */
+export function robotArmGenerator(lineLength?: number): BehaviorGenerator {
+    return {
+        kind: 'behavior',
+        rules: [robotArmRule],
+        generate(behavior: BehaviorView, ctx) {
+            const component = ctx.component;
+            if (!component) throw new GenerationError('the RobotArm generator needs the component (requires: component)', behavior.node);
+            const body = behavior.node;
+            if (!isRobotArmBody(body) || !isEmbedded(body))
+                throw new GenerationError('only embedded robot arms can be translated', behavior.node);
+            const spec = specFrom(ctx, component, 'sync');
+            const imports = new Imports(lineLength);
+            imports.add('maa_behavior.robotarm', 'RobotArmExecutor');
+            imports.add('typing', 'ClassVar');
+            imports.add('collections.abc', 'Mapping');
+            const statusPort = spec.ports.find((p) => p.name === 'status');
+            const statusDecl = statusPort?.type.kind === 'object' ? statusPort.type.decl : undefined;
+            const statusType = statusDecl ? typeRef(ctx.datatypes, imports, statusDecl) : 'None';
+            const programs: Array<{ name: string; steps: string[] }> = [];
+            let stepKinds = new Set<string>();
+            for (const p of programsOf(body)) {
+                const steps = programSteps(p).map((s) => {
+                    if (s.kind !== 'move') {
+                        stepKinds.add('Gripper');
+                        return `Gripper(close=${s.kind === 'close' ? 'True' : 'False'})`;
+                    }
+                    stepKinds.add('Move');
+                    for (const j of [s.angle, s.height])
+                        stepKinds.add(j.kind === 'fixed' ? 'Fixed' : j.kind === 'keep' ? 'Keep' : 'FromPort');
+                    return `Move(${joint(s.angle)}, ${joint(s.height)}${s.target ? `, ${str(s.target.name)}` : ''})`;
+                });
+                programs.push({ name: p.name, steps });
+            }
+            stepKinds = new Set([...stepKinds].sort());
+            for (const k of stepKinds) imports.add('maa_behavior.robotarm', k);
+            imports.add('maa_behavior.robotarm', 'Step');
+            const commands = commandTable(body).flatMap((c) => (c.program ? [{ constant: c.constant, program: c.program.name }] : []));
+            const outs = spec.ports.filter((p) => p.direction === 'out');
+            const cls = renderLines('behavior/robotarm.njk', {
+                className: spec.className,
+                qualifiedName: component.qualifiedName,
+                inPorts: spec.ports.filter((p) => p.direction === 'in').map((p) => p.name),
+                outPorts: outs.map((p) => p.name),
+                delayed: outs.filter((p) => p.delayed).map((p) => p.name),
+                statusType,
+                programs,
+                commands,
             });
-            programs.push({ name: p.name, steps });
-        }
-        stepKinds = new Set([...stepKinds].sort());
-        for (const k of stepKinds) imports.add('maa_behavior.robotarm', k);
-        imports.add('maa_behavior.robotarm', 'Step');
-        const commands = commandTable(body).flatMap((c) => (c.program ? [{ constant: c.constant, program: c.program.name }] : []));
-        const outs = spec.ports.filter((p) => p.direction === 'out');
-        const cls = renderLines('behavior/robotarm.njk', {
-            className: spec.className,
-            qualifiedName: component.qualifiedName,
-            inPorts: spec.ports.filter((p) => p.direction === 'in').map((p) => p.name),
-            outPorts: outs.map((p) => p.name),
-            delayed: outs.filter((p) => p.delayed).map((p) => p.name),
-            statusType,
-            programs,
-            commands,
-        });
-        const { module, file } = behaviorModule(component.packageName, component.name);
-        const out = ctx.out.file(file);
-        out.traced(behavior.node, () =>
-            out.write(
-                moduleText(
-                    `Behavior of ${component.qualifiedName}: its robot arm (generated by the Python RobotArm generator).`,
-                    imports,
-                    cls,
+            const { module, file } = behaviorModule(component.packageName, component.name);
+            const out = ctx.out.file(file);
+            out.traced(behavior.node, () =>
+                out.write(
+                    moduleText(
+                        `Behavior of ${component.qualifiedName}: its robot arm (generated by the Python RobotArm generator).`,
+                        imports,
+                        cls,
+                    ),
                 ),
-            ),
-        );
-        return { module, class: spec.className, timing: 'sync' };
-    },
-});
+            );
+            return { module, class: spec.className, timing: 'sync' };
+        },
+    };
+}
+
+const create: BehaviorGeneratorFactory = () => robotArmGenerator();
 
 export default create;

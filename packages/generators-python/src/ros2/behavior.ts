@@ -1,13 +1,7 @@
-import type {
-    BehaviorGenerator,
-    BehaviorGeneratorFactory,
-    BehaviorResult,
-    GeneratorInstantiation,
-    BehaviorGeneratorManifest,
-    OutputSink,
-} from '@maa/generator-core';
-import createAutomata from '../behavior/automata.js';
-import createRobotArm from '../behavior/robotarm.js';
+import type { BehaviorGenerator, BehaviorGeneratorFactory, BehaviorResult, OutputSink } from '@maa/generator-core';
+import { automataGenerator } from '../behavior/automata.js';
+import { robotArmGenerator } from '../behavior/robotarm.js';
+import { ROS2_LINE_LENGTH } from './model/imports.js';
 import { MODEL_PACKAGE, rosPackageName } from './naming.js';
 
 /**
@@ -39,8 +33,6 @@ export function wrapBehaviorGenerator(inner: BehaviorGenerator): BehaviorGenerat
     };
 }
 
-export const automataBehavior: BehaviorGeneratorFactory = async (i: GeneratorInstantiation<BehaviorGeneratorManifest>) =>
-    wrapBehaviorGenerator(await createAutomata(i));
+export const automataBehavior: BehaviorGeneratorFactory = () => wrapBehaviorGenerator(automataGenerator(ROS2_LINE_LENGTH));
 
-export const robotArmBehavior: BehaviorGeneratorFactory = async (i: GeneratorInstantiation<BehaviorGeneratorManifest>) =>
-    wrapBehaviorGenerator(await createRobotArm(i));
+export const robotArmBehavior: BehaviorGeneratorFactory = () => wrapBehaviorGenerator(robotArmGenerator(ROS2_LINE_LENGTH));

@@ -6,6 +6,7 @@ import { Imports } from '../behavior/common.js';
 import { modeTransitionBody } from '../timesync/modes.js';
 import { MODEL_PACKAGE, interfacePackageName, isRosDataTypeResult, rosName, rosPackageName, type RosDataTypeResult } from './naming.js';
 import { buildApplication } from './model/build.js';
+import { ROS2_LINE_LENGTH } from './model/imports.js';
 import { deploymentJson, deploymentOf } from './model/deployment.js';
 import type { ComponentNode, ModeManagerNode, Parameter, Ros2Application } from './model/model.js';
 import { checkTopicRules } from './model/topic-rules.js';
@@ -115,7 +116,7 @@ function renderNode(ctx: ComponentGenerationContext, app: Ros2Application, n: Co
 function renderModeManager(ctx: ComponentGenerationContext, app: Ros2Application, mg: ModeManagerNode, dt: RosDataTypeResult): string {
     const c = mg.instance.component;
     // the node's imports first, so that the guards' model types take the names (or aliases) they have there
-    const imports = mg.imports.into(new Imports());
+    const imports = mg.imports.into(new Imports(ROS2_LINE_LENGTH));
     const body = modeTransitionBody(c, dt, imports, 'maa_ros2.modes');
     return ctx.templates.render('mode_manager.py.njk', {
         mg,
@@ -136,16 +137,13 @@ function renderModeManager(ctx: ComponentGenerationContext, app: Ros2Application
     });
 }
 
-/** The line length the generated ROS 2 packages are checked with (test/ros2/ruff-generated.toml). */
-const LINE_LENGTH = 120;
-
 /**
  * One item of a tuple of calls, `    Call(a, b),`; longer than a line, one argument a line (as the
  * node files write theirs), since topic names and message modules grow with the model's names.
  */
 function tupleItem(call: string, args: readonly string[]): string[] {
     const line = `    ${call}(${args.join(', ')}),`;
-    return line.length <= LINE_LENGTH ? [line] : [`    ${call}(`, ...args.map((a) => `        ${a},`), '    ),'];
+    return line.length <= ROS2_LINE_LENGTH ? [line] : [`    ${call}(`, ...args.map((a) => `        ${a},`), '    ),'];
 }
 
 /** `__init__.py` of every Python package of the ament package (behavior generators wrote their modules); returns the packages. */

@@ -8,7 +8,7 @@ import { Imports } from '../behavior/common.js';
 import { computeClass } from '../behavior/compute.js';
 import { MODEL_PACKAGE, primitiveOf, rosName, typeKey, type RosDataTypeResult } from './naming.js';
 import type { ComponentBehavior } from './model/build.js';
-import { PyImports } from './model/imports.js';
+import { PyImports, ROS2_LINE_LENGTH } from './model/imports.js';
 import type { TopicRef } from './model/model.js';
 
 /**
@@ -87,7 +87,7 @@ function writeCompute(
     pkg: string,
     modelFiles: Set<string>,
 ): ComponentBehavior {
-    const imports = new Imports();
+    const imports = new Imports(ROS2_LINE_LENGTH);
     const cls = computeClass(c, dt, imports);
     const { module, file } = behaviorModule(c.packageName, c.name);
     modelFiles.add(file);

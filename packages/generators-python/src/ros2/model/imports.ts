@@ -1,5 +1,8 @@
 import type { Imports } from '../../behavior/common.js';
-import { checkOneBindingPerName, fromStatements, localNameFor } from '../../behavior/import-names.js';
+import { checkOneBindingPerName, fromImport, fromStatements, localNameFor } from '../../behavior/import-names.js';
+
+/** The line length of the generated ROS 2 packages (their ruff settings, test/ros2/ruff-generated.toml). */
+export const ROS2_LINE_LENGTH = 120;
 
 function compare(a: string, b: string): number {
     return a < b ? -1 : a > b ? 1 : 0;
@@ -49,11 +52,11 @@ export class PyImports {
 /**
  * One import block in isort order (ruff `I`): `import m` lines, then `from m import ...` lines, each
  * sorted by module; names: constants, classes, then functions. The name '' stands for `import m`;
- * an aliased name (`X as Y`) gets a statement of its own (fromStatements).
+ * an aliased name (`X as Y`) gets a statement of its own (fromStatements); long lines wrap at 120.
  */
 export function importLines(imports: ReadonlyMap<string, ReadonlySet<string>>): string[] {
     const modules = [...imports.keys()].sort((a, b) => compare(a.toLowerCase(), b.toLowerCase()));
     const plain = modules.filter((m) => imports.get(m)!.has('')).map((m) => `import ${m}`);
-    const from = modules.flatMap((m) => fromStatements(imports.get(m)!).map((names) => `from ${m} import ${names.join(', ')}`));
+    const from = modules.flatMap((m) => fromStatements(imports.get(m)!).flatMap((names) => fromImport(m, names, ROS2_LINE_LENGTH)));
     return [...plain, ...from];
 }
