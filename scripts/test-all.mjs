@@ -1,7 +1,7 @@
 #!/usr/bin/env node
 // `npm test`: builds every workspace package, sets up the simulator's venv (Vitest uses it), runs
 // every Vitest suite of the workspace (vitest.config.ts at the root), the browser end-to-end
-// suite (e2e/), then the Python suites
+// suite (e2e/), the pack-and-install test (scripts/pack-install.mjs), then the Python suites
 // (PYTHON_SUITES below: sim-server, the ROS 2 family with real rclpy, the Python RTEs; each with
 // its own idempotent venv setup, pytest and linters), and closes with
 //   failures: <every kind of failure, counted and named>     (only when something failed)
