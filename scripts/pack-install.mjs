@@ -299,10 +299,15 @@ async function useSimulatorAndIde({ project, demo, commands }) {
         expectExit(run, 0, 'maa-sim --help');
         expect(/usage: maa-sim/.test(run.stdout), `maa-sim --help printed no usage:\n${run.stdout.slice(0, 400)}`);
     });
-    await step('npx maa-gen sim TR.arcapp --platform timesync --until-goal', async () => {
+    await step('npx maa-gen sim TR.arcapp --platform timesync --until-goal --record run.mcap', async () => {
         if (!commands.has('sim')) return { skip: 'this maa-gen has no `sim` yet' };
-        const run = await npxRun(demo, 'maa-gen', ['sim', 'TR.arcapp', '--platform', 'timesync', '--until-goal', '--headless']);
+        const mcap = path.join(project, 'run.mcap');
+        const args = ['sim', 'TR.arcapp', '--platform', 'timesync', '--until-goal', '--headless', '--record', mcap];
+        const run = await npxRun(demo, 'maa-gen', args, { MAA_SIM: '' });
         expectExit(run, 0, 'maa-gen sim --until-goal');
+        // the recorder runs in the installed simulator too: an MCAP file, by its magic bytes
+        const magic = existsSync(mcap) ? readFileSync(mcap).subarray(0, 8) : Buffer.alloc(0);
+        expect(magic.equals(Buffer.from([0x89, 0x4d, 0x43, 0x41, 0x50, 0x30, 0x0d, 0x0a])), 'maa-gen sim --record wrote no MCAP file');
         return undefined;
     });
     await step('npx maa-ide serving the project', () => serveIde(project, demo));
