@@ -1,7 +1,8 @@
 #!/usr/bin/env node
 // `npm run release -- <version|major|minor|patch> [--out DIR] [--no-build] [--dry-run]`
 // (docs/releasing.md): sets every public package's version and every workspace range on them to
-// the new version, refreshes package-lock.json, builds, and packs the public packages into
+// the new version, refreshes package-lock.json, builds, regenerates the generator golden files
+// (their traces name the generators' version), and packs the public packages into
 // DIR (default release/<version>/) in dependency order, with a list of the tarballs (publish.txt)
 // in the order `npm publish` must follow. It publishes nothing: that needs registry credentials.
 import { spawnSync } from 'node:child_process';
@@ -46,6 +47,8 @@ async function main() {
     run(npm, ['install', '--package-lock-only', '--no-audit', '--no-fund']);
     run(process.execPath, [path.join(repo, 'scripts', 'complete-lockfile.mjs')]);
     if (options.build) run(npm, ['run', 'build']);
+    // the golden traces name the generators' package version (the only change the bump makes there)
+    run(npm, ['run', 'golden:update', '-w', '@maa/generators-python']);
     const out = path.resolve(options.out ?? path.join(repo, 'release', version));
     mkdirSync(out, { recursive: true });
     const order = dependencyOrder(publicPackages(readWorkspace(repo))).map((p) => p.json.name);
