@@ -2,7 +2,7 @@
 // The pack-and-install test (issue 16; docs/testing.md, docs/releasing.md): packs every public
 // workspace package with `npm pack`, installs the tarballs into an empty folder outside the
 // repository (third-party packages from the registry, through the local npm cache), and there
-// uses the tools as a user would: `npx maa-gen --version`, `new toast-service demo`, `check`,
+// uses the tools as a user would: `npx maa-gen --version`, `new toast-service demo`, `check`, `lsp`,
 // `generate` for both platforms, `test`, `diagram`, `sim` for the timesync platform until the
 // goal, and `npx maa-ide` serving the project (the printed URL fetched with the token).
 //
@@ -122,6 +122,56 @@ function copyDir(from, to) {
         if (rel.split('/').some((part) => part.startsWith('.') || part === 'generated' || part === '__pycache__')) continue;
         mkdirSync(path.dirname(path.join(to, rel)), { recursive: true });
         writeFileSync(path.join(to, rel), readFileSync(path.join(from, rel)));
+    }
+}
+
+/**
+ * Starts `npx maa-gen lsp --stdio` in `cwd`, sends LSP's initialize request and resolves with the
+ * server's answer (its capabilities), then stops it (its whole process group).
+ */
+async function initializeLanguageServer(cwd) {
+    const child = spawn(npx, ['--no-install', 'maa-gen', 'lsp', '--stdio'], {
+        cwd,
+        detached: true,
+        env: { ...process.env, npm_config_loglevel: 'error' },
+    });
+    const exited = new Promise((resolve) => child.on('close', (code, signal) => resolve(code ?? signal)));
+    let received = Buffer.alloc(0);
+    let stderr = '';
+    child.stderr.on('data', (d) => {
+        stderr += d;
+    });
+    try {
+        const answer = new Promise((resolve, reject) => {
+            child.stdout.on('data', (d) => {
+                received = Buffer.concat([received, d]);
+                // one message: "Content-Length: N\r\n\r\n" and N bytes of JSON (others, e.g. log notifications, skipped)
+                for (;;) {
+                    const header = /^Content-Length: (\d+)\r\n\r\n/.exec(received.toString('latin1', 0, Math.min(received.length, 64)));
+                    if (!header || received.length < header[0].length + Number(header[1])) return;
+                    const body = received.subarray(header[0].length, header[0].length + Number(header[1]));
+                    received = received.subarray(header[0].length + Number(header[1]));
+                    const message = JSON.parse(body.toString('utf8'));
+                    if (message.id === 1) resolve(message);
+                }
+            });
+            exited.then((code) => reject(new Error(`maa-gen lsp exited with ${code} before answering:\n${stderr.trim()}`)));
+        });
+        const request = JSON.stringify({
+            jsonrpc: '2.0',
+            id: 1,
+            method: 'initialize',
+            params: { processId: null, rootUri: null, capabilities: {} },
+        });
+        child.stdin.write(`Content-Length: ${Buffer.byteLength(request)}\r\n\r\n${request}`);
+        return await answer;
+    } finally {
+        try {
+            process.kill(-child.pid, 'SIGTERM');
+        } catch {
+            // already gone
+        }
+        await exited;
     }
 }
 
@@ -279,6 +329,18 @@ async function useMaaGen({ project, demo, commands }) {
             /stream tests: [1-9]\d* passed, 0 failed/.test(`${run.stdout}\n${run.stderr}`),
             `maa-gen test did not report passed stream tests:\n${run.stderr.slice(-400)}`,
         );
+    });
+    await step('npx maa-gen check on a folder without models exits 2', async () => {
+        const empty = path.join(project, 'empty');
+        mkdirSync(empty, { recursive: true });
+        const run = await npxRun(empty, 'maa-gen', ['check', '.']);
+        expectExit(run, 2, 'maa-gen check . (no models)');
+    });
+    await step('npx maa-gen lsp --stdio answers initialize', async () => {
+        if (!commands.has('lsp')) return { skip: 'this maa-gen has no `lsp`' };
+        const answer = await initializeLanguageServer(demo);
+        expect(answer.result?.capabilities?.textDocumentSync !== undefined, `no capabilities in ${JSON.stringify(answer).slice(0, 300)}`);
+        return undefined;
     });
     await step('npx maa-gen diagram ToastServiceRobot', async () => {
         if (!commands.has('diagram')) return { skip: 'this maa-gen has no `diagram`' };
