@@ -1,0 +1,77 @@
+// Opens the lab's database: PGlite (PostgreSQL in WebAssembly, in this process) on a data
+// directory, or a PostgreSQL server from a DATABASE_URL. Both are reached through node-postgres
+// (PGlite ships a node-postgres connection for itself), so one Kysely dialect, one set of queries
+// and one migrator serve both.
+import { mkdirSync } from 'node:fs';
+import { PGlite } from '@electric-sql/pglite';
+import { createPgConfig } from '@electric-sql/pglite/node-postgres';
+import { Kysely, Migrator, PostgresDialect } from 'kysely';
+import pg from 'pg';
+import { DurableNodeFS } from './durable-nodefs.js';
+import { labMigrations } from './migrations/index.js';
+import type { Database } from './schema.js';
+
+export type StorageOptions =
+    /** PGlite on a data directory (created when missing); the default of `maa-lab serve`. */
+    | { dataDir: string; databaseUrl?: undefined }
+    /** A PostgreSQL server, e.g. `postgresql://lab@localhost/lab` or with `?host=/run/postgresql`. */
+    | { databaseUrl: string; dataDir?: undefined };
+
+export interface OpenDatabase {
+    db: Kysely<Database>;
+    backend: 'pglite' | 'postgresql';
+    close(): Promise<void>;
+}
+
+/** Opens the database and brings its schema up to date (the migrations it has not seen). */
+export async function openDatabase(options: StorageOptions): Promise<OpenDatabase> {
+    const opened = options.databaseUrl !== undefined ? openPostgres(options.databaseUrl) : await openPglite(options.dataDir);
+    try {
+        await migrateToLatest(opened.db);
+    } catch (error) {
+        await opened.close();
+        throw error;
+    }
+    return opened;
+}
+
+function openPostgres(databaseUrl: string): OpenDatabase {
+    const pool = new pg.Pool({ connectionString: databaseUrl, max: 10 });
+    const db = new Kysely<Database>({ dialect: new PostgresDialect({ pool }) });
+    return { db, backend: 'postgresql', close: () => db.destroy() };
+}
+
+async function openPglite(dataDir: string): Promise<OpenDatabase> {
+    mkdirSync(dataDir, { recursive: true });
+    const pglite = await PGlite.create({ fs: new DurableNodeFS(dataDir), relaxedDurability: false, startParams: durableStartParams() });
+    // PGlite is one connection: a pool of one makes Kysely's transactions take turns.
+    const pool = new pg.Pool({ ...createPgConfig(pglite), max: 1 });
+    const db = new Kysely<Database>({ dialect: new PostgresDialect({ pool }) });
+    return {
+        db,
+        backend: 'pglite',
+        close: async () => {
+            await db.destroy();
+            await pglite.close();
+        },
+    };
+}
+
+/**
+ * PGlite's start parameters without `-F` (PGlite starts PostgreSQL with fsync off) and with
+ * fsync on, so a commit syncs the WAL before PGlite acknowledges it (see DurableNodeFS). The WAL
+ * is synced with fsync() rather than the default fdatasync(): Emscripten's fdatasync is a stub
+ * that does nothing, its fsync reaches the filesystem's stream operation.
+ */
+export function durableStartParams(): string[] {
+    return [...PGlite.defaultStartParams.filter((p) => p !== '-F'), '-c', 'fsync=on', '-c', 'wal_sync_method=fsync'];
+}
+
+async function migrateToLatest(db: Kysely<Database>): Promise<void> {
+    const { error, results } = await new Migrator({ db, provider: labMigrations }).migrateToLatest();
+    if (error) {
+        const failed = results?.find((r) => r.status === 'Error')?.migrationName;
+        const reason = error instanceof Error ? error.message : String(error);
+        throw new Error(`lab storage: the database migration${failed ? ` ${failed}` : ''} failed: ${reason}`, { cause: error });
+    }
+}

@@ -1,0 +1,13 @@
+// Every migration of the lab's database, in order; Kysely's Migrator applies the ones a database
+// has not seen (recorded in its kysely_migration table) inside a transaction and a lock.
+import type { Migration, MigrationProvider } from 'kysely';
+import * as initial from './0001-initial.js';
+
+const MIGRATIONS: Record<string, Migration> = {
+    '0001-initial': initial,
+};
+
+/** The migrations compiled into this package (no directory scan, so they work from dist/ and bundles alike). */
+export const labMigrations: MigrationProvider = {
+    getMigrations: async () => MIGRATIONS,
+};

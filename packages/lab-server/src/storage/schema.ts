@@ -1,0 +1,114 @@
+// The tables of the lab's database as Kysely sees them (the migrations in ./migrations create
+// them). Only src/storage uses these types; the rest of the lab server goes through LabStore.
+import type { ColumnType, Generated, JSONColumnType } from 'kysely';
+
+/** A column the database fills on insert (`DEFAULT now()`), read back as a Date. */
+type CreatedAt = ColumnType<Date, Date | undefined, never>;
+
+export type Role = 'instructor' | 'student';
+
+export interface UsersTable {
+    id: Generated<number>;
+    login: string;
+    email: string | null;
+    name: string;
+    role: Role;
+    password_hash: string | null;
+    oidc_issuer: string | null;
+    oidc_subject: string | null;
+    created_at: CreatedAt;
+}
+
+export interface CoursesTable {
+    id: Generated<number>;
+    name: string;
+    title: string;
+    created_at: CreatedAt;
+}
+
+export interface EnrollmentsTable {
+    course_id: number;
+    user_id: number;
+    created_at: CreatedAt;
+}
+
+export interface ExercisesTable {
+    id: Generated<number>;
+    course_id: number;
+    name: string;
+    released_at: Date | null;
+    spec: JSONColumnType<Record<string, unknown>, string, string>;
+    created_at: CreatedAt;
+}
+
+export interface WorkspacesTable {
+    id: Generated<number>;
+    owner_id: number;
+    exercise_id: number;
+    created_at: CreatedAt;
+}
+
+export interface FileRevisionsTable {
+    id: Generated<number>;
+    workspace_id: number;
+    path: string;
+    revision: number;
+    /** null: the file was deleted in this revision. */
+    content: string | null;
+    author_id: number;
+    /** the revision this one restored, if it is a restore */
+    restored_from: number | null;
+    created_at: CreatedAt;
+}
+
+export interface SubmissionsTable {
+    id: Generated<number>;
+    workspace_id: number;
+    submitted_by: number;
+    /** path → revision of every file at the time of the submission */
+    files: JSONColumnType<Record<string, number>, string, never>;
+    created_at: CreatedAt;
+}
+
+export interface TestResultsTable {
+    id: Generated<number>;
+    workspace_id: number;
+    submission_id: number | null;
+    passed: number;
+    failed: number;
+    skipped: number;
+    details: ColumnType<unknown, string, never>;
+    created_at: CreatedAt;
+}
+
+export interface SimulationResultsTable {
+    id: Generated<number>;
+    workspace_id: number;
+    submission_id: number | null;
+    goal_reached: boolean;
+    simulated_seconds: number;
+    details: ColumnType<unknown, string, never>;
+    created_at: CreatedAt;
+}
+
+export interface SessionsTable {
+    /** a hash of the session token (the token itself is only in the cookie) */
+    id: string;
+    user_id: number;
+    csrf_secret: string;
+    created_at: CreatedAt;
+    expires_at: Date;
+}
+
+export interface Database {
+    users: UsersTable;
+    courses: CoursesTable;
+    enrollments: EnrollmentsTable;
+    exercises: ExercisesTable;
+    workspaces: WorkspacesTable;
+    file_revisions: FileRevisionsTable;
+    submissions: SubmissionsTable;
+    test_results: TestResultsTable;
+    simulation_results: SimulationResultsTable;
+    sessions: SessionsTable;
+}

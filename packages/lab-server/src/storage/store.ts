@@ -1,0 +1,324 @@
+// LabStore on Kysely: the same queries for PGlite and PostgreSQL (connect.ts opens either).
+import type { Kysely } from 'kysely';
+import { type OpenDatabase, openDatabase, type StorageOptions } from './connect.js';
+import { insertRevision, latestRevisions, readRevision, restoreRevision, revisionHistory } from './files.js';
+import { toCourse, toExercise, toSession, toSimulationResult, toSubmission, toTestResult, toUser } from './rows.js';
+import type { Database } from './schema.js';
+import {
+    type Course,
+    type Exercise,
+    type FileRevision,
+    type FileRevisionInfo,
+    type LabStore,
+    type NewUser,
+    type SaveFile,
+    type Session,
+    type SimulationResult,
+    StorageConflictError,
+    type Submission,
+    type TestResult,
+    type User,
+    type Workspace,
+} from './types.js';
+
+/** Opens the store (PGlite on `dataDir` or PostgreSQL at `databaseUrl`) with its schema up to date. */
+export async function openLabStore(options: StorageOptions): Promise<LabStore> {
+    return new KyselyLabStore(await openDatabase(options));
+}
+
+/** PostgreSQL's error codes for a unique and a foreign-key violation. */
+const CONFLICT_CODES = new Set(['23505', '23503']);
+
+/** Runs an insert or update; a unique or foreign-key violation becomes a StorageConflictError. */
+async function conflictsAsErrors<T>(what: string, run: () => Promise<T>): Promise<T> {
+    try {
+        return await run();
+    } catch (error) {
+        const code = (error as { code?: unknown }).code;
+        if (typeof code === 'string' && CONFLICT_CODES.has(code)) {
+            throw new StorageConflictError(`${what}: ${(error as Error).message}`, { cause: error });
+        }
+        throw error;
+    }
+}
+
+class KyselyLabStore implements LabStore {
+    readonly backend: LabStore['backend'];
+    private readonly db: Kysely<Database>;
+
+    constructor(private readonly opened: OpenDatabase) {
+        this.db = opened.db;
+        this.backend = opened.backend;
+    }
+
+    // --- users
+
+    createUser(u: NewUser): Promise<User> {
+        return conflictsAsErrors(`cannot create the user ${u.login}`, async () => {
+            const row = await this.db
+                .insertInto('users')
+                .values({
+                    login: u.login,
+                    name: u.name,
+                    role: u.role,
+                    email: u.email ?? null,
+                    password_hash: u.passwordHash ?? null,
+                    oidc_issuer: u.oidcIssuer ?? null,
+                    oidc_subject: u.oidcSubject ?? null,
+                })
+                .returningAll()
+                .executeTakeFirstOrThrow();
+            return toUser(row);
+        });
+    }
+
+    async findUserById(id: number): Promise<User | undefined> {
+        const row = await this.db.selectFrom('users').selectAll().where('id', '=', id).executeTakeFirst();
+        return row && toUser(row);
+    }
+
+    async findUserByLogin(login: string): Promise<User | undefined> {
+        const row = await this.db.selectFrom('users').selectAll().where('login', '=', login).executeTakeFirst();
+        return row && toUser(row);
+    }
+
+    async findUserByOidc(issuer: string, subject: string): Promise<User | undefined> {
+        const row = await this.db
+            .selectFrom('users')
+            .selectAll()
+            .where('oidc_issuer', '=', issuer)
+            .where('oidc_subject', '=', subject)
+            .executeTakeFirst();
+        return row && toUser(row);
+    }
+
+    async setPasswordHash(userId: number, passwordHash: string | null): Promise<void> {
+        const { numUpdatedRows } = await this.db
+            .updateTable('users')
+            .set({ password_hash: passwordHash })
+            .where('id', '=', userId)
+            .executeTakeFirstOrThrow();
+        if (numUpdatedRows === 0n) throw new StorageConflictError(`there is no user ${userId}`);
+    }
+
+    async listUsers(): Promise<User[]> {
+        return (await this.db.selectFrom('users').selectAll().orderBy('login').execute()).map(toUser);
+    }
+
+    // --- courses and exercises
+
+    createCourse(c: { name: string; title: string }): Promise<Course> {
+        return conflictsAsErrors(`cannot create the course ${c.name}`, async () =>
+            toCourse(await this.db.insertInto('courses').values(c).returningAll().executeTakeFirstOrThrow()),
+        );
+    }
+
+    async findCourse(name: string): Promise<Course | undefined> {
+        const row = await this.db.selectFrom('courses').selectAll().where('name', '=', name).executeTakeFirst();
+        return row && toCourse(row);
+    }
+
+    enroll(courseId: number, userId: number): Promise<void> {
+        return conflictsAsErrors(`cannot enroll user ${userId} in course ${courseId}`, async () => {
+            await this.db
+                .insertInto('enrollments')
+                .values({ course_id: courseId, user_id: userId })
+                .onConflict((oc) => oc.columns(['course_id', 'user_id']).doNothing())
+                .execute();
+        });
+    }
+
+    async listEnrolled(courseId: number): Promise<User[]> {
+        const rows = await this.db
+            .selectFrom('users')
+            .innerJoin('enrollments', 'enrollments.user_id', 'users.id')
+            .selectAll('users')
+            .where('enrollments.course_id', '=', courseId)
+            .orderBy('users.login')
+            .execute();
+        return rows.map(toUser);
+    }
+
+    createExercise(e: { courseId: number; name: string; spec: Record<string, unknown> }): Promise<Exercise> {
+        return conflictsAsErrors(`cannot create the exercise ${e.name}`, async () => {
+            const row = await this.db
+                .insertInto('exercises')
+                .values({ course_id: e.courseId, name: e.name, spec: JSON.stringify(e.spec) })
+                .returningAll()
+                .executeTakeFirstOrThrow();
+            return toExercise(row);
+        });
+    }
+
+    async releaseExercise(exerciseId: number, at: Date = new Date()): Promise<Exercise> {
+        const row = await this.db
+            .updateTable('exercises')
+            .set((eb) => ({ released_at: eb.fn.coalesce('released_at', eb.val(at)) }))
+            .where('id', '=', exerciseId)
+            .returningAll()
+            .executeTakeFirst();
+        if (!row) throw new StorageConflictError(`there is no exercise ${exerciseId}`);
+        return toExercise(row);
+    }
+
+    async findExercise(courseId: number, name: string): Promise<Exercise | undefined> {
+        const row = await this.db
+            .selectFrom('exercises')
+            .selectAll()
+            .where('course_id', '=', courseId)
+            .where('name', '=', name)
+            .executeTakeFirst();
+        return row && toExercise(row);
+    }
+
+    async listExercises(courseId: number): Promise<Exercise[]> {
+        return (await this.db.selectFrom('exercises').selectAll().where('course_id', '=', courseId).orderBy('name').execute()).map(
+            toExercise,
+        );
+    }
+
+    // --- workspaces and files
+
+    workspace(ownerId: number, exerciseId: number): Promise<Workspace> {
+        return conflictsAsErrors(`cannot open the workspace of user ${ownerId} for exercise ${exerciseId}`, async () => {
+            // An update that changes nothing, so RETURNING gives the row whether it was there or not.
+            const row = await this.db
+                .insertInto('workspaces')
+                .values({ owner_id: ownerId, exercise_id: exerciseId })
+                .onConflict((oc) =>
+                    oc.columns(['owner_id', 'exercise_id']).doUpdateSet((eb) => ({ owner_id: eb.ref('excluded.owner_id') })),
+                )
+                .returningAll()
+                .executeTakeFirstOrThrow();
+            return { id: row.id, ownerId: row.owner_id, exerciseId: row.exercise_id, createdAt: row.created_at };
+        });
+    }
+
+    saveFile(s: SaveFile): Promise<FileRevision> {
+        return conflictsAsErrors(`cannot save ${s.path}`, () => insertRevision(this.db, s));
+    }
+
+    deleteFile(d: Omit<SaveFile, 'content'>): Promise<FileRevision> {
+        return conflictsAsErrors(`cannot delete ${d.path}`, () => insertRevision(this.db, { ...d, content: null }));
+    }
+
+    readFile(workspaceId: number, path: string, revision?: number): Promise<FileRevision | undefined> {
+        return readRevision(this.db, workspaceId, path, revision);
+    }
+
+    listFiles(workspaceId: number): Promise<FileRevisionInfo[]> {
+        return latestRevisions(this.db, workspaceId);
+    }
+
+    history(workspaceId: number, path: string): Promise<FileRevisionInfo[]> {
+        return revisionHistory(this.db, workspaceId, path);
+    }
+
+    restore(r: { workspaceId: number; path: string; revision: number; authorId: number }): Promise<FileRevision> {
+        return conflictsAsErrors(`cannot restore ${r.path}`, () => restoreRevision(this.db, r));
+    }
+
+    // --- submissions and results
+
+    submit(workspaceId: number, submittedBy: number): Promise<Submission> {
+        return conflictsAsErrors(`cannot submit workspace ${workspaceId}`, () =>
+            this.db.transaction().execute(async (tx) => {
+                const files = Object.fromEntries((await latestRevisions(tx, workspaceId)).map((f) => [f.path, f.revision]));
+                const row = await tx
+                    .insertInto('submissions')
+                    .values({ workspace_id: workspaceId, submitted_by: submittedBy, files: JSON.stringify(files) })
+                    .returningAll()
+                    .executeTakeFirstOrThrow();
+                return toSubmission(row);
+            }),
+        );
+    }
+
+    recordTestResult(r: Omit<TestResult, 'id' | 'createdAt'>): Promise<TestResult> {
+        return conflictsAsErrors('cannot record the test result', async () => {
+            const row = await this.db
+                .insertInto('test_results')
+                .values({
+                    workspace_id: r.workspaceId,
+                    submission_id: r.submissionId,
+                    passed: r.passed,
+                    failed: r.failed,
+                    skipped: r.skipped,
+                    details: JSON.stringify(r.details ?? null),
+                })
+                .returningAll()
+                .executeTakeFirstOrThrow();
+            return toTestResult(row);
+        });
+    }
+
+    recordSimulationResult(r: Omit<SimulationResult, 'id' | 'createdAt'>): Promise<SimulationResult> {
+        return conflictsAsErrors('cannot record the simulation result', async () => {
+            const row = await this.db
+                .insertInto('simulation_results')
+                .values({
+                    workspace_id: r.workspaceId,
+                    submission_id: r.submissionId,
+                    goal_reached: r.goalReached,
+                    simulated_seconds: r.simulatedSeconds,
+                    details: JSON.stringify(r.details ?? null),
+                })
+                .returningAll()
+                .executeTakeFirstOrThrow();
+            return toSimulationResult(row);
+        });
+    }
+
+    async latestTestResult(workspaceId: number): Promise<TestResult | undefined> {
+        const row = await this.db
+            .selectFrom('test_results')
+            .selectAll()
+            .where('workspace_id', '=', workspaceId)
+            .orderBy('created_at', 'desc')
+            .orderBy('id', 'desc')
+            .executeTakeFirst();
+        return row && toTestResult(row);
+    }
+
+    async latestSimulationResult(workspaceId: number): Promise<SimulationResult | undefined> {
+        const row = await this.db
+            .selectFrom('simulation_results')
+            .selectAll()
+            .where('workspace_id', '=', workspaceId)
+            .orderBy('created_at', 'desc')
+            .orderBy('id', 'desc')
+            .executeTakeFirst();
+        return row && toSimulationResult(row);
+    }
+
+    // --- sessions
+
+    createSession(s: Omit<Session, 'createdAt'>): Promise<Session> {
+        return conflictsAsErrors('cannot create the session', async () => {
+            const row = await this.db
+                .insertInto('sessions')
+                .values({ id: s.id, user_id: s.userId, csrf_secret: s.csrfSecret, expires_at: s.expiresAt })
+                .returningAll()
+                .executeTakeFirstOrThrow();
+            return toSession(row);
+        });
+    }
+
+    async findSession(id: string, now: Date = new Date()): Promise<Session | undefined> {
+        const row = await this.db.selectFrom('sessions').selectAll().where('id', '=', id).where('expires_at', '>', now).executeTakeFirst();
+        return row && toSession(row);
+    }
+
+    async deleteSession(id: string): Promise<void> {
+        await this.db.deleteFrom('sessions').where('id', '=', id).execute();
+    }
+
+    async deleteExpiredSessions(now: Date = new Date()): Promise<number> {
+        const { numDeletedRows } = await this.db.deleteFrom('sessions').where('expires_at', '<=', now).executeTakeFirstOrThrow();
+        return Number(numDeletedRows);
+    }
+
+    close(): Promise<void> {
+        return this.opened.close();
+    }
+}

@@ -1,0 +1,171 @@
+// The records and the typed API of the lab's storage (LabStore). The rest of the lab server uses
+// only this; the SQL is in store.ts and the schema in ./migrations.
+import type { Role } from './schema.js';
+
+export type { Role };
+
+export interface User {
+    id: number;
+    login: string;
+    email: string | null;
+    name: string;
+    role: Role;
+    passwordHash: string | null;
+    oidcIssuer: string | null;
+    oidcSubject: string | null;
+    createdAt: Date;
+}
+
+export interface NewUser {
+    login: string;
+    name: string;
+    role: Role;
+    email?: string | null;
+    passwordHash?: string | null;
+    /** OpenID Connect: the issuer and the subject (both or neither) */
+    oidcIssuer?: string | null;
+    oidcSubject?: string | null;
+}
+
+export interface Course {
+    id: number;
+    name: string;
+    title: string;
+    createdAt: Date;
+}
+
+export interface Exercise {
+    id: number;
+    courseId: number;
+    name: string;
+    releasedAt: Date | null;
+    /** exercise.json as the instructor released it */
+    spec: Record<string, unknown>;
+    createdAt: Date;
+}
+
+/** One student's (or the instructor's) workspace for one exercise. */
+export interface Workspace {
+    id: number;
+    ownerId: number;
+    exerciseId: number;
+    createdAt: Date;
+}
+
+/** One saved version of one file (every save, delete and restore makes one). */
+export interface FileRevision {
+    path: string;
+    revision: number;
+    /** null: the file was deleted in this revision */
+    content: string | null;
+    authorId: number;
+    /** the revision whose content a restore brought back */
+    restoredFrom: number | null;
+    createdAt: Date;
+}
+
+/** A file's latest revision without its content (listFiles, history). */
+export type FileRevisionInfo = Omit<FileRevision, 'content'> & { size: number; deleted: boolean };
+
+export interface Submission {
+    id: number;
+    workspaceId: number;
+    submittedBy: number;
+    /** path → revision of every file the workspace had */
+    files: Record<string, number>;
+    createdAt: Date;
+}
+
+export interface TestResult {
+    id: number;
+    workspaceId: number;
+    submissionId: number | null;
+    passed: number;
+    failed: number;
+    skipped: number;
+    details: unknown;
+    createdAt: Date;
+}
+
+export interface SimulationResult {
+    id: number;
+    workspaceId: number;
+    submissionId: number | null;
+    goalReached: boolean;
+    simulatedSeconds: number;
+    details: unknown;
+    createdAt: Date;
+}
+
+export interface Session {
+    /** a hash of the session token (the caller hashes; the token itself is never stored) */
+    id: string;
+    userId: number;
+    csrfSecret: string;
+    createdAt: Date;
+    expiresAt: Date;
+}
+
+export interface SaveFile {
+    workspaceId: number;
+    path: string;
+    content: string;
+    authorId: number;
+}
+
+export interface LabStore {
+    readonly backend: 'pglite' | 'postgresql';
+
+    createUser(user: NewUser): Promise<User>;
+    findUserById(id: number): Promise<User | undefined>;
+    findUserByLogin(login: string): Promise<User | undefined>;
+    findUserByOidc(issuer: string, subject: string): Promise<User | undefined>;
+    setPasswordHash(userId: number, passwordHash: string | null): Promise<void>;
+    listUsers(): Promise<User[]>;
+
+    createCourse(course: { name: string; title: string }): Promise<Course>;
+    findCourse(name: string): Promise<Course | undefined>;
+    enroll(courseId: number, userId: number): Promise<void>;
+    listEnrolled(courseId: number): Promise<User[]>;
+
+    createExercise(exercise: { courseId: number; name: string; spec: Record<string, unknown> }): Promise<Exercise>;
+    /** Releases the exercise (now unless `at` says when); a released exercise stays released. */
+    releaseExercise(exerciseId: number, at?: Date): Promise<Exercise>;
+    findExercise(courseId: number, name: string): Promise<Exercise | undefined>;
+    listExercises(courseId: number): Promise<Exercise[]>;
+
+    /** The owner's workspace for the exercise, created on first use. */
+    workspace(ownerId: number, exerciseId: number): Promise<Workspace>;
+    /** Saves a new revision of the file (1 for a new path) and returns it once it is durable. */
+    saveFile(save: SaveFile): Promise<FileRevision>;
+    /** Deletes the file: a new revision without content (its history stays). */
+    deleteFile(remove: Omit<SaveFile, 'content'>): Promise<FileRevision>;
+    /** The latest revision of the file, or the given one; undefined when there is none or it is deleted (latest only). */
+    readFile(workspaceId: number, path: string, revision?: number): Promise<FileRevision | undefined>;
+    /** The latest revision of every file that is not deleted, by path. */
+    listFiles(workspaceId: number): Promise<FileRevisionInfo[]>;
+    /** Every revision of the file, newest first. */
+    history(workspaceId: number, path: string): Promise<FileRevisionInfo[]>;
+    /** Brings an earlier revision back as a new revision (history is never rewritten). */
+    restore(restore: { workspaceId: number; path: string; revision: number; authorId: number }): Promise<FileRevision>;
+
+    submit(workspaceId: number, submittedBy: number): Promise<Submission>;
+    recordTestResult(result: Omit<TestResult, 'id' | 'createdAt'>): Promise<TestResult>;
+    recordSimulationResult(result: Omit<SimulationResult, 'id' | 'createdAt'>): Promise<SimulationResult>;
+    latestTestResult(workspaceId: number): Promise<TestResult | undefined>;
+    latestSimulationResult(workspaceId: number): Promise<SimulationResult | undefined>;
+
+    createSession(session: Omit<Session, 'createdAt'>): Promise<Session>;
+    /** The session if it exists and has not expired at `now`. */
+    findSession(id: string, now?: Date): Promise<Session | undefined>;
+    deleteSession(id: string): Promise<void>;
+    /** Removes the sessions expired at `now`; returns how many. */
+    deleteExpiredSessions(now?: Date): Promise<number>;
+
+    close(): Promise<void>;
+}
+
+/** Thrown for a path a workspace cannot hold (absolute, `..`, empty segments, too long). */
+export class InvalidPathError extends Error {}
+/** Thrown when a user, course, exercise or revision a call names does not exist, or a unique name is taken. */
+export class StorageConflictError extends Error {}
