@@ -5,6 +5,7 @@ import { generateCommand } from './commands/generate.js';
 import { generatorsCommand } from './commands/generators.js';
 import { lspCommand } from './commands/lsp.js';
 import { newCommand } from './commands/new.js';
+import { simCommand } from './commands/sim.js';
 import { testCommand } from './commands/test.js';
 import { CliError, ExitCode } from './errors.js';
 import { processIo, type CliIo } from './io.js';
@@ -17,6 +18,7 @@ export { runGenerators, type GeneratorsCommandOptions } from './commands/generat
 export { runTest, type TestCommandOptions } from './commands/test.js';
 export { runNew, listTemplates, type NewCommandOptions, type ProjectTemplate } from './commands/new.js';
 export { runLsp, type LspCommandOptions } from './commands/lsp.js';
+export { runSim, type SimCommandOptions } from './commands/sim.js';
 export { ExitCode, CliError } from './errors.js';
 export type { CliIo } from './io.js';
 
@@ -25,7 +27,7 @@ export function createProgram(io: CliIo, setExitCode: (code: ExitCode) => void):
         .description(
             'MontiArcAutomaton for the web: create a project from a template (new), check models (check), generate code for a ' +
                 "platform (generate), list the installed generators (generators), run stream tests (test), draw a component's " +
-                'diagram as SVG or PNG (diagram), run the language server for an editor (lsp)',
+                'diagram as SVG or PNG (diagram), run the language server for an editor (lsp), run an application in the simulator (sim)',
         )
         .version(cliVersion(), '-V, --version', 'print the version')
         .helpOption('-h, --help', 'show help')
@@ -40,6 +42,7 @@ export function createProgram(io: CliIo, setExitCode: (code: ExitCode) => void):
     program.addCommand(testCommand(io, setExitCode));
     program.addCommand(diagramCommand(io, setExitCode));
     program.addCommand(lspCommand(io, setExitCode));
+    program.addCommand(simCommand(io, setExitCode));
     // Subcommands added with addCommand do not inherit these settings.
     for (const sub of program.commands) {
         sub.helpOption('-h, --help', 'show help')

@@ -1,0 +1,140 @@
+import { type Dirent, readdirSync, readFileSync, statSync, utimesSync } from 'node:fs';
+import path from 'node:path';
+import type { appAst } from '@maa/generator-core';
+import { TRACE_FILE_NAME } from '@maa/protocol/formats';
+import { findSimPackage, type SimPackageMode } from '@maa/protocol/sim-package';
+import { runGenerate } from '../commands/generate.js';
+import { CliError, ExitCode } from '../errors.js';
+import type { CliIo } from '../io.js';
+import { isModelFile, modelRootOfApp } from '../roots.js';
+
+/** What `maa-gen sim` runs: the generated package of one platform and its mode. */
+export interface SimTarget {
+    readonly platform: string;
+    readonly platformDir: string;
+    readonly packageDir: string;
+    readonly mode: SimPackageMode;
+}
+
+export interface PrepareOptions {
+    readonly platform?: string;
+    readonly out?: string;
+    readonly root?: string;
+}
+
+/** The platform names of an application configuration, in their order (parsed, not linked). */
+export async function appPlatforms(appFile: string): Promise<string[]> {
+    const [{ createMaaServices }, { NodeFileSystem }, { URI }] = await Promise.all([
+        import('@maa/language-server'),
+        import('langium/node'),
+        import('langium'),
+    ]);
+    const services = createMaaServices(NodeFileSystem);
+    const document = services.shared.workspace.LangiumDocumentFactory.fromString<appAst.ArcAppModel>(
+        readFileSync(appFile, 'utf8'),
+        URI.file(appFile),
+    );
+    return document.parseResult.value.application?.platforms.map((p) => p.name) ?? [];
+}
+
+/** `--platform` checked against the application's platforms; required when there are several. */
+export function choosePlatform(platforms: readonly string[], requested: string | undefined, appArg: string): string {
+    if (platforms.length === 0) throw new CliError(`${appArg} declares no platform`);
+    if (requested !== undefined) {
+        if (!platforms.includes(requested)) {
+            throw new CliError(`${appArg} has no platform ${requested} (its platforms: ${platforms.join(', ')})`);
+        }
+        return requested;
+    }
+    if (platforms.length > 1) {
+        throw new CliError(`${appArg} has ${platforms.length} platforms (${platforms.join(', ')}): choose one with --platform`);
+    }
+    return platforms[0]!;
+}
+
+/** The newest modification time (ms) of the model files below a folder (hidden folders and node_modules skipped). */
+function newestModelTime(dir: string, skip: string): number {
+    let newest = 0;
+    let entries: Dirent[];
+    try {
+        entries = readdirSync(dir, { withFileTypes: true });
+    } catch {
+        return 0;
+    }
+    for (const e of entries) {
+        const file = path.join(dir, e.name);
+        if (e.isDirectory()) {
+            if (!e.name.startsWith('.') && e.name !== 'node_modules' && file !== skip)
+                newest = Math.max(newest, newestModelTime(file, skip));
+        } else if (e.isFile() && isModelFile(file)) {
+            newest = Math.max(newest, statSync(file).mtimeMs);
+        }
+    }
+    return newest;
+}
+
+/** Whether a platform's output is missing or older than a model file of its root (or the configuration). */
+export function isStale(platformDir: string, modelRoot: string, appFile: string, outDir: string): boolean {
+    let generated: number;
+    try {
+        generated = statSync(path.join(platformDir, TRACE_FILE_NAME)).mtimeMs;
+    } catch {
+        return true;
+    }
+    return Math.max(newestModelTime(modelRoot, outDir), statSync(appFile).mtimeMs) > generated;
+}
+
+/**
+ * Generation leaves unchanged files (and the trace file) as they were, so a model file that was
+ * saved without a change would make every later run generate again: the trace file's time says
+ * when the output was last checked against the models instead.
+ */
+function markChecked(platformDir: string): void {
+    const now = new Date();
+    try {
+        utimesSync(path.join(platformDir, TRACE_FILE_NAME), now, now);
+    } catch {
+        // no trace file: the next run generates again, which is only slower
+    }
+}
+
+/** An io whose stdout goes to stderr: generation's report must not mix into the simulation's summary. */
+function reportOnStderr(io: CliIo): CliIo {
+    return { ...io, stdoutIsTTY: io.stderrIsTTY, out: (text) => io.err(text) };
+}
+
+/**
+ * Resolves the platform and generates it when its output is missing or older than the models
+ * (with `maa-gen generate`'s code path, reporting on stderr), then finds its simulator package.
+ * Returns the generator's exit code instead when generation failed.
+ */
+export async function prepareTarget(appArg: string, options: PrepareOptions, io: CliIo): Promise<SimTarget | ExitCode> {
+    const appFile = path.resolve(io.cwd, appArg);
+    try {
+        if (!statSync(appFile).isFile()) throw new CliError(`not a file: ${appArg}`);
+    } catch (e) {
+        throw e instanceof CliError ? e : new CliError(`path not found: ${appArg}`);
+    }
+    if (path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
+    const platform = choosePlatform(await appPlatforms(appFile), options.platform, appArg);
+    const outDir = path.resolve(io.cwd, options.out ?? path.join(path.dirname(appFile), 'generated'));
+    const platformDir = path.join(outDir, platform);
+    const modelRoot = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
+    if (isStale(platformDir, modelRoot, appFile, outDir)) {
+        io.err(`maa-gen: generating ${platform} (its output is missing or older than the models)\n`);
+        const code = await runGenerate(
+            appArg,
+            { platform: [platform], out: options.out, root: options.root, format: 'text' },
+            reportOnStderr(io),
+        );
+        if (code !== ExitCode.ok) return code;
+        markChecked(platformDir);
+    }
+    const found = findSimPackage(platformDir);
+    if (!found) {
+        throw new CliError(
+            `the platform ${platform} has no lockstep.json or deployment.json in ${platformDir}: its generators make nothing the simulator runs`,
+        );
+    }
+    return { platform, platformDir, packageDir: found.dir, mode: found.mode };
+}
