@@ -50,6 +50,14 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"maa-sim {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    _add_run_options(commands)
+    _add_output_options(commands.choices["run"])
+    _add_inspect_command(commands)
+    return parser
+
+
+def _add_run_options(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    """`maa-sim run`: the package, the scene and mode, the endpoints, when the run ends, node supervision."""
     run = commands.add_parser(
         "run",
         help="run an application in the simulator",
@@ -110,6 +118,10 @@ def build_parser() -> argparse.ArgumentParser:
         "--golden-seconds", type=_positive_float, default=6.0, help="seconds of toasting to reach golden toast"
     )
     run.add_argument("--log-dir", type=Path, default=None, help="where node logs go (default: a temporary directory)")
+
+
+def _add_output_options(run: argparse.ArgumentParser) -> None:
+    """`maa-sim run`: what it prints for the program that started it, and the recording."""
     run.add_argument(
         "--status-json",
         action="store_true",
@@ -127,6 +139,9 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="FILE.mcap",
         help="record every topic and the scene state into an MCAP file (ROS 2 schemas, CDR)",
     )
+
+
+def _add_inspect_command(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     inspect = commands.add_parser(
         "inspect",
         help="what a recording holds (decodes every message)",
@@ -135,7 +150,6 @@ def build_parser() -> argparse.ArgumentParser:
         "message count. Exit 2 when the file cannot be read.",
     )
     inspect.add_argument("file", type=Path, metavar="FILE.mcap")
-    return parser
 
 
 def _inspect(path: Path) -> int:
