@@ -201,3 +201,45 @@ def test_the_mode_of_a_mode_component_is_its_live_state(modes_build: Path) -> No
         client.close()
     finally:
         app.stop()
+
+
+def test_recording_has_a_channel_for_every_port_topic(toast_build: Path, tmp_path: Path) -> None:
+    """`--record` with a generated build: every port topic its topics() declares is a channel with
+    messages, each decodes with its ROS 2 schema (docs/simulation.md, "Recording")."""
+    from mcap.reader import make_reader
+    from mcap_ros2.decoder import DecoderFactory
+
+    target = tmp_path / "toast.mcap"
+    app = SimApp(
+        RunOptions(
+            package=toast_build,
+            mode="lockstep",
+            rosbridge_port=None,
+            viser_port=None,
+            until_goal=True,
+            max_sim_time=TIME_BOUND,
+            record=target,
+        )
+    )
+    app.start()
+    try:
+        assert app.wait(300)
+        assert app.runner is not None
+        declared = dict(app.runner.controller.topics())  # type: ignore[union-attr]
+    finally:
+        app.stop()
+    assert app.runner.finish_reason == "goal reached"
+    counts: dict[str, int] = {}
+    with target.open("rb") as stream:
+        reader = make_reader(stream, decoder_factories=[DecoderFactory()])
+        for _schema, channel, _message, _decoded in reader.iter_decoded_messages():
+            counts[channel.topic] = counts.get(channel.topic, 0) + 1
+        summary = reader.get_summary()
+    assert summary is not None
+    types = {c.topic: summary.schemas[c.schema_id].name for c in summary.channels.values()}
+    port_topics = {t for t in declared if t.startswith("/toast_service_robot/")}
+    assert port_topics, declared
+    for topic in port_topics:
+        assert counts.get(topic, 0) > 0, f"{topic} has no messages"
+        assert types[topic] == declared[topic], topic
+    assert counts[STATES] > 0 and counts["/sim/scene"] == counts["/clock"]
