@@ -234,10 +234,13 @@ describe('a component with two types of one name (python-timesync)', () => {
         const both = readFileSync(path.join(build, 'app', 'both.py'), 'utf8');
         expect(both).toContain('from a.types import Kind\nfrom b.types import Kind as b_types_Kind\n');
         expect(both).toContain('((self.x == Kind.ON) and (self.y == b_types_Kind.ON))');
-        // the model's packages (maa_app.py's ENUMS, by simple name, lists both as "Kind": not an import)
+        // maa_app.py's ENUMS keys the two by their qualified names (one simple-name key would drop one)
+        const app = readFileSync(path.join(build, 'maa_app.py'), 'utf8');
+        expect(app).toContain('"a.Types.Kind": Kind,');
+        expect(app).toContain('"b.Types.Kind": b_types_Kind,');
         const ruff = await run(
             venvPython,
-            ['-m', 'ruff', 'check', '--config', ruffConfig, '--no-cache', '--output-format', 'concise', 'app', 'a', 'b'],
+            ['-m', 'ruff', 'check', '--config', ruffConfig, '--no-cache', '--output-format', 'concise', 'app', 'a', 'b', 'maa_app.py'],
             build,
         );
         expect(ruff.status, ruff.stdout + ruff.stderr).toBe(0);

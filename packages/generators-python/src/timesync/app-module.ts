@@ -23,9 +23,14 @@ export function writeAppModule(ctx: ComponentGenerationContext): void {
     imports.add('enum', 'Enum');
     imports.add('collections.abc', 'Mapping');
     const components = componentsByName(architecture, imports);
-    const enums = architecture.dataTypes
-        .filter((t) => t.kind === 'enum')
-        .map((t) => ({ name: t.name, type: typeRef(ctx.datatypes, imports, t.node) }));
+    const enumTypes = architecture.dataTypes.filter((t) => t.kind === 'enum');
+    const shared = sharedNames(enumTypes.map((t) => t.name));
+    // Stream tests name an enum by its simple name; two enums of one simple name are keyed by
+    // their qualified names instead (a repeated dictionary key would silently drop one).
+    const enums = enumTypes.map((t) => ({
+        name: shared.has(t.name) ? t.qualifiedName : t.name,
+        type: typeRef(ctx.datatypes, imports, t.node),
+    }));
     ctx.out.file(`${APP_MODULE}.py`).write(
         renderPython('timesync/app.py.njk', {
             application: ctx.platform.application,
@@ -38,6 +43,12 @@ export function writeAppModule(ctx: ComponentGenerationContext): void {
         }),
         root.node,
     );
+}
+
+/** The names that occur more than once. */
+function sharedNames(names: readonly string[]): Set<string> {
+    const seen = new Set<string>();
+    return new Set(names.filter((n) => seen.has(n) || !seen.add(n)));
 }
 
 /** A component module's import alias in the app module (`_pkg_module`): unique where class names are not. */
