@@ -1,0 +1,78 @@
+#!/usr/bin/env node
+// Builds the extension into dist/extension/ (the folder `vsce package` packs, see bin/package.mjs):
+//   out/extension.cjs   the extension (CommonJS, `vscode` external), bundled by esbuild
+//   out/server/main.mjs the family's language server (@maa/language-server's Node entry), one ESM file
+//   package.json        the manifest: package.json's identity plus the contributions generated from
+//                       the language facts (src/contributions.ts)
+//   syntaxes/, language-configuration.json, snippets/, README.md (docs/vscode.md), LICENSE
+import { copyFileSync, existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import path from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import { build } from 'esbuild';
+
+const pkgDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const repo = path.resolve(pkgDir, '..', '..');
+const outDir = path.join(pkgDir, 'dist', 'extension');
+const require = createRequire(import.meta.url);
+
+/** The manifest fields of the extension (the workspace package.json stays an npm manifest). */
+const IDENTITY = {
+    name: 'maa',
+    displayName: 'MontiArcAutomaton',
+    publisher: 'maa-web',
+    license: 'SEE LICENSE IN LICENSE',
+    categories: ['Programming Languages', 'Snippets'],
+    engines: { vscode: '^1.82.0' },
+    main: './out/extension.cjs',
+};
+
+async function bundle() {
+    const common = { bundle: true, platform: 'node', target: 'node18', sourcemap: false, minify: true, legalComments: 'none', logLevel: 'warning' };
+    await build({
+        ...common,
+        entryPoints: [path.join(pkgDir, 'src', 'extension.ts')],
+        outfile: path.join(outDir, 'out', 'extension.cjs'),
+        format: 'cjs',
+        external: ['vscode'],
+    });
+    await build({
+        ...common,
+        entryPoints: [require.resolve('@maa/language-server/package.json').replace(/package\.json$/, 'dist/node/main.js')],
+        outfile: path.join(outDir, 'out', 'server', 'main.mjs'),
+        format: 'esm',
+        // CommonJS dependencies of the server call require(); an ES module has none of its own.
+        banner: { js: "import { createRequire as __maaCreateRequire } from 'node:module'; const require = __maaCreateRequire(import.meta.url);" },
+    });
+}
+
+/** Loads src/contributions.ts (TypeScript) by bundling it to a temporary ES module. */
+async function loadContributions() {
+    const tmp = path.join(pkgDir, 'dist', 'contributions.mjs');
+    await build({ entryPoints: [path.join(pkgDir, 'src', 'contributions.ts')], outfile: tmp, bundle: true, platform: 'node', format: 'esm', logLevel: 'warning' });
+    const { contributions } = await import(pathToFileURL(tmp).href);
+    const facts = JSON.parse(readFileSync(require.resolve('@maa/language-server/language-facts.json'), 'utf8'));
+    return contributions(facts);
+}
+
+function writeJson(file, value) {
+    mkdirSync(path.dirname(file), { recursive: true });
+    writeFileSync(file, `${JSON.stringify(value, null, 2)}\n`);
+}
+
+async function main() {
+    rmSync(outDir, { recursive: true, force: true });
+    mkdirSync(outDir, { recursive: true });
+    const [{ contributes, files, activationEvents }] = await Promise.all([loadContributions(), bundle()]);
+    const own = JSON.parse(readFileSync(path.join(pkgDir, 'package.json'), 'utf8'));
+    writeJson(path.join(outDir, 'package.json'), { ...IDENTITY, version: own.version, description: own.description, activationEvents, contributes });
+    for (const f of files) writeJson(path.join(outDir, f.path), f.content);
+    mkdirSync(path.join(outDir, 'snippets'), { recursive: true });
+    for (const name of ['arc.json', 'arcapp.json']) copyFileSync(path.join(pkgDir, 'snippets', name), path.join(outDir, 'snippets', name));
+    copyFileSync(path.join(repo, 'docs', 'vscode.md'), path.join(outDir, 'README.md'));
+    if (existsSync(path.join(repo, 'LICENSE'))) copyFileSync(path.join(repo, 'LICENSE'), path.join(outDir, 'LICENSE'));
+    else writeFileSync(path.join(outDir, 'LICENSE'), 'See the repository of MontiArcAutomaton for the web.\n');
+    console.log(`vscode-extension: built ${path.relative(repo, outDir)}`);
+}
+
+await main();

@@ -1,0 +1,162 @@
+// The packaged extension: builds and packs the .vsix as `npm run package:vscode` does (into a
+// temporary folder), unpacks it with `unzip`, checks the manifest (engines, main, contributes)
+// and that every file it points at is in the package, and starts the language server from the
+// unpacked files as VS Code would find it (`node <server> --stdio`): initialize, didOpen of a
+// broken model, and the publishDiagnostics with an error that follows.
+import { spawn, type ChildProcessWithoutNullStreams } from 'node:child_process';
+import { once } from 'node:events';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import { LANGUAGE_FACTS } from '@maa/language-server/language-facts';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import {
+    createProtocolConnection,
+    DidOpenTextDocumentNotification,
+    type Diagnostic,
+    ExitNotification,
+    InitializedNotification,
+    InitializeRequest,
+    PublishDiagnosticsNotification,
+    ShutdownRequest,
+    StreamMessageReader,
+    StreamMessageWriter,
+} from 'vscode-languageserver-protocol/node.js';
+
+const pkgDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const tmp = mkdtempSync(path.join(tmpdir(), 'maa-vsix-'));
+const vsix = path.join(tmp, 'maa.vsix');
+const unpacked = path.join(tmp, 'unpacked');
+const ext = path.join(unpacked, 'extension');
+
+/** Runs a command without blocking the worker; rejects with its output when it fails. */
+function run(command: string, args: string[], cwd: string): Promise<void> {
+    return new Promise((resolve, reject) => {
+        const child = spawn(command, args, { cwd, stdio: ['ignore', 'pipe', 'pipe'] });
+        let output = '';
+        child.stdout.on('data', (d) => (output += String(d)));
+        child.stderr.on('data', (d) => (output += String(d)));
+        child.on('error', reject);
+        child.on('exit', (code) =>
+            code === 0 ? resolve() : reject(new Error(`${command} ${args.join(' ')} exited with ${code}:\n${output}`)),
+        );
+    });
+}
+
+interface Manifest {
+    name: string;
+    publisher: string;
+    main: string;
+    engines: { vscode: string };
+    activationEvents: string[];
+    contributes: {
+        languages: Array<{ id: string; extensions: string[]; configuration: string }>;
+        grammars: Array<{ language: string; scopeName: string; path: string }>;
+        snippets: Array<{ language: string; path: string }>;
+        commands: Array<{ command: string; title: string }>;
+        configuration: { properties: Record<string, { default: unknown }> };
+    };
+}
+
+let manifest: Manifest;
+
+beforeAll(async () => {
+    await run(process.execPath, [path.join(pkgDir, 'bin', 'build.mjs')], pkgDir);
+    await run(process.execPath, [path.join(pkgDir, 'bin', 'package.mjs'), '--out', vsix], pkgDir);
+    mkdirSync(unpacked);
+    await run('unzip', ['-q', vsix, '-d', unpacked], tmp);
+    manifest = JSON.parse(readFileSync(path.join(ext, 'package.json'), 'utf8')) as Manifest;
+}, 240_000);
+
+afterAll(() => rmSync(tmp, { recursive: true, force: true }));
+
+describe('the .vsix', () => {
+    it('is a VS Code extension package under 2 MB', () => {
+        expect(existsSync(path.join(unpacked, 'extension.vsixmanifest'))).toBe(true);
+        expect(statSync(vsix).size).toBeLessThan(2 * 1024 * 1024);
+    });
+
+    it('has a manifest with engines, main, activation and every file language of the family', () => {
+        expect(manifest).toMatchObject({ name: 'maa', publisher: 'maa-web', main: './out/extension.cjs' });
+        expect(manifest.engines.vscode).toMatch(/^\^1\.\d+\.\d+$/);
+        const fileLanguages = LANGUAGE_FACTS.languages.filter((l) => l.kind === 'file');
+        expect(manifest.contributes.languages.map((l) => [l.id, l.extensions])).toEqual(
+            fileLanguages.map((l) => [l.id, [...l.fileExtensions]]),
+        );
+        expect(manifest.contributes.grammars.map((g) => g.language)).toEqual(fileLanguages.map((l) => l.id));
+        expect(manifest.contributes.commands.map((c) => c.command)).toEqual([
+            'maa.generate',
+            'maa.showGeneratedCode',
+            'maa.showModelElement',
+        ]);
+        expect(manifest.contributes.configuration.properties['maa.generate.outDir']?.default).toBe('generated');
+        expect(manifest.activationEvents).toContain('onLanguage:arc');
+    });
+
+    it('contains every file the manifest points at, and the language server', () => {
+        const c = manifest.contributes;
+        const files = [
+            manifest.main,
+            ...c.languages.map((l) => l.configuration),
+            ...c.grammars.map((g) => g.path),
+            ...c.snippets.map((s) => s.path),
+            'out/server/main.mjs',
+        ];
+        for (const f of files) expect(existsSync(path.join(ext, f)), f).toBe(true);
+        for (const g of c.grammars) {
+            const grammar = JSON.parse(readFileSync(path.join(ext, g.path), 'utf8')) as { scopeName: string };
+            expect(grammar.scopeName).toBe(g.scopeName);
+        }
+        expect(readFileSync(path.join(ext, manifest.main), 'utf8')).toContain('require("vscode")');
+    });
+});
+
+describe('the language server of the unpacked .vsix', () => {
+    let child: ChildProcessWithoutNullStreams | undefined;
+    afterAll(() => {
+        if (child && child.exitCode === null && child.signalCode === null) child.kill();
+    });
+
+    it('starts with --stdio and publishes an error for a broken model', async () => {
+        const ws = path.join(tmp, 'ws');
+        mkdirSync(path.join(ws, 'demo'), { recursive: true });
+        const text = 'package demo;\n\ncomponent Broken {\n  port in int x,\n       out int y;\n  x -> nowhere;\n';
+        const file = path.join(ws, 'demo', 'Broken.arc');
+        writeFileSync(file, text);
+        const uri = pathToFileURL(file).toString();
+        child = spawn(process.execPath, [path.join(ext, 'out', 'server', 'main.mjs'), '--stdio'], {
+            cwd: ws,
+            stdio: ['pipe', 'pipe', 'pipe'],
+        });
+        const client = createProtocolConnection(new StreamMessageReader(child.stdout), new StreamMessageWriter(child.stdin));
+        const error = new Promise<Diagnostic>((resolve) => {
+            client.onNotification(PublishDiagnosticsNotification.type, (p) => {
+                const found = p.uri === uri ? p.diagnostics.find((d) => d.severity === 1) : undefined;
+                if (found) resolve(found);
+            });
+        });
+        client.onRequest('client/registerCapability', () => null);
+        client.onRequest('workspace/configuration', () => []);
+        client.listen();
+        const root = pathToFileURL(ws).toString();
+        const init = await client.sendRequest(InitializeRequest.type, {
+            processId: process.pid,
+            rootUri: root,
+            workspaceFolders: [{ uri: root, name: 'ws' }],
+            capabilities: {},
+        });
+        expect(init.capabilities.textDocumentSync).toBeDefined();
+        await client.sendNotification(InitializedNotification.type, {});
+        await client.sendNotification(DidOpenTextDocumentNotification.type, { textDocument: { uri, languageId: 'arc', version: 1, text } });
+        const diagnostic = await error;
+        expect(diagnostic.range.start.line).toBeGreaterThanOrEqual(2);
+        expect(typeof diagnostic.code).toBe('string');
+
+        const exited = once(child, 'exit');
+        await client.sendRequest(ShutdownRequest.type);
+        await client.sendNotification(ExitNotification.type);
+        expect((await exited)[0]).toBe(0);
+        client.dispose();
+    }, 120_000);
+});
