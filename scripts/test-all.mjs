@@ -83,6 +83,11 @@ if (process.env.MAA_TEST_LINT !== '0') {
     if (lintStatus !== 0) tally.fail('linters that failed', `npm run lint exited with ${lintStatus}`);
 }
 
+// The lab server's storage tests run on PGlite and on a real PostgreSQL they start in a temporary
+// cluster (packages/lab-server/test/postgres-cluster.ts): Debian's postgresql is installed when missing.
+const postgres = step('lab storage: postgresql', process.execPath, [path.join(repo, 'scripts', 'ensure-postgresql.mjs')]);
+if (postgres !== 0) tally.fail('setups that failed', 'PostgreSQL for the lab storage tests is missing and could not be installed');
+
 vitestSuite(process.argv.slice(2));
 
 // The browser end-to-end suite (e2e/run.mjs): maa-ide with the built app on a fresh copy of

@@ -20,6 +20,8 @@ export interface TemporaryPostgres {
     databaseUrl: string;
     /** A database URL for a fresh database of its own (CREATE DATABASE name). */
     createDatabase(name: string): Promise<string>;
+    /** Stops the server (`immediate`: no shutdown checkpoint, as after a crash) and starts it again. */
+    restart(options: { immediate: boolean }): Promise<void>;
     stop(): Promise<void>;
 }
 
@@ -54,16 +56,9 @@ export async function startTemporaryPostgres(): Promise<TemporaryPostgres> {
         as ? run('runuser', ['-u', as.user, '--', path.join(bin, name), ...args]) : run(path.join(bin, name), args);
     await program('initdb', ['-D', data, '-U', 'lab', '--auth=trust', '-E', 'UTF8', '--no-sync']);
     // -w: pg_ctl returns once the server accepts connections.
-    await program('pg_ctl', [
-        '-D',
-        data,
-        '-l',
-        path.join(dir, 'server.log'),
-        '-w',
-        '-o',
-        `-c listen_addresses='' -k ${dir} -c fsync=on`,
-        'start',
-    ]);
+    const options = `-c listen_addresses='' -k ${dir} -c fsync=on`;
+    const start = () => program('pg_ctl', ['-D', data, '-l', path.join(dir, 'server.log'), '-w', '-o', options, 'start']);
+    await start();
     const url = (database: string) => `postgresql://lab@/${database}?host=${encodeURIComponent(dir)}`;
     let stopped = false;
     return {
@@ -78,6 +73,10 @@ export async function startTemporaryPostgres(): Promise<TemporaryPostgres> {
                 await client.end();
             }
             return url(name);
+        },
+        restart: async ({ immediate }) => {
+            await program('pg_ctl', ['-D', data, '-m', immediate ? 'immediate' : 'fast', '-w', 'stop']);
+            await start();
         },
         stop: async () => {
             if (stopped) return;
