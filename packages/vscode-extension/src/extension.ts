@@ -12,13 +12,21 @@ import * as vscode from 'vscode';
 import { LanguageClient, type LanguageClientOptions, type ServerOptions, TransportKind } from 'vscode-languageclient/node.js';
 import { type GenerateReport, parseGenerateReport, summaryMessage } from './generate-report.js';
 import { type PlatformItem, platformItems } from './platforms.js';
-import { generateArgs, generateCommand, type MaaSettings, readSettings, serverStart } from './settings.js';
+import {
+    type ContributedLanguage,
+    generateArgs,
+    generateCommand,
+    type MaaSettings,
+    readSettings,
+    serverStart,
+    watchedFiles,
+} from './settings.js';
 import { generatedCodeAt, modelElementAt, platformDirOf } from './trace.js';
 
 /** The file languages of the family, from the manifest (generated from the language facts). */
-function modelLanguages(context: vscode.ExtensionContext): string[] {
-    const langs = (context.extension.packageJSON as { contributes?: { languages?: Array<{ id: string }> } }).contributes?.languages ?? [];
-    return langs.map((l) => l.id);
+function modelLanguages(context: vscode.ExtensionContext): ContributedLanguage[] {
+    const manifest = context.extension.packageJSON as { contributes?: { languages?: ContributedLanguage[] } };
+    return manifest.contributes?.languages ?? [];
 }
 
 function settings(): MaaSettings {
@@ -28,15 +36,15 @@ function settings(): MaaSettings {
 
 let client: LanguageClient | undefined;
 
-function startClient(context: vscode.ExtensionContext, languages: readonly string[]): LanguageClient {
+function startClient(context: vscode.ExtensionContext, languages: readonly ContributedLanguage[]): LanguageClient {
     const start = serverStart(context.asAbsolutePath(path.join('out', 'server', 'main.mjs')), settings());
     const serverOptions: ServerOptions = {
         run: { ...start.run, transport: TransportKind.ipc },
         debug: { ...start.debug, transport: TransportKind.ipc },
     };
     const clientOptions: LanguageClientOptions = {
-        documentSelector: languages.map((language) => ({ scheme: 'file', language })),
-        synchronize: { fileEvents: vscode.workspace.createFileSystemWatcher('**/{maa.json,*.arc,*.cd,*.arcapp,*.ra}') },
+        documentSelector: languages.map((l) => ({ scheme: 'file', language: l.id })),
+        synchronize: { fileEvents: vscode.workspace.createFileSystemWatcher(watchedFiles(languages)) },
     };
     const c = new LanguageClient('maa', 'MontiArc Language Server', serverOptions, clientOptions);
     void c.start();
@@ -45,7 +53,11 @@ function startClient(context: vscode.ExtensionContext, languages: readonly strin
 
 export function activate(context: vscode.ExtensionContext): void {
     const languages = modelLanguages(context);
-    void vscode.commands.executeCommand('setContext', 'maa.modelLanguages', languages);
+    void vscode.commands.executeCommand(
+        'setContext',
+        'maa.modelLanguages',
+        languages.map((l) => l.id),
+    );
     client = startClient(context, languages);
     const generated = vscode.languages.createDiagnosticCollection('maa-generate');
     context.subscriptions.push(

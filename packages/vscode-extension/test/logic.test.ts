@@ -10,7 +10,18 @@ import { TRACE_FORMAT_VERSION, type TraceFile } from '@maa/protocol';
 import { afterAll, describe, expect, it } from 'vitest';
 import { parseGenerateReport, summaryMessage } from '../src/generate-report.js';
 import { platformItems, platformsOf } from '../src/platforms.js';
-import { generateArgs, generateCommand, outDirOf, readSettings, serverStart, SETTINGS } from '../src/settings.js';
+import { contributions } from '../src/contributions.js';
+import { LANGUAGE_FACTS } from '@maa/language-server/language-facts';
+import {
+    type ContributedLanguage,
+    generateArgs,
+    generateCommand,
+    outDirOf,
+    readSettings,
+    serverStart,
+    SETTINGS,
+    watchedFiles,
+} from '../src/settings.js';
 import { generatedCodeAt, modelElementAt, modelFileOf, platformDirOf } from '../src/trace.js';
 
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..', '..');
@@ -125,6 +136,14 @@ describe('settings', () => {
         const start = serverStart('/ext/out/server/main.mjs', s);
         expect(start.run).toEqual({ module: '/ext/out/server/main.mjs', args: [], options: { execArgv: ['--max-old-space-size=4096'] } });
         expect(start.debug.options.execArgv).toEqual(['--max-old-space-size=4096', '--nolazy', '--inspect=6009']);
+    });
+
+    it('the server watches maa.json and the files of every contributed language', () => {
+        const languages = contributions(LANGUAGE_FACTS).contributes['languages'] as ContributedLanguage[];
+        const glob = watchedFiles(languages);
+        expect(glob.startsWith('**/{maa.json,')).toBe(true);
+        for (const ext of ['.arc', '.cd', '.arcapp', '.ra']) expect(glob).toContain(`*${ext},`.replace(/,$/, ''));
+        expect(watchedFiles([{ id: 'x', extensions: ['.x', '.xx'] }])).toBe('**/{maa.json,*.x,*.xx}');
     });
 
     it('become the generate command and its arguments', () => {
