@@ -7,6 +7,7 @@ import { PGlite } from '@electric-sql/pglite';
 import { createPgConfig } from '@electric-sql/pglite/node-postgres';
 import { Kysely, Migrator, PostgresDialect } from 'kysely';
 import pg from 'pg';
+import { lockDataDir } from './data-dir-lock.js';
 import { DurableNodeFS } from './durable-nodefs.js';
 import { labMigrations } from './migrations/index.js';
 import type { Database } from './schema.js';
@@ -21,6 +22,15 @@ export interface OpenDatabase {
     db: Kysely<Database>;
     backend: 'pglite' | 'postgresql';
     close(): Promise<void>;
+}
+
+/**
+ * The storage a lab server uses: the PostgreSQL server of `DATABASE_URL` when it is set (and not
+ * empty), else PGlite on `dataDir`.
+ */
+export function storageFromEnvironment(env: NodeJS.ProcessEnv, dataDir: string): StorageOptions {
+    const url = env['DATABASE_URL']?.trim();
+    return url ? { databaseUrl: url } : { dataDir };
 }
 
 /** Opens the database and brings its schema up to date (the migrations it has not seen). */
@@ -43,7 +53,14 @@ function openPostgres(databaseUrl: string): OpenDatabase {
 
 async function openPglite(dataDir: string): Promise<OpenDatabase> {
     mkdirSync(dataDir, { recursive: true });
-    const pglite = await PGlite.create({ fs: new DurableNodeFS(dataDir), relaxedDurability: false, startParams: durableStartParams() });
+    const unlock = lockDataDir(dataDir);
+    let pglite: PGlite;
+    try {
+        pglite = await PGlite.create({ fs: new DurableNodeFS(dataDir), relaxedDurability: false, startParams: durableStartParams() });
+    } catch (error) {
+        unlock();
+        throw error;
+    }
     // PGlite is one connection: a pool of one makes Kysely's transactions take turns.
     const pool = new pg.Pool({ ...createPgConfig(pglite), max: 1 });
     const db = new Kysely<Database>({ dialect: new PostgresDialect({ pool }) });
@@ -51,8 +68,12 @@ async function openPglite(dataDir: string): Promise<OpenDatabase> {
         db,
         backend: 'pglite',
         close: async () => {
-            await db.destroy();
-            await pglite.close();
+            try {
+                await db.destroy();
+                await pglite.close();
+            } finally {
+                unlock();
+            }
         },
     };
 }
