@@ -1,5 +1,6 @@
 #!/usr/bin/env node
-// Builds the extension into dist/extension/ (the folder `vsce package` packs, see bin/package.mjs):
+// Builds the extension into dist/extension/ (the folder `vsce package` packs, see bin/package.mjs;
+// `--out DIR` builds it elsewhere, as the .vsix test does):
 //   out/extension.cjs   the extension (CommonJS, `vscode` external), bundled by esbuild
 //   out/server/main.mjs the family's language server (@maa/language-server's Node entry), one ESM file
 //   package.json        the manifest: package.json's identity plus the contributions generated from
@@ -13,7 +14,8 @@ import { build } from 'esbuild';
 
 const pkgDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const repo = path.resolve(pkgDir, '..', '..');
-const outDir = path.join(pkgDir, 'dist', 'extension');
+const outArg = process.argv.indexOf('--out');
+const outDir = path.resolve(outArg > 0 ? process.argv[outArg + 1] : path.join(pkgDir, 'dist', 'extension'));
 const require = createRequire(import.meta.url);
 
 /** The manifest fields of the extension (the workspace package.json stays an npm manifest). */
@@ -27,6 +29,16 @@ const IDENTITY = {
     main: './out/extension.cjs',
 };
 
+/** The language server's Node entry; a clear message when @maa/language-server is not built yet. */
+function serverEntry() {
+    const entry = path.join(path.dirname(require.resolve('@maa/language-server/package.json')), 'dist', 'node', 'main.js');
+    if (!existsSync(entry)) {
+        console.error(`vscode-extension: ${path.relative(repo, entry)} is missing; build the language server first (npm run build)`);
+        process.exit(1);
+    }
+    return entry;
+}
+
 async function bundle() {
     const common = { bundle: true, platform: 'node', target: 'node18', sourcemap: false, minify: true, legalComments: 'none', logLevel: 'warning' };
     await build({
@@ -38,7 +50,7 @@ async function bundle() {
     });
     await build({
         ...common,
-        entryPoints: [require.resolve('@maa/language-server/package.json').replace(/package\.json$/, 'dist/node/main.js')],
+        entryPoints: [serverEntry()],
         outfile: path.join(outDir, 'out', 'server', 'main.mjs'),
         format: 'esm',
         // CommonJS dependencies of the server call require(); an ES module has none of its own.
@@ -48,9 +60,10 @@ async function bundle() {
 
 /** Loads src/contributions.ts (TypeScript) by bundling it to a temporary ES module. */
 async function loadContributions() {
-    const tmp = path.join(pkgDir, 'dist', 'contributions.mjs');
+    const tmp = path.join(outDir, '..', `.contributions-${process.pid}.mjs`);
     await build({ entryPoints: [path.join(pkgDir, 'src', 'contributions.ts')], outfile: tmp, bundle: true, platform: 'node', format: 'esm', logLevel: 'warning' });
     const { contributions } = await import(pathToFileURL(tmp).href);
+    rmSync(tmp, { force: true });
     const facts = JSON.parse(readFileSync(require.resolve('@maa/language-server/language-facts.json'), 'utf8'));
     return contributions(facts);
 }

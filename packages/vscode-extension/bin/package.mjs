@@ -1,7 +1,7 @@
 #!/usr/bin/env node
 // Packs dist/extension/ (bin/build.mjs) into dist/maa-<version>.vsix with @vscode/vsce, offline:
 // --no-dependencies (the bundles carry every dependency), no marketplace call, no prompts.
-// Usage: node bin/package.mjs [--out FILE]
+// Usage: node bin/package.mjs [--from DIR] [--out FILE]   (DIR: the built extension, default dist/extension)
 import { spawn } from 'node:child_process';
 import { readFileSync, statSync } from 'node:fs';
 import { createRequire } from 'node:module';
@@ -9,7 +9,8 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const pkgDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const extDir = path.join(pkgDir, 'dist', 'extension');
+const fromArg = process.argv.indexOf('--from');
+const extDir = path.resolve(fromArg > 0 ? process.argv[fromArg + 1] : path.join(pkgDir, 'dist', 'extension'));
 const require = createRequire(import.meta.url);
 
 const manifest = JSON.parse(readFileSync(path.join(extDir, 'package.json'), 'utf8'));

@@ -62,8 +62,10 @@ interface Manifest {
 let manifest: Manifest;
 
 beforeAll(async () => {
-    await run(process.execPath, [path.join(pkgDir, 'bin', 'build.mjs')], pkgDir);
-    await run(process.execPath, [path.join(pkgDir, 'bin', 'package.mjs'), '--out', vsix], pkgDir);
+    // Built and packed in the temporary folder: the package's own dist/ is left alone.
+    const built = path.join(tmp, 'extension');
+    await run(process.execPath, [path.join(pkgDir, 'bin', 'build.mjs'), '--out', built], pkgDir);
+    await run(process.execPath, [path.join(pkgDir, 'bin', 'package.mjs'), '--from', built, '--out', vsix], pkgDir);
     mkdirSync(unpacked);
     await run('unzip', ['-q', vsix, '-d', unpacked], tmp);
     manifest = JSON.parse(readFileSync(path.join(ext, 'package.json'), 'utf8')) as Manifest;
