@@ -105,6 +105,9 @@ describe.each(BACKENDS)('LabStore on %s', (backendName) => {
     it('gives each student one workspace per exercise, and keeps workspaces apart', async () => {
         const { student, exercise, workspace } = await studentWorkspace();
         expect(await store.workspace(student.id, exercise.id)).toEqual(workspace);
+        const [x, y] = await Promise.all([store.workspace(student.id, exercise.id), store.workspace(student.id, exercise.id)]);
+        expect([x.id, y.id]).toEqual([workspace.id, workspace.id]);
+        await expect(store.workspace(987654, exercise.id)).rejects.toBeInstanceOf(StorageConflictError);
         const other = await store.createUser({ login: fresh('other'), name: 'Other', role: 'student' });
         const theirs = await store.workspace(other.id, exercise.id);
         expect(theirs.id).not.toBe(workspace.id);

@@ -181,15 +181,26 @@ class KyselyLabStore implements LabStore {
 
     workspace(ownerId: number, exerciseId: number): Promise<Workspace> {
         return conflictsAsErrors(`cannot open the workspace of user ${ownerId} for exercise ${exerciseId}`, async () => {
-            // An update that changes nothing, so RETURNING gives the row whether it was there or not.
-            const row = await this.db
-                .insertInto('workspaces')
-                .values({ owner_id: ownerId, exercise_id: exerciseId })
-                .onConflict((oc) =>
-                    oc.columns(['owner_id', 'exercise_id']).doUpdateSet((eb) => ({ owner_id: eb.ref('excluded.owner_id') })),
-                )
-                .returningAll()
-                .executeTakeFirstOrThrow();
+            // Read first: opening an existing workspace (every request) writes nothing.
+            const find = () =>
+                this.db
+                    .selectFrom('workspaces')
+                    .selectAll()
+                    .where('owner_id', '=', ownerId)
+                    .where('exercise_id', '=', exerciseId)
+                    .executeTakeFirst();
+            const row =
+                (await find()) ??
+                (await this.db
+                    .insertInto('workspaces')
+                    .values({ owner_id: ownerId, exercise_id: exerciseId })
+                    .onConflict((oc) => oc.columns(['owner_id', 'exercise_id']).doNothing())
+                    .returningAll()
+                    .executeTakeFirst()) ??
+                // Created by a concurrent call between the two statements above.
+                (await find());
+            if (!row)
+                throw new StorageConflictError(`the workspace of user ${ownerId} for exercise ${exerciseId} vanished while it was opened`);
             return { id: row.id, ownerId: row.owner_id, exerciseId: row.exercise_id, createdAt: row.created_at };
         });
     }
