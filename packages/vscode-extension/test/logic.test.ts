@@ -2,7 +2,7 @@
 // trace lookups in both directions, the settings as server start options and generate arguments,
 // and the CLI's JSON report as diagnostics (the last one from a real `maa-gen generate` run).
 import { execFile } from 'node:child_process';
-import { mkdtempSync, rmSync, writeFileSync, mkdirSync, existsSync } from 'node:fs';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -213,4 +213,38 @@ describe('generate report', () => {
         );
         expect(() => parseGenerateReport('{"x":1}')).toThrow(/without diagnostics/);
     });
+});
+
+describe('trace lookups in a real generation', () => {
+    it('every traced element of the minimal example leads to its generated lines and back', async () => {
+        const project = path.join(tmp, 'minimal');
+        cpSync(path.join(repo, 'packages', 'cli', 'templates', 'minimal'), project, { recursive: true });
+        const app = path.join(project, 'App.arcapp');
+        const s = readSettings(() => undefined);
+        const { stdout, stderr } = await runMaaGen(generateArgs(app, 'timesync', s));
+        expect(parseGenerateReport(stdout, stderr).ok, stderr).toBe(true);
+        const platformDir = path.join(outDirOf(app, s), 'timesync');
+        const trace = JSON.parse(readFileSync(path.join(platformDir, '.maa-trace.json'), 'utf8')) as TraceFile;
+        const lamp = path.join(project, 'hello', 'Lamp.arc');
+        let checked = 0;
+        for (const file of trace.files) {
+            for (const t of file.traces) {
+                const range = t.element.range;
+                if (!range) continue;
+                const modelFile = modelFileOf(trace, platformDir, t.element.file);
+                expect(existsSync(modelFile), modelFile).toBe(true);
+                // model → generated: the element's start leads to generated code, and some of it is in this file.
+                const generated = generatedCodeAt(trace, platformDir, modelFile, range.start);
+                expect(generated.length, `${t.element.path} in ${t.element.file}`).toBeGreaterThan(0);
+                // generated → model: the first line of this span leads to an element of the same file that contains it.
+                const back = modelElementAt(trace, platformDir, path.join(platformDir, file.path), t.lines.first);
+                expect(back?.file).toBe(modelFile);
+                checked++;
+            }
+        }
+        expect(checked).toBeGreaterThanOrEqual(2);
+        const traced = new Set(trace.files.flatMap((f) => f.traces.map((t) => modelFileOf(trace, platformDir, t.element.file))));
+        expect(traced).toContain(lamp);
+        expect(traced).toContain(path.join(project, 'hello', 'Toggle.arc'));
+    }, 120_000);
 });
