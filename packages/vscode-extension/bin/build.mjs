@@ -76,9 +76,9 @@ function writeJson(file, value) {
 async function main() {
     rmSync(outDir, { recursive: true, force: true });
     mkdirSync(outDir, { recursive: true });
-    const [{ contributes, files, activationEvents }] = await Promise.all([loadContributions(), bundle()]);
+    const [{ contributes, files, activationEvents, capabilities }] = await Promise.all([loadContributions(), bundle()]);
     const own = JSON.parse(readFileSync(path.join(pkgDir, 'package.json'), 'utf8'));
-    writeJson(path.join(outDir, 'package.json'), { ...IDENTITY, version: own.version, description: own.description, activationEvents, contributes });
+    writeJson(path.join(outDir, 'package.json'), { ...IDENTITY, version: own.version, description: own.description, capabilities, activationEvents, contributes });
     for (const f of files) writeJson(path.join(outDir, f.path), f.content);
     mkdirSync(path.join(outDir, 'snippets'), { recursive: true });
     for (const name of ['arc.json', 'arcapp.json']) copyFileSync(path.join(pkgDir, 'snippets', name), path.join(outDir, 'snippets', name));

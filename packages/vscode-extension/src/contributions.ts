@@ -50,7 +50,22 @@ export interface Contributions {
     readonly files: ContributedFile[];
     /** When the extension activates. */
     readonly activationEvents: string[];
+    /** The manifest's `capabilities`. */
+    readonly capabilities: Record<string, unknown>;
 }
+
+/**
+ * Restricted mode: the language server only reads the models, so it runs in untrusted workspaces;
+ * Generate runs `maa-gen` (possibly the workspace's own `node_modules/.bin/maa-gen`), so it waits for trust.
+ */
+export const CAPABILITIES = {
+    untrustedWorkspaces: {
+        supported: 'limited',
+        description: 'MontiArc: Generate runs maa-gen, possibly from the workspace, and is available in trusted workspaces only.',
+        restrictedConfigurations: ['maa.generate.command', 'maa.server.nodeArgs'],
+    },
+    virtualWorkspaces: false,
+} as const;
 
 /** Snippet files shipped in `snippets/` (hand-written: templates of a component, an automaton and an application). */
 export const SNIPPET_FILES: Readonly<Record<string, string>> = { arc: 'snippets/arc.json', arcapp: 'snippets/arcapp.json' };
@@ -89,6 +104,7 @@ export function contributions(facts: LanguageFacts): Contributions {
             configuration: { title: 'MontiArcAutomaton', properties: SETTINGS },
         },
         files,
+        capabilities: CAPABILITIES,
         activationEvents: [...languages.map((l) => `onLanguage:${l.id}`), 'workspaceContains:**/*.arcapp', 'workspaceContains:**/maa.json'],
     };
 }

@@ -135,6 +135,12 @@ function toDiagnostics(report: GenerateReport, collection: vscode.DiagnosticColl
 
 /** **MontiArc: Generate**: platform quick pick, generation with a progress notification, errors as diagnostics. */
 async function generate(collection: vscode.DiagnosticCollection): Promise<void> {
+    if (!vscode.workspace.isTrusted) {
+        void vscode.window.showWarningMessage(
+            'MontiArc: Generate runs maa-gen and is available in trusted workspaces only (Workspaces: Manage Workspace Trust).',
+        );
+        return;
+    }
     const item = await pickPlatform();
     if (!item) return;
     const s = settings();

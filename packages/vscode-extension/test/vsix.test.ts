@@ -50,6 +50,7 @@ interface Manifest {
     main: string;
     engines: { vscode: string };
     activationEvents: string[];
+    capabilities: { untrustedWorkspaces: { supported: string; restrictedConfigurations: string[] } };
     contributes: {
         languages: Array<{ id: string; extensions: string[]; configuration: string }>;
         grammars: Array<{ language: string; scopeName: string; path: string }>;
@@ -94,6 +95,7 @@ describe('the .vsix', () => {
         ]);
         expect(manifest.contributes.configuration.properties['maa.generate.outDir']?.default).toBe('generated');
         expect(manifest.activationEvents).toContain('onLanguage:arc');
+        expect(manifest.capabilities.untrustedWorkspaces.restrictedConfigurations).toContain('maa.generate.command');
     });
 
     it('contains every file the manifest points at, and the language server', () => {
