@@ -52,8 +52,12 @@ export async function startTemporaryPostgres(): Promise<TemporaryPostgres> {
     const dir = mkdtempSync(path.join(tmpdir(), 'maa-lab-pg-'));
     if (as) chownSync(dir, as.uid, as.gid);
     const data = path.join(dir, 'data');
+    // In the cluster's folder: the server's user may not be allowed into the current directory
+    // (a checkout under /root), and initdb fails when it cannot resolve it.
     const program = (name: string, args: string[]) =>
-        as ? run('runuser', ['-u', as.user, '--', path.join(bin, name), ...args]) : run(path.join(bin, name), args);
+        as
+            ? run('runuser', ['-u', as.user, '--', path.join(bin, name), ...args], { cwd: dir })
+            : run(path.join(bin, name), args, { cwd: dir });
     await program('initdb', ['-D', data, '-U', 'lab', '--auth=trust', '-E', 'UTF8', '--no-sync']);
     // -w: pg_ctl returns once the server accepts connections.
     const options = `-c listen_addresses='' -k ${dir} -c fsync=on`;
