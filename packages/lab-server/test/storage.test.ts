@@ -116,6 +116,30 @@ describe.each(BACKENDS)('LabStore on %s', (backendName) => {
         expect(await store.readFile(theirs.id, 'Mine.arc')).toBeUndefined();
     });
 
+    it('lists the workspaces of an exercise with their last activity, and measures a workspace', async () => {
+        const { student, exercise, workspace } = await studentWorkspace();
+        const idle = await store.createUser({ login: fresh('idle'), name: 'Idle', role: 'student' });
+        const idleWorkspace = await store.workspace(idle.id, exercise.id);
+        expect(await store.workspaceSize(workspace.id)).toEqual({ files: 0, bytes: 0 });
+        await store.saveFile({ workspaceId: workspace.id, path: 'A.arc', content: 'aaaa', authorId: student.id });
+        await store.saveFile({ workspaceId: workspace.id, path: 'A.arc', content: 'aa', authorId: student.id });
+        await store.saveFile({ workspaceId: workspace.id, path: 'B.arc', content: 'ü', authorId: student.id });
+        const last = await store.saveFile({ workspaceId: workspace.id, path: 'Gone.arc', content: 'gone', authorId: student.id });
+        const deleted = await store.deleteFile({ workspaceId: workspace.id, path: 'Gone.arc', authorId: student.id });
+        // the latest revision of each current file: A (2 bytes), B (ü: 2 bytes); Gone.arc is deleted
+        expect(await store.workspaceSize(workspace.id)).toEqual({ files: 2, bytes: 4 });
+        const listed = await store.listWorkspaces(exercise.id);
+        expect(listed.map((w) => [w.id, w.ownerId])).toEqual(
+            [
+                [workspace.id, student.id],
+                [idleWorkspace.id, idle.id],
+            ].sort((a, b) => a[1]! - b[1]!),
+        );
+        expect(listed.find((w) => w.id === workspace.id)?.lastActivity).toEqual(deleted.createdAt);
+        expect(deleted.createdAt.getTime()).toBeGreaterThanOrEqual(last.createdAt.getTime());
+        expect(listed.find((w) => w.id === idleWorkspace.id)?.lastActivity).toBeNull();
+    });
+
     it('makes every save a revision and reads the latest and any earlier one', async () => {
         const { student, workspace } = await studentWorkspace();
         const save = (path: string, content: string) => store.saveFile({ workspaceId: workspace.id, path, content, authorId: student.id });

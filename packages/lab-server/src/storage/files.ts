@@ -4,7 +4,7 @@ import { type Kysely, sql, type Transaction } from 'kysely';
 import { checkWorkspacePath } from './paths.js';
 import { toRevision, toRevisionInfo } from './rows.js';
 import type { Database } from './schema.js';
-import { type FileRevision, type FileRevisionInfo, StorageConflictError } from './types.js';
+import { type FileRevision, type FileRevisionInfo, StorageConflictError, type WorkspaceSize, type WorkspaceSummary } from './types.js';
 
 interface NewRevision {
     workspaceId: number;
@@ -116,4 +116,33 @@ export async function restoreRevision(
         authorId: r.authorId,
         restoredFrom: r.revision,
     });
+}
+
+export async function currentSize(db: Kysely<Database>, workspaceId: number): Promise<WorkspaceSize> {
+    const files = await latestRevisions(db, workspaceId);
+    return { files: files.length, bytes: files.reduce((sum, f) => sum + f.size, 0) };
+}
+
+export async function exerciseWorkspaces(db: Kysely<Database>, exerciseId: number): Promise<WorkspaceSummary[]> {
+    const rows = await db
+        .selectFrom('workspaces')
+        .leftJoin('file_revisions', 'file_revisions.workspace_id', 'workspaces.id')
+        .select((eb) => [
+            'workspaces.id',
+            'workspaces.owner_id',
+            'workspaces.exercise_id',
+            'workspaces.created_at',
+            eb.fn.max('file_revisions.created_at').as('last_activity'),
+        ])
+        .where('workspaces.exercise_id', '=', exerciseId)
+        .groupBy(['workspaces.id', 'workspaces.owner_id', 'workspaces.exercise_id', 'workspaces.created_at'])
+        .orderBy('workspaces.owner_id')
+        .execute();
+    return rows.map((r) => ({
+        id: r.id,
+        ownerId: r.owner_id,
+        exerciseId: r.exercise_id,
+        createdAt: r.created_at,
+        lastActivity: r.last_activity,
+    }));
 }

@@ -1,7 +1,15 @@
 // LabStore on Kysely: the same queries for PGlite and PostgreSQL (connect.ts opens either).
 import type { Kysely } from 'kysely';
 import { type OpenDatabase, openDatabase, type StorageOptions } from './connect.js';
-import { insertRevision, latestRevisions, readRevision, restoreRevision, revisionHistory } from './files.js';
+import {
+    currentSize,
+    exerciseWorkspaces,
+    insertRevision,
+    latestRevisions,
+    readRevision,
+    restoreRevision,
+    revisionHistory,
+} from './files.js';
 import { toCourse, toExercise, toSession, toSimulationResult, toSubmission, toTestResult, toUser } from './rows.js';
 import type { Database } from './schema.js';
 import {
@@ -19,6 +27,8 @@ import {
     type TestResult,
     type User,
     type Workspace,
+    type WorkspaceSize,
+    type WorkspaceSummary,
 } from './types.js';
 
 /** Opens the store (PGlite on `dataDir` or PostgreSQL at `databaseUrl`) with its schema up to date. */
@@ -203,6 +213,14 @@ class KyselyLabStore implements LabStore {
                 throw new StorageConflictError(`the workspace of user ${ownerId} for exercise ${exerciseId} vanished while it was opened`);
             return { id: row.id, ownerId: row.owner_id, exerciseId: row.exercise_id, createdAt: row.created_at };
         });
+    }
+
+    listWorkspaces(exerciseId: number): Promise<WorkspaceSummary[]> {
+        return exerciseWorkspaces(this.db, exerciseId);
+    }
+
+    workspaceSize(workspaceId: number): Promise<WorkspaceSize> {
+        return currentSize(this.db, workspaceId);
     }
 
     saveFile(s: SaveFile): Promise<FileRevision> {

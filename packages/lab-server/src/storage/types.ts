@@ -67,6 +67,18 @@ export interface FileRevision {
 /** A file's latest revision without its content (listFiles, history). */
 export type FileRevisionInfo = Omit<FileRevision, 'content'> & { size: number; deleted: boolean };
 
+/** A workspace with what the instructor's dashboard shows of it. */
+export interface WorkspaceSummary extends Workspace {
+    /** the latest save, delete or restore in it (null: none yet) */
+    lastActivity: Date | null;
+}
+
+/** The size of a workspace's current files (the latest revision of each that is not deleted). */
+export interface WorkspaceSize {
+    files: number;
+    bytes: number;
+}
+
 export interface Submission {
     id: number;
     workspaceId: number;
@@ -136,6 +148,10 @@ export interface LabStore {
 
     /** The owner's workspace for the exercise, created on first use. */
     workspace(ownerId: number, exerciseId: number): Promise<Workspace>;
+    /** Every workspace of the exercise, by owner id, with its last activity. */
+    listWorkspaces(exerciseId: number): Promise<WorkspaceSummary[]>;
+    /** How many current files the workspace has and their size in bytes (for quotas). */
+    workspaceSize(workspaceId: number): Promise<WorkspaceSize>;
     /** Saves a new revision of the file (1 for a new path) and returns it once it is durable. */
     saveFile(save: SaveFile): Promise<FileRevision>;
     /** Deletes the file: a new revision without content (its history stays). */
