@@ -152,3 +152,32 @@ describe.skipIf(!haveSim)('maa-gen sim: the toast service on the timesync platfo
         expect(again.stderr).not.toContain('generating');
     });
 });
+
+const ROS2_VENV = path.join(repo, 'packages', 'generators-python', '.venv-ros2');
+const haveRos2 = existsSync(path.join(ROS2_VENV, 'bin', 'maa-sim')) && process.env['MAA_TEST_ROS2'] !== '0';
+
+describe.skipIf(!haveSim || !haveRos2)('maa-gen sim: the toast service on the rospython platform (ROS 2 nodes)', () => {
+    let dir: string;
+    beforeAll(() => {
+        requireBuiltCli();
+        dir = mkdtempSync(path.join(tmpdir(), 'maa-sim-ros2-'));
+        cpSync(EXAMPLE, dir, { recursive: true });
+    });
+    afterAll(() => rmSync(dir, { recursive: true, force: true }));
+
+    it('installs the interface package into the ROS 2 environment, runs the nodes until the goal and records their port topics', async () => {
+        const args = ['sim', 'TR.arcapp', '--platform', 'rospython', '--until-goal', '--duration', '90', '--record', 'ros2.mcap'];
+        const r = await runCli(args, dir);
+        expect(r.code, r.stderr).toBe(0);
+        expect(r.stderr).toContain('maa-gen: installing the interface package toast_service_robot_interfaces');
+        expect(r.stdout).toMatch(/^rospython \(ros2 mode\): goal reached\n/);
+        const info = await inspect(path.join(dir, 'ros2.mcap'));
+        const channels = new Map(info.channels.map((c) => [c.topic, c]));
+        for (const topic of [...SIM_TOPICS, '/toast_service_robot/ctrl/arm'])
+            expect(channels.get(topic)?.messages, topic).toBeGreaterThan(0);
+        // a port topic in a generated message type: its schema comes from the installed interface package
+        const custom = info.channels.filter((c) => c.schema.startsWith('toast_service_robot_interfaces/msg/'));
+        expect(custom.length).toBeGreaterThan(0);
+        for (const c of custom) expect(c.messages, c.topic).toBeGreaterThan(0);
+    }, 400_000);
+});

@@ -1,10 +1,11 @@
 import { spawn } from 'node:child_process';
-import { createHash } from 'node:crypto';
-import { type Dirent, existsSync, readdirSync, readFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { existsSync } from 'node:fs';
 import path from 'node:path';
 import { createInterface } from 'node:readline';
+import { findInterfacePackages, ros2EnvironmentLock } from '@maa/protocol/sim-package';
 import { HttpError } from './http-util.js';
+
+export { findInterfacePackages } from '@maa/protocol/sim-package';
 
 /** How the backend gets a Python environment that runs generated ROS 2 nodes (docs/ide.md). */
 export interface Ros2EnvironmentOptions {
@@ -97,10 +98,7 @@ export class Ros2Environment {
     /** Runs one command under the venv's lock; its output goes to the log. Answers the seconds it took. */
     private step(what: string, command: string, args: string[], timeoutMs: number, log: LogSink, signal: AbortSignal): Promise<number> {
         if (signal.aborted) return Promise.reject(cancelled());
-        const lockFile = path.join(
-            tmpdir(),
-            `maa-ide-ros2-${createHash('sha256').update(path.resolve(this.options.venv)).digest('hex').slice(0, 16)}.lock`,
-        );
+        const lockFile = ros2EnvironmentLock(this.options.venv);
         const [cmd, argv] =
             existsSync('/usr/bin/flock') || existsSync('/bin/flock') ? ['flock', [lockFile, command, ...args]] : [command, args];
         const started = Date.now();
@@ -165,38 +163,4 @@ function cancelled(): HttpError {
 
 function withTail(status: number, message: string, output: readonly string[]): HttpError {
     return new HttpError(status, `${message}:\n${output.slice(-20).join('\n')}`, { log: [...output] });
-}
-
-/**
- * The generated ROS 2 interface packages of a platform folder (ament_cmake packages that generate
- * messages, e.g. `rospython/toast_service_robot_interfaces/`): folders at most two levels below
- * it with a package.xml and a CMakeLists.txt that calls rosidl_generate_interfaces, sorted.
- */
-export function findInterfacePackages(platformDir: string): string[] {
-    const found: string[] = [];
-    const visit = (dir: string, depth: number): void => {
-        const cmake = path.join(dir, 'CMakeLists.txt');
-        if (existsSync(path.join(dir, 'package.xml')) && existsSync(cmake)) {
-            let text = '';
-            try {
-                text = readFileSync(cmake, 'utf8');
-            } catch {
-                // unreadable: not ours
-            }
-            if (/\brosidl_generate_interfaces\s*\(/.test(text)) found.push(dir);
-            return;
-        }
-        if (depth === 2) return;
-        let entries: Dirent[];
-        try {
-            entries = readdirSync(dir, { withFileTypes: true });
-        } catch {
-            return;
-        }
-        for (const e of entries) {
-            if (e.isDirectory() && !e.name.startsWith('.')) visit(path.join(dir, e.name), depth + 1);
-        }
-    };
-    visit(platformDir, 0);
-    return found.sort();
 }

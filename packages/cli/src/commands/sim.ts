@@ -4,6 +4,7 @@ import { CliError, ExitCode } from '../errors.js';
 import type { CliIo } from '../io.js';
 import { findMaaSim } from '../sim/maa-sim.js';
 import { prepareTarget, type SimTarget } from '../sim/prepare.js';
+import { prepareRos2 } from '../sim/ros2.js';
 import { progressListener, summaryJson, summaryText } from '../sim/report.js';
 import { type MaaSimOutcome, runMaaSim } from '../sim/run.js';
 
@@ -31,11 +32,15 @@ export interface SimCommandOptions {
  */
 export async function runSim(appArg: string, options: SimCommandOptions, io: CliIo): Promise<ExitCode> {
     if (options.headless && options.viewer) throw new CliError('--headless and --viewer exclude each other');
-    const maaSim = await findMaaSim(options.maaSim, io);
-    const target = await prepareTarget(appArg, options, io);
-    if (typeof target === 'number') return target;
     const record = options.record === undefined ? undefined : path.resolve(io.cwd, options.record);
     if (record !== undefined && path.extname(record) !== '.mcap') throw new CliError(`--record needs a .mcap file: ${options.record}`);
+    const target = await prepareTarget(appArg, options, io);
+    if (typeof target === 'number') return target;
+    // a ros2 platform runs in the ROS 2 environment (its nodes import the generated messages)
+    const maaSim =
+        target.mode === 'ros2' && options.maaSim === undefined
+            ? await prepareRos2(target.platformDir, io)
+            : await findMaaSim(options.maaSim, io);
     const listener = progressListener(io);
     let outcome: MaaSimOutcome;
     try {
@@ -102,7 +107,7 @@ export function simCommand(io: CliIo, setExitCode: (code: ExitCode) => void): Co
         .option('-r, --root <dir>', 'model root (default: as maa-gen generate)')
         .option(
             '--maa-sim <file>',
-            "the maa-sim executable (default: $MAA_SIM, the clone's sim-server/.venv, else one installed into the user's cache on first use)",
+            "the maa-sim executable (default: $MAA_SIM, the clone's sim-server/.venv, else one installed into the user's cache on first use; ros2: the clone's ROS 2 environment)",
         )
         .addOption(new Option('-f, --format <format>', 'summary format').choices(['text', 'json']).default('text'))
         .addHelpText(
@@ -112,10 +117,11 @@ What it does:
   generates the platform when its output is missing or older than a model file (as
   maa-gen generate does, its report on stderr), then runs maa-sim on the generated package:
   lock-step mode for a platform whose output has lockstep.json (timesync), ROS 2 mode for one
-  with deployment.json (ros2; the generated interface package must be installed into
-  maa-sim's Python, docs/simulation.md). Without --until-goal or --duration it runs until
-  Ctrl-C. Progress (simulated time, real-time factor, goal) goes to stderr: one line redrawn on
-  a terminal, a line a second otherwise. The summary goes to stdout.
+  with deployment.json (ros2: in a clone's ROS 2 environment, packages/generators-python/
+  .venv-ros2, after installing the generated interface package into it). Without --until-goal
+  or --duration it runs until Ctrl-C. Progress (simulated time, real-time factor, goal) goes
+  to stderr: one line redrawn on a terminal, a line a second otherwise. The summary goes to
+  stdout.
 
 Exit codes:
   0  the goal was reached (--until-goal), or the run completed
