@@ -4,14 +4,9 @@
 // It keeps saving after the 100th, so the kill lands in the middle of a save. It stops by itself
 // when its parent closes stdin or after MAX_SAVES, so it never outlives a failed test.
 import { openLabStore, type StorageOptions } from '../src/storage/index.js';
+import { DURABLE_LOGIN, DURABLE_PATH, durableContent } from './durability-shared.js';
 
-export const DURABLE_PATH = 'DurableFile.arc';
-export const DURABLE_LOGIN = 'durable-student';
 const MAX_SAVES = 5000;
-
-export function durableContent(i: number): string {
-    return `component Save${i} { port in Boolean b; } // save ${i}\n`;
-}
 
 async function main(): Promise<void> {
     process.stdin.on('end', () => process.exit(2));
@@ -35,9 +30,7 @@ async function main(): Promise<void> {
     await store.close();
 }
 
-if (process.argv[2]) {
-    main().catch((error: unknown) => {
-        process.stderr.write(`durability-child: ${error instanceof Error ? error.stack : String(error)}\n`);
-        process.exit(1);
-    });
-}
+main().catch((error: unknown) => {
+    process.stderr.write(`durability-child: ${error instanceof Error ? error.stack : String(error)}\n`);
+    process.exit(1);
+});

@@ -14,7 +14,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { durableFsyncCount } from '../src/storage/durable-nodefs.js';
 import { type LabStore, openLabStore, type StorageOptions } from '../src/storage/index.js';
 import { BACKENDS, startBackend } from './backends.js';
-import { DURABLE_LOGIN, DURABLE_PATH, durableContent } from './durability-child.js';
+import { DURABLE_LOGIN, DURABLE_PATH, durableContent } from './durability-shared.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const repo = path.resolve(here, '..', '..', '..');
