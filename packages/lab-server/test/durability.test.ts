@@ -19,6 +19,8 @@ import { DURABLE_LOGIN, DURABLE_PATH, durableContent } from './durability-shared
 const here = path.dirname(fileURLToPath(import.meta.url));
 const repo = path.resolve(here, '..', '..', '..');
 const ACKED = 100;
+/** Children still running (a test that failed before the kill), killed after the tests. */
+const running = new Set<ChildProcess>();
 
 /** Starts the child on the store and resolves once it has acknowledged ACKED saves and been killed with SIGKILL. */
 function saveThenKill(storage: StorageOptions): Promise<{ acked: number; signal: NodeJS.Signals | null; stderr: string }> {
@@ -31,6 +33,8 @@ function saveThenKill(storage: StorageOptions): Promise<{ acked: number; signal:
             stdio: ['pipe', 'pipe', 'pipe'],
         },
     );
+    running.add(child);
+    child.on('exit', () => running.delete(child));
     let acked = 0;
     let stderr = '';
     child.stderr!.on('data', (chunk: Buffer) => {
@@ -69,6 +73,7 @@ describe.each(BACKENDS)('durability on %s', (backendName) => {
         backend = await startBackend(backendName);
     });
     afterAll(async () => {
+        for (const child of running) child.kill('SIGKILL');
         await backend?.dispose();
     });
 
