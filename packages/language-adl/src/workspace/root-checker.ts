@@ -6,6 +6,7 @@ import { builtinDocuments } from '../adl-module.js';
 import type { HostLanguageServices } from '../services.js';
 import { Codes } from '../validation/codes.js';
 import { ReservedNames, type RootConfiguration } from '../validation/reserved-names.js';
+import type { Diagnostic } from 'vscode-languageserver-types';
 
 export type Severity = 'error' | 'warning' | 'info' | 'hint';
 
@@ -54,7 +55,38 @@ export async function checkRoots(
 ): Promise<CheckDiagnostic[]> {
     const shared = services.shared;
     const extensions = options.extensions ?? shared.ServiceRegistry.all.flatMap((s) => s.LanguageMetaData.fileExtensions);
-    const roots = new Map<string, Set<string> | undefined>();
+    const reported = reportedFiles(specs);
+    const scans = await scanRoots(shared, reported.keys(), extensions);
+    const loaded = await loadRoots(shared, scans, options);
+    const builtins = builtinDocuments(shared);
+    options.onProgress?.(`checking ${loaded.documents.length} files`);
+    loaded.failed.push(...(await buildEach(shared, builtins, loaded.documents)));
+    return collectDiagnostics(reported, loaded);
+}
+
+/** Per model root (absolute), the files to report, or `undefined` for every file of the root. */
+type ReportedFiles = Map<string, Set<string> | undefined>;
+
+/** The model files below a root, and the folders below it that are roots of their own. */
+interface RootScan {
+    files: string[];
+    nested: string[];
+}
+
+/** The documents created for the model files, with the roots each belongs to. */
+interface LoadedFiles {
+    readonly documents: LangiumDocument[];
+    /** Files whose parsing or building threw. */
+    readonly failed: FailedFile[];
+    /** Document URI → the model root it lies in (a nested root where there is one). */
+    readonly rootOfDoc: Map<string, string>;
+    /** Document URI → the root of the spec that named it (which decides whether it is reported). */
+    readonly specOfDoc: Map<string, string>;
+}
+
+/** Merges the specs by root: a root named without files reports every file, whatever else names it. */
+function reportedFiles(specs: readonly RootSpec[]): ReportedFiles {
+    const roots: ReportedFiles = new Map();
     for (const spec of specs) {
         const root = resolve(spec.root);
         if (spec.files === undefined) roots.set(root, undefined);
@@ -64,21 +96,33 @@ export async function checkRoots(
             roots.set(root, set);
         }
     }
-    // Folders below a root that hold a `maa.json` are model roots of their own, as in the editor
-    // (so `maa-gen check examples/` checks every example as the project it is).
-    const scans = new Map<string, { files: string[]; nested: string[] }>();
-    for (const root of roots.keys()) scans.set(root, await scanRoot(root, extensions));
-    const allRoots = [...roots.keys(), ...[...scans.values()].flatMap((x) => x.nested)];
-    shared.maa.ModelRoots.setRoots(allRoots.map((r) => URI.file(r)));
-    const ownRoot = (file: string): string => {
-        const r = shared.maa.ModelRoots.rootOf(URI.file(file));
-        return URI.parse(r).fsPath.replace(/[\\/]$/, '');
-    };
+    return roots;
+}
 
-    const documents: LangiumDocument[] = [];
-    const failed: FailedFile[] = [];
-    const rootOfDoc = new Map<string, string>();
-    const specOfDoc = new Map<string, string>();
+/**
+ * Scans each root and registers the roots with the workspace. Folders below a root that hold a
+ * `maa.json` are model roots of their own, as in the editor (so `maa-gen check examples/` checks
+ * every example as the project it is).
+ */
+async function scanRoots(
+    shared: HostLanguageServices['shared'],
+    roots: Iterable<string>,
+    extensions: readonly string[],
+): Promise<Map<string, RootScan>> {
+    const scans = new Map<string, RootScan>();
+    for (const root of roots) scans.set(root, await scanRoot(root, extensions));
+    const allRoots = [...scans.keys(), ...[...scans.values()].flatMap((x) => x.nested)];
+    shared.maa.ModelRoots.setRoots(allRoots.map((r) => URI.file(r)));
+    return scans;
+}
+
+/** Configures every root from its `maa.json` and creates a document for each model file. */
+async function loadRoots(
+    shared: HostLanguageServices['shared'],
+    scans: ReadonlyMap<string, RootScan>,
+    options: CheckOptions,
+): Promise<LoadedFiles> {
+    const loaded: LoadedFiles = { documents: [], failed: [], rootOfDoc: new Map(), specOfDoc: new Map() };
     let index = 0;
     for (const [specRoot, scan] of scans) {
         index++;
@@ -87,59 +131,71 @@ export async function checkRoots(
             const config = await readConfiguration(root);
             if (config) shared.maa.ReservedNames.configure(URI.file(root), config);
         }
-        for (const file of scan.files) {
-            let text: string;
-            try {
-                text = await readFile(file, 'utf8');
-            } catch (e) {
-                throw new CheckInputError(`cannot read ${file}: ${(e as NodeJS.ErrnoException).code ?? (e as Error).message}`);
-            }
-            const uri = URI.file(file);
-            const langiumDocuments = shared.workspace.LangiumDocuments;
-            if (langiumDocuments.hasDocument(uri)) langiumDocuments.deleteDocument(uri);
-            rootOfDoc.set(uri.toString(), ownRoot(file));
-            specOfDoc.set(uri.toString(), specRoot);
-            try {
-                documents.push(langiumDocuments.createDocument(uri, text));
-            } catch (e) {
-                // Parsing threw (a bug, or input beyond every guard): report the file, check the others.
-                failed.push({ uri, reason: e });
-            }
-        }
+        for (const file of scan.files) await loadFile(shared, file, specRoot, loaded);
     }
-    const builtins = builtinDocuments(shared);
-    options.onProgress?.(`checking ${documents.length} files`);
-    failed.push(...(await buildEach(shared, builtins, documents)));
+    return loaded;
+}
 
-    const result: CheckDiagnostic[] = [];
-    for (const { uri, reason } of failed) {
-        const only = roots.get(specOfDoc.get(uri.toString())!);
-        if (only && !only.has(uri.fsPath)) continue;
-        result.push(notChecked(rootOfDoc.get(uri.toString())!, uri.fsPath, reason));
+/** Creates the document of one model file (replacing an earlier one), or records why parsing threw. */
+async function loadFile(shared: HostLanguageServices['shared'], file: string, specRoot: string, loaded: LoadedFiles): Promise<void> {
+    let text: string;
+    try {
+        text = await readFile(file, 'utf8');
+    } catch (e) {
+        throw new CheckInputError(`cannot read ${file}: ${(e as NodeJS.ErrnoException).code ?? (e as Error).message}`);
     }
-    const failedUris = new Set(failed.map((f) => f.uri.toString()));
-    for (const doc of documents) {
-        if (failedUris.has(doc.uri.toString())) continue;
-        const root = rootOfDoc.get(doc.uri.toString())!;
-        const file = doc.uri.fsPath;
-        const only = roots.get(specOfDoc.get(doc.uri.toString())!);
-        if (only && !only.has(file)) continue;
-        for (const d of doc.diagnostics ?? []) {
-            result.push({
-                root,
-                file,
-                line: d.range.start.line + 1,
-                column: d.range.start.character + 1,
-                endLine: d.range.end.line + 1,
-                endColumn: d.range.end.character + 1,
-                severity: SEVERITIES[(d.severity ?? 1) - 1] ?? 'error',
-                code: typeof d.code === 'string' ? d.code : d.code !== undefined ? String(d.code) : 'internal/unclassified',
-                message: d.message,
-            });
-        }
+    const uri = URI.file(file);
+    const langiumDocuments = shared.workspace.LangiumDocuments;
+    if (langiumDocuments.hasDocument(uri)) langiumDocuments.deleteDocument(uri);
+    loaded.rootOfDoc.set(uri.toString(), ownRoot(shared, file));
+    loaded.specOfDoc.set(uri.toString(), specRoot);
+    try {
+        loaded.documents.push(langiumDocuments.createDocument(uri, text));
+    } catch (e) {
+        // Parsing threw (a bug, or input beyond every guard): report the file, check the others.
+        loaded.failed.push({ uri, reason: e });
+    }
+}
+
+/** The model root a file lies in, as the workspace decides it (the nearest registered root). */
+function ownRoot(shared: HostLanguageServices['shared'], file: string): string {
+    const r = shared.maa.ModelRoots.rootOf(URI.file(file));
+    return URI.parse(r).fsPath.replace(/[\\/]$/, '');
+}
+
+/** The diagnostics of the reported files (an error for each file that could not be checked), sorted by file and position. */
+function collectDiagnostics(reported: ReportedFiles, loaded: LoadedFiles): CheckDiagnostic[] {
+    const isReported = (uri: URI): boolean => {
+        const only = reported.get(loaded.specOfDoc.get(uri.toString())!);
+        return !only || only.has(uri.fsPath);
+    };
+    const result: CheckDiagnostic[] = [];
+    for (const { uri, reason } of loaded.failed) {
+        if (isReported(uri)) result.push(notChecked(loaded.rootOfDoc.get(uri.toString())!, uri.fsPath, reason));
+    }
+    const failedUris = new Set(loaded.failed.map((f) => f.uri.toString()));
+    for (const doc of loaded.documents) {
+        if (failedUris.has(doc.uri.toString()) || !isReported(doc.uri)) continue;
+        const root = loaded.rootOfDoc.get(doc.uri.toString())!;
+        for (const d of doc.diagnostics ?? []) result.push(checkDiagnostic(root, doc.uri.fsPath, d));
     }
     result.sort((a, b) => a.file.localeCompare(b.file) || a.line - b.line || a.column - b.column || a.code.localeCompare(b.code));
     return result;
+}
+
+/** A document's diagnostic as `maa-gen check` reports it: 1-based positions, a severity name, a string code. */
+function checkDiagnostic(root: string, file: string, d: Diagnostic): CheckDiagnostic {
+    return {
+        root,
+        file,
+        line: d.range.start.line + 1,
+        column: d.range.start.character + 1,
+        endLine: d.range.end.line + 1,
+        endColumn: d.range.end.character + 1,
+        severity: SEVERITIES[(d.severity ?? 1) - 1] ?? 'error',
+        code: typeof d.code === 'string' ? d.code : d.code !== undefined ? String(d.code) : 'internal/unclassified',
+        message: d.message,
+    };
 }
 
 /** A file that could not be checked, and why. */
@@ -200,7 +256,7 @@ function notChecked(root: string, file: string, reason: unknown): CheckDiagnosti
 }
 
 /** The model files below a root and the folders below it that are roots of their own (`maa.json`). */
-async function scanRoot(root: string, extensions: readonly string[]): Promise<{ files: string[]; nested: string[] }> {
+async function scanRoot(root: string, extensions: readonly string[]): Promise<RootScan> {
     let info: Stats;
     try {
         info = await stat(root);
