@@ -57,6 +57,7 @@ export class InstantiationChecks {
         ComponentType: (c, accept) => this.checkInheritedPorts(c, accept),
     };
 
+    /** The configuration arguments of a subcomponent or parent against the parameters (and features) of `decl`. */
     private checkArguments(
         owner: Subcomponent | ParentComponent,
         decl: ComponentType,
@@ -64,74 +65,112 @@ export class InstantiationChecks {
         args: readonly Expression[],
         accept: ValidationAcceptor,
     ): void {
-        const what = isParentComponent(owner) ? `parent '${decl.name}'` : `subcomponent '${owner.name}'`;
-        const bound = new Map<Parameter, Expression>();
-        let sawKey = false;
-        const boundFeatures = new Set<unknown>();
-        args.forEach((arg, index) => {
-            const key = keyOf(arg);
-            const value = key ? (arg as { right?: Expression }).right : arg;
-            if (!value) return; // `key =` without a value: partially parsed, the syntax error is reported
-            this.checkSideEffects(arg, key !== undefined, accept);
-            this.expressions.checkStaticContext(value, accept, `the arguments of ${what}`);
-            let param: Parameter | undefined;
-            if (key) {
-                sawKey = true;
-                const target = key.ref?.ref;
-                if (target?.$type === 'Feature') {
-                    // A feature binding (`sub(f = true)`): a boolean, once per feature.
-                    this.expressions.expectType(
-                        value,
-                        BOOLEAN,
-                        accept,
-                        Codes.ArgumentTypeMismatch,
-                        `The binding of feature '${key.ref?.$refText ?? ''}'`,
-                    );
-                    if (boundFeatures.has(target))
-                        accept('error', `Feature '${key.ref?.$refText ?? ''}' of ${decl.name} gets more than one value.`, {
-                            node: arg,
-                            code: Codes.ArgumentMultipleValues,
-                        });
-                    boundFeatures.add(target);
-                    return;
-                }
-                param = target as Parameter | undefined;
-                if (!param) return; // unknown key, reported by linking as arc/unknown-argument-key
-            } else {
-                if (sawKey) {
-                    accept(
-                        'error',
-                        `Positional argument ${index + 1} of ${what} follows a key argument; positional arguments come first.`,
-                        { node: arg, code: Codes.PositionalAfterKey },
-                    );
-                    return;
-                }
-                param = decl.params[index];
-            }
-            if (index >= decl.params.length && !key) {
-                // too many, reported below; still type the value
-                this.expressions.checkExpression(value, accept);
+        const binding: ArgumentBinding = {
+            what: isParentComponent(owner) ? `parent '${decl.name}'` : `subcomponent '${owner.name}'`,
+            decl,
+            subst,
+            bound: new Map(),
+            boundFeatures: new Set(),
+            sawKey: false,
+        };
+        for (const [index, arg] of args.entries()) this.checkArgument(binding, arg, index, accept);
+        this.checkArgumentCount(owner, binding, args, accept);
+    }
+
+    /** One argument: no side effects, static, then bound to a feature, a parameter by key, or a parameter by position. */
+    private checkArgument(b: ArgumentBinding, arg: Expression, index: number, accept: ValidationAcceptor): void {
+        const key = keyOf(arg);
+        const value = key ? (arg as { right?: Expression }).right : arg;
+        if (!value) return; // `key =` without a value: partially parsed, the syntax error is reported
+        this.checkSideEffects(arg, key !== undefined, accept);
+        this.expressions.checkStaticContext(value, accept, `the arguments of ${b.what}`);
+        let param: Parameter | undefined;
+        if (key) {
+            b.sawKey = true;
+            const target = key.ref?.ref;
+            if (target?.$type === 'Feature') {
+                this.checkFeatureBinding(b, arg, key, value, accept);
                 return;
             }
-            if (!param) return;
-            if (bound.has(param)) {
-                accept('error', `Parameter '${param.name}' of ${decl.name} gets more than one value.`, {
+            param = target as Parameter | undefined;
+            if (!param) return; // unknown key, reported by linking as arc/unknown-argument-key
+        } else {
+            if (b.sawKey) {
+                accept('error', `Positional argument ${index + 1} of ${b.what} follows a key argument; positional arguments come first.`, {
                     node: arg,
-                    code: Codes.ArgumentMultipleValues,
+                    code: Codes.PositionalAfterKey,
                 });
                 return;
             }
-            bound.set(param, arg);
-            const expected = typeOfMCType(param.type, subst);
-            const actual = this.expressions.checkExpression(value, accept);
-            if (!isErroneous(expected) && !isErroneous(actual) && !this.rel.isAssignable(expected, actual)) {
-                accept(
-                    'error',
-                    `Argument for parameter '${param.name}' of ${decl.name} must be of type ${printType(expected)}, but is of type ${printType(actual)}.`,
-                    { node: value, code: Codes.ArgumentTypeMismatch },
-                );
+            if (index >= b.decl.params.length) {
+                // too many, reported by checkArgumentCount; still type the value
+                this.expressions.checkExpression(value, accept);
+                return;
             }
-        });
+            param = b.decl.params[index];
+        }
+        if (param) this.checkParameterValue(b, param, arg, value, accept);
+    }
+
+    /** A feature binding (`sub(f = true)`): a boolean, once per feature. */
+    private checkFeatureBinding(
+        b: ArgumentBinding,
+        arg: Expression,
+        key: Expression & { $type: 'NameExpression' },
+        value: Expression,
+        accept: ValidationAcceptor,
+    ): void {
+        const target = key.ref?.ref;
+        this.expressions.expectType(
+            value,
+            BOOLEAN,
+            accept,
+            Codes.ArgumentTypeMismatch,
+            `The binding of feature '${key.ref?.$refText ?? ''}'`,
+        );
+        if (b.boundFeatures.has(target))
+            accept('error', `Feature '${key.ref?.$refText ?? ''}' of ${b.decl.name} gets more than one value.`, {
+                node: arg,
+                code: Codes.ArgumentMultipleValues,
+            });
+        b.boundFeatures.add(target);
+    }
+
+    /** The value of a parameter: given once, of a type assignable to the parameter's. */
+    private checkParameterValue(
+        b: ArgumentBinding,
+        param: Parameter,
+        arg: Expression,
+        value: Expression,
+        accept: ValidationAcceptor,
+    ): void {
+        if (b.bound.has(param)) {
+            accept('error', `Parameter '${param.name}' of ${b.decl.name} gets more than one value.`, {
+                node: arg,
+                code: Codes.ArgumentMultipleValues,
+            });
+            return;
+        }
+        b.bound.set(param, arg);
+        const expected = typeOfMCType(param.type, b.subst);
+        const actual = this.expressions.checkExpression(value, accept);
+        if (!isErroneous(expected) && !isErroneous(actual) && !this.rel.isAssignable(expected, actual)) {
+            accept(
+                'error',
+                `Argument for parameter '${param.name}' of ${b.decl.name} must be of type ${printType(expected)}, but is of type ${printType(actual)}.`,
+                { node: value, code: Codes.ArgumentTypeMismatch },
+            );
+        }
+    }
+
+    /** Not more values than parameters (feature bindings aside), and a value for each parameter without a default. */
+    private checkArgumentCount(
+        owner: Subcomponent | ParentComponent,
+        b: ArgumentBinding,
+        args: readonly Expression[],
+        accept: ValidationAcceptor,
+    ): void {
+        const { decl, what } = b;
         const valueArgs = args.filter((a) => keyOf(a)?.ref?.ref?.$type !== 'Feature');
         if (valueArgs.length > decl.params.length) {
             accept('error', `${cap(what)} gets ${valueArgs.length} argument(s), but ${decl.name} has ${decl.params.length} parameter(s).`, {
@@ -139,7 +178,7 @@ export class InstantiationChecks {
                 code: Codes.TooManyArguments,
             });
         }
-        const missing = decl.params.filter((p) => !p.default && !bound.has(p));
+        const missing = decl.params.filter((p) => !p.default && !b.bound.has(p));
         if (missing.length > 0) {
             const msg = `${cap(what)} lacks a value for parameter${missing.length > 1 ? 's' : ''} ${missing.map((p) => `'${p.name}'`).join(', ')} of ${decl.name}.`;
             if (isParentComponent(owner)) accept('error', msg, { node: owner, code: Codes.TooFewArguments });
@@ -257,6 +296,18 @@ export class InstantiationChecks {
             }
         }
     }
+}
+
+/** What the arguments of one instantiation have bound so far. */
+interface ArgumentBinding {
+    /** How messages name the instantiation: `subcomponent 's'` or `parent 'P'`. */
+    readonly what: string;
+    readonly decl: ComponentType;
+    readonly subst: Substitution;
+    readonly bound: Map<Parameter, Expression>;
+    readonly boundFeatures: Set<unknown>;
+    /** A key argument came before: positional ones may no longer follow. */
+    sawKey: boolean;
 }
 
 /** The key of a key argument `p = value`, if the argument is one. */
