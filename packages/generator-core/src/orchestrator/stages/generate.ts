@@ -65,6 +65,18 @@ export async function generateFiles(
     return outcome({ outputs }, diagnostics);
 }
 
+/** One platform's generation under way: what its generators are given, and what they have produced. */
+interface PlatformGeneration {
+    readonly run: GenerationRun;
+    readonly info: PlatformInfo;
+    readonly architecture: Checked['architecture'];
+    readonly selection: PlatformSelection;
+    readonly instances: ReadonlyMap<string, GeneratorInstance>;
+    readonly collector: OutputCollector;
+    readonly diagnostics: GenerationDiagnostic[];
+}
+
+/** A platform's files: its generators run, their files finished (traced), the files per generator reported. */
 async function generatePlatform(
     run: GenerationRun,
     info: PlatformInfo,
@@ -72,76 +84,112 @@ async function generatePlatform(
     selection: PlatformSelection,
     instances: ReadonlyMap<string, GeneratorInstance>,
 ): Promise<StageResult<PlatformOutput>> {
-    const { architecture } = checked;
     const p = selection.platform;
-    const diagnostics: GenerationDiagnostic[] = [];
-    const collector = new OutputCollector();
-    const runGenerator = async <T>(inst: GeneratorInstance, body: () => Promise<T>): Promise<T | undefined> => {
-        const name = inst.registered.manifest.name;
-        run.progress({ phase: 'generate', message: `${p.name}: running ${name}`, platform: p.name, generator: name });
-        try {
-            return await body();
-        } catch (e) {
-            diagnostics.push(generatorFailure(run.modelRoot, selection, name, e));
-            return undefined;
-        }
+    const g: PlatformGeneration = {
+        run,
+        info,
+        architecture: checked.architecture,
+        selection,
+        instances,
+        collector: new OutputCollector(),
+        diagnostics: [],
     };
-    const generated = await timedAsync(run, 'generate', async () => {
-        const dt = instances.get(selection.datatype!.manifest.name)!;
-        const datatypes = (await runGenerator(
-            dt,
-            async () =>
-                (await (dt.generator as DataTypeGenerator).generate({
-                    architecture,
-                    platform: info,
-                    out: collector.sink(dt.registered.manifest.name, dt.templates),
-                    templates: dt.templates,
-                    dataTypes: architecture.dataTypes,
-                })) ?? {},
-        )) as DataTypeResult | undefined;
-        if (hasErrors(diagnostics)) return false;
-
-        const comp = instances.get(selection.component!.manifest.name)!;
-        const delegated = new Map<ComponentView, Promise<DelegatedBehavior | undefined>>();
-        const delegate = (c: ComponentView): Promise<DelegatedBehavior | undefined> => {
-            let d = delegated.get(c);
-            if (!d) {
-                d = delegateBehavior(c, selection, instances, info, datatypes ?? {}, collector);
-                delegated.set(c, d);
-            }
-            return d;
-        };
-        await runGenerator(comp, async () =>
-            (comp.generator as ComponentGenerator).generate({
-                architecture,
-                platform: info,
-                out: collector.sink(comp.registered.manifest.name, comp.templates),
-                templates: comp.templates,
-                datatypes: datatypes ?? {},
-                behavior: delegate,
-            }),
-        );
-        // A component generator that does not wait for its behaviors must not lose their failures.
-        for (const settled of await Promise.allSettled(delegated.values())) {
-            if (settled.status === 'rejected')
-                diagnostics.push(generatorFailure(run.modelRoot, selection, comp.registered.manifest.name, settled.reason));
-        }
-        return !hasErrors(diagnostics);
-    });
-    if (!generated) return failure(diagnostics);
+    const generated = await timedAsync(run, 'generate', () => runGenerators(g));
+    if (!generated) return failure(g.diagnostics);
     let files: FinishedFile[];
     try {
-        files = timed(run, 'trace', () => collector.finish());
+        files = timed(run, 'trace', () => g.collector.finish());
     } catch (e) {
-        return failure([...diagnostics, generatorFailure(run.modelRoot, selection, undefined, e)]);
+        return failure([...g.diagnostics, generatorFailure(run.modelRoot, selection, undefined, e)]);
     }
-    const counts = selection.references
+    const counts = filesPerGenerator(selection, files);
+    reportFileCounts(run, p, counts);
+    return outcome({ platform: p, outDir: path.join(run.outRoot, p.name), files, generators: counts }, g.diagnostics);
+}
+
+/** The data type generator, then (unless it failed) the component generator; true if no generator failed. */
+async function runGenerators(g: PlatformGeneration): Promise<boolean> {
+    const datatypes = await generateDataTypes(g);
+    if (hasErrors(g.diagnostics)) return false;
+    await generateComponents(g, datatypes);
+    return !hasErrors(g.diagnostics);
+}
+
+/** Runs one generator's `body`, reporting progress; a failure becomes a diagnostic and `undefined`. */
+async function runGenerator<T>(g: PlatformGeneration, inst: GeneratorInstance, body: () => Promise<T>): Promise<T | undefined> {
+    const name = inst.registered.manifest.name;
+    const p = g.selection.platform;
+    g.run.progress({ phase: 'generate', message: `${p.name}: running ${name}`, platform: p.name, generator: name });
+    try {
+        return await body();
+    } catch (e) {
+        g.diagnostics.push(generatorFailure(g.run.modelRoot, g.selection, name, e));
+        return undefined;
+    }
+}
+
+async function generateDataTypes(g: PlatformGeneration): Promise<DataTypeResult | undefined> {
+    const { architecture, collector } = g;
+    const dt = g.instances.get(g.selection.datatype!.manifest.name)!;
+    return (await runGenerator(
+        g,
+        dt,
+        async () =>
+            (await (dt.generator as DataTypeGenerator).generate({
+                architecture,
+                platform: g.info,
+                out: collector.sink(dt.registered.manifest.name, dt.templates),
+                templates: dt.templates,
+                dataTypes: architecture.dataTypes,
+            })) ?? {},
+    )) as DataTypeResult | undefined;
+}
+
+/**
+ * The component generator, which asks for each component's behavior (delegated once per
+ * component to the behavior generator of its language), then the failures of those behaviors.
+ */
+async function generateComponents(g: PlatformGeneration, datatypes: DataTypeResult | undefined): Promise<void> {
+    const { architecture, collector, selection, instances, info } = g;
+    const comp = instances.get(selection.component!.manifest.name)!;
+    const delegated = new Map<ComponentView, Promise<DelegatedBehavior | undefined>>();
+    const delegate = (c: ComponentView): Promise<DelegatedBehavior | undefined> => {
+        let d = delegated.get(c);
+        if (!d) {
+            d = delegateBehavior(c, selection, instances, info, datatypes ?? {}, collector);
+            delegated.set(c, d);
+        }
+        return d;
+    };
+    await runGenerator(g, comp, async () =>
+        (comp.generator as ComponentGenerator).generate({
+            architecture,
+            platform: info,
+            out: collector.sink(comp.registered.manifest.name, comp.templates),
+            templates: comp.templates,
+            datatypes: datatypes ?? {},
+            behavior: delegate,
+        }),
+    );
+    // A component generator that does not wait for its behaviors must not lose their failures.
+    for (const settled of await Promise.allSettled(delegated.values())) {
+        if (settled.status === 'rejected')
+            g.diagnostics.push(generatorFailure(g.run.modelRoot, selection, comp.registered.manifest.name, settled.reason));
+    }
+}
+
+/** How many files each generator of the platform wrote, once per generator in the order the platform names them. */
+function filesPerGenerator(selection: PlatformSelection, files: readonly FinishedFile[]): PlatformOutput['generators'] {
+    return selection.references
         .filter((r, i, all) => all.findIndex((q) => q.generator === r.generator) === i)
         .map((r) => ({
             name: r.generator.manifest.name,
             kind: r.generator.manifest.kind,
             files: files.filter((f) => f.generator === r.generator.manifest.name).length,
         }));
+}
+
+function reportFileCounts(run: GenerationRun, p: AppPlatform, counts: PlatformOutput['generators']): void {
     for (const c of counts) {
         run.progress({
             phase: 'generate',
@@ -151,7 +199,6 @@ async function generatePlatform(
             files: c.files,
         });
     }
-    return outcome({ platform: p, outDir: path.join(run.outRoot, p.name), files, generators: counts }, diagnostics);
 }
 
 async function delegateBehavior(
