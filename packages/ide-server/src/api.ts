@@ -1,8 +1,16 @@
 import { readFile, stat } from 'node:fs/promises';
 import path from 'node:path';
-import { listApps, readApp } from './apps.js';
+import { type AppPlatformInfo, listApps, readApp } from './apps.js';
 import type { GenerationService } from './generation.js';
-import { requests, type FilesAnswer, type GenerateAnswer, type OkAnswer, type SimStartAnswer, type TopicMapAnswer } from '@maa/protocol';
+import {
+    requests,
+    type FilesAnswer,
+    type GenerateAnswer,
+    type OkAnswer,
+    type SimStartAnswer,
+    type SimStartRequest,
+    type TopicMapAnswer,
+} from '@maa/protocol';
 import { HttpError, type Redact, readBody, readRequest, requireQuery, sendJson, sendText } from './http-util.js';
 import { ROSBRIDGE_PATH, VISER_PATH } from './proxy.js';
 import { Router } from './router.js';
@@ -26,9 +34,16 @@ const OK: OkAnswer = { ok: true };
 const MODE_KIND: Record<SimMode, string> = { lockstep: 'timesync', ros2: 'ros2' };
 
 /** The routes of docs/ide.md "Backend HTTP API". */
-export function createApiRouter({ workspace, generation, sims, maxFileBytes, redact }: ApiOptions): Router {
-    const router = new Router(redact);
+export function createApiRouter(options: ApiOptions): Router {
+    const router = new Router(options.redact);
+    addWorkspaceRoutes(router, options);
+    addGenerationRoutes(router, options);
+    addSimulationRoutes(router, options);
+    return router;
+}
 
+/** The model files of the workspace and its applications. */
+function addWorkspaceRoutes(router: Router, { workspace, maxFileBytes }: ApiOptions): void {
     router.on('GET', '/api/files', async ({ res }) => {
         sendJson(res, 200, { root: workspace.name, entries: await workspace.list() } satisfies FilesAnswer);
     });
@@ -49,7 +64,10 @@ export function createApiRouter({ workspace, generation, sims, maxFileBytes, red
     router.on('GET', '/api/apps', async ({ res }) => {
         sendJson(res, 200, { apps: await listApps(workspace) });
     });
+}
 
+/** Generating a platform and reading what it generated. */
+function addGenerationRoutes(router: Router, { generation, redact }: ApiOptions): void {
     router.on('POST', '/api/generate', async ({ req, res }) => {
         const body = await readRequest(req, requests.generate);
         const { platformDir: _dir, ...answer } = await generation.generate(body.app, body.platform);
@@ -73,42 +91,18 @@ export function createApiRouter({ workspace, generation, sims, maxFileBytes, red
         });
         sendText(res, 200, text, 'application/json; charset=utf-8');
     });
+}
 
+/** Running a generated platform in the simulator. */
+function addSimulationRoutes(router: Router, options: ApiOptions): void {
+    const { sims, redact } = options;
     router.on('POST', '/api/sim/start', async ({ req, res }) => {
-        const { app: appPath, platform: platformName, speed, ...body } = await readRequest(req, requests.simStart);
-        const app = await readApp(workspace, appPath);
-        const platform = app?.platforms.find((p) => p.name === platformName);
-        if (!app || !platform) throw new HttpError(400, `${appPath} has no platform '${platformName}'`);
-        const mode = body.mode ?? (platform.kind === 'ros2' ? 'ros2' : 'lockstep');
-        if (platform.kind !== MODE_KIND[mode]) {
-            throw new HttpError(
-                400,
-                `${mode} mode needs a ${MODE_KIND[mode]} platform; '${platformName}' is a ${platform.kind || 'unknown'} platform`,
-            );
-        }
-        const generated = await generation.generate(appPath, platformName);
-        if (!generated.ok) {
-            const errors = generated.diagnostics.filter((d) => d.severity === 'error').length;
-            throw new HttpError(409, `generating ${platformName} failed with ${errors} error${errors === 1 ? '' : 's'}`, {
-                diagnostics: generated.diagnostics,
-            });
-        }
-        const { session } = await sims.start({ app: appPath, platform: platformName, mode, speed, platformDir: generated.platformDir });
-        sendJson(res, 200, { ok: true, session, mode, rosbridge: ROSBRIDGE_PATH, viser: `${VISER_PATH}/` } satisfies SimStartAnswer);
+        sendJson(res, 200, (await startSimulation(options, await readRequest(req, requests.simStart))) satisfies SimStartAnswer);
     });
     // The port topics of a generated platform (run /api/generate or /api/sim/start first).
     router.on('GET', '/api/sim/topics', async ({ res, query }) => {
-        const appPath = requireQuery(query, 'app');
-        const platformName = requireQuery(query, 'platform');
-        const app = await readApp(workspace, appPath);
-        const platform = app?.platforms.find((p) => p.name === platformName);
-        if (!app || !platform) throw new HttpError(400, `${appPath} has no platform '${platformName}'`);
-        const mode = (Object.keys(MODE_KIND) as SimMode[]).find((m) => MODE_KIND[m] === platform.kind);
-        if (!mode)
-            throw new HttpError(400, `'${platformName}' is a ${platform.kind || 'unknown'} platform, which does not run in the simulator`);
-        generation.platformRoot(appPath, platformName); // checks the app path and the platform name
-        const platformDir = path.join(generation.appOutDir(appPath), platformName);
-        sendJson(res, 200, (await topicMap(platformDir, appPath, platformName, mode)) satisfies TopicMapAnswer);
+        const answer = await platformTopics(options, requireQuery(query, 'app'), requireQuery(query, 'platform'));
+        sendJson(res, 200, answer satisfies TopicMapAnswer);
     });
     router.on('POST', '/api/sim/stop', async ({ res }) => {
         await sims.stop();
@@ -118,6 +112,45 @@ export function createApiRouter({ workspace, generation, sims, maxFileBytes, red
         const status = sims.status();
         sendJson(res, 200, redact ? { ...status, log: redact.value(status.log) } : status);
     });
+}
 
-    return router;
+/** Checks the mode against the platform's kind, generates the platform (409 if that fails) and starts a session. */
+async function startSimulation({ workspace, generation, sims }: ApiOptions, request: SimStartRequest): Promise<SimStartAnswer> {
+    const { app: appPath, platform: platformName, speed, ...body } = request;
+    const platform = await platformOf(workspace, appPath, platformName);
+    const mode = body.mode ?? (platform.kind === 'ros2' ? 'ros2' : 'lockstep');
+    if (platform.kind !== MODE_KIND[mode]) {
+        throw new HttpError(
+            400,
+            `${mode} mode needs a ${MODE_KIND[mode]} platform; '${platformName}' is a ${platform.kind || 'unknown'} platform`,
+        );
+    }
+    const generated = await generation.generate(appPath, platformName);
+    if (!generated.ok) {
+        const errors = generated.diagnostics.filter((d) => d.severity === 'error').length;
+        throw new HttpError(409, `generating ${platformName} failed with ${errors} error${errors === 1 ? '' : 's'}`, {
+            diagnostics: generated.diagnostics,
+        });
+    }
+    const { session } = await sims.start({ app: appPath, platform: platformName, mode, speed, platformDir: generated.platformDir });
+    return { ok: true, session, mode, rosbridge: ROSBRIDGE_PATH, viser: `${VISER_PATH}/` };
+}
+
+/** The port → topic map of a platform the simulator runs, read from its generated files. */
+async function platformTopics({ workspace, generation }: ApiOptions, appPath: string, platformName: string): Promise<TopicMapAnswer> {
+    const platform = await platformOf(workspace, appPath, platformName);
+    const mode = (Object.keys(MODE_KIND) as SimMode[]).find((m) => MODE_KIND[m] === platform.kind);
+    if (!mode)
+        throw new HttpError(400, `'${platformName}' is a ${platform.kind || 'unknown'} platform, which does not run in the simulator`);
+    generation.platformRoot(appPath, platformName); // checks the app path and the platform name
+    const platformDir = path.join(generation.appOutDir(appPath), platformName);
+    return topicMap(platformDir, appPath, platformName, mode);
+}
+
+/** The platform `platformName` of the application `appPath` (400 if there is none). */
+async function platformOf(workspace: Workspace, appPath: string, platformName: string): Promise<AppPlatformInfo> {
+    const app = await readApp(workspace, appPath);
+    const platform = app?.platforms.find((p) => p.name === platformName);
+    if (!app || !platform) throw new HttpError(400, `${appPath} has no platform '${platformName}'`);
+    return platform;
 }
