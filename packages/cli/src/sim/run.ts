@@ -1,6 +1,6 @@
 import { type ChildProcess, spawn } from 'node:child_process';
 import { createInterface } from 'node:readline';
-import { type SimulatorFinished, type SimulatorProgress, simulatorFinishedContract, simulatorProgressContract } from '@maa/protocol';
+import type { SimulatorFinished, SimulatorProgress } from '@maa/protocol';
 import type { SimPackageMode } from '@maa/protocol/sim-package';
 
 /** What `maa-sim run` is asked to do. */
@@ -68,7 +68,9 @@ function viewerUrl(ready: Record<string, unknown>): string | undefined {
  * Runs maa-sim until it exits: its progress lines and stderr go to the listener; SIGINT and
  * SIGTERM to maa-gen meanwhile stop the run (maa-sim finishes it and reports as usual).
  */
-export function runMaaSim(run: MaaSimRun, listener: MaaSimListener): Promise<MaaSimOutcome> {
+export async function runMaaSim(run: MaaSimRun, listener: MaaSimListener): Promise<MaaSimOutcome> {
+    // loaded here: the contracts bring TypeBox and every schema, which other commands do not need at start
+    const { simulatorFinishedContract, simulatorProgressContract } = await import('@maa/protocol');
     const child = spawn(run.maaSim, maaSimArgs(run), {
         cwd: run.packageDir,
         stdio: ['ignore', 'pipe', 'pipe'],
