@@ -43,81 +43,111 @@ export function write(
     configured: Configured,
     generated: Generated,
 ): StageResult<PlatformResult[]> {
-    const { modelRoot, appFile, shown } = run;
-    const diagnostics: GenerationDiagnostic[] = [];
-    const writeFailed = (e: unknown): StageResult<never> => {
-        const problem = e instanceof OutputWriteError ? `${shown(e.path)}: ${e.reason}` : (e as Error).message;
-        return failure([
-            ...diagnostics,
-            at(modelRoot, appFile, undefined, 'error', GenCodes.WriteFailed, `Cannot write the output: ${problem}. Nothing was changed.`),
-        ]);
-    };
     let tx: OutputTransaction;
     try {
         tx = timed(run, 'write', () => OutputTransaction.open(run.outRoot));
     } catch (e) {
-        return writeFailed(e);
+        return writeFailed(run, [], e);
     }
     try {
-        const written: Array<{ plan: WritePlan; output: PlatformOutput }> = [];
-        for (const output of generated.outputs) {
-            const trace = timed(run, 'trace', () =>
-                traceFile(
-                    run.options.services,
-                    modelRoot,
-                    output.outDir,
-                    platformInfo(loaded, checked, output.platform),
-                    output.files,
-                    selected.selections.get(output.platform)!,
-                    configured.instances,
-                ),
-            );
-            written.push({ plan: timed(run, 'write', () => planOutput(output.outDir, output.files, trace)), output });
-        }
-        for (const { plan, output } of written) {
-            const platform = output.platform;
-            for (const d of plan.droppedRegions) {
-                diagnostics.push(
-                    at(
-                        modelRoot,
-                        appFile,
-                        platform.$cstNode?.range,
-                        'error',
-                        GenCodes.ProtectedRegionDropped,
-                        `Platform '${platform.name}': ${shown(path.join(output.outDir, d.path))} has user content in protected region${d.regions.length > 1 ? 's' : ''} ${d.regions.map((r) => `'${r}'`).join(', ')}, which the regenerated file no longer has; move that content and run again (nothing was written).`,
-                    ),
-                );
-            }
-            for (const stale of plan.keptStale) {
-                diagnostics.push(
-                    at(
-                        modelRoot,
-                        appFile,
-                        platform.$cstNode?.range,
-                        'warning',
-                        GenCodes.StaleFileKept,
-                        `Platform '${platform.name}': ${shown(path.join(output.outDir, stale))} is no longer generated but holds user content in protected regions; it was kept (delete it when done).`,
-                    ),
-                );
-            }
-        }
+        const planned = planPlatforms(run, loaded, checked, selected, configured, generated);
+        const diagnostics = planned.flatMap((p) => planDiagnostics(run, p));
         if (hasErrors(diagnostics)) return failure(diagnostics);
         try {
-            timed(run, 'write', () => {
-                run.progress({ phase: 'write', message: `writing ${written.reduce((n, w) => n + w.plan.write.length, 0)} files` });
-                for (const w of written) tx.stage(w.plan);
-                tx.commit();
-            });
+            commitPlans(run, tx, planned);
         } catch (e) {
-            return writeFailed(e);
+            return writeFailed(run, diagnostics, e);
         }
         return outcome(
-            written.map(({ plan, output }) => platformResult(plan, output)),
+            planned.map(({ plan, output }) => platformResult(plan, output)),
             diagnostics,
         );
     } finally {
         tx.close();
     }
+}
+
+/** A platform's generated files and what writing them would change. */
+interface PlannedOutput {
+    readonly plan: WritePlan;
+    readonly output: PlatformOutput;
+}
+
+/** The trace file of each platform, then the write plan of its folder (protected regions merged). */
+function planPlatforms(
+    run: GenerationRun,
+    loaded: Loaded,
+    checked: Checked,
+    selected: Selected,
+    configured: Configured,
+    generated: Generated,
+): PlannedOutput[] {
+    return generated.outputs.map((output) => {
+        const trace = timed(run, 'trace', () =>
+            traceFile(
+                run.options.services,
+                run.modelRoot,
+                output.outDir,
+                platformInfo(loaded, checked, output.platform),
+                output.files,
+                selected.selections.get(output.platform)!,
+                configured.instances,
+            ),
+        );
+        return { plan: timed(run, 'write', () => planOutput(output.outDir, output.files, trace)), output };
+    });
+}
+
+/** What a plan would lose (user content of a dropped protected region: an error) or keep (a stale file with user content). */
+function planDiagnostics(run: GenerationRun, { plan, output }: PlannedOutput): GenerationDiagnostic[] {
+    const { modelRoot, appFile, shown } = run;
+    const platform = output.platform;
+    const dropped = plan.droppedRegions.map((d) =>
+        at(
+            modelRoot,
+            appFile,
+            platform.$cstNode?.range,
+            'error',
+            GenCodes.ProtectedRegionDropped,
+            `Platform '${platform.name}': ${shown(path.join(output.outDir, d.path))} has user content in protected region${d.regions.length > 1 ? 's' : ''} ${d.regions.map((r) => `'${r}'`).join(', ')}, which the regenerated file no longer has; move that content and run again (nothing was written).`,
+        ),
+    );
+    const kept = plan.keptStale.map((stale) =>
+        at(
+            modelRoot,
+            appFile,
+            platform.$cstNode?.range,
+            'warning',
+            GenCodes.StaleFileKept,
+            `Platform '${platform.name}': ${shown(path.join(output.outDir, stale))} is no longer generated but holds user content in protected regions; it was kept (delete it when done).`,
+        ),
+    );
+    return [...dropped, ...kept];
+}
+
+/** Stages every platform's plan in the transaction and switches them in. */
+function commitPlans(run: GenerationRun, tx: OutputTransaction, planned: readonly PlannedOutput[]): void {
+    timed(run, 'write', () => {
+        run.progress({ phase: 'write', message: `writing ${planned.reduce((n, p) => n + p.plan.write.length, 0)} files` });
+        for (const p of planned) tx.stage(p.plan);
+        tx.commit();
+    });
+}
+
+/** The output could not be written: the diagnostics so far and an error saying nothing was changed. */
+function writeFailed(run: GenerationRun, diagnostics: readonly GenerationDiagnostic[], e: unknown): StageResult<never> {
+    const problem = e instanceof OutputWriteError ? `${run.shown(e.path)}: ${e.reason}` : (e as Error).message;
+    return failure([
+        ...diagnostics,
+        at(
+            run.modelRoot,
+            run.appFile,
+            undefined,
+            'error',
+            GenCodes.WriteFailed,
+            `Cannot write the output: ${problem}. Nothing was changed.`,
+        ),
+    ]);
 }
 
 function platformResult(plan: WritePlan, output: PlatformOutput): PlatformResult {
