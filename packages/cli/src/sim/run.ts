@@ -92,12 +92,12 @@ export async function runMaaSim(run: MaaSimRun, listener: MaaSimListener): Promi
     process.on('SIGTERM', stop);
     return new Promise<MaaSimOutcome>((resolve, reject) => {
         child.on('error', (e) => reject(e));
-        child.on('close', (exitCode, signal) => {
-            process.off('SIGINT', stop);
-            process.off('SIGTERM', stop);
-            resolve({ finished, exitCode, signal });
-        });
-    }).finally(() => stopIfRunning(child));
+        child.on('close', (exitCode, signal) => resolve({ finished, exitCode, signal }));
+    }).finally(() => {
+        process.off('SIGINT', stop);
+        process.off('SIGTERM', stop);
+        stopIfRunning(child);
+    });
 }
 
 function stopIfRunning(child: ChildProcess): void {
