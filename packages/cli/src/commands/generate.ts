@@ -31,7 +31,7 @@ function installationDir(): string {
 type GenerateResult = Awaited<ReturnType<typeof import('@maa/generator-core/node').generate>>;
 
 /** Where generation reads and writes, resolved against the current folder. */
-interface GenerateInputs {
+export interface GenerateInputs {
     readonly appFile: string;
     readonly modelRoot: string;
     readonly outDir: string;
@@ -46,7 +46,7 @@ interface GenerateInputs {
 export async function runGenerate(appArg: string, options: GenerateCommandOptions, io: CliIo): Promise<ExitCode> {
     const inputs = resolveInputs(appArg, options, io);
     const json = options.format === 'json';
-    const result = await runGenerator(inputs, options.platform, json, io);
+    const result = await runGenerator(inputs, options.platform, !json, io);
     const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
     if (json) reportJson(result, diagnostics, io);
     else reportText(result, diagnostics, io);
@@ -79,19 +79,20 @@ function isDirectory(p: string): boolean {
 }
 
 /**
- * Runs the generator core with progress on stderr; the text report (not JSON) also gets one
- * line per generator there as it finishes. An input problem the core reports is a usage error.
+ * Runs the generator core with progress on stderr; with `generatorLines` (generate's text report)
+ * also one line per generator there as it finishes. An input problem the core reports is a
+ * usage error. Used by generate, test and sim.
  */
-async function runGenerator(
+export async function runGenerator(
     { appFile, modelRoot, outDir }: GenerateInputs,
     platforms: string[] | undefined,
-    json: boolean,
+    generatorLines: boolean,
     io: CliIo,
 ): Promise<GenerateResult> {
     const progress = createProgress(io);
     // Per-generator lines are part of the text report (stderr), not just progress.
     const report = (line: string): void => {
-        if (json) return;
+        if (!generatorLines) return;
         progress?.done();
         io.err(`${line}\n`);
     };

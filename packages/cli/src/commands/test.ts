@@ -2,14 +2,13 @@ import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readdirSync, rmSync, statSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { Command, Option } from 'commander';
 import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
 import { modelRootOfApp } from '../roots.js';
 import { displayPath, formatDiagnosticsText } from '../format/text.js';
 import type { CliIo } from '../io.js';
-import { exitCodeOf } from './generate.js';
+import { exitCodeOf, runGenerator } from './generate.js';
 
 export interface TestCommandOptions {
     platform: string;
@@ -25,10 +24,6 @@ interface StreamTestResult {
     line: number;
     passed: boolean;
     problems: string[];
-}
-
-function installationDir(): string {
-    return path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 }
 
 /** Every `*.stream` file below a folder (skipping node_modules, generated output and hidden folders), sorted. */
@@ -51,6 +46,36 @@ export function findStreamFiles(dir: string): string[] {
  * platform and runs the stream tests (`*.stream` next to the models) against it.
  */
 export async function runTest(appArg: string, files: string[], options: TestCommandOptions, io: CliIo): Promise<ExitCode> {
+    const { appFile, modelRoot } = resolveApp(appArg, options, io);
+    const streamFiles = resolveStreamFiles(files, modelRoot, io);
+    const json = options.format === 'json';
+    const tempOut = options.out ? undefined : mkdtempSync(path.join(tmpdir(), 'maa-gen-test-'));
+    const outDir = options.out ? path.resolve(io.cwd, options.out) : tempOut!;
+    try {
+        const result = await runGenerator({ appFile, modelRoot, outDir }, [options.platform], false, io);
+        if (!result.ok) {
+            const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
+            io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color: false }));
+            io.err('maa-gen test: generation failed; no stream test was run\n');
+            return exitCodeOf(false, diagnostics);
+        }
+        if (streamFiles.length === 0) {
+            io.err(`maa-gen test: no .stream files in ${displayPath(modelRoot, io.cwd)}\n`);
+            if (json) io.out(`${JSON.stringify({ results: [], summary: { passed: 0, failed: 0 } }, null, 2)}\n`);
+            return ExitCode.ok;
+        }
+        const results = runStreamTests(path.join(outDir, options.platform), streamFiles, options, io);
+        const failed = results.filter((r) => !r.passed).length;
+        if (json) reportJson(results, io);
+        else reportText(results, io);
+        return failed === 0 ? ExitCode.ok : ExitCode.errors;
+    } finally {
+        if (tempOut) rmSync(tempOut, { recursive: true, force: true });
+    }
+}
+
+/** The application file and its model root; usage problems throw. */
+function resolveApp(appArg: string, options: TestCommandOptions, io: CliIo): { appFile: string; modelRoot: string } {
     const appFile = path.resolve(io.cwd, appArg);
     let isFile = false;
     try {
@@ -60,8 +85,14 @@ export async function runTest(appArg: string, files: string[], options: TestComm
     }
     if (!isFile || path.extname(appFile) !== '.arcapp')
         throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
-    const root = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
-    const streamFiles = files.length > 0 ? files.map((f) => path.resolve(io.cwd, f)) : findStreamFiles(root);
+    const modelRoot = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
+    return { appFile, modelRoot };
+}
+
+/** The named stream files (each must exist), or every one below the model root. */
+function resolveStreamFiles(files: readonly string[], modelRoot: string, io: CliIo): string[] {
+    if (files.length === 0) return findStreamFiles(modelRoot);
+    const streamFiles = files.map((f) => path.resolve(io.cwd, f));
     for (const f of streamFiles) {
         try {
             statSync(f);
@@ -69,71 +100,38 @@ export async function runTest(appArg: string, files: string[], options: TestComm
             throw new CliError(`path not found: ${displayPath(f, io.cwd)}`);
         }
     }
-    const json = options.format === 'json';
-    const tempOut = options.out ? undefined : mkdtempSync(path.join(tmpdir(), 'maa-gen-test-'));
-    const outDir = options.out ? path.resolve(io.cwd, options.out) : tempOut!;
+    return streamFiles;
+}
+
+/** Runs the time-synchronous RTE's stream test runner on a generated build; one result per test. */
+function runStreamTests(build: string, streamFiles: readonly string[], options: TestCommandOptions, io: CliIo): StreamTestResult[] {
+    const python = options.python ?? io.env['MAA_PYTHON'] ?? 'python3';
+    const run = spawnSync(python, ['-m', 'maa_timesync.streamtest', build, '--json', ...streamFiles], {
+        cwd: build,
+        encoding: 'utf8',
+        env: { ...io.env, PYTHONDONTWRITEBYTECODE: '1' },
+    });
+    if (run.error) throw new CliError(`could not start ${python}: ${run.error.message}`);
     try {
-        const [{ createMaaServices }, { generate, GenerateInputError }, { NodeFileSystem }] = await Promise.all([
-            import('@maa/language-server'),
-            import('@maa/generator-core/node'),
-            import('langium/node'),
-        ]);
-        let result: Awaited<ReturnType<typeof import('@maa/generator-core/node').generate>>;
-        try {
-            result = await generate({
-                services: createMaaServices(NodeFileSystem),
-                appFile,
-                modelRoot: root,
-                platforms: [options.platform],
-                outDir,
-                discoveryRoots: [installationDir()],
-            });
-        } catch (e) {
-            if (e instanceof GenerateInputError) throw new CliError(e.message);
-            throw e;
-        }
-        if (!result.ok) {
-            const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
-            io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color: false }));
-            io.err('maa-gen test: generation failed; no stream test was run\n');
-            return exitCodeOf(false, diagnostics);
-        }
-        const build = path.join(outDir, options.platform);
-        if (streamFiles.length === 0) {
-            io.err(`maa-gen test: no .stream files in ${displayPath(root, io.cwd)}\n`);
-            if (json) io.out(`${JSON.stringify({ results: [], summary: { passed: 0, failed: 0 } }, null, 2)}\n`);
-            return ExitCode.ok;
-        }
-        const python = options.python ?? io.env['MAA_PYTHON'] ?? 'python3';
-        const run = spawnSync(python, ['-m', 'maa_timesync.streamtest', build, '--json', ...streamFiles], {
-            cwd: build,
-            encoding: 'utf8',
-            env: { ...io.env, PYTHONDONTWRITEBYTECODE: '1' },
-        });
-        if (run.error) throw new CliError(`could not start ${python}: ${run.error.message}`);
-        let results: StreamTestResult[];
-        try {
-            results = JSON.parse(run.stdout) as StreamTestResult[];
-        } catch {
-            throw new CliError(`the stream test runner failed (exit ${run.status}):\n${run.stderr.trim()}`, ExitCode.internal);
-        }
-        const passed = results.filter((r) => r.passed).length;
-        const failed = results.length - passed;
-        if (json) {
-            io.out(
-                `${JSON.stringify({ results: results.map((r) => ({ ...r, file: displayPath(r.file, io.cwd) })), summary: { passed, failed } }, null, 2)}\n`,
-            );
-        } else {
-            for (const r of results) {
-                io.out(`${r.passed ? 'ok  ' : 'FAIL'} ${displayPath(r.file, io.cwd)}:${r.line}${r.test ? ` ${r.test}` : ''}\n`);
-                for (const p of r.problems) io.out(`       ${p}\n`);
-            }
-            io.err(`stream tests: ${passed} passed, ${failed} failed\n`);
-        }
-        return failed === 0 ? ExitCode.ok : ExitCode.errors;
-    } finally {
-        if (tempOut) rmSync(tempOut, { recursive: true, force: true });
+        return JSON.parse(run.stdout) as StreamTestResult[];
+    } catch {
+        throw new CliError(`the stream test runner failed (exit ${run.status}):\n${run.stderr.trim()}`, ExitCode.internal);
     }
+}
+
+function reportJson(results: readonly StreamTestResult[], io: CliIo): void {
+    const passed = results.filter((r) => r.passed).length;
+    const summary = { passed, failed: results.length - passed };
+    io.out(`${JSON.stringify({ results: results.map((r) => ({ ...r, file: displayPath(r.file, io.cwd) })), summary }, null, 2)}\n`);
+}
+
+function reportText(results: readonly StreamTestResult[], io: CliIo): void {
+    for (const r of results) {
+        io.out(`${r.passed ? 'ok  ' : 'FAIL'} ${displayPath(r.file, io.cwd)}:${r.line}${r.test ? ` ${r.test}` : ''}\n`);
+        for (const p of r.problems) io.out(`       ${p}\n`);
+    }
+    const passed = results.filter((r) => r.passed).length;
+    io.err(`stream tests: ${passed} passed, ${results.length - passed} failed\n`);
 }
 
 export function testCommand(io: CliIo, setExitCode: (code: ExitCode) => void): Command {
