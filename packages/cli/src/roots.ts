@@ -131,3 +131,17 @@ function readable(abs: string, mode: number): boolean {
         return false;
     }
 }
+
+/** The application configuration a command names (`APP.arcapp`), resolved against `cwd`; usage problems throw. */
+export function appFileArg(appArg: string, cwd: string): string {
+    const appFile = path.resolve(cwd, appArg);
+    let isFile: boolean;
+    try {
+        isFile = statSync(appFile).isFile();
+    } catch {
+        throw new CliError(`path not found: ${appArg}`);
+    }
+    if (!isFile) throw new CliError(`not a file: ${appArg}`);
+    if (path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
+    return appFile;
+}

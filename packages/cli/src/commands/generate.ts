@@ -4,7 +4,7 @@ import { fileURLToPath } from 'node:url';
 import { Command, Option } from 'commander';
 import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
-import { modelRootOfApp } from '../roots.js';
+import { appFileArg, modelRootOfApp } from '../roots.js';
 import { jsonDiagnostic } from '../format/json.js';
 import { displayPath, formatDiagnosticsText } from '../format/text.js';
 import type { CliIo } from '../io.js';
@@ -55,15 +55,7 @@ export async function runGenerate(appArg: string, options: GenerateCommandOption
 
 /** The application file, model root and output folder of the command line; usage problems throw. */
 function resolveInputs(appArg: string, options: GenerateCommandOptions, io: CliIo): GenerateInputs {
-    const appFile = path.resolve(io.cwd, appArg);
-    let isFile = false;
-    try {
-        isFile = statSync(appFile).isFile();
-    } catch {
-        throw new CliError(`path not found: ${appArg}`);
-    }
-    if (!isFile) throw new CliError(`not a file: ${appArg}`);
-    if (path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
+    const appFile = appFileArg(appArg, io.cwd);
     const modelRoot = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
     if (options.root && !isDirectory(modelRoot)) throw new CliError(`model root not found: ${options.root}`);
     const outDir = path.resolve(io.cwd, options.out ?? path.join(path.dirname(appFile), 'generated'));

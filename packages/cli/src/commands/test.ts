@@ -5,7 +5,7 @@ import path from 'node:path';
 import { Command, Option } from 'commander';
 import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
-import { modelRootOfApp } from '../roots.js';
+import { appFileArg, modelRootOfApp } from '../roots.js';
 import { displayPath, formatDiagnosticsText } from '../format/text.js';
 import type { CliIo } from '../io.js';
 import { exitCodeOf, runGenerator } from './generate.js';
@@ -76,15 +76,7 @@ export async function runTest(appArg: string, files: string[], options: TestComm
 
 /** The application file and its model root; usage problems throw. */
 function resolveApp(appArg: string, options: TestCommandOptions, io: CliIo): { appFile: string; modelRoot: string } {
-    const appFile = path.resolve(io.cwd, appArg);
-    let isFile = false;
-    try {
-        isFile = statSync(appFile).isFile();
-    } catch {
-        throw new CliError(`path not found: ${appArg}`);
-    }
-    if (!isFile || path.extname(appFile) !== '.arcapp')
-        throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
+    const appFile = appFileArg(appArg, io.cwd);
     const modelRoot = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
     return { appFile, modelRoot };
 }

@@ -6,7 +6,7 @@ import { findSimPackage, type SimPackageMode } from '@maa/protocol/sim-package';
 import { runGenerate } from '../commands/generate.js';
 import { CliError, ExitCode } from '../errors.js';
 import type { CliIo } from '../io.js';
-import { isModelFile, modelRootOfApp } from '../roots.js';
+import { appFileArg, isModelFile, modelRootOfApp } from '../roots.js';
 
 /** What `maa-gen sim` runs: the generated package of one platform and its mode. */
 export interface SimTarget {
@@ -109,13 +109,7 @@ function reportOnStderr(io: CliIo): CliIo {
  * Returns the generator's exit code instead when generation failed.
  */
 export async function prepareTarget(appArg: string, options: PrepareOptions, io: CliIo): Promise<SimTarget | ExitCode> {
-    const appFile = path.resolve(io.cwd, appArg);
-    try {
-        if (!statSync(appFile).isFile()) throw new CliError(`not a file: ${appArg}`);
-    } catch (e) {
-        throw e instanceof CliError ? e : new CliError(`path not found: ${appArg}`);
-    }
-    if (path.extname(appFile) !== '.arcapp') throw new CliError(`not an application configuration (expected .arcapp): ${appArg}`);
+    const appFile = appFileArg(appArg, io.cwd);
     const platform = choosePlatform(await appPlatforms(appFile), options.platform, appArg);
     const outDir = path.resolve(io.cwd, options.out ?? path.join(path.dirname(appFile), 'generated'));
     const platformDir = path.join(outDir, platform);
