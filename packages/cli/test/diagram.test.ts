@@ -259,9 +259,12 @@ describe('maa-gen diagram: PNG and errors', () => {
 });
 
 describe("the SVG writer's stylesheet", () => {
-    it("is the SVG section of the IDE's diagram.css", () => {
-        const css = readFileSync(path.join(REPO, 'packages/ide-web/src/diagram/diagram.css'), 'utf8');
-        const section = css.slice(css.indexOf('/* ---- SVG ---- */')).trimEnd();
-        expect(IDE_DIAGRAM_CSS.trimEnd()).toBe(section);
+    it('is the one diagram stylesheet, which the IDE imports (and does not copy)', () => {
+        const sheet = readFileSync(path.join(REPO, 'packages/language-server/styles/diagram-svg.css'), 'utf8');
+        expect(IDE_DIAGRAM_CSS.trimEnd()).toBe(sheet.slice(sheet.indexOf('/* ---- SVG ---- */')).trimEnd());
+        const ide = readFileSync(path.join(REPO, 'packages/ide-web/src/diagram/index.ts'), 'utf8');
+        expect(ide).toContain("import '@maa/language-server/diagram-svg.css';");
+        const ideCss = readFileSync(path.join(REPO, 'packages/ide-web/src/diagram/diagram.css'), 'utf8');
+        expect(ideCss).not.toContain('.maa-component-body');
     });
 });

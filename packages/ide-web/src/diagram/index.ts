@@ -15,6 +15,8 @@
 import 'reflect-metadata';
 import 'sprotty/css/sprotty.css';
 import './diagram.css';
+// The diagram's SVG rules: one stylesheet with the SVG that maa-gen diagram writes.
+import '@maa/language-server/diagram-svg.css';
 import type { DiagramHost } from '../contracts.js';
 import { MountedDiagram, type MaaDiagramView } from './mounted-diagram.js';
 
