@@ -4,6 +4,7 @@ import {
     GrammarAST,
     type LangiumCoreServices,
     type LangiumDocument,
+    type LinkingError,
     type ParseResult,
     type ValidationOptions,
 } from 'langium';
@@ -75,76 +76,70 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
         for (const reference of document.references) {
             const error = reference.error;
             if (!error) continue;
-            const { container, property } = error.info;
-            if (isFailedLinkingError(error)) {
-                const range = reference.$refNode?.range ?? container.$cstNode?.range;
-                if (range)
-                    diagnostics.push({
-                        severity: 1,
-                        range,
-                        message: error.message,
-                        code: Codes.InternalError,
-                        source: this.getSource(),
-                        data: { check: error.check },
-                    });
-                continue;
-            }
-            let code: string = Codes.LinkUnresolved;
-            let message = error.message;
-            const name = error.info.reference.$refText;
-            switch (`${container.$type}.${property}`) {
-                case 'PortAccess.port': {
-                    const pa = container as { subcomponent?: { ref?: unknown; error?: unknown } };
-                    if (pa.subcomponent && !pa.subcomponent.ref) continue; // reported on the subcomponent
-                    code = Codes.MissingPort;
-                    message = `Port '${name}' does not exist${pa.subcomponent ? ` in the type of subcomponent '${(pa.subcomponent as { $refText?: string }).$refText}'` : ''}.`;
-                    break;
-                }
-                case 'PortAccess.subcomponent':
-                    code = Codes.MissingSubcomponent;
-                    message = `Subcomponent '${name}' does not exist.`;
-                    break;
-                case 'ComponentTypeRef.ref':
-                    code = Codes.MissingComponentType;
-                    message = `Component type '${name}' cannot be resolved.`;
-                    break;
-                case 'ReferenceType.ref':
-                    code = Codes.UnresolvedType;
-                    message = `Type '${name}' cannot be resolved.`;
-                    break;
-                case 'NameExpression.ref': {
-                    const assign = container.$container;
-                    if (
-                        assign?.$type === 'AssignmentExpression' &&
-                        (assign as { left?: unknown }).left === container &&
-                        ['Subcomponent', 'ParentComponent'].includes(assign.$container?.$type ?? '')
-                    ) {
-                        code = Codes.UnknownArgumentKey;
-                        message = `'${name}' is not a parameter of the instantiated component type.`;
-                        break;
-                    }
-                    // Reported by the expression checks, which also resolve qualified names.
-                    continue;
-                }
-                default: {
-                    const contributed = this.linkCodes.get(`${container.$type}.${property}`);
-                    if (contributed) {
-                        code = contributed.code;
-                        message = contributed.message(name);
-                    }
-                    break;
-                }
-            }
+            const { container } = error.info;
             const range = reference.$refNode?.range ?? container.$cstNode?.range;
             if (!range) continue;
+            if (isFailedLinkingError(error)) {
+                diagnostics.push({
+                    severity: 1,
+                    range,
+                    message: error.message,
+                    code: Codes.InternalError,
+                    source: this.getSource(),
+                    data: { check: error.check },
+                });
+                continue;
+            }
+            const found = this.unresolvedReference(error);
+            if (!found) continue;
             diagnostics.push({
                 severity: 1,
                 range,
-                message,
-                code,
+                message: found.message,
+                code: found.code,
                 source: this.getSource(),
                 data: { code: DocumentValidator.LinkingError },
             });
+        }
+    }
+
+    /**
+     * The code and message of an unresolved reference, by where it occurs (the family's own
+     * places, then those a behavior language contributed); undefined when another check reports it.
+     */
+    private unresolvedReference(error: LinkingError): { code: string; message: string } | undefined {
+        const { container, property } = error.info;
+        const name = error.info.reference.$refText;
+        switch (`${container.$type}.${property}`) {
+            case 'PortAccess.port': {
+                const pa = container as { subcomponent?: { ref?: unknown; error?: unknown } };
+                if (pa.subcomponent && !pa.subcomponent.ref) return undefined; // reported on the subcomponent
+                const where = pa.subcomponent
+                    ? ` in the type of subcomponent '${(pa.subcomponent as { $refText?: string }).$refText}'`
+                    : '';
+                return { code: Codes.MissingPort, message: `Port '${name}' does not exist${where}.` };
+            }
+            case 'PortAccess.subcomponent':
+                return { code: Codes.MissingSubcomponent, message: `Subcomponent '${name}' does not exist.` };
+            case 'ComponentTypeRef.ref':
+                return { code: Codes.MissingComponentType, message: `Component type '${name}' cannot be resolved.` };
+            case 'ReferenceType.ref':
+                return { code: Codes.UnresolvedType, message: `Type '${name}' cannot be resolved.` };
+            case 'NameExpression.ref': {
+                const assign = container.$container;
+                const isArgumentKey =
+                    assign?.$type === 'AssignmentExpression' &&
+                    (assign as { left?: unknown }).left === container &&
+                    ['Subcomponent', 'ParentComponent'].includes(assign.$container?.$type ?? '');
+                // Other names are reported by the expression checks, which also resolve qualified names.
+                if (!isArgumentKey) return undefined;
+                return { code: Codes.UnknownArgumentKey, message: `'${name}' is not a parameter of the instantiated component type.` };
+            }
+            default: {
+                const contributed = this.linkCodes.get(`${container.$type}.${property}`);
+                if (contributed) return { code: contributed.code, message: contributed.message(name) };
+                return { code: Codes.LinkUnresolved, message: error.message };
+            }
         }
     }
 }
