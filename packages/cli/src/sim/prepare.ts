@@ -1,4 +1,4 @@
-import { type Dirent, readdirSync, readFileSync, statSync, utimesSync } from 'node:fs';
+import { readFileSync, statSync, utimesSync } from 'node:fs';
 import path from 'node:path';
 import type { appAst } from '@maa/generator-core';
 import { TRACE_FILE_NAME } from '@maa/protocol/formats';
@@ -6,7 +6,8 @@ import { findSimPackage, type SimPackageMode } from '@maa/protocol/sim-package';
 import { runGenerate } from '../commands/generate.js';
 import { CliError, ExitCode } from '../errors.js';
 import type { CliIo } from '../io.js';
-import { appFileArg, isModelFile, modelRootOfApp } from '../roots.js';
+import { appFileArg, modelRootOfApp } from '../roots.js';
+import { listModelFiles } from '../summary.js';
 
 /** What `maa-gen sim` runs: the generated package of one platform and its mode. */
 export interface SimTarget {
@@ -52,36 +53,20 @@ export function choosePlatform(platforms: readonly string[], requested: string |
     return platforms[0]!;
 }
 
-/** The newest modification time (ms) of the model files below a folder (hidden folders and node_modules skipped). */
-function newestModelTime(dir: string, skip: string): number {
-    let newest = 0;
-    let entries: Dirent[];
-    try {
-        entries = readdirSync(dir, { withFileTypes: true });
-    } catch {
-        return 0;
-    }
-    for (const e of entries) {
-        const file = path.join(dir, e.name);
-        if (e.isDirectory()) {
-            if (!e.name.startsWith('.') && e.name !== 'node_modules' && file !== skip)
-                newest = Math.max(newest, newestModelTime(file, skip));
-        } else if (e.isFile() && isModelFile(file)) {
-            newest = Math.max(newest, statSync(file).mtimeMs);
-        }
-    }
-    return newest;
+/** The newest modification time (ms) of the model files below a folder (the files `maa-gen check` reads). */
+function newestModelTime(dir: string): number {
+    return listModelFiles(dir).reduce((newest, file) => Math.max(newest, statSync(file).mtimeMs), 0);
 }
 
 /** Whether a platform's output is missing or older than a model file of its root (or the configuration). */
-export function isStale(platformDir: string, modelRoot: string, appFile: string, outDir: string): boolean {
+export function isStale(platformDir: string, modelRoot: string, appFile: string): boolean {
     let generated: number;
     try {
         generated = statSync(path.join(platformDir, TRACE_FILE_NAME)).mtimeMs;
     } catch {
         return true;
     }
-    return Math.max(newestModelTime(modelRoot, outDir), statSync(appFile).mtimeMs) > generated;
+    return Math.max(newestModelTime(modelRoot), statSync(appFile).mtimeMs) > generated;
 }
 
 /**
@@ -114,7 +99,7 @@ export async function prepareTarget(appArg: string, options: PrepareOptions, io:
     const outDir = path.resolve(io.cwd, options.out ?? path.join(path.dirname(appFile), 'generated'));
     const platformDir = path.join(outDir, platform);
     const modelRoot = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
-    if (isStale(platformDir, modelRoot, appFile, outDir)) {
+    if (isStale(platformDir, modelRoot, appFile)) {
         io.err(`maa-gen: generating ${platform} (its output is missing or older than the models)\n`);
         const code = await runGenerate(
             appArg,
