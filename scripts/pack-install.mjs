@@ -263,6 +263,10 @@ async function packAndInstall(ctx) {
         });
         expect(problems.length === 0, `bin/exports name files the tarballs lack: ${problems.join('; ')}`);
     });
+    await step('every tarball holds the LICENSE', async () => {
+        const without = ctx.packed.filter((t) => !t.files.includes('LICENSE')).map((t) => t.name);
+        expect(without.length === 0, `tarballs without LICENSE: ${without.join(', ')}`);
+    });
     await fatal('npm install of the tarballs into an empty folder', async () => {
         writeFileSync(path.join(ctx.project, 'package.json'), `${JSON.stringify({ name: 'maa-install-test', private: true }, null, 2)}\n`);
         const started = Date.now();

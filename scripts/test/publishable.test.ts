@@ -90,6 +90,16 @@ describe('the public packages', () => {
         }
     });
 
+    it("carry the repository's license: the field, and a prepack that puts LICENSE into the tarball", () => {
+        const license = readFileSync(path.join(repo, 'LICENSE'), 'utf8');
+        expect(license.split('\n')[0]).toBe('MIT License');
+        for (const w of published) {
+            expect(w.json['license'], w.json.name).toBe('MIT');
+            const prepack = (w.json['scripts'] as Record<string, string> | undefined)?.['prepack'];
+            expect(prepack, `${w.json.name} has no prepack`).toBe(`node ${path.relative(path.join(repo, w.dir), path.join(repo, 'scripts/release/copy-license.mjs'))}`);
+        }
+    });
+
     it('depend on workspace packages that are public, at exactly their version', () => {
         for (const w of published) {
             for (const [dep, range] of Object.entries(w.json.dependencies ?? {})) {
