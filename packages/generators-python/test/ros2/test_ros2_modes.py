@@ -64,8 +64,16 @@ class Probe:
         )
         for name, topic in modes.items():
             self.node.create_subscription(String, topic, self._recorder(name), latched)
-        # the IDE's live states: every entry as the event "state <node path>"
-        self.node.create_subscription(String, "/maa/automaton_states", self._states, latched)
+        # the IDE's live states: every entry as the event "state <node path>". Every node latches its
+        # own message on this one topic, so a late reader receives one per node at once: a reader
+        # depth of 1 would keep only the last of them (as the simulator's reader, keep 10).
+        states = QoSProfile(
+            history=HistoryPolicy.KEEP_LAST,
+            depth=10,
+            reliability=ReliabilityPolicy.RELIABLE,
+            durability=DurabilityPolicy.TRANSIENT_LOCAL,
+        )
+        self.node.create_subscription(String, "/maa/automaton_states", self._states, states)
         self.running = True
         self.thread = threading.Thread(target=self._loop, daemon=True)
         self.thread.start()
