@@ -16,9 +16,11 @@ export interface TestCommandOptions {
     root?: string;
     python?: string;
     format: 'text' | 'json';
+    /** Only the tests of these names (`--case`, repeatable); every test when empty or absent. */
+    case?: string[];
 }
 
-interface StreamTestResult {
+export interface StreamTestResult {
     file: string;
     test: string | null;
     line: number;
@@ -64,7 +66,7 @@ export async function runTest(appArg: string, files: string[], options: TestComm
             if (json) io.out(`${JSON.stringify({ results: [], summary: { passed: 0, failed: 0 } }, null, 2)}\n`);
             return ExitCode.ok;
         }
-        const results = runStreamTests(path.join(outDir, options.platform), streamFiles, options, io);
+        const results = selectCases(runStreamTests(path.join(outDir, options.platform), streamFiles, options, io), options.case);
         const failed = results.filter((r) => !r.passed).length;
         if (json) reportJson(results, io);
         else reportText(results, io);
@@ -111,6 +113,22 @@ function runStreamTests(build: string, streamFiles: readonly string[], options: 
     }
 }
 
+/**
+ * The results of the tests `--case` names (all when it names none). A file-level result (a file
+ * that does not parse or names no component of the application: `test` null) stays, since its
+ * cases did not run; a name no file has a test of is a usage problem.
+ */
+export function selectCases(results: readonly StreamTestResult[], cases: readonly string[] | undefined): StreamTestResult[] {
+    if (!cases || cases.length === 0) return [...results];
+    const wanted = new Set(cases);
+    const missing = cases.filter((c) => !results.some((r) => r.test === c));
+    const fileErrors = new Set(results.filter((r) => r.test === null).map((r) => r.file));
+    if (missing.length > 0 && fileErrors.size === 0) {
+        throw new CliError(`no stream test named ${missing.map((c) => JSON.stringify(c)).join(', ')} in the files run`);
+    }
+    return results.filter((r) => r.test === null || wanted.has(r.test));
+}
+
 function reportJson(results: readonly StreamTestResult[], io: CliIo): void {
     const passed = results.filter((r) => r.passed).length;
     const summary = { passed, failed: results.length - passed };
@@ -136,6 +154,11 @@ export function testCommand(io: CliIo, setExitCode: (code: ExitCode) => void): C
         .option('-r, --root <dir>', 'model root (default: the nearest folder above the .arcapp with a maa.json, else its folder)')
         .option('--python <interpreter>', 'Python 3.11+ to run the build (default: $MAA_PYTHON or python3)')
         .addOption(new Option('-f, --format <format>', 'output format').choices(['text', 'json']).default('text'))
+        .option(
+            '-c, --case <name>',
+            'report only the test of this name (repeatable; default: every test of the files)',
+            (name: string, previous: string[] = []) => [...previous, name],
+        )
         .addHelpText(
             'after',
             `
@@ -152,7 +175,8 @@ Exit codes:
 
 Examples:
   maa-gen test examples/toast-service/TR.arcapp
-  maa-gen test TR.arcapp toast/Controller.stream --format json`,
+  maa-gen test TR.arcapp toast/Controller.stream --format json
+  maa-gen test TR.arcapp toast/Controller.stream --case "a plate starts loading the bread"`,
         )
         .action(async (app: string, files: string[], options: TestCommandOptions) => {
             setExitCode(await runTest(app, files, options, io));
