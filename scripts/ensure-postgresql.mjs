@@ -4,10 +4,10 @@
 // test/postgres-cluster.ts). Installs Debian's `postgresql` with apt-get when missing (needs root);
 // prints the folder of the programs. Usage: node scripts/ensure-postgresql.mjs
 // MAA_POSTGRES_BIN names another folder with initdb and pg_ctl.
-import { spawnSync } from 'node:child_process';
 import { existsSync, readdirSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { aptInstall } from './apt-install.mjs';
 
 const DEBIAN_ROOT = '/usr/lib/postgresql';
 
@@ -27,30 +27,14 @@ export function findPostgresBin() {
 export function ensurePostgresql({ quiet = false } = {}) {
     const found = findPostgresBin();
     if (found) return found;
-    const isRoot = typeof process.getuid === 'function' && process.getuid() === 0;
-    if (!isRoot) {
-        throw new Error(
-            'PostgreSQL (initdb, pg_ctl) is missing and this process is not root, so it cannot install it.\n' +
-                "Install Debian's PostgreSQL yourself: sudo apt-get install -y postgresql (or set MAA_POSTGRES_BIN to a folder with initdb and pg_ctl).",
-        );
-    }
-    if (!quiet) console.log("ensure-postgresql: initdb and pg_ctl are missing; installing Debian's postgresql with apt-get…");
-    const env = { ...process.env, DEBIAN_FRONTEND: 'noninteractive' };
-    const stdio = quiet ? 'ignore' : 'inherit';
-    const install = () => spawnSync('apt-get', ['install', '-y', '--no-install-recommends', 'postgresql'], { stdio, env });
-    let result = install();
-    if (result.status !== 0) {
-        // The package lists may be missing on a fresh machine.
-        spawnSync('apt-get', ['update'], { stdio, env });
-        result = install();
-    }
-    if (result.error) throw new Error(`ensure-postgresql: could not run apt-get: ${result.error.message}`);
+    aptInstall('postgresql', {
+        tool: 'ensure-postgresql',
+        missing: 'PostgreSQL (initdb, pg_ctl) is missing',
+        hint: "Install Debian's PostgreSQL yourself: sudo apt-get install -y postgresql (or set MAA_POSTGRES_BIN to a folder with initdb and pg_ctl).",
+        quiet,
+    });
     const bin = findPostgresBin();
-    if (result.status !== 0 || !bin) {
-        throw new Error(
-            `ensure-postgresql: apt-get install postgresql failed (exit ${result.status}); initdb and pg_ctl are still missing`,
-        );
-    }
+    if (!bin) throw new Error('ensure-postgresql: apt-get installed postgresql, but initdb and pg_ctl are still missing');
     return bin;
 }
 
