@@ -16,6 +16,8 @@ export const repoDir = path.resolve(packageDir, '../..');
 export const SCHEMA_FILES = {
     'trace-file': protocol.TraceFile,
     deployment: protocol.Deployment,
+    exercise: protocol.ExerciseManifest,
+    'released-exercise': protocol.ReleasedExercise,
     'topic-map': protocol.TopicMapAnswer,
     lockstep: protocol.Lockstep,
     'step-outputs': protocol.StepOutputs,

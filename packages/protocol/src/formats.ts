@@ -16,3 +16,8 @@ export const DEPLOYMENT_FORMAT = 'maa-deployment/1';
 export const LOCKSTEP_FILE_NAME = 'lockstep.json';
 /** `lockstep.json`'s `format` (lockstep/schema.ts). */
 export const LOCKSTEP_FORMAT = 'maa-lockstep/1';
+
+/** A lab exercise's description file in its folder (examples/lab/<name>/exercise.json). */
+export const EXERCISE_FILE_NAME = 'exercise.json';
+/** `exercise.json`'s `format` (exercise/schema.ts). */
+export const EXERCISE_FORMAT = 'maa-exercise/1';

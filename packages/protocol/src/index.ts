@@ -12,3 +12,4 @@ export * from './http/index.js';
 export * from './topics/index.js';
 export * from './lockstep/index.js';
 export * from './simulator/index.js';
+export * from './exercise/index.js';

@@ -1,0 +1,51 @@
+import { contract, type ContractIssue } from '../contract.js';
+import { ExerciseManifest, ReleasedExercise } from './schema.js';
+
+export * from './schema.js';
+
+/** Checks a parsed `exercise.json` (the schema; {@link exerciseIssues} adds the rules between fields). */
+export const exerciseManifestContract = contract('exercise.json', ExerciseManifest);
+/** Checks a released exercise (what the lab server stores and serves). */
+export const releasedExerciseContract = contract('released exercise', ReleasedExercise);
+
+/** Whether the starter path is one the student may not edit (`readOnly`: a path, or a folder ending in `/`). */
+export function isReadOnly(exercise: { readOnly: readonly string[] }, path: string): boolean {
+    return exercise.readOnly.some((entry) => (entry.endsWith('/') ? path.startsWith(entry) : path === entry));
+}
+
+/**
+ * Every issue of a parsed `exercise.json`, each with the JSON pointer of the field: the schema's,
+ * then, when the starter's files are given (relative paths), that the app and every visible test
+ * is one of them and every `readOnly` entry names one (a folder entry: a file below it).
+ */
+export function exerciseIssues(value: unknown, starterFiles?: readonly string[]): ContractIssue[] {
+    const issues = exerciseManifestContract.issues(value);
+    if (issues.length > 0 || !starterFiles) return dedupe(issues);
+    const manifest = value as ExerciseManifest;
+    const files = new Set(starterFiles);
+    const folder = manifest.starter ?? 'starter';
+    const out: ContractIssue[] = [];
+    if (!files.has(manifest.app)) out.push({ pointer: '/app', message: `${folder}/${manifest.app} does not exist` });
+    manifest.tests.forEach((test, i) => {
+        if (!files.has(test)) out.push({ pointer: `/tests/${i}`, message: `${folder}/${test} does not exist` });
+    });
+    manifest.readOnly.forEach((entry, i) => {
+        if (!starterFiles.some((f) => isReadOnly({ readOnly: [entry] }, f)))
+            out.push({
+                pointer: `/readOnly/${i}`,
+                message: `${folder}/${entry} ${entry.endsWith('/') ? 'holds no file' : 'does not exist'}`,
+            });
+    });
+    return out;
+}
+
+/** TypeBox reports a union or a pattern failure once per sub-schema: one issue per pointer and message. */
+function dedupe(issues: readonly ContractIssue[]): ContractIssue[] {
+    const seen = new Set<string>();
+    return issues.filter((i) => {
+        const key = `${i.pointer}\u0000${i.message}`;
+        if (seen.has(key)) return false;
+        seen.add(key);
+        return true;
+    });
+}
