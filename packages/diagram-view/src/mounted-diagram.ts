@@ -12,7 +12,7 @@ import {
     type ExportSvgAction,
 } from 'sprotty-protocol';
 import type { IActionDispatcher } from 'sprotty';
-import type { DiagramHost, DiagramTarget, DiagramView, Disposable, TextPosition } from '../contracts.js';
+import type { DiagramHost, DiagramTarget, DiagramView, Disposable, TextPosition } from './contracts.js';
 import { Camera } from './camera.js';
 import { ClearHiddenCommand, RedrawCommand } from './commands.js';
 import { featuresOption, graphFeatureInfo, type FeatureSelection } from './configuration.js';
@@ -278,7 +278,10 @@ export class MountedDiagram implements MaaDiagramView {
 
     private async downloadSvg(): Promise<void> {
         try {
-            downloadText(await this.exportSvg(), svgFileName(this.schema?.['component'] as string | undefined, this.current));
+            const svg = await this.exportSvg();
+            const fileName = svgFileName(this.schema?.['component'] as string | undefined, this.current);
+            if (this.host.saveSvg) this.host.saveSvg(svg, fileName);
+            else downloadText(svg, fileName);
         } catch (e) {
             console.warn('diagram export:', e);
         }

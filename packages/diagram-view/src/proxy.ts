@@ -7,7 +7,7 @@
 import { decorate, injectable } from 'inversify';
 import { DiagramServerProxy } from 'sprotty';
 import type { Action, ActionMessage } from 'sprotty-protocol';
-import type { DiagramHost, Disposable } from '../contracts.js';
+import type { DiagramHost, Disposable } from './contracts.js';
 import { normalizeSchemaTypes, type SchemaElement } from './schema.js';
 
 /** Called with each new model (`kind`: `setModel` or `updateModel`). */

@@ -5,7 +5,7 @@
  */
 import type { IActionHandler } from 'sprotty';
 import { SelectAction, type Action } from 'sprotty-protocol';
-import type { TextPosition } from '../contracts.js';
+import type { TextPosition } from './contracts.js';
 import { walkSchema, type SchemaElement } from './schema.js';
 import { findInnermostElement, type TracedElement } from './trace.js';
 

@@ -1,5 +1,5 @@
 /** The diagram as a standalone SVG document, and its download. */
-import type { DiagramTarget } from '../contracts.js';
+import type { DiagramTarget } from './contracts.js';
 
 /** Sprotty's exported SVG as a document of its own: the SVG namespace and an XML declaration. */
 export function standaloneSvg(svg: string): string {

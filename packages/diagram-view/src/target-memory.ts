@@ -2,7 +2,7 @@
  * What the diagram remembers per target (diagram type, file, component): the expanded
  * subcomponents and the feature selection of a variable component. Pure.
  */
-import type { DiagramTarget } from '../contracts.js';
+import type { DiagramTarget } from './contracts.js';
 import { ALL_VARIATION_POINTS, type FeatureSelection } from './configuration.js';
 
 export function targetKey(t: DiagramTarget): string {

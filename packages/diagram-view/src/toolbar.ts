@@ -2,7 +2,7 @@
  * The diagram's tool bar: Fit, zoom, SVG export, the switch between a component's architecture
  * and its automaton (or mode automaton), and the title.
  */
-import type { DiagramTarget } from '../contracts.js';
+import type { DiagramTarget } from './contracts.js';
 import { shownComponentNode, type SchemaElement } from './schema.js';
 
 function button(label: string, title: string, testid: string, onClick: () => void): HTMLButtonElement {

@@ -4,7 +4,7 @@
  * (`?3%3A2-10%3A4`) and the fragment; both spellings are accepted. Lines and columns are
  * 0-based (LSP positions). Pure functions, no DOM.
  */
-import type { TextPosition, TextRange } from '../contracts.js';
+import type { TextPosition, TextRange } from './contracts.js';
 
 export interface ParsedTrace {
     /** The document URI, normalized (see {@link normalizeUri}). */

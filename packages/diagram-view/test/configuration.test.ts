@@ -9,7 +9,7 @@ import {
     featuresOption,
     graphFeatureInfo,
     showAll,
-} from '../src/diagram/configuration.js';
+} from '../src/configuration.js';
 
 describe('graphFeatureInfo', () => {
     it('reads the features, the shown configuration and a rejection', () => {

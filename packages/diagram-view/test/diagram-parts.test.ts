@@ -1,12 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { SelectAction, type Action } from 'sprotty-protocol';
 import type { DiagramTarget } from '../src/contracts.js';
-import { ALL_VARIATION_POINTS } from '../src/diagram/configuration.js';
-import { LiveLayer } from '../src/diagram/live-layer.js';
-import type { SchemaElement } from '../src/diagram/schema.js';
-import { elementAt, selectionHandler, tracesOf } from '../src/diagram/selection.js';
-import { standaloneSvg, svgFileName } from '../src/diagram/svg-export.js';
-import { TargetMemory, targetKey } from '../src/diagram/target-memory.js';
+import { ALL_VARIATION_POINTS } from '../src/configuration.js';
+import { LiveLayer } from '../src/live-layer.js';
+import type { SchemaElement } from '../src/schema.js';
+import { elementAt, selectionHandler, tracesOf } from '../src/selection.js';
+import { standaloneSvg, svgFileName } from '../src/svg-export.js';
+import { TargetMemory, targetKey } from '../src/target-memory.js';
 
 const URI = 'file:///workspace/toast/ToastServiceRobot.arc';
 

@@ -16,7 +16,7 @@ import {
     visibleArea,
     walkSchema,
     type SchemaElement,
-} from '../src/diagram/schema.js';
+} from '../src/schema.js';
 
 function model(): SchemaElement {
     return {

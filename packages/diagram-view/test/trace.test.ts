@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { findInnermostElement, normalizeUri, parseTrace, rangeContains } from '../src/diagram/trace.js';
+import { findInnermostElement, normalizeUri, parseTrace, rangeContains } from '../src/trace.js';
 
 describe('parseTrace', () => {
     it('parses the encoded form langium-sprotty writes', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { fitViewport, unionBounds } from '../src/diagram/viewport.js';
+import { fitViewport, unionBounds } from '../src/viewport.js';
 
 const canvas = { width: 600, height: 400 };
 const options = { padding: 20, maxZoom: 1.5, minZoom: 0.02 };

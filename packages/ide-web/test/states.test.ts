@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { modeActivity } from '../src/diagram/schema.js';
+import { modeActivity } from '@maa/diagram-view/schema';
 import { parseAutomatonStates } from '../src/simulate/states.js';
 
 /** A node → instance lookup as the backend's topic map gives it (port-map.ts). */

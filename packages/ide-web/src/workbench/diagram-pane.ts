@@ -7,7 +7,7 @@ import type { MonacoLanguageClient } from 'monaco-languageclient';
 import type { ActionMessage } from 'sprotty-protocol';
 import { uriOf, WORKSPACE_URI } from '../api.js';
 import type { DiagramHost, DiagramView, Disposable, TextPosition, TextRange } from '../contracts.js';
-import { parseTrace } from '../diagram/trace.js';
+import { parseTrace } from '@maa/diagram-view/trace';
 import { byId } from './dom.js';
 import type { EditorArea } from './editors.js';
 import { hooks } from './hooks.js';
@@ -48,7 +48,7 @@ function traceTarget(trace: string): { path: string; range: TextRange } | undefi
 
 async function mountDiagramView(client: MonacoLanguageClient, area: EditorArea): Promise<DiagramView> {
     const container = byId('diagram-container');
-    const { mountDiagram } = await import('../diagram/index.js');
+    const { mountDiagram } = await import('@maa/diagram-view');
     const host: DiagramHost = {
         sendDiagramMessage: (message: ActionMessage) => void client.sendNotification('diagram/accept', message),
         onDiagramMessage: (handler) => {
