@@ -11,6 +11,7 @@ import { createRequire } from 'node:module';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { build } from 'esbuild';
+import { bundleWeb } from './web.mjs';
 
 const pkgDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const repo = path.resolve(pkgDir, '..', '..');
@@ -27,6 +28,8 @@ const IDENTITY = {
     categories: ['Programming Languages', 'Snippets'],
     engines: { vscode: '^1.82.0' },
     main: './out/extension.cjs',
+    // The web extension (VS Code for the Web, the browser IDE's workbench): bin/web.mjs.
+    browser: './out/web/extension.js',
 };
 
 /** The language server's Node entry; a clear message when @maa/language-server is not built yet. */
@@ -56,6 +59,7 @@ async function bundle() {
         // CommonJS dependencies of the server call require(); an ES module has none of its own.
         banner: { js: "import { createRequire as __maaCreateRequire } from 'node:module'; const require = __maaCreateRequire(import.meta.url);" },
     });
+    await bundleWeb(outDir);
 }
 
 /** Loads src/contributions.ts (TypeScript) by bundling it to a temporary ES module. */

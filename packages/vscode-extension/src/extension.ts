@@ -10,8 +10,9 @@ import path from 'node:path';
 import type { TraceFile } from '@maa/protocol';
 import * as vscode from 'vscode';
 import { LanguageClient, type LanguageClientOptions, type ServerOptions, TransportKind } from 'vscode-languageclient/node.js';
-import { type GenerateReport, parseGenerateReport, summaryMessage } from './generate-report.js';
-import { type PlatformItem, platformItems } from './platforms.js';
+import { generate } from './generate-command.js';
+import { type GenerateReport, parseGenerateReport } from './generate-report.js';
+import type { GenerateRequest, GenerateRunner } from './generate-runner.js';
 import {
     type ContributedLanguage,
     generateArgs,
@@ -21,6 +22,7 @@ import {
     serverStart,
     watchedFiles,
 } from './settings.js';
+import { registerDesktopStreamTests } from './testing/desktop.js';
 import { generatedCodeAt, modelElementAt, platformDirOf } from './trace.js';
 
 /** The file languages of the family, from the manifest (generated from the language facts). */
@@ -62,43 +64,31 @@ export function activate(context: vscode.ExtensionContext): void {
     const generated = vscode.languages.createDiagnosticCollection('maa-generate');
     context.subscriptions.push(
         generated,
-        vscode.commands.registerCommand('maa.generate', () => generate(generated)),
+        vscode.commands.registerCommand('maa.generate', () => generate(cliRunner, generated)),
         vscode.commands.registerCommand('maa.showGeneratedCode', showGeneratedCode),
         vscode.commands.registerCommand('maa.showModelElement', showModelElement),
     );
+    context.subscriptions.push(...registerDesktopStreamTests());
 }
 
 export function deactivate(): Thenable<void> | undefined {
     return client?.stop();
 }
 
-/** The platforms of the workspace's `.arcapp` files as quick pick items. */
-async function pickPlatform(): Promise<PlatformItem | undefined> {
-    const uris = await vscode.workspace.findFiles('**/*.arcapp', '**/{node_modules,.git,out}/**');
-    const files = await Promise.all(
-        uris.map(async (uri) => ({
-            file: uri.fsPath,
-            displayPath: vscode.workspace.asRelativePath(uri),
-            text: new TextDecoder().decode(await vscode.workspace.fs.readFile(uri)),
-        })),
-    );
-    const items = platformItems(files);
-    if (items.length === 0) {
-        void vscode.window.showWarningMessage('MontiArc: no application configuration (.arcapp) with a platform in the workspace.');
-        return undefined;
-    }
-    return vscode.window.showQuickPick(items, { placeHolder: 'Generate which platform?', matchOnDescription: true });
-}
+/** The desktop's GenerateRunner: `maa-gen generate … --format json` and its parsed report. */
+const cliRunner: GenerateRunner = {
+    run: (request, signal) => runCli(request, settings(), signal),
+};
 
 /** Runs `maa-gen generate … --format json` and parses its report. */
-function runCli(item: PlatformItem, s: MaaSettings, token: vscode.CancellationToken): Promise<GenerateReport> {
+function runCli(request: GenerateRequest, s: MaaSettings, signal: AbortSignal): Promise<GenerateReport> {
     const folders = (vscode.workspace.workspaceFolders ?? []).map((f) => f.uri.fsPath);
     const command = generateCommand(s, folders, existsSync);
     return new Promise((resolve, reject) => {
         const child = execFile(
             command,
-            generateArgs(item.appFile, item.platform, s),
-            { cwd: path.dirname(item.appFile), maxBuffer: 64 * 1024 * 1024, shell: process.platform === 'win32' },
+            generateArgs(request.appFile, request.platform, s),
+            { cwd: path.dirname(request.appFile), maxBuffer: 64 * 1024 * 1024, shell: process.platform === 'win32' },
             (error, stdout, stderr) => {
                 try {
                     resolve(parseGenerateReport(stdout, stderr));
@@ -107,59 +97,8 @@ function runCli(item: PlatformItem, s: MaaSettings, token: vscode.CancellationTo
                 }
             },
         );
-        token.onCancellationRequested(() => child.kill());
+        signal.addEventListener('abort', () => child.kill());
     });
-}
-
-function toDiagnostics(report: GenerateReport, collection: vscode.DiagnosticCollection): void {
-    const severity = {
-        error: vscode.DiagnosticSeverity.Error,
-        warning: vscode.DiagnosticSeverity.Warning,
-        info: vscode.DiagnosticSeverity.Information,
-        hint: vscode.DiagnosticSeverity.Hint,
-    };
-    collection.clear();
-    for (const [file, list] of report.byFile) {
-        collection.set(
-            vscode.Uri.file(file),
-            list.map((d) => {
-                const range = new vscode.Range(d.line - 1, d.column - 1, d.endLine - 1, d.endColumn - 1);
-                const diagnostic = new vscode.Diagnostic(range, d.message, severity[d.severity]);
-                diagnostic.code = d.code;
-                diagnostic.source = 'maa-gen';
-                return diagnostic;
-            }),
-        );
-    }
-}
-
-/** **MontiArc: Generate**: platform quick pick, generation with a progress notification, errors as diagnostics. */
-async function generate(collection: vscode.DiagnosticCollection): Promise<void> {
-    if (!vscode.workspace.isTrusted) {
-        void vscode.window.showWarningMessage(
-            'MontiArc: Generate runs maa-gen and is available in trusted workspaces only (Workspaces: Manage Workspace Trust).',
-        );
-        return;
-    }
-    const item = await pickPlatform();
-    if (!item) return;
-    const s = settings();
-    try {
-        const report = await vscode.window.withProgress(
-            {
-                location: vscode.ProgressLocation.Notification,
-                title: `MontiArc: generating ${item.application} for ${item.platform}`,
-                cancellable: true,
-            },
-            (_progress, token) => runCli(item, s, token),
-        );
-        toDiagnostics(report, collection);
-        const message = summaryMessage(item.platform, report);
-        if (report.ok) void vscode.window.showInformationMessage(message);
-        else void vscode.window.showErrorMessage(message);
-    } catch (e) {
-        void vscode.window.showErrorMessage(`MontiArc: ${e instanceof Error ? e.message : String(e)}`);
-    }
 }
 
 /** Every trace file of the workspace with its platform folder. */

@@ -48,6 +48,7 @@ interface Manifest {
     name: string;
     publisher: string;
     main: string;
+    browser: string;
     engines: { vscode: string };
     activationEvents: string[];
     capabilities: { untrustedWorkspaces: { supported: string; restrictedConfigurations: string[] } };
@@ -106,6 +107,9 @@ describe('the .vsix', () => {
             ...c.grammars.map((g) => g.path),
             ...c.snippets.map((s) => s.path),
             'out/server/main.mjs',
+            // The web entry and its language server worker (bin/web.mjs).
+            manifest.browser,
+            'out/web/server.js',
         ];
         for (const f of files) expect(existsSync(path.join(ext, f)), f).toBe(true);
         for (const g of c.grammars) {
@@ -113,6 +117,8 @@ describe('the .vsix', () => {
             expect(grammar.scopeName).toBe(g.scopeName);
         }
         expect(readFileSync(path.join(ext, manifest.main), 'utf8')).toContain('require("vscode")');
+        expect(manifest.browser).toBe('./out/web/extension.js');
+        expect(readFileSync(path.join(ext, manifest.browser), 'utf8')).toContain('require("vscode")');
     });
 });
 

@@ -1,0 +1,86 @@
+/**
+ * **MontiArc: Generate** in either host: the platform quick pick from the workspace's `.arcapp`
+ * files, the run with a progress notification, the report's diagnostics in a collection and a
+ * summary message. What runs the generation is the host's GenerateRunner (generate-runner.ts).
+ * Uses only `vscode` (no Node built-ins), so the desktop and the web entry share it.
+ */
+import * as vscode from 'vscode';
+import type { GenerateReport } from './generate-report.js';
+import { summaryMessage } from './generate-report.js';
+import type { GenerateRunner } from './generate-runner.js';
+import { type PlatformItem, platformItems } from './platforms.js';
+
+/** The platforms of the workspace's `.arcapp` files as quick pick items. */
+async function pickPlatform(): Promise<PlatformItem | undefined> {
+    const uris = await vscode.workspace.findFiles('**/*.arcapp', '**/{node_modules,.git,out}/**');
+    const files = await Promise.all(
+        uris.map(async (uri) => ({
+            file: uri.fsPath,
+            displayPath: vscode.workspace.asRelativePath(uri),
+            text: new TextDecoder().decode(await vscode.workspace.fs.readFile(uri)),
+        })),
+    );
+    const items = platformItems(files);
+    if (items.length === 0) {
+        void vscode.window.showWarningMessage('MontiArc: no application configuration (.arcapp) with a platform in the workspace.');
+        return undefined;
+    }
+    return vscode.window.showQuickPick(items, { placeHolder: 'Generate which platform?', matchOnDescription: true });
+}
+
+export function toDiagnostics(report: GenerateReport, collection: vscode.DiagnosticCollection): void {
+    const severity = {
+        error: vscode.DiagnosticSeverity.Error,
+        warning: vscode.DiagnosticSeverity.Warning,
+        info: vscode.DiagnosticSeverity.Information,
+        hint: vscode.DiagnosticSeverity.Hint,
+    };
+    collection.clear();
+    for (const [file, list] of report.byFile) {
+        collection.set(
+            vscode.Uri.file(file),
+            list.map((d) => {
+                const range = new vscode.Range(d.line - 1, d.column - 1, d.endLine - 1, d.endColumn - 1);
+                const diagnostic = new vscode.Diagnostic(range, d.message, severity[d.severity]);
+                diagnostic.code = d.code;
+                diagnostic.source = 'maa-gen';
+                return diagnostic;
+            }),
+        );
+    }
+}
+
+/** The runner under a cancellation token (the progress notification's Cancel aborts it). */
+function runCancellable(runner: GenerateRunner, item: PlatformItem, token: vscode.CancellationToken): Promise<GenerateReport> {
+    const abort = new AbortController();
+    const listener = token.onCancellationRequested(() => abort.abort());
+    return runner.run({ appFile: item.appFile, platform: item.platform }, abort.signal).finally(() => listener.dispose());
+}
+
+/** **MontiArc: Generate**: platform quick pick, generation with a progress notification, errors as diagnostics. */
+export async function generate(runner: GenerateRunner, collection: vscode.DiagnosticCollection): Promise<void> {
+    if (!vscode.workspace.isTrusted) {
+        void vscode.window.showWarningMessage(
+            'MontiArc: Generate runs maa-gen and is available in trusted workspaces only (Workspaces: Manage Workspace Trust).',
+        );
+        return;
+    }
+    const item = await pickPlatform();
+    if (!item) return;
+    try {
+        const report = await vscode.window.withProgress(
+            {
+                location: vscode.ProgressLocation.Notification,
+                title: `MontiArc: generating ${item.application} for ${item.platform}`,
+                cancellable: true,
+            },
+            (_progress, token) => runCancellable(runner, item, token),
+        );
+        toDiagnostics(report, collection);
+        const message = summaryMessage(item.platform, report);
+        if (report.ok) void vscode.window.showInformationMessage(message);
+        else void vscode.window.showErrorMessage(message);
+    } catch (e) {
+        void vscode.window.showErrorMessage(`MontiArc: ${e instanceof Error ? e.message : String(e)}`);
+    }
+}

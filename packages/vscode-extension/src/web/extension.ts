@@ -1,0 +1,72 @@
+/**
+ * The extension's web entry (the manifest's `browser`, bundled to CommonJS with `vscode`
+ * external): the family's language server in a Web Worker (`out/web/server.js`, the
+ * `@maa/language-server/browser` entry) over `vscode-languageclient/browser`, and **MontiArc:
+ * Generate** through the browser IDE backend's `POST /api/generate` instead of the CLI. The
+ * desktop entry is ../extension.ts; what both do is in the shared modules next to it.
+ */
+import * as vscode from 'vscode';
+import { LanguageClient, type LanguageClientOptions } from 'vscode-languageclient/browser.js';
+import { generate } from '../generate-command.js';
+import type { ContributedLanguage } from '../settings.js';
+import { backendBase, backendRunner } from './backend.js';
+import { startServerWorker } from './server-worker.js';
+
+/** The file languages of the family, from the manifest (generated from the language facts). */
+function modelLanguages(context: vscode.ExtensionContext): ContributedLanguage[] {
+    const manifest = context.extension.packageJSON as { contributes?: { languages?: ContributedLanguage[] } };
+    return manifest.contributes?.languages ?? [];
+}
+
+let client: LanguageClient | undefined;
+
+async function startClient(
+    context: vscode.ExtensionContext,
+    languages: readonly ContributedLanguage[],
+    apiBase: string,
+): Promise<LanguageClient> {
+    const worker = await startServerWorker(context.extensionUri);
+    const clientOptions: LanguageClientOptions = {
+        documentSelector: languages.map((l) => ({ language: l.id })),
+        // The server reads the workspace over the backend API at this base (docs/ide.md).
+        initializationOptions: { apiBase },
+    };
+    const c = new LanguageClient('maa', 'MontiArc Language Server', clientOptions, worker);
+    await c.start();
+    return c;
+}
+
+/** The workspace folder's path (`/workspace` in the browser IDE) and a file's path below it. */
+function workspacePaths(): { root: string; relative: (file: string) => string } {
+    const folder = vscode.workspace.workspaceFolders?.[0];
+    return {
+        root: folder?.uri.path ?? '/',
+        relative: (file) => vscode.workspace.asRelativePath(vscode.Uri.file(file), false),
+    };
+}
+
+export async function activate(context: vscode.ExtensionContext): Promise<void> {
+    const languages = modelLanguages(context);
+    void vscode.commands.executeCommand(
+        'setContext',
+        'maa.modelLanguages',
+        languages.map((l) => l.id),
+    );
+    const apiBase = backendBase();
+    const generated = vscode.languages.createDiagnosticCollection('maa-generate');
+    const { root, relative } = workspacePaths();
+    const runner = backendRunner(apiBase, root, relative);
+    context.subscriptions.push(
+        generated,
+        vscode.commands.registerCommand('maa.generate', () => generate(runner, generated)),
+    );
+    try {
+        client = await startClient(context, languages, apiBase);
+    } catch (e) {
+        void vscode.window.showErrorMessage(`MontiArc: the language server did not start: ${e instanceof Error ? e.message : String(e)}`);
+    }
+}
+
+export function deactivate(): Thenable<void> | undefined {
+    return client?.stop();
+}
