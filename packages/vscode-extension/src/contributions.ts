@@ -5,6 +5,7 @@
  */
 import type { LanguageFacts } from '@maa/language-server/language-facts';
 import { SETTINGS } from './settings.js';
+import { TEST_SETTINGS } from './testing/test-settings.js';
 import { fileLanguages, type TmGrammar, textMateGrammar } from './textmate.js';
 
 /** The language configuration of every language of the family (C-like comments and brackets). */
@@ -62,7 +63,7 @@ export const CAPABILITIES = {
     untrustedWorkspaces: {
         supported: 'limited',
         description: 'MontiArc: Generate runs maa-gen, possibly from the workspace, and is available in trusted workspaces only.',
-        restrictedConfigurations: ['maa.generate.command', 'maa.server.nodeArgs'],
+        restrictedConfigurations: ['maa.generate.command', 'maa.server.nodeArgs', 'maa.test.python'],
     },
     virtualWorkspaces: false,
 } as const;
@@ -101,10 +102,15 @@ export function contributions(facts: LanguageFacts): Contributions {
                     { command: 'maa.showModelElement', when: 'editorIsOpen' },
                 ],
             },
-            configuration: { title: 'MontiArcAutomaton', properties: SETTINGS },
+            configuration: { title: 'MontiArcAutomaton', properties: { ...SETTINGS, ...TEST_SETTINGS } },
         },
         files,
         capabilities: CAPABILITIES,
-        activationEvents: [...languages.map((l) => `onLanguage:${l.id}`), 'workspaceContains:**/*.arcapp', 'workspaceContains:**/maa.json'],
+        activationEvents: [
+            ...languages.map((l) => `onLanguage:${l.id}`),
+            'workspaceContains:**/*.arcapp',
+            'workspaceContains:**/maa.json',
+            'workspaceContains:**/*.stream',
+        ],
     };
 }
