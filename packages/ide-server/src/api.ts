@@ -11,9 +11,10 @@ import {
     type SimStartRequest,
     type TopicMapAnswer,
 } from '@maa/protocol';
-import { HttpError, type Redact, readBody, readRequest, requireQuery, sendJson, sendText } from './http-util.js';
+import { HttpError, type Redact, readBody, readJsonObject, readRequest, requireQuery, sendJson, sendText } from './http-util.js';
 import { ROSBRIDGE_PATH, VISER_PATH } from './proxy.js';
 import { Router } from './router.js';
+import { StreamTestService, streamTestRequest } from './stream-tests.js';
 import { topicMap } from './topic-map.js';
 import type { SimMode, SimSessions } from './sim-session.js';
 import type { Workspace } from './workspace.js';
@@ -39,6 +40,7 @@ export function createApiRouter(options: ApiOptions): Router {
     addWorkspaceRoutes(router, options);
     addGenerationRoutes(router, options);
     addSimulationRoutes(router, options);
+    addTestRoutes(router, options);
     return router;
 }
 
@@ -90,6 +92,19 @@ function addGenerationRoutes(router: Router, { generation, redact }: ApiOptions)
             throw new HttpError(404, `no trace: ${app} has not been generated for ${platform}`);
         });
         sendText(res, 200, text, 'application/json; charset=utf-8');
+    });
+}
+
+/** The stream tests of an application (docs/ide.md; the answer of `maa-gen test --format json`). */
+function addTestRoutes(router: Router, { workspace, generation, redact }: ApiOptions): void {
+    const tests = new StreamTestService(workspace, generation);
+    router.on('POST', '/api/test', async ({ req, res }) => {
+        const request = streamTestRequest(await readJsonObject(req));
+        // A client that goes away (a cancelled test run) stops the Python run.
+        const abort = new AbortController();
+        res.on('close', () => abort.abort());
+        const answer = await tests.run(request, abort.signal);
+        sendJson(res, 200, redact ? redact.value(answer) : answer);
     });
 }
 

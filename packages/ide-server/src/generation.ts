@@ -89,7 +89,7 @@ export class GenerationService {
      * The model root of the app by the one rule of `resolveModelRoot` (docs/user-guide.md, "Model
      * roots"), inside the workspace; an `.arcapp` declares no package, so nothing is read.
      */
-    private modelRootOf(appFile: string): string {
+    modelRootOf(appFile: string): string {
         const posix = (p: string): string => p.split(path.sep).join('/');
         const root = resolveModelRoot(posix(appFile), {
             hasMarker: (folder) => existsSync(path.join(folder, MODEL_ROOT_MARKER)),
