@@ -23,6 +23,7 @@ import { MountedDiagram, type MaaDiagramView } from './mounted-diagram.js';
 
 export { parseTrace, findInnermostElement, normalizeUri, rangeContains } from './trace.js';
 export { MaaDiagramProxy } from './proxy.js';
+export { standaloneSvg, svgFileName } from './svg-export.js';
 export { ClearHiddenCommand, RedrawCommand } from './commands.js';
 export type { MaaDiagramView } from './mounted-diagram.js';
 export type { DiagramHost, DiagramLiveLayer, DiagramTarget, DiagramView, Disposable, TextPosition, TextRange } from './contracts.js';

@@ -11,6 +11,7 @@ import { createRequire } from 'node:module';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { build } from 'esbuild';
+import { bundleDiagramWebview } from './diagram-webview.mjs';
 import { bundleWeb } from './web.mjs';
 
 const pkgDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
@@ -60,6 +61,7 @@ async function bundle() {
         banner: { js: "import { createRequire as __maaCreateRequire } from 'node:module'; const require = __maaCreateRequire(import.meta.url);" },
     });
     await bundleWeb(outDir);
+    await bundleDiagramWebview(outDir);
 }
 
 /** Loads src/contributions.ts (TypeScript) by bundling it to a temporary ES module. */
@@ -83,7 +85,13 @@ async function main() {
     const [{ contributes, files, activationEvents, capabilities }] = await Promise.all([loadContributions(), bundle()]);
     const own = JSON.parse(readFileSync(path.join(pkgDir, 'package.json'), 'utf8'));
     writeJson(path.join(outDir, 'package.json'), { ...IDENTITY, version: own.version, description: own.description, capabilities, activationEvents, contributes });
-    for (const f of files) writeJson(path.join(outDir, f.path), f.content);
+    for (const f of files) {
+        // Text files (the icons' SVG) as they are, the rest as JSON.
+        if (typeof f.content === 'string') {
+            mkdirSync(path.dirname(path.join(outDir, f.path)), { recursive: true });
+            writeFileSync(path.join(outDir, f.path), f.content);
+        } else writeJson(path.join(outDir, f.path), f.content);
+    }
     mkdirSync(path.join(outDir, 'snippets'), { recursive: true });
     for (const name of ['arc.json', 'arcapp.json']) copyFileSync(path.join(pkgDir, 'snippets', name), path.join(outDir, 'snippets', name));
     copyFileSync(path.join(repo, 'docs', 'vscode.md'), path.join(outDir, 'README.md'));

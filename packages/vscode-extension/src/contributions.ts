@@ -4,6 +4,7 @@
  * and commands of the extension. bin/build.mjs writes them into the packaged manifest.
  */
 import type { LanguageFacts } from '@maa/language-server/language-facts';
+import { DIAGRAM_COMMANDS, DIAGRAM_PALETTE, DIAGRAM_TITLE_MENU, iconFiles, languageIconOf } from './diagram/contributions.js';
 import { SETTINGS } from './settings.js';
 import { TEST_SETTINGS } from './testing/test-settings.js';
 import { fileLanguages, type TmGrammar, textMateGrammar } from './textmate.js';
@@ -82,6 +83,7 @@ export function contributions(facts: LanguageFacts): Contributions {
         files.push({ path: file, content: grammar });
         grammars.push({ language: lang.id, scopeName: grammar.scopeName, path: `./${file}` });
     }
+    for (const icon of iconFiles(languages)) files.push(icon);
     const snippets = languages
         .filter((l) => SNIPPET_FILES[l.id] !== undefined)
         .map((l) => ({ language: l.id, path: `./${SNIPPET_FILES[l.id]}` }));
@@ -92,12 +94,15 @@ export function contributions(facts: LanguageFacts): Contributions {
                 aliases: l.aliases,
                 extensions: l.fileExtensions,
                 configuration: './language-configuration.json',
+                icon: languageIconOf(l),
             })),
             grammars,
             snippets,
-            commands: COMMANDS,
+            commands: [...COMMANDS, ...DIAGRAM_COMMANDS],
             menus: {
+                'editor/title': [...DIAGRAM_TITLE_MENU],
                 commandPalette: [
+                    ...DIAGRAM_PALETTE,
                     { command: 'maa.showGeneratedCode', when: `editorLangId in maa.modelLanguages` },
                     { command: 'maa.showModelElement', when: 'editorIsOpen' },
                 ],

@@ -10,6 +10,7 @@ import path from 'node:path';
 import type { TraceFile } from '@maa/protocol';
 import * as vscode from 'vscode';
 import { LanguageClient, type LanguageClientOptions, type ServerOptions, TransportKind } from 'vscode-languageclient/node.js';
+import { registerDiagram } from './diagram/index.js';
 import { generate } from './generate-command.js';
 import { type GenerateReport, parseGenerateReport } from './generate-report.js';
 import type { GenerateRequest, GenerateRunner } from './generate-runner.js';
@@ -61,6 +62,7 @@ export function activate(context: vscode.ExtensionContext): void {
         languages.map((l) => l.id),
     );
     client = startClient(context, languages);
+    registerDiagram(context, client);
     const generated = vscode.languages.createDiagnosticCollection('maa-generate');
     context.subscriptions.push(
         generated,

@@ -53,7 +53,7 @@ interface Manifest {
     activationEvents: string[];
     capabilities: { untrustedWorkspaces: { supported: string; restrictedConfigurations: string[] } };
     contributes: {
-        languages: Array<{ id: string; extensions: string[]; configuration: string }>;
+        languages: Array<{ id: string; extensions: string[]; configuration: string; icon: { light: string; dark: string } }>;
         grammars: Array<{ language: string; scopeName: string; path: string }>;
         snippets: Array<{ language: string; path: string }>;
         commands: Array<{ command: string; title: string }>;
@@ -93,6 +93,9 @@ describe('the .vsix', () => {
             'maa.generate',
             'maa.showGeneratedCode',
             'maa.showModelElement',
+            'maa.openDiagram',
+            'maa.openAutomatonView',
+            'maa.exportDiagramSvg',
         ]);
         expect(manifest.contributes.configuration.properties['maa.generate.outDir']?.default).toBe('generated');
         expect(manifest.activationEvents).toContain('onLanguage:arc');
@@ -119,6 +122,25 @@ describe('the .vsix', () => {
         expect(readFileSync(path.join(ext, manifest.main), 'utf8')).toContain('require("vscode")');
         expect(manifest.browser).toBe('./out/web/extension.js');
         expect(readFileSync(path.join(ext, manifest.browser), 'utf8')).toContain('require("vscode")');
+    });
+});
+
+describe('the diagram in the .vsix', () => {
+    it('contains the webview bundle, the editor title button and every language icon the manifest points at', () => {
+        // The webview's script and stylesheet (bin/diagram-webview.mjs), the only files it may load.
+        const script = readFileSync(path.join(ext, 'out', 'webview', 'diagram.js'), 'utf8');
+        expect(script).toContain('acquireVsCodeApi');
+        expect(script).not.toContain('require("vscode")');
+        expect(readFileSync(path.join(ext, 'out', 'webview', 'diagram.css'), 'utf8')).toContain('.maa-diagram-toolbar');
+        const c = manifest.contributes as Manifest['contributes'] & { menus: Record<string, Array<{ command: string; when?: string }>> };
+        expect(c.menus['editor/title']?.map((m) => m.command)).toEqual(expect.arrayContaining(['maa.openDiagram', 'maa.openAutomatonView']));
+        for (const l of c.languages) {
+            for (const icon of [l.icon.light, l.icon.dark]) {
+                expect(existsSync(path.join(ext, icon)), icon).toBe(true);
+                expect(readFileSync(path.join(ext, icon), 'utf8')).toMatch(/^<svg xmlns="http:\/\/www\.w3\.org\/2000\/svg"/);
+            }
+        }
+        for (const theme of ['light', 'dark']) expect(existsSync(path.join(ext, 'icons', `diagram-${theme}.svg`))).toBe(true);
     });
 });
 

@@ -1,0 +1,65 @@
+/**
+ * The messages between the diagram webview (webview/main.ts) and the extension (panel.ts), in
+ * both directions through `postMessage`. The Sprotty action messages themselves travel unchanged:
+ * the extension relays them between the webview and the language server's `diagram/accept`
+ * notifications (relay.ts).
+ */
+import type { DiagramTarget, TextPosition } from '@maa/diagram-view/contracts';
+import type { ActionMessage } from 'sprotty-protocol';
+
+/** Webview → extension. */
+export type FromWebview =
+    /** The webview's script runs and listens (sent once after mounting the diagram). */
+    | { readonly type: 'ready' }
+    /** An action message for the diagram server (becomes a `diagram/accept` notification). */
+    | { readonly type: 'action'; readonly message: ActionMessage }
+    /** The user selected diagram elements: their langium-sprotty traces (`<uri>?<range>`). */
+    | { readonly type: 'select'; readonly traces: readonly string[] }
+    /** The tool bar's Export SVG: the standalone SVG document and a suggested file name. */
+    | { readonly type: 'saveSvg'; readonly svg: string; readonly fileName: string };
+
+/** Extension → webview. */
+export type ToWebview =
+    /** Show (or switch to) a diagram. */
+    | { readonly type: 'show'; readonly target: DiagramTarget }
+    /** An action message from the diagram server (a `diagram/accept` notification for this webview's client). */
+    | { readonly type: 'action'; readonly message: ActionMessage }
+    /** The editor's cursor moved: select the innermost element there. */
+    | { readonly type: 'revealPosition'; readonly uri: string; readonly position: TextPosition }
+    /** Live port values by port path (`"ctrl.arm"`); an empty list clears them. */
+    | { readonly type: 'liveValues'; readonly values: ReadonlyArray<readonly [string, string]> }
+    /** Active automaton state or mode by instance path (`"ctrl"` → `"Toasting"`); an empty list clears them. */
+    | { readonly type: 'activeStates'; readonly states: ReadonlyArray<readonly [string, string]> }
+    /** Export the shown diagram (the webview answers with `saveSvg`). */
+    | { readonly type: 'exportSvg' };
+
+function isRecord(value: unknown): value is Record<string, unknown> {
+    return typeof value === 'object' && value !== null;
+}
+
+function isActionMessage(value: unknown): value is ActionMessage {
+    return (
+        isRecord(value) && typeof value['clientId'] === 'string' && isRecord(value['action']) && typeof value['action']['kind'] === 'string'
+    );
+}
+
+/** A webview's message checked for its shape (a webview is untrusted input); undefined when it is none of {@link FromWebview}. */
+export function parseFromWebview(data: unknown): FromWebview | undefined {
+    if (!isRecord(data)) return undefined;
+    switch (data['type']) {
+        case 'ready':
+            return { type: 'ready' };
+        case 'action':
+            return isActionMessage(data['message']) ? { type: 'action', message: data['message'] } : undefined;
+        case 'select': {
+            const traces = data['traces'];
+            return Array.isArray(traces) && traces.every((t) => typeof t === 'string') ? { type: 'select', traces } : undefined;
+        }
+        case 'saveSvg': {
+            const { svg, fileName } = data;
+            return typeof svg === 'string' && typeof fileName === 'string' ? { type: 'saveSvg', svg, fileName } : undefined;
+        }
+        default:
+            return undefined;
+    }
+}
