@@ -100,6 +100,17 @@ export interface SessionsTable {
     expires_at: Date;
 }
 
+/** One-time invitation links (migration 0002). */
+export interface InvitationsTable {
+    /** a hash of the link's token (the token itself is only in the link) */
+    id: string;
+    user_id: number;
+    created_at: CreatedAt;
+    expires_at: Date;
+    /** when the link was used (a used link is refused) */
+    used_at: Date | null;
+}
+
 export interface Database {
     users: UsersTable;
     courses: CoursesTable;
@@ -111,4 +122,5 @@ export interface Database {
     test_results: TestResultsTable;
     simulation_results: SimulationResultsTable;
     sessions: SessionsTable;
+    invitations: InvitationsTable;
 }

@@ -10,6 +10,7 @@ import {
     restoreRevision,
     revisionHistory,
 } from './files.js';
+import { importAll, insertInvitation, insertUser, redeem, toInvitation } from './invitations.js';
 import { toCourse, toExercise, toSession, toSimulationResult, toSubmission, toTestResult, toUser } from './rows.js';
 import type { Database } from './schema.js';
 import {
@@ -17,8 +18,11 @@ import {
     type Exercise,
     type FileRevision,
     type FileRevisionInfo,
+    type ImportedUser,
+    type Invitation,
     type LabStore,
     type NewUser,
+    type Redemption,
     type SaveFile,
     type Session,
     type SimulationResult,
@@ -64,22 +68,7 @@ class KyselyLabStore implements LabStore {
     // --- users
 
     createUser(u: NewUser): Promise<User> {
-        return conflictsAsErrors(`cannot create the user ${u.login}`, async () => {
-            const row = await this.db
-                .insertInto('users')
-                .values({
-                    login: u.login,
-                    name: u.name,
-                    role: u.role,
-                    email: u.email ?? null,
-                    password_hash: u.passwordHash ?? null,
-                    oidc_issuer: u.oidcIssuer ?? null,
-                    oidc_subject: u.oidcSubject ?? null,
-                })
-                .returningAll()
-                .executeTakeFirstOrThrow();
-            return toUser(row);
-        });
+        return conflictsAsErrors(`cannot create the user ${u.login}`, () => insertUser(this.db, u));
     }
 
     async findUserById(id: number): Promise<User | undefined> {
@@ -100,6 +89,29 @@ class KyselyLabStore implements LabStore {
             .where('oidc_subject', '=', subject)
             .executeTakeFirst();
         return row && toUser(row);
+    }
+
+    async findUserByEmail(email: string): Promise<User | undefined> {
+        const row = await this.db
+            .selectFrom('users')
+            .selectAll()
+            .where((eb) => eb(eb.fn('lower', ['email']), '=', email.toLowerCase()))
+            .executeTakeFirst();
+        return row && toUser(row);
+    }
+
+    linkOidc(userId: number, issuer: string, subject: string): Promise<User> {
+        return conflictsAsErrors(`cannot link user ${userId} to ${issuer}`, async () => {
+            const row = await this.db
+                .updateTable('users')
+                .set({ oidc_issuer: issuer, oidc_subject: subject })
+                .where('id', '=', userId)
+                .where('oidc_issuer', 'is', null)
+                .returningAll()
+                .executeTakeFirst();
+            if (!row) throw new StorageConflictError(`user ${userId} does not exist or has a single sign-on identity already`);
+            return toUser(row);
+        });
     }
 
     async setPasswordHash(userId: number, passwordHash: string | null): Promise<void> {
@@ -345,6 +357,25 @@ class KyselyLabStore implements LabStore {
     async deleteExpiredSessions(now: Date = new Date()): Promise<number> {
         const { numDeletedRows } = await this.db.deleteFrom('sessions').where('expires_at', '<=', now).executeTakeFirstOrThrow();
         return Number(numDeletedRows);
+    }
+
+    // --- invitations
+
+    createInvitation(i: Omit<Invitation, 'createdAt' | 'usedAt'>): Promise<Invitation> {
+        return conflictsAsErrors('cannot create the invitation', () => insertInvitation(this.db, i));
+    }
+
+    async findInvitation(id: string): Promise<Invitation | undefined> {
+        const row = await this.db.selectFrom('invitations').selectAll().where('id', '=', id).executeTakeFirst();
+        return row && toInvitation(row);
+    }
+
+    redeemInvitation(id: string, passwordHash: string, now: Date = new Date()): Promise<Redemption> {
+        return redeem(this.db, id, passwordHash, now);
+    }
+
+    importUsers(users: ImportedUser[], courseId?: number): Promise<User[]> {
+        return conflictsAsErrors('cannot import the users', () => importAll(this.db, users, courseId));
     }
 
     close(): Promise<void> {

@@ -118,6 +118,25 @@ export interface Session {
     expiresAt: Date;
 }
 
+/** A one-time invitation link: the user sets a password once through it. */
+export interface Invitation {
+    /** a hash of the link's token (the caller hashes; the token itself is never stored) */
+    id: string;
+    userId: number;
+    createdAt: Date;
+    expiresAt: Date;
+    usedAt: Date | null;
+}
+
+/** What redeeming an invitation did: the user whose password is now set, or why it was refused. */
+export type Redemption = { ok: true; user: User } | { ok: false; reason: 'unknown' | 'used' | 'expired' };
+
+/** One user of an import, with the invitation link made for them (the token's hash). */
+export interface ImportedUser {
+    user: NewUser;
+    invitation?: { id: string; expiresAt: Date };
+}
+
 export interface SaveFile {
     workspaceId: number;
     path: string;
@@ -132,6 +151,10 @@ export interface LabStore {
     findUserById(id: number): Promise<User | undefined>;
     findUserByLogin(login: string): Promise<User | undefined>;
     findUserByOidc(issuer: string, subject: string): Promise<User | undefined>;
+    /** The user with this e-mail address (compared without regard to case). */
+    findUserByEmail(email: string): Promise<User | undefined>;
+    /** Gives a user without one their single sign-on identity (a StorageConflictError when taken or the user has one). */
+    linkOidc(userId: number, issuer: string, subject: string): Promise<User>;
     setPasswordHash(userId: number, passwordHash: string | null): Promise<void>;
     listUsers(): Promise<User[]>;
 
@@ -177,6 +200,20 @@ export interface LabStore {
     deleteSession(id: string): Promise<void>;
     /** Removes the sessions expired at `now`; returns how many. */
     deleteExpiredSessions(now?: Date): Promise<number>;
+
+    createInvitation(invitation: Omit<Invitation, 'createdAt' | 'usedAt'>): Promise<Invitation>;
+    /** The invitation whatever its state (undefined: no such link). */
+    findInvitation(id: string): Promise<Invitation | undefined>;
+    /**
+     * Uses the invitation once: when it exists, is unused and has not expired at `now`, marks it
+     * used and sets the user's password hash, in one transaction (two concurrent uses: one wins).
+     */
+    redeemInvitation(id: string, passwordHash: string, now?: Date): Promise<Redemption>;
+    /**
+     * Creates the users with their invitations (and enrolls them in the course) in one
+     * transaction: all of them or, on any conflict (a taken login or e-mail), none.
+     */
+    importUsers(users: ImportedUser[], courseId?: number): Promise<User[]>;
 
     close(): Promise<void>;
 }

@@ -2,9 +2,11 @@
 // has not seen (recorded in its kysely_migration table) inside a transaction and a lock.
 import type { Migration, MigrationProvider } from 'kysely';
 import * as initial from './0001-initial.js';
+import * as invitations from './0002-invitations.js';
 
 const MIGRATIONS: Record<string, Migration> = {
     '0001-initial': initial,
+    '0002-invitations': invitations,
 };
 
 /** The migrations compiled into this package (no directory scan, so they work from dist/ and bundles alike). */

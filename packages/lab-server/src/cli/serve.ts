@@ -1,0 +1,87 @@
+// `maa-lab serve` (docs/lab.md "Running a lab").
+import path from 'node:path';
+import { Command } from 'commander';
+import type { OidcSettings } from '../auth/oidc.js';
+import { DEFAULT_PORT, startLabServer } from '../http/server.js';
+import { openLabStore, storageFromEnvironment } from '../storage/index.js';
+import { DATA_DIR_HELP, DEFAULT_DATA_DIR, LabCliError, type LabIo } from './io.js';
+
+interface ServeOptions {
+    port: string;
+    host: string;
+    dataDir?: string;
+    publicUrl?: string;
+    trustProxy?: boolean;
+    appDir?: string;
+    oidcIssuer?: string;
+    oidcClientId?: string;
+    oidcAllowHttp?: boolean;
+}
+
+/** The environment variable that holds the OpenID Connect client secret (never a command-line argument). */
+export const OIDC_SECRET_VARIABLE = 'MAA_LAB_OIDC_CLIENT_SECRET';
+
+/**
+ * @param onStarted called with a function that stops the server (tests stop it; the command
+ *   itself stops on SIGINT and SIGTERM)
+ */
+export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, url: string) => void): Command {
+    return new Command('serve')
+        .description('start the lab server on the embedded database (--data-dir) or on the PostgreSQL server of DATABASE_URL')
+        .option('--port <port>', 'the port to listen on (0: any free port)', String(DEFAULT_PORT))
+        .option('--host <address>', 'the address to listen on (0.0.0.0: every interface)', '127.0.0.1')
+        .option('--data-dir <dir>', DATA_DIR_HELP)
+        .option('--public-url <url>', 'the address students open, e.g. https://lab.example.org behind a reverse proxy')
+        .option('--trust-proxy', 'behind a reverse proxy: take the client address from X-Forwarded-For and mark cookies Secure')
+        .option('--app-dir <dir>', 'the web app to serve (static files)')
+        .option('--oidc-issuer <url>', `single sign-on: the OpenID Connect provider (the client secret comes from ${OIDC_SECRET_VARIABLE})`)
+        .option('--oidc-client-id <id>', 'single sign-on: the client id registered at the provider')
+        .option('--oidc-allow-http', 'single sign-on: accept a provider on plain http (only for a provider on this machine)')
+        .action(async (options: ServeOptions) => {
+            const port = Number(options.port);
+            if (!Number.isInteger(port) || port < 0 || port > 65535)
+                throw new LabCliError(`--port must be a port number, not ${options.port}`);
+            if (options.publicUrl !== undefined && !URL.canParse(options.publicUrl))
+                throw new LabCliError(`--public-url is not a URL: ${options.publicUrl}`);
+            const oidc = oidcSettings(io, options);
+            const store = await openLabStore(storageFromEnvironment(io.env, path.resolve(io.cwd, options.dataDir ?? DEFAULT_DATA_DIR)));
+            let server: Awaited<ReturnType<typeof startLabServer>>;
+            try {
+                server = await startLabServer({
+                    store,
+                    port,
+                    host: options.host,
+                    ...(options.publicUrl ? { publicUrl: options.publicUrl } : {}),
+                    trustProxy: options.trustProxy === true,
+                    ...(options.appDir ? { appDir: path.resolve(io.cwd, options.appDir) } : {}),
+                    ...(oidc ? { oidc } : {}),
+                    log: (line) => io.err(`maa-lab: ${line}\n`),
+                });
+            } catch (e) {
+                await store.close();
+                throw new LabCliError(`cannot start the server: ${(e as Error).message}`);
+            }
+            io.out(
+                `maa-lab serves ${server.publicUrl} (${store.backend === 'pglite' ? 'embedded database' : 'PostgreSQL'}); log in at ${server.publicUrl}/login\n`,
+            );
+            let stopping: Promise<void> | undefined;
+            const stop = () => {
+                stopping ??= server.close().then(() => store.close());
+                return stopping;
+            };
+            if (onStarted) onStarted(stop, server.url);
+            else {
+                process.once('SIGINT', () => void stop());
+                process.once('SIGTERM', () => void stop());
+            }
+        });
+}
+
+function oidcSettings(io: LabIo, options: ServeOptions): OidcSettings | undefined {
+    if (!options.oidcIssuer && !options.oidcClientId) return undefined;
+    if (!options.oidcIssuer || !options.oidcClientId) throw new LabCliError('single sign-on needs both --oidc-issuer and --oidc-client-id');
+    const secret = io.env[OIDC_SECRET_VARIABLE];
+    if (!secret) throw new LabCliError(`single sign-on needs the client secret in the environment variable ${OIDC_SECRET_VARIABLE}`);
+    if (!URL.canParse(options.oidcIssuer)) throw new LabCliError(`--oidc-issuer is not a URL: ${options.oidcIssuer}`);
+    return { issuer: options.oidcIssuer, clientId: options.oidcClientId, clientSecret: secret, allowHttp: options.oidcAllowHttp === true };
+}
