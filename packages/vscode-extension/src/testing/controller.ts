@@ -83,6 +83,8 @@ export function registerStreamTests(runner: StreamTestRunner): vscode.Disposable
     controller.resolveHandler = async (item) => {
         if (!item) await discover();
     };
+    // The gutter's run buttons need the cases of open files before the Testing view is opened.
+    void discover();
     controller.createRunProfile(
         'Run',
         vscode.TestRunProfileKind.Run,
@@ -108,7 +110,7 @@ function selection(controller: vscode.TestController, request: vscode.TestRunReq
         if (excluded.has(item.id)) continue;
         const file = item.parent ?? item;
         const chosen = item.parent ? [item] : [...item.children].map(([, c]) => c).filter((c) => !excluded.has(c.id));
-        byFile.set(file, [...(byFile.get(file) ?? []), ...chosen]);
+        byFile.set(file, [...new Set([...(byFile.get(file) ?? []), ...chosen])]);
     }
     return byFile;
 }
