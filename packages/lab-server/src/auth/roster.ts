@@ -52,7 +52,7 @@ export function parseRoster(text: string): RosterEntry[] {
         });
         const entry = checkRow(row, info.lines, problems);
         if (!entry) continue;
-        for (const key of [entry.user.login.toLowerCase(), entry.user.email?.toLowerCase()]) {
+        for (const key of new Set([entry.user.login.toLowerCase(), entry.user.email?.toLowerCase()])) {
             if (!key) continue;
             const first = seen.get(key);
             if (first !== undefined) problems.push(`line ${info.lines}: ${key} is already on line ${first}`);
