@@ -27,11 +27,16 @@ export const CHROMIUM_FLAGS = [
     '--disable-sync',
 ];
 
-/** A temp folder with a fresh copy of examples/ (or of `from`) as the workspace. */
+/**
+ * A temp folder with a fresh copy of examples/ (or of `from`) as the workspace. The lab's
+ * exercises (examples/lab/, served by the lab server) are left out: the scenarios work on the
+ * toast example, whose application is then the only one in the pickers.
+ */
 export function freshWorkspace(from = path.join(repo, 'examples')) {
     const base = mkdtempSync(path.join(os.tmpdir(), 'maa-e2e-'));
     const workspace = path.join(base, 'workspace');
-    cpSync(from, workspace, { recursive: true });
+    const lab = path.join(repo, 'examples', 'lab');
+    cpSync(from, workspace, { recursive: true, filter: (src) => src !== lab });
     return { base, workspace, dispose: () => rmSync(base, { recursive: true, force: true }) };
 }
 

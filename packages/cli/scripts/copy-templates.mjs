@@ -3,7 +3,8 @@
 // dist/templates/<name>, and writes dist/templates/templates.json (name, description, app).
 // The sources are listed in templates/templates.json: `minimal` lives in this package,
 // `toast-service` IS the repository's examples/toast-service, copied here so there is no second
-// hand-edited copy and a packed @maa/cli (whose `files` holds dist/) carries every template.
+// hand-edited copy and a packed @maa/cli (whose `files` holds dist/) carries every template; the
+// lab exercises are the starters of examples/lab/<name>/ with their description as README.md.
 import { copyFileSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -70,6 +71,11 @@ function copyTemplate(template) {
         } else {
             copyFileSync(path.join(from, rel), target);
         }
+    }
+    if (template.readme) {
+        // A lab exercise (examples/lab/<name>/starter): its description becomes the project's README.
+        copyFileSync(path.resolve(packageDir, template.readme), path.join(to, 'README.md'));
+        return files.length + 1;
     }
     return files.length;
 }

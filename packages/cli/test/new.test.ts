@@ -30,7 +30,13 @@ describe('maa-gen new --list', () => {
         const r = await runCli(['new', '--list'], tempDir().dir);
         expect(r.code).toBe(0);
         const lines = r.stdout.trimEnd().split('\n');
-        expect(lines.map((l) => l.trim().split(/\s+/)[0])).toEqual(['minimal', 'toast-service']);
+        expect(lines.map((l) => l.trim().split(/\s+/)[0])).toEqual([
+            'minimal',
+            'toast-service',
+            'toast-controller',
+            'pick-and-place',
+            'line-follower',
+        ]);
         for (const line of lines) expect(line.trim().split(/\s{2,}/)[1]?.length ?? 0).toBeGreaterThan(20);
     });
 });
