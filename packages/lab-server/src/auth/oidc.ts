@@ -72,7 +72,7 @@ export class OidcSignOn {
         if (flowId !== undefined) this.pending.delete(flowId); // a flow is used once
         if (!flow || flow.expires < Date.now())
             return { ok: false, status: 400, message: 'this sign-on was not started here or took too long: start it again' };
-        let claims: client.IDToken | undefined;
+        let identity: Identity;
         try {
             const tokens = await client.authorizationCodeGrant(this.config, callbackUrl, {
                 pkceCodeVerifier: flow.verifier,
@@ -80,12 +80,17 @@ export class OidcSignOn {
                 expectedNonce: flow.nonce,
                 idTokenExpected: true,
             });
-            claims = tokens.claims();
+            const claims = tokens.claims();
+            if (!claims) return { ok: false, status: 400, message: 'the provider sent no ID token' };
+            identity = { issuer: claims.iss, subject: claims.sub, ...emailOf(claims) };
+            // Providers that keep the e-mail out of the ID token give it at the userinfo endpoint.
+            if (identity.email === undefined && tokens.access_token) {
+                identity = { ...identity, ...emailOf(await client.fetchUserInfo(this.config, tokens.access_token, claims.sub)) };
+            }
         } catch (e) {
-            return { ok: false, status: 400, message: `the sign-on failed: ${(e as Error).message}` };
+            return { ok: false, status: 400, message: `the sign-on failed: ${describe(e)}` };
         }
-        if (!claims) return { ok: false, status: 400, message: 'the provider sent no ID token' };
-        return findUser(store, claims);
+        return findUser(store, identity);
     }
 
     private prune(): void {
@@ -99,13 +104,32 @@ export class OidcSignOn {
     }
 }
 
-async function findUser(store: LabStore, claims: client.IDToken): Promise<SignOnResult> {
-    const known = await store.findUserByOidc(claims.iss, claims.sub);
+/** An openid-client error with what caused it (its message alone is often "invalid response encountered"). */
+function describe(error: unknown): string {
+    const parts: string[] = [];
+    for (let e: unknown = error; e instanceof Error && parts.length < 3; e = e.cause) parts.push(e.message);
+    return parts.join(': ') || String(error);
+}
+
+/** Who signed on: the ID token's issuer and subject, and the e-mail address the provider verified. */
+interface Identity {
+    issuer: string;
+    subject: string;
+    email?: string;
+}
+
+function emailOf(claims: Record<string, unknown>): { email?: string } {
+    const email = claims['email'];
+    return typeof email === 'string' && claims['email_verified'] === true ? { email } : {};
+}
+
+async function findUser(store: LabStore, identity: Identity): Promise<SignOnResult> {
+    const known = await store.findUserByOidc(identity.issuer, identity.subject);
     if (known) return { ok: true, user: known };
-    const email = typeof claims['email'] === 'string' ? claims['email'] : undefined;
-    if (email && claims['email_verified'] === true) {
-        const byEmail = await store.findUserByEmail(email);
-        if (byEmail && byEmail.oidcIssuer === null) return { ok: true, user: await store.linkOidc(byEmail.id, claims.iss, claims.sub) };
+    if (identity.email) {
+        const byEmail = await store.findUserByEmail(identity.email);
+        if (byEmail && byEmail.oidcIssuer === null)
+            return { ok: true, user: await store.linkOidc(byEmail.id, identity.issuer, identity.subject) };
     }
     return {
         ok: false,
