@@ -6,8 +6,6 @@
 import type { AppInfo } from '@maa/protocol';
 
 // The diagram's seam lives with the diagram (@maa/diagram-view, shared with the VS Code extension).
-import type { DiagramLiveLayer } from '@maa/diagram-view/contracts';
-
 export type {
     DiagramHost,
     DiagramLiveLayer,
@@ -21,12 +19,5 @@ export type {
 /** One application configuration of the workspace (`GET /api/apps`, @maa/protocol). */
 export type { AppInfo };
 
-/** What the shell gives the simulate panel. */
-export interface SimulateHost {
-    /** The diagram's live layer, for live values and active states during a run. */
-    diagram: DiagramLiveLayer;
-    /** The application configurations of the workspace (fresh from the backend). */
-    apps(): Promise<AppInfo[]>;
-    /** Reports a message in the shell's status line / notifications. */
-    notify(severity: 'info' | 'warning' | 'error', message: string): void;
-}
+/** What the shell gives the simulate panel (@maa/simulate-view's seam). */
+export type { SimulateHost } from '@maa/simulate-view/contracts';

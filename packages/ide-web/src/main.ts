@@ -134,7 +134,7 @@ async function openModels(area: EditorArea, workspace: Workspace): Promise<void>
 async function mountSimulatePane(diagram: DiagramPane): Promise<void> {
     const simulateContainer = byId('simulate-panel');
     try {
-        const { mountSimulatePanel } = await import('./simulate/index.js');
+        const { mountSimulatePanel } = await import('@maa/simulate-view');
         mountSimulatePanel(simulateContainer, { diagram: diagram.view, apps: () => api.apps(), notify });
     } catch (error) {
         simulateContainer.append(h('div', { class: 'empty' }, `The simulate panel failed: ${String(error)}`));

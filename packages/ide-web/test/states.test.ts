@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { modeActivity } from '@maa/diagram-view/schema';
-import { parseAutomatonStates } from '../src/simulate/states.js';
+import { parseAutomatonStates } from '@maa/simulate-view/states';
 
 /** A node → instance lookup as the backend's topic map gives it (port-map.ts). */
 const nodes = (entries: Record<string, string>) => (node: string) => entries[node];

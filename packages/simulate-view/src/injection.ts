@@ -3,7 +3,7 @@
  * outside the application); the text becomes a message of the topic's type (an enum literal its
  * ordinal) and is published over rosbridge.
  */
-import type { RosConnection } from '../ros/index.js';
+import type { RosConnection } from './ros/index.js';
 import { el, errorText } from './dom.js';
 import type { EnumLiterals } from './enums.js';
 import { formatRosValue, parseInjectedValue } from './format.js';

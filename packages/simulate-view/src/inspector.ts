@@ -3,7 +3,7 @@
  * filter, the live value of each and, for watched rows, a plot. It decides which topics are
  * subscribed and hands the port values to the diagram.
  */
-import type { RosConnection, TopicInfo } from '../ros/index.js';
+import type { RosConnection, TopicInfo } from './ros/index.js';
 import { el } from './dom.js';
 import { EnumLiterals } from './enums.js';
 import { formatRosValue, isEnumMessage } from './format.js';

@@ -7,8 +7,8 @@ import {
     isEnumMessage,
     numericValue,
     parseInjectedValue,
-} from '../src/simulate/format.js';
-import { SampleWindow, sparklinePath } from '../src/simulate/plot.js';
+} from '../src/format.js';
+import { SampleWindow, sparklinePath } from '../src/plot.js';
 
 describe('formatRosValue', () => {
     it('unwraps std_msgs wrappers', () => {

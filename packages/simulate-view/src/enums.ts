@@ -1,5 +1,5 @@
 /** Enum literals per message type (ROS 2 mode's enum messages), looked up once through rosapi. */
-import type { RosConnection } from '../ros/index.js';
+import type { RosConnection } from './ros/index.js';
 import { enumLiteralsOf, type FormatOptions } from './format.js';
 
 export class EnumLiterals {

@@ -12,20 +12,33 @@
  * connection of a run (live-run.ts).
  */
 import './simulate.css';
-import type { Disposable, SimulateHost } from '../contracts.js';
+import type { Disposable, SimulateHost } from './contracts.js';
 import { Controls } from './controls.js';
 import { SimulationController } from './controller.js';
 import { el } from './dom.js';
+import { simEndpoints } from './endpoints.js';
+import { createSimApi } from './backend.js';
 import { Inspector } from './inspector.js';
 import { StatusView } from './status-view.js';
 import { Viewer } from './viewer.js';
 
-export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): Disposable {
+/** The mounted panel: its tool bar's actions for hosts that offer them as commands too. */
+export interface SimulatePanel extends Disposable {
+    /** Starts an application (`.arcapp` path as the backend lists it) on a platform; false when unknown. */
+    start(app: string, platform: string): Promise<boolean>;
+    /** Stops the session (as the Stop button). */
+    stop(): Promise<void>;
+    /** Resets the running simulation; false when none is connected. */
+    reset(): Promise<boolean>;
+}
+
+export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): SimulatePanel {
     container.dataset['testid'] = 'simulate-panel';
     container.classList.add('maa-simulate');
     const controls = new Controls();
     const status = new StatusView();
-    const viewer = new Viewer();
+    const endpoints = simEndpoints(host.backendBase, window.location);
+    const viewer = new Viewer(endpoints.viser);
     let controller: SimulationController | undefined;
     const inspector = new Inspector({
         sampleTime: () => controller?.clockSeconds() ?? performance.now() / 1000,
@@ -39,9 +52,20 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
         status.progressBox,
         el('div', { class: 'maa-sim-body' }, viewer.element, inspector.element),
     );
-    controller = new SimulationController({ host, controls, status, inspector, viewer });
+    controller = new SimulationController({
+        host,
+        controls,
+        status,
+        inspector,
+        viewer,
+        api: createSimApi(endpoints.api),
+        rosbridge: endpoints.rosbridge,
+    });
     void controller.mount();
     return {
+        start: async (app, platform) => (controller ? controller.startWith(app, platform) : false),
+        stop: async () => controller?.stop(),
+        reset: async () => (controller ? controller.reset() : false),
         dispose(): void {
             if (!controller) return;
             controller.dispose();
@@ -51,3 +75,6 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
         },
     };
 }
+
+export type { AppInfo, DiagramLiveLayer, Disposable, SimulateHost } from './contracts.js';
+export { simEndpoints, type SimEndpoints } from './endpoints.js';

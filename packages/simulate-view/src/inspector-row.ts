@@ -1,6 +1,6 @@
 /** One row of the port inspector: a topic, its port (when it is one), the last value and its plot. */
-import type { Disposable } from '../contracts.js';
-import type { TopicInfo } from '../ros/index.js';
+import type { Disposable } from './contracts.js';
+import type { TopicInfo } from './ros/index.js';
 import { el } from './dom.js';
 import type { EnumLiterals } from './enums.js';
 import { formatRosValue, numericValue } from './format.js';

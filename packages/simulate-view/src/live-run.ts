@@ -4,13 +4,13 @@
  * topic list for the inspector, and the 10 Hz hand-over of values and states to the diagram.
  * One instance per attached run; `dispose` ends it and clears what it showed.
  */
-import type { DiagramLiveLayer, Disposable } from '../contracts.js';
-import { RosConnection, rosbridgeUrl, type SimServiceResponse, type TopicInfo } from '../ros/index.js';
+import type { DiagramLiveLayer, Disposable } from './contracts.js';
+import { RosConnection, type SimServiceResponse, type TopicInfo } from './ros/index.js';
 import { errorText } from './dom.js';
 import { clockSeconds } from './format.js';
 import type { Inspector } from './inspector.js';
 import { statusLine, unwrapStatus, type SimStatus } from './logic.js';
-import { simApi } from './backend.js';
+import type { SimApi } from './backend.js';
 import { PortMap } from './port-map.js';
 import { parseAutomatonStates } from './states.js';
 import type { StatusView } from './status-view.js';
@@ -25,6 +25,9 @@ export interface LiveRunHost {
     /** The running application (`.arcapp` path) and platform: the backend serves their port topics. */
     app: string;
     platform: string;
+    /** The backend's simulation API and the rosbridge URL (endpoints.ts). */
+    api: SimApi;
+    rosbridge: string;
     diagram: DiagramLiveLayer;
     inspector: Inspector;
     status: StatusView;
@@ -51,7 +54,7 @@ export class LiveRun implements Disposable {
     private readonly timers: ReturnType<typeof setInterval>[] = [];
 
     constructor(private readonly host: LiveRunHost) {
-        const url = rosbridgeUrl(window.location);
+        const url = host.rosbridge;
         this.connect(url, 1).catch((e: unknown) => {
             if (!this.disposed) host.status.showError(`Could not connect to the simulator's rosbridge at ${url}: ${errorText(e)}`);
         });
@@ -215,7 +218,7 @@ export class LiveRun implements Disposable {
         if (this.portsLoading) return undefined;
         this.portsLoading = true;
         try {
-            this.ports = new PortMap(await simApi.topics(this.host.app, this.host.platform));
+            this.ports = new PortMap(await this.host.api.topics(this.host.app, this.host.platform));
             this.mapStates(); // states that arrived before the map
         } catch (e) {
             // asked again at the next topic refresh

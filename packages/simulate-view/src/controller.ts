@@ -4,8 +4,8 @@
  * run controls over rosbridge (pause, resume, step, reset, speed), and the live connection of a
  * running session (live-run.ts).
  */
-import type { AppInfo, Disposable, SimulateHost } from '../contracts.js';
-import { BackendError, simApi, type SimStatusAnswer } from './backend.js';
+import type { AppInfo, Disposable, SimulateHost } from './contracts.js';
+import { BackendError, type SimApi, type SimStatusAnswer } from './backend.js';
 import type { Controls } from './controls.js';
 import { errorText } from './dom.js';
 import type { Inspector } from './inspector.js';
@@ -26,6 +26,10 @@ export interface ControllerParts {
     status: StatusView;
     inspector: Inspector;
     viewer: Viewer;
+    /** The backend's simulation API (backend.ts). */
+    api: SimApi;
+    /** The rosbridge WebSocket URL (endpoints.ts). */
+    rosbridge: string;
 }
 
 export class SimulationController implements Disposable {
@@ -42,10 +46,7 @@ export class SimulationController implements Disposable {
         controls.pauseBtn.addEventListener('click', () => void this.run?.control('/sim/pause'));
         controls.resumeBtn.addEventListener('click', () => void this.run?.control('/sim/resume'));
         controls.stepBtn.addEventListener('click', () => void this.run?.control('/sim/step', { steps: controls.steps() }));
-        controls.resetBtn.addEventListener('click', () => {
-            parts.inspector.clearSamples();
-            void this.run?.control('/sim/reset');
-        });
+        controls.resetBtn.addEventListener('click', () => void this.reset());
         controls.speedSelect.addEventListener('change', () => {
             if (this.session.kind === 'running') void this.run?.control('/sim/set_speed', { speed: controls.speed() });
         });
@@ -72,11 +73,32 @@ export class SimulationController implements Disposable {
         this.run?.tick(true);
     }
 
+    /**
+     * Starts the chosen application and platform (the commands of a host without the tool bar:
+     * the VS Code extension's Start Simulation); false when the panel does not know them.
+     */
+    async startWith(appPath: string, platform: string): Promise<boolean> {
+        await this.loadApps();
+        const app = this.parts.controls.choose(appPath, platform);
+        if (!app || this.parts.controls.selectedPlatform() !== platform) return false;
+        this.render();
+        await this.start();
+        return true;
+    }
+
+    /** Resets the running simulation (`/sim/reset`) and clears the plots; false without a connected run. */
+    async reset(): Promise<boolean> {
+        if (!this.run?.connected) return false;
+        this.parts.inspector.clearSamples();
+        await this.run.control('/sim/reset');
+        return true;
+    }
+
     /** Lists the applications, then adopts a session the backend already prepares or runs. */
     async mount(): Promise<void> {
         await this.loadApps();
         try {
-            await this.adopt(await simApi.status());
+            await this.adopt(await this.parts.api.status());
         } catch {
             /* backend without a session API: nothing to attach */
         }
@@ -119,7 +141,7 @@ export class SimulationController implements Disposable {
         });
     }
 
-    private async start(): Promise<void> {
+    async start(): Promise<void> {
         const { controls, status, host } = this.parts;
         const app = controls.selectedApp();
         const mode = controls.selectedMode();
@@ -131,7 +153,7 @@ export class SimulationController implements Disposable {
         this.detach();
         const stopPolling = this.pollWhileStarting(label);
         try {
-            await simApi.start(app.path, platform, mode, controls.speed());
+            await this.parts.api.start(app.path, platform, mode, controls.speed());
             stopPolling();
             host.notify('info', `Simulation of ${app.name} started (${mode === 'lockstep' ? 'lock-step' : 'ROS 2'})`);
             if (this.dispatch({ type: 'start-succeeded' }) && this.session.kind === 'running') this.attach(app.path, platform);
@@ -139,7 +161,7 @@ export class SimulationController implements Disposable {
             stopPolling();
             const cancelled = this.session.kind === 'cancelling';
             let log = e instanceof BackendError ? e.log : [];
-            if (log.length === 0) log = await lastLog();
+            if (log.length === 0) log = await lastLog(this.parts.api);
             this.dispatch({ type: 'start-failed' });
             if (!cancelled) {
                 status.showError(`Start failed: ${errorText(e)}`, log);
@@ -150,11 +172,11 @@ export class SimulationController implements Disposable {
         }
     }
 
-    private async stop(): Promise<void> {
+    async stop(): Promise<void> {
         const { status, host } = this.parts;
         if (!this.dispatch({ type: 'stop' })) return;
         try {
-            await simApi.stop();
+            await this.parts.api.stop();
             host.notify('info', 'Simulation stopped');
         } catch (e) {
             status.showError(`Stop failed: ${errorText(e)}`, e instanceof BackendError ? e.log : []);
@@ -174,7 +196,7 @@ export class SimulationController implements Disposable {
             try {
                 while (st.preparing && !this.disposed) {
                     await new Promise((r) => setTimeout(r, START_POLL_MS));
-                    st = await simApi.status();
+                    st = await this.parts.api.status();
                 }
             } finally {
                 stopPolling();
@@ -209,7 +231,7 @@ export class SimulationController implements Disposable {
             inFlight = true;
             let st: SimStatusAnswer | undefined;
             try {
-                st = await simApi.status();
+                st = await this.parts.api.status();
             } catch {
                 st = undefined;
             } finally {
@@ -242,6 +264,8 @@ export class SimulationController implements Disposable {
         this.run = new LiveRun({
             app,
             platform,
+            api: this.parts.api,
+            rosbridge: this.parts.rosbridge,
             diagram: host.diagram,
             inspector,
             status,
@@ -268,7 +292,7 @@ export class SimulationController implements Disposable {
         if (this.session.kind !== 'running') return;
         let st: SimStatusAnswer;
         try {
-            st = await simApi.status();
+            st = await this.parts.api.status();
         } catch {
             return;
         }
@@ -280,9 +304,9 @@ export class SimulationController implements Disposable {
 }
 
 /** The backend's log of the last session (for a failed start whose answer had none). */
-async function lastLog(): Promise<string[]> {
+async function lastLog(api: SimApi): Promise<string[]> {
     try {
-        return (await simApi.status()).log ?? [];
+        return (await api.status()).log ?? [];
     } catch {
         return [];
     }

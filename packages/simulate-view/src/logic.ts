@@ -1,6 +1,6 @@
 /** Small pure pieces of the simulate panel: modes, status text, backend answers. */
 import type { SimMode, SimulatorStatus } from '@maa/protocol';
-import type { AppInfo } from '../contracts.js';
+import type { AppInfo } from './contracts.js';
 import { formatNumber } from './format.js';
 
 export type { SimMode };

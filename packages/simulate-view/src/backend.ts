@@ -1,5 +1,6 @@
 /** The backend's simulation API (docs/ide.md "Backend HTTP API"); types and checks from @maa/protocol. */
 import {
+    type AppInfo,
     answers,
     formatIssues,
     topicMapContract,
@@ -49,15 +50,26 @@ async function call<T extends TSchema>(method: 'GET' | 'POST', url: string, cont
     return json as Static<T>;
 }
 
-export const simApi = {
-    start: (app: string, platform: string, mode: SimMode, speed: number): Promise<SimStartAnswer> =>
-        call('POST', '/api/sim/start', answers.simStart, { app, platform, mode, speed }),
-    stop: (): Promise<OkAnswer> => call('POST', '/api/sim/stop', answers.ok, {}),
-    status: (): Promise<SimStatusAnswer> => call('GET', '/api/sim/status', answers.simStatus),
-    /** The port topics of a generated platform, as the generators wrote them (after a start, which generates). */
-    topics: (app: string, platform: string): Promise<TopicMapAnswer> =>
-        call('GET', `/api/sim/topics?app=${encodeURIComponent(app)}&platform=${encodeURIComponent(platform)}`, topicMapContract),
-};
+/** The simulation API below a prefix (`''`: the page's origin; endpoints.ts). */
+export function createSimApi(prefix: string) {
+    return {
+        start: (app: string, platform: string, mode: SimMode, speed: number): Promise<SimStartAnswer> =>
+            call('POST', `${prefix}/api/sim/start`, answers.simStart, { app, platform, mode, speed }),
+        /** The application configurations of the workspace (`GET /api/apps`). */
+        apps: async (): Promise<AppInfo[]> => (await call('GET', `${prefix}/api/apps`, answers.apps)).apps,
+        stop: (): Promise<OkAnswer> => call('POST', `${prefix}/api/sim/stop`, answers.ok, {}),
+        status: (): Promise<SimStatusAnswer> => call('GET', `${prefix}/api/sim/status`, answers.simStatus),
+        /** The port topics of a generated platform, as the generators wrote them (after a start, which generates). */
+        topics: (app: string, platform: string): Promise<TopicMapAnswer> =>
+            call(
+                'GET',
+                `${prefix}/api/sim/topics?app=${encodeURIComponent(app)}&platform=${encodeURIComponent(platform)}`,
+                topicMapContract,
+            ),
+    };
+}
+
+export type SimApi = ReturnType<typeof createSimApi>;
 
 /**
  * The topic map by topic: the port a topic carries (an out port's entry wins over the in ports

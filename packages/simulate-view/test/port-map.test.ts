@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import type { TopicMapAnswer } from '../src/simulate/backend.js';
-import { PortMap } from '../src/simulate/port-map.js';
+import type { TopicMapAnswer } from '../src/backend.js';
+import { PortMap } from '../src/port-map.js';
 
 /** A lock-step map: out ports of atomic instances and the root's in ports (external). */
 const lockstep: TopicMapAnswer = {

@@ -3,7 +3,7 @@
  * session buttons, the run controls and the speed. It renders what the session state allows;
  * the controller and the run controls attach the actions.
  */
-import type { AppInfo } from '../contracts.js';
+import type { AppInfo } from './contracts.js';
 import { el } from './dom.js';
 import { defaultPlatform, platformMode, type SimMode } from './logic.js';
 import { accepts, isBusy, type SessionState } from './session.js';

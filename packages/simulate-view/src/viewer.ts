@@ -1,14 +1,13 @@
 /** The simulator's 3D view: viser in an iframe during a run, a placeholder otherwise. */
 import { el } from './dom.js';
 
-const VISER_URL = '/sim/viser/';
-
 export class Viewer {
     readonly element = el('div', { class: 'maa-sim-viewer' });
     private readonly placeholder = el('div', { class: 'maa-sim-placeholder' }, 'The 3D view appears here once the simulation runs.');
     private iframe: HTMLIFrameElement | undefined;
 
-    constructor() {
+    /** @param url the viser page (endpoints.ts) */
+    constructor(private readonly url: string) {
         this.element.append(this.placeholder);
     }
 
@@ -23,17 +22,17 @@ export class Viewer {
                 'data-testid': 'viser-frame',
                 class: 'maa-viser-frame',
                 title: 'Simulation (viser)',
-                src: VISER_URL,
+                src: this.url,
             });
             this.element.replaceChildren(this.iframe);
         } else {
-            this.iframe.src = VISER_URL;
+            this.iframe.src = this.url;
         }
     }
 
     /** Loads a shown view again (nothing when none is shown). */
     reload(): void {
-        if (this.iframe) this.iframe.src = VISER_URL;
+        if (this.iframe) this.iframe.src = this.url;
     }
 
     hide(): void {

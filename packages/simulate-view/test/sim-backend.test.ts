@@ -1,6 +1,6 @@
 import { topicMapContract, type TopicMapAnswer } from '@maa/protocol';
 import { describe, expect, it } from 'vitest';
-import { instanceOfNode, portsByTopic } from '../src/simulate/backend.js';
+import { instanceOfNode, portsByTopic } from '../src/backend.js';
 
 const map: TopicMapAnswer = topicMapContract.parse({
     app: 'toast-service/TR.arcapp',

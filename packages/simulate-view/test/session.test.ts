@@ -9,7 +9,7 @@ import {
     type SessionEvent,
     type SessionEventType,
     type SessionState,
-} from '../src/simulate/session.js';
+} from '../src/session.js';
 
 const idle = (reason: 'initial' | 'stopped' | 'cancelled' | 'failed' | 'ended' = 'initial'): SessionState => ({ kind: 'idle', reason });
 const starting: SessionState = { kind: 'starting', adopted: false };

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { backendError, defaultPlatform, platformMode, preparingLine, runChoices, statusLine, unwrapStatus } from '../src/simulate/logic.js';
+import { backendError, defaultPlatform, platformMode, preparingLine, runChoices, statusLine, unwrapStatus } from '../src/logic.js';
 
 const TR = {
     path: 'toast-service/TR.arcapp',

@@ -1,0 +1,43 @@
+/**
+ * What the simulate panel needs from the front end that mounts it (the browser IDE's shell or
+ * the VS Code extension's webview). Only these types cross the seam; they are structural, so the
+ * IDE's diagram view (a DiagramLiveLayer with more) fits as it is.
+ */
+import type { AppInfo } from '@maa/protocol';
+
+/** Something that can be undone/removed. */
+export interface Disposable {
+    dispose(): void;
+}
+
+/**
+ * The diagram's extension point for a simulation run: live values on ports and connectors, the
+ * active automaton state or mode of each instance, and the user's selection.
+ */
+export interface DiagramLiveLayer {
+    /** Live values by port path (`"ctrl.arm"`); shown on connectors and ports. Empty map clears. */
+    setLiveValues(values: ReadonlyMap<string, string>): void;
+    /** Active automaton state or mode by instance path (`"ctrl"` → `"Toasting"`). Empty map clears. */
+    setActiveStates(states: ReadonlyMap<string, string>): void;
+    /** Called when the user selects diagram elements (their traces). */
+    onSelect(handler: (traces: string[]) => void): Disposable;
+}
+
+/** One application configuration of the workspace (`GET /api/apps`, @maa/protocol). */
+export type { AppInfo };
+
+/** What the front end gives the simulate panel. */
+export interface SimulateHost {
+    /** The diagram's live layer, for live values and active states during a run. */
+    diagram: DiagramLiveLayer;
+    /** The application configurations of the workspace (fresh from the backend). */
+    apps(): Promise<AppInfo[]>;
+    /** Reports a message in the front end's status line / notifications. */
+    notify(severity: 'info' | 'warning' | 'error', message: string): void;
+    /**
+     * Where the backend's simulation API, rosbridge and viser are (endpoints.ts): absent in the
+     * browser IDE (the page's own origin), an absolute URL in the VS Code webview (the extension's
+     * relay, whose path carries the capability).
+     */
+    backendBase?: string;
+}
