@@ -43,6 +43,25 @@ function serverEntry() {
     return entry;
 }
 
+/** The simulate view: the webview's panel (@maa/simulate-view, browser IIFE and its CSS) and maa-ide's launcher (src/simulate). */
+async function bundleSimulate(common) {
+    await build({
+        ...common,
+        entryPoints: [require.resolve('@maa/simulate-view/vscode-webview')],
+        outfile: path.join(outDir, 'out', 'webview', 'simulate.js'),
+        platform: 'browser',
+        format: 'iife',
+        target: 'es2022',
+    });
+    await build({
+        ...common,
+        entryPoints: [path.join(pkgDir, 'src', 'simulate', 'backend-launcher.ts')],
+        outfile: path.join(outDir, 'out', 'simulate', 'backend-launcher.mjs'),
+        format: 'esm',
+        target: 'node20',
+    });
+}
+
 async function bundle() {
     const common = { bundle: true, platform: 'node', target: 'node18', sourcemap: false, minify: true, legalComments: 'none', logLevel: 'warning' };
     await build({
@@ -52,6 +71,7 @@ async function bundle() {
         format: 'cjs',
         external: ['vscode'],
     });
+    await bundleSimulate(common);
     await build({
         ...common,
         entryPoints: [serverEntry()],

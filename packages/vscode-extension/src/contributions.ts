@@ -6,6 +6,7 @@
 import type { LanguageFacts } from '@maa/language-server/language-facts';
 import { DIAGRAM_COMMANDS, DIAGRAM_PALETTE, DIAGRAM_TITLE_MENU, iconFiles, languageIconOf } from './diagram/contributions.js';
 import { SETTINGS } from './settings.js';
+import { SIMULATE_COMMANDS, SIMULATE_SETTINGS } from './simulate/contributions.js';
 import { TEST_SETTINGS } from './testing/test-settings.js';
 import { fileLanguages, type TmGrammar, textMateGrammar } from './textmate.js';
 
@@ -37,6 +38,7 @@ export const COMMANDS = [
     { command: 'maa.generate', title: 'MontiArc: Generate', category: 'MontiArc' },
     { command: 'maa.showGeneratedCode', title: 'MontiArc: Show Generated Code', category: 'MontiArc' },
     { command: 'maa.showModelElement', title: 'MontiArc: Show Model Element', category: 'MontiArc' },
+    ...SIMULATE_COMMANDS,
 ] as const;
 
 /** A file the build writes next to the manifest (path relative to the extension folder). */
@@ -64,7 +66,7 @@ export const CAPABILITIES = {
     untrustedWorkspaces: {
         supported: 'limited',
         description: 'MontiArc: Generate runs maa-gen, possibly from the workspace, and is available in trusted workspaces only.',
-        restrictedConfigurations: ['maa.generate.command', 'maa.server.nodeArgs', 'maa.test.python'],
+        restrictedConfigurations: ['maa.generate.command', 'maa.server.nodeArgs', ...Object.keys(SIMULATE_SETTINGS), 'maa.test.python'],
     },
     virtualWorkspaces: false,
 } as const;
@@ -107,7 +109,7 @@ export function contributions(facts: LanguageFacts): Contributions {
                     { command: 'maa.showModelElement', when: 'editorIsOpen' },
                 ],
             },
-            configuration: { title: 'MontiArcAutomaton', properties: { ...SETTINGS, ...TEST_SETTINGS } },
+            configuration: { title: 'MontiArcAutomaton', properties: { ...SETTINGS, ...TEST_SETTINGS, ...SIMULATE_SETTINGS } },
         },
         files,
         capabilities: CAPABILITIES,

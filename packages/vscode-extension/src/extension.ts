@@ -24,6 +24,7 @@ import {
     watchedFiles,
 } from './settings.js';
 import { registerDesktopStreamTests } from './testing/desktop.js';
+import { registerSimulate } from './simulate/index.js';
 import { generatedCodeAt, modelElementAt, platformDirOf } from './trace.js';
 
 /** The file languages of the family, from the manifest (generated from the language facts). */
@@ -70,6 +71,7 @@ export function activate(context: vscode.ExtensionContext): void {
         vscode.commands.registerCommand('maa.showGeneratedCode', showGeneratedCode),
         vscode.commands.registerCommand('maa.showModelElement', showModelElement),
     );
+    context.subscriptions.push(registerSimulate(context));
     context.subscriptions.push(...registerDesktopStreamTests());
 }
 

@@ -93,6 +93,9 @@ describe('the .vsix', () => {
             'maa.generate',
             'maa.showGeneratedCode',
             'maa.showModelElement',
+            'maa.simulate.start',
+            'maa.simulate.stop',
+            'maa.simulate.reset',
             'maa.openDiagram',
             'maa.openAutomatonView',
             'maa.exportDiagramSvg',
@@ -133,7 +136,9 @@ describe('the diagram in the .vsix', () => {
         expect(script).not.toContain('require("vscode")');
         expect(readFileSync(path.join(ext, 'out', 'webview', 'diagram.css'), 'utf8')).toContain('.maa-diagram-toolbar');
         const c = manifest.contributes as Manifest['contributes'] & { menus: Record<string, Array<{ command: string; when?: string }>> };
-        expect(c.menus['editor/title']?.map((m) => m.command)).toEqual(expect.arrayContaining(['maa.openDiagram', 'maa.openAutomatonView']));
+        expect(c.menus['editor/title']?.map((m) => m.command)).toEqual(
+            expect.arrayContaining(['maa.openDiagram', 'maa.openAutomatonView']),
+        );
         for (const l of c.languages) {
             for (const icon of [l.icon.light, l.icon.dark]) {
                 expect(existsSync(path.join(ext, icon)), icon).toBe(true);
@@ -141,6 +146,27 @@ describe('the diagram in the .vsix', () => {
             }
         }
         for (const theme of ['light', 'dark']) expect(existsSync(path.join(ext, 'icons', `diagram-${theme}.svg`))).toBe(true);
+    });
+});
+
+describe('the simulate view in the .vsix', () => {
+    it('contributes the simulate settings, restricted in untrusted workspaces', () => {
+        const properties = manifest.contributes.configuration.properties;
+        expect(properties['maa.simulate.node']?.default).toBe('node');
+        expect(properties['maa.simulate.backend']?.default).toBe('');
+        expect(manifest.capabilities.untrustedWorkspaces.restrictedConfigurations).toEqual(
+            expect.arrayContaining(['maa.simulate.node', 'maa.simulate.backend']),
+        );
+    });
+
+    it("contains the webview's panel bundle and stylesheet and maa-ide's launcher", () => {
+        // The shared panel (@maa/simulate-view) with its webview entry, bundled for the browser.
+        const script = readFileSync(path.join(ext, 'out', 'webview', 'simulate.js'), 'utf8');
+        expect(script).toContain('simulate-root');
+        expect(script).toContain('acquireVsCodeApi');
+        expect(script).not.toContain('require("');
+        expect(readFileSync(path.join(ext, 'out', 'webview', 'simulate.css'), 'utf8')).toContain('.maa-simulate');
+        expect(readFileSync(path.join(ext, 'out', 'simulate', 'backend-launcher.mjs'), 'utf8')).toContain('SIGTERM');
     });
 });
 
