@@ -8,7 +8,11 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { artifacts, freshWorkspace, launchBrowser, screenshot, startIde } from './lib.mjs';
-import { scenarios } from './scenarios.mjs';
+import { hostScenarios } from './host-scenarios.mjs';
+import { scenarios as ideScenarios } from './scenarios.mjs';
+
+// The old IDE's scenarios, then the workbench host's (host.html, e2e/host-scenarios.mjs).
+const scenarios = [...ideScenarios, ...hostScenarios];
 
 const args = process.argv.slice(2);
 const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : undefined;

@@ -19,6 +19,8 @@ const repo = path.resolve(pkgDir, '..', '..');
 const outArg = process.argv.indexOf('--out');
 const outDir = path.resolve(outArg > 0 ? process.argv[outArg + 1] : path.join(pkgDir, 'dist', 'extension'));
 const require = createRequire(import.meta.url);
+// `--web`: the web extension only (manifest, out/web/, grammars, snippets), as the browser IDE serves it.
+const webOnly = process.argv.includes('--web');
 
 /** The manifest fields of the extension (the workspace package.json stays an npm manifest). */
 const IDENTITY = {
@@ -63,6 +65,7 @@ async function bundleSimulate(common) {
 }
 
 async function bundle() {
+    if (webOnly) return bundleWeb(outDir);
     const common = { bundle: true, platform: 'node', target: 'node18', sourcemap: false, minify: true, legalComments: 'none', logLevel: 'warning' };
     await build({
         ...common,

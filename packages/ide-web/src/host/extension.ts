@@ -1,0 +1,41 @@
+/**
+ * The MontiArc extension as the host's workbench loads it: its manifest and files as built by
+ * `packages/vscode-extension/bin/build.mjs --web` into `maa-extension/` next to host.html (see
+ * vite.config.ts), registered in VS Code's extension service (the local extension host runs
+ * its `browser` entry, activated by the manifest's activation events like in VS Code).
+ */
+import type { IExtensionManifest } from '@codingame/monaco-vscode-api/extensions';
+import type { ExtensionConfig } from 'monaco-languageclient/vscodeApiWrapper';
+
+/** The folder of the built extension, relative to the page. */
+export const EXTENSION_DIR = 'maa-extension/';
+
+/** The file listing the build writes next to the manifest (vite.config.ts): every file of the extension, `/`-separated. */
+export const FILE_LIST = 'files.json';
+
+/** The extension's files as the workbench registers them: relative paths, without the manifest and the listing itself. */
+export function extensionFiles(listing: unknown): string[] {
+    if (!Array.isArray(listing)) throw new Error(`${EXTENSION_DIR}${FILE_LIST} is not a list of files`);
+    return listing.filter(
+        (f): f is string =>
+            typeof f === 'string' && f !== 'package.json' && f !== FILE_LIST && !f.startsWith('/') && !f.split('/').includes('..'),
+    );
+}
+
+/** The extension for the api wrapper: its manifest and a URL for each of its files. */
+export async function loadExtension(base: URL): Promise<ExtensionConfig> {
+    const dir = new URL(EXTENSION_DIR, base);
+    const [manifest, listing] = await Promise.all([json(new URL('package.json', dir)), json(new URL(FILE_LIST, dir))]);
+    const filesOrContents = new Map<string, string | URL>();
+    for (const file of extensionFiles(listing)) filesOrContents.set(file, new URL(file, dir));
+    return { config: manifest as IExtensionManifest, filesOrContents };
+}
+
+async function json(url: URL): Promise<unknown> {
+    const response = await fetch(url);
+    if (!response.ok)
+        throw new Error(
+            `the MontiArc extension is not built into ${url.pathname} (${response.status}); run "npm run build -w @maa/ide-web"`,
+        );
+    return response.json();
+}

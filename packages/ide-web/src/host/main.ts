@@ -1,0 +1,130 @@
+/**
+ * The new IDE entry (host.html): VS Code's own workbench from @codingame/monaco-vscode-api
+ * (explorer, editors, quick open, command palette, keybindings, settings) over the workspace the
+ * backend serves, with the MontiArc extension (packages/vscode-extension, its web entry)
+ * registered and activated in it. The project's code here is only the glue: the file system
+ * provider over the backend's API, loading the extension's files, and the hooks the e2e tests and
+ * the benchmark read (`window.maaHost`). docs/ide.md, "The workbench host".
+ */
+import { LogLevel } from '@codingame/monaco-vscode-api';
+import * as monaco from '@codingame/monaco-vscode-editor-api';
+import EditorWorker from '@codingame/monaco-vscode-editor-api/esm/vs/editor/editor.worker.js?worker';
+import getExplorerServiceOverride from '@codingame/monaco-vscode-explorer-service-override';
+import { registerFileSystemOverlay } from '@codingame/monaco-vscode-files-service-override';
+import getKeybindingsServiceOverride from '@codingame/monaco-vscode-keybindings-service-override';
+import getSearchServiceOverride from '@codingame/monaco-vscode-search-service-override';
+import TextMateWorker from '@codingame/monaco-vscode-textmate-service-override/worker?worker';
+import { MonacoVscodeApiWrapper } from 'monaco-languageclient/vscodeApiWrapper';
+import * as vscode from 'vscode';
+import { loadExtension } from './extension.js';
+import { BackendFileSystem, WORKSPACE_ROOT } from './file-system.js';
+import { registerFileSearch } from './file-search.js';
+
+/** The extension's id (publisher.name of its manifest). */
+const EXTENSION_ID = 'maa-web.maa';
+/** The first file shown: the example's root component, unless `?open=<path>` names another. */
+const START_FILE = /(^|\/)ToastServiceRobot\.arc$/;
+
+export interface HostHooks {
+    timings: Record<string, number>;
+    ready: boolean;
+    /** The markers (diagnostics) of a workspace file, as the editor has them. */
+    markers(path: string): { severity: number; message: string; line: number }[];
+    /** Whether the language server has published diagnostics for the file (possibly none) since the page loaded. */
+    checked(path: string): boolean;
+    extensionActive(): boolean;
+}
+declare global {
+    interface Window {
+        maaHost: HostHooks;
+    }
+}
+
+const hooks: HostHooks = {
+    timings: { start: performance.now() },
+    ready: false,
+    markers: (path) =>
+        monaco.editor.getModelMarkers({ resource: monaco.Uri.file(`${WORKSPACE_ROOT}/${path}`) }).map((m) => ({
+            severity: m.severity,
+            message: m.message,
+            line: m.startLineNumber,
+        })),
+    checked: (path) => checked.has(`${WORKSPACE_ROOT}/${path}`),
+    extensionActive: () => vscode.extensions.getExtension(EXTENSION_ID)?.isActive === true,
+};
+/** The files the language server has published diagnostics for (vscode.languages.onDidChangeDiagnostics, from main()). */
+const checked = new Set<string>();
+window.maaHost = hooks;
+
+function startFile(files: string[]): string | undefined {
+    const requested = new URLSearchParams(location.search).get('open') ?? undefined;
+    const models = files.filter((f) => f.endsWith('.arc'));
+    return (requested && files.includes(requested) ? requested : undefined) ?? models.find((p) => START_FILE.test(p)) ?? models[0];
+}
+
+async function startWorkbench(container: HTMLElement): Promise<void> {
+    const extension = await loadExtension(new URL('.', document.baseURI));
+    const wrapper = new MonacoVscodeApiWrapper({
+        $type: 'extended',
+        viewsConfig: { $type: 'WorkbenchService', htmlContainer: container },
+        logLevel: LogLevel.Warning,
+        serviceOverrides: {
+            ...getKeybindingsServiceOverride(),
+            ...getExplorerServiceOverride(),
+            ...getSearchServiceOverride(),
+        },
+        workspaceConfig: {
+            workspaceProvider: {
+                trusted: true,
+                workspace: { folderUri: monaco.Uri.file(WORKSPACE_ROOT) },
+                open: async () => false,
+            },
+            productConfiguration: { nameShort: 'MontiArcAutomaton', nameLong: 'MontiArcAutomaton for the web' },
+        },
+        userConfiguration: {
+            json: JSON.stringify({
+                'workbench.colorTheme': 'Default Dark Modern',
+                'workbench.startupEditor': 'none',
+                'editor.semanticHighlighting.enabled': true,
+                'editor.guides.bracketPairsHorizontal': 'active',
+            }),
+        },
+        extensions: [extension],
+        // Monaco's own worker and the TextMate tokenizer (the extension's grammars), bundled by Vite.
+        monacoWorkerFactory: () => {
+            const environment: monaco.Environment = {
+                getWorker: (_moduleId, label) => (label === 'TextMateWorker' ? new TextMateWorker() : new EditorWorker()),
+            };
+            (globalThis as { MonacoEnvironment?: monaco.Environment }).MonacoEnvironment = environment;
+        },
+    });
+    await wrapper.start();
+}
+
+async function main(): Promise<void> {
+    const files = await BackendFileSystem.load();
+    registerFileSystemOverlay(1, files);
+    hooks.timings.files = performance.now();
+    const container = document.getElementById('workbench');
+    if (!container) throw new Error('host.html has no #workbench element');
+    await startWorkbench(container);
+    await registerFileSearch(WORKSPACE_ROOT, () => files.files());
+    hooks.timings.services = performance.now();
+    vscode.languages.onDidChangeDiagnostics((e) => {
+        for (const uri of e.uris) checked.add(uri.path);
+    });
+    const start = startFile(files.files());
+    if (start) await vscode.window.showTextDocument(vscode.Uri.file(`${WORKSPACE_ROOT}/${start}`), { preview: false });
+    hooks.timings.editor = performance.now();
+    // Opening a model activates the extension (onLanguage); wait for it, so `ready` means the language server runs.
+    await vscode.extensions.getExtension(EXTENSION_ID)?.activate();
+    hooks.timings.client = performance.now();
+    hooks.ready = true;
+    hooks.timings.ready = performance.now();
+    document.body.dataset.ready = 'true';
+}
+
+main().catch((error: unknown) => {
+    console.error(error);
+    document.body.dataset.failed = error instanceof Error ? error.message : String(error);
+});
