@@ -33,6 +33,8 @@ export interface MaaDiagramView extends DiagramView {
     currentTarget(): DiagramTarget | undefined;
     /** Called whenever a new model arrived (set or update). */
     onModelChanged(handler: () => void): Disposable;
+    /** The file name Export SVG suggests: the shown component's simple name, `-automaton` for an automaton view. */
+    exportFileName(): string;
 }
 
 let mountCounter = 0;
@@ -139,6 +141,10 @@ export class MountedDiagram implements MaaDiagramView {
     onModelChanged(handler: () => void): Disposable {
         this.modelHandlers.add(handler);
         return { dispose: () => this.modelHandlers.delete(handler) };
+    }
+
+    exportFileName(): string {
+        return svgFileName(this.schema?.['component'] as string | undefined, this.current);
     }
 
     dispose(): void {
@@ -279,7 +285,7 @@ export class MountedDiagram implements MaaDiagramView {
     private async downloadSvg(): Promise<void> {
         try {
             const svg = await this.exportSvg();
-            const fileName = svgFileName(this.schema?.['component'] as string | undefined, this.current);
+            const fileName = this.exportFileName();
             if (this.host.saveSvg) this.host.saveSvg(svg, fileName);
             else downloadText(svg, fileName);
         } catch (e) {

@@ -5,7 +5,7 @@
  * server's diagram server and back (relay.ts); selections go to the editor, Export SVG to a save
  * dialog, and the extension pushes what to show, the cursor, live values and active states.
  */
-import { type DiagramHost, type Disposable, mountDiagram, svgFileName } from '@maa/diagram-view';
+import { type DiagramHost, type Disposable, mountDiagram } from '@maa/diagram-view';
 import type { ActionMessage } from 'sprotty-protocol';
 import type { FromWebview, ToWebview } from '../protocol.js';
 import './webview.css';
@@ -36,8 +36,7 @@ view.onSelect((traces) => vscode.postMessage({ type: 'select', traces }));
 /** The command's Export SVG: the same file name the tool bar's button suggests. */
 async function exportSvg(): Promise<void> {
     try {
-        const target = view.currentTarget();
-        vscode.postMessage({ type: 'saveSvg', svg: await view.exportSvg(), fileName: svgFileName(target?.component, target) });
+        vscode.postMessage({ type: 'saveSvg', svg: await view.exportSvg(), fileName: view.exportFileName() });
     } catch (e) {
         console.warn('diagram export:', e);
     }
