@@ -6,7 +6,7 @@
 import type { LanguageFacts } from '@maa/language-server/language-facts';
 import { DIAGRAM_COMMANDS, DIAGRAM_PALETTE, DIAGRAM_TITLE_MENU, iconFiles, languageIconOf } from './diagram/contributions.js';
 import { SETTINGS } from './settings.js';
-import { SIMULATE_COMMANDS, SIMULATE_SETTINGS } from './simulate/contributions.js';
+import { SIMULATE_COMMANDS, SIMULATE_PALETTE, SIMULATE_SETTINGS } from './simulate/contributions.js';
 import { TEST_SETTINGS } from './testing/test-settings.js';
 import { fileLanguages, type TmGrammar, textMateGrammar } from './textmate.js';
 
@@ -105,6 +105,7 @@ export function contributions(facts: LanguageFacts): Contributions {
                 'editor/title': [...DIAGRAM_TITLE_MENU],
                 commandPalette: [
                     ...DIAGRAM_PALETTE,
+                    ...SIMULATE_PALETTE,
                     { command: 'maa.showGeneratedCode', when: `editorLangId in maa.modelLanguages` },
                     { command: 'maa.showModelElement', when: 'editorIsOpen' },
                 ],
