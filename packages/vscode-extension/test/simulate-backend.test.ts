@@ -3,8 +3,9 @@
 // the extension host dies), and the relay that the webview uses, attacked with foreign hosts,
 // origins and capabilities while maa-ide keeps its own checks.
 import { type ChildProcess, spawn } from 'node:child_process';
-import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { chmodSync, cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { request } from 'node:http';
+import { type AddressInfo, createServer } from 'node:net';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -49,7 +50,7 @@ interface Answer {
 }
 
 /** A raw HTTP request (fetch would not let a test send its own Host header). */
-function http(url: string, headers: Record<string, string> = {}, method = 'GET'): Promise<Answer> {
+function http(url: string, headers: Record<string, string> = {}, method = 'GET', body?: string): Promise<Answer> {
     return new Promise((resolve, reject) => {
         const req = request(url, { method, headers }, (res) => {
             let body = '';
@@ -60,7 +61,7 @@ function http(url: string, headers: Record<string, string> = {}, method = 'GET')
             res.on('end', () => resolve({ status: res.statusCode ?? 0, headers: res.headers, body }));
         });
         req.on('error', reject);
-        req.end();
+        req.end(body);
     });
 }
 
@@ -136,34 +137,62 @@ describe('the IDE backend under the extension', () => {
         ).rejects.toThrow(/exited .* before it served/);
     }, 60_000);
 
-    it('leaves no orphan when the extension host is killed', async () => {
+    it('leaves no orphan when the extension host is killed during a simulation', async () => {
+        // A stand-in maa-sim (as maa-ide's own tests use): its pid and its child's, a ready line,
+        // and a rosbridge port that accepts connections.
+        const listener = createServer((socket) => socket.destroy());
+        await new Promise<void>((resolve) => listener.listen(0, '127.0.0.1', resolve));
+        const rosbridgePort = (listener.address() as AddressInfo).port;
+        const pidsFile = path.join(tmp, 'sim.pids');
+        const fakeSim = path.join(tmp, 'fake-maa-sim');
+        writeFileSync(
+            fakeSim,
+            `#!/bin/bash\nsleep 300 &\necho "$$ $!" > "${pidsFile}"\necho '{"event": "ready", "rosbridge": "ws://127.0.0.1:${rosbridgePort}", "viser": null}'\nwait\n`,
+        );
+        chmodSync(fakeSim, 0o755);
+        const ws = workspace('ws-d');
+        cpSync(path.join(pkgDir, '..', '..', 'examples', 'toast-service'), path.join(ws, 'toast-service'), { recursive: true });
         const hostScript = path.join(tmp, 'host.mjs');
         writeFileSync(
             hostScript,
             `import { IdeBackend } from ${JSON.stringify(pathToFileURL(backendModule).href)};
 const backend = new IdeBackend(${JSON.stringify(launcher)});
-const running = await backend.ensure(${JSON.stringify(workspace('ws-d'))}, ${JSON.stringify(command)});
-console.log('pid ' + running.pid);
+const running = await backend.ensure(${JSON.stringify(ws)}, ${JSON.stringify({ ...command, extraArgs: ['--maa-sim', fakeSim] })});
+console.log('backend ' + JSON.stringify(running));
 setInterval(() => {}, 1000);
 `,
         );
         const host: ChildProcess = spawn(process.execPath, [hostScript], { stdio: ['ignore', 'pipe', 'inherit'] });
-        const pid = await new Promise<number>((resolve, reject) => {
-            let out = '';
-            host.stdout?.on('data', (c: Buffer) => {
-                out += c.toString();
-                const m = /pid (\d+)/.exec(out);
-                if (m?.[1]) resolve(Number(m[1]));
+        try {
+            const running = await new Promise<RunningBackend>((resolve, reject) => {
+                let out = '';
+                host.stdout?.on('data', (c: Buffer) => {
+                    out += c.toString();
+                    const m = /backend (\{.*\})\n/.exec(out);
+                    if (m?.[1]) resolve(JSON.parse(m[1]) as RunningBackend);
+                });
+                host.once('exit', (code) => reject(new Error(`the host exited (${code}) before the backend served: ${out}`)));
             });
-            host.once('exit', (code) => reject(new Error(`the host exited (${code}) before the backend served: ${out}`)));
-        });
-        expect(alive(pid)).toBe(true);
-        const hostExit = new Promise((r) => host.once('exit', r));
-        host.kill('SIGKILL');
-        await hostExit;
-        await gone(pid);
-        expect(alive(pid)).toBe(false);
-    }, 120_000);
+            const started = await http(
+                `http://127.0.0.1:${running.port}/api/sim/start`,
+                { authorization: `Bearer ${running.token}`, 'content-type': 'application/json' },
+                'POST',
+                JSON.stringify({ app: 'toast-service/TR.arcapp', platform: 'timesync', mode: 'lockstep' }),
+            );
+            expect(started.status, started.body).toBe(200);
+            const [simPid, sleepPid] = readFileSync(pidsFile, 'utf8').trim().split(' ').map(Number);
+            const pids = [running.pid, simPid ?? -1, sleepPid ?? -1];
+            for (const pid of pids) expect(alive(pid), String(pid)).toBe(true);
+            const hostExit = new Promise((r) => host.once('exit', r));
+            host.kill('SIGKILL');
+            await hostExit;
+            for (const pid of pids) await gone(pid);
+            for (const pid of pids) expect(alive(pid)).toBe(false);
+        } finally {
+            if (host.exitCode === null && host.signalCode === null) host.kill('SIGKILL');
+            listener.close();
+        }
+    }, 180_000);
 });
 
 describe('the relay between the webview and the backend', () => {
