@@ -115,11 +115,16 @@ describe('the IDE backend under the extension', () => {
         const again = await backend.ensure(a, command);
         expect(again).toBe(first);
         expect(backend.pid).toBe(first.pid);
+        // Calls at the same time take turns: one backend for both.
+        const c = workspace('ws-concurrent');
+        const [one, two] = await Promise.all([backend.ensure(c, command), backend.ensure(c, command)]);
+        expect(two.pid).toBe(one.pid);
+        expect(alive(first.pid)).toBe(false);
 
         const b = workspace('ws-b');
         const other = await backend.ensure(b, command);
-        expect(other.pid).not.toBe(first.pid);
-        expect(alive(first.pid)).toBe(false);
+        expect(other.pid).not.toBe(one.pid);
+        expect(alive(one.pid)).toBe(false);
         expect(other.workspace).toBe(b);
 
         await backend.stop();

@@ -42,6 +42,7 @@ export class IdeBackend {
     private child: ChildProcess | undefined;
     private current: Promise<RunningBackend> | undefined;
     private currentKey: string | undefined;
+    private queue: Promise<unknown> = Promise.resolve();
 
     /**
      * @param launcher backend-launcher.mjs (out/simulate/ in the extension)
@@ -52,8 +53,17 @@ export class IdeBackend {
         private readonly log?: (line: string) => void,
     ) {}
 
-    /** The backend of `workspace`, started when none runs for it (a backend of another folder or command is stopped first). */
-    async ensure(workspace: string, command: BackendCommand): Promise<RunningBackend> {
+    /**
+     * The backend of `workspace`, started when none runs for it (a backend of another folder or
+     * command is stopped first). Calls take turns, so two at once never start two backends.
+     */
+    ensure(workspace: string, command: BackendCommand): Promise<RunningBackend> {
+        const turn = this.queue.then(() => this.ensureNow(workspace, command));
+        this.queue = turn.catch(() => undefined);
+        return turn;
+    }
+
+    private async ensureNow(workspace: string, command: BackendCommand): Promise<RunningBackend> {
         const key = JSON.stringify([workspace, command.node, command.bin, command.extraArgs ?? []]);
         if (this.current && this.currentKey === key && this.alive()) return this.current;
         await this.stop();
