@@ -130,7 +130,7 @@ function addSimulationRoutes(router: Router, options: ApiOptions): void {
 }
 
 /** Checks the mode against the platform's kind, generates the platform (409 if that fails) and starts a session. */
-async function startSimulation({ workspace, generation, sims }: ApiOptions, request: SimStartRequest): Promise<SimStartAnswer> {
+export async function startSimulation({ workspace, generation, sims }: ApiOptions, request: SimStartRequest): Promise<SimStartAnswer> {
     const { app: appPath, platform: platformName, speed, ...body } = request;
     const platform = await platformOf(workspace, appPath, platformName);
     const mode = body.mode ?? (platform.kind === 'ros2' ? 'ros2' : 'lockstep');

@@ -5,3 +5,16 @@ export type { AppInfo, AppPlatformInfo } from './apps.js';
 export type { GenerateAnswer, IdeDiagnostic } from './generation.js';
 export type { SimStatus, SimMode } from './sim-session.js';
 export type { WorkspaceEntry } from './workspace.js';
+// The services the lab server runs per student workspace (docs/lab.md "Workspaces").
+export { type ApiOptions, createApiRouter, startSimulation } from './api.js';
+export { listApps } from './apps.js';
+export { GenerationService } from './generation.js';
+export { readRequest, requireQuery } from './http-util.js';
+export { descendantGroups, groupAlive, processAlive } from './process-group.js';
+export { ROSBRIDGE_PATH, rejectUpgrade, SimProxy, VISER_PATH } from './proxy.js';
+export { PathRedactor } from './redact.js';
+export type { Router } from './router.js';
+export { packageDir, ros2Environment } from './server.js';
+export { SimSessions, type SimSessionOptions } from './sim-session.js';
+export { type StreamTestAnswer, StreamTestService, streamTestRequest } from './stream-tests.js';
+export { Workspace } from './workspace.js';

@@ -264,7 +264,7 @@ function shutdown(server: Server, { sims, proxy }: Services, upgraded: Set<Duple
 }
 
 /** The default venv is created by its setup script when missing; another one must exist. */
-function ros2Environment(venv: string | undefined): Ros2Environment {
+export function ros2Environment(venv: string | undefined): Ros2Environment {
     const scripts = path.join(repoDir, 'packages', 'generators-python', 'scripts');
     const dir = path.resolve(venv ?? defaults.ros2Venv);
     return new Ros2Environment({
