@@ -296,6 +296,24 @@ describe('the webview messages and page', () => {
     });
 });
 
+describe('the diagram commands in the manifest', () => {
+    it('show their buttons and palette entries on component files only, and only where an entry registered the diagram', () => {
+        const menus = contributions(LANGUAGE_FACTS).contributes['menus'] as Record<string, Array<{ command: string; when: string }>>;
+        const diagramEntries = Object.values(menus)
+            .flat()
+            .filter((m) => ['maa.openDiagram', 'maa.openAutomatonView', 'maa.exportDiagramSvg'].includes(m.command));
+        expect(menus['editor/title']?.map((m) => m.command).filter((c) => c.startsWith('maa.open'))).toEqual([
+            'maa.openDiagram',
+            'maa.openAutomatonView',
+        ]);
+        for (const m of diagramEntries) expect(m.when, m.command).toMatch(/maa\.diagramAvailable|maa\.diagramOpen/);
+        for (const m of diagramEntries.filter((e) => e.command !== 'maa.exportDiagramSvg')) expect(m.when).toMatch(/LangId == 'arc'/);
+        expect(
+            diagramEntries.filter((m) => m.command === 'maa.openAutomatonView').every((m) => m.when.includes('maa.cursorInAutomaton')),
+        ).toBe(true);
+    });
+});
+
 describe('the language icons', () => {
     it('gives every file language of the family a light and a dark icon, written with the manifest', () => {
         const c = contributions(LANGUAGE_FACTS);

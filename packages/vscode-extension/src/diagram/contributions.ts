@@ -11,8 +11,11 @@ export const DIAGRAM_COMMANDS = [
     { command: 'maa.exportDiagramSvg', title: 'MontiArc: Export Diagram as SVG', category: 'MontiArc' },
 ] as const;
 
-/** Component files: the languages with a diagram. */
-const HAS_DIAGRAM = "resourceLangId == 'arc'";
+/**
+ * Component files (the languages with a diagram), where the running entry registered the diagram
+ * (`maa.diagramAvailable`, set by registerDiagram: an entry without it shows no dead buttons).
+ */
+const HAS_DIAGRAM = "resourceLangId == 'arc' && maa.diagramAvailable";
 
 /** The editor title buttons: Open Diagram on component files, Open Automaton View while the cursor is in an automaton. */
 export const DIAGRAM_TITLE_MENU = [
@@ -22,8 +25,8 @@ export const DIAGRAM_TITLE_MENU = [
 
 /** The commands in the command palette only where they apply. */
 export const DIAGRAM_PALETTE = [
-    { command: 'maa.openDiagram', when: "editorLangId == 'arc'" },
-    { command: 'maa.openAutomatonView', when: "editorLangId == 'arc' && maa.cursorInAutomaton" },
+    { command: 'maa.openDiagram', when: "editorLangId == 'arc' && maa.diagramAvailable" },
+    { command: 'maa.openAutomatonView', when: "editorLangId == 'arc' && maa.diagramAvailable && maa.cursorInAutomaton" },
     { command: 'maa.exportDiagramSvg', when: 'maa.diagramOpen' },
 ] as const;
 

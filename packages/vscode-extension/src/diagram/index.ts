@@ -139,6 +139,7 @@ function followEditors(): vscode.Disposable[] {
 
 /** Registers the diagram's commands and the relay of the language server's `diagram/accept` notifications. */
 export function registerDiagram(context: vscode.ExtensionContext, client: DiagramClient): void {
+    void vscode.commands.executeCommand('setContext', 'maa.diagramAvailable', true);
     context.subscriptions.push(
         client.onNotification('diagram/accept', (message) => relay.fromServer(message)),
         vscode.commands.registerCommand('maa.openDiagram', (uri?: vscode.Uri) => openDiagram(context, client, false, uri)),
