@@ -4,7 +4,7 @@ import path from 'node:path';
 import { Command, Option } from 'commander';
 import { DEFAULT_INVITATION_DAYS, invitationLink, inviteUser, newInvitation } from '../auth/invitations.js';
 import { hashPassword, passwordProblem } from '../auth/passwords.js';
-import { loginProblem, parseRoster, RosterError } from '../auth/roster.js';
+import { loginProblem, parseRoster, RosterError, type RosterEntry } from '../auth/roster.js';
 import { DEFAULT_PORT } from '../http/server.js';
 import { type ImportedUser, type LabStore, type Role, StorageConflictError } from '../storage/index.js';
 import { DATA_DIR_HELP, LabCliError, type LabIo, withStore } from './io.js';
@@ -128,7 +128,7 @@ async function importRoster(
     const text = await readFile(path.resolve(io.cwd, file), 'utf8').catch((e: Error) => {
         throw new LabCliError(`cannot read the roster ${file}: ${e.message}`);
     });
-    let entries: ReturnType<typeof parseRoster>;
+    let entries: RosterEntry[];
     try {
         entries = parseRoster(text);
     } catch (e) {
@@ -137,12 +137,7 @@ async function importRoster(
     }
     await withStore(io, options.dataDir, async (store) => {
         const course = await courseId(store, options.course);
-        const taken: string[] = [];
-        for (const { line, user } of entries) {
-            if (await store.findUserByLogin(user.login)) taken.push(`line ${line}: the login ${user.login} exists already`);
-            if (user.email && (await store.findUserByEmail(user.email)))
-                taken.push(`line ${line}: the e-mail ${user.email} belongs to a user already`);
-        }
+        const taken = await takenInStore(store, entries);
         if (taken.length > 0) throw new LabCliError(`${file}: ${taken.join('\n')}\nnothing was imported`);
         const prepared = entries.map(({ user }) => ({ user, invitation: newInvitation(expires) }));
         await store
@@ -169,6 +164,17 @@ async function importRoster(
             io.out(`imported ${entries.length} users${where}; their one-time invitation links (valid ${expires} days):\n${csv}`);
         }
     });
+}
+
+/** The rows whose login or e-mail a user in the store has already, with their lines. */
+async function takenInStore(store: LabStore, entries: RosterEntry[]): Promise<string[]> {
+    const taken: string[] = [];
+    for (const { line, user } of entries) {
+        if (await store.findUserByLogin(user.login)) taken.push(`line ${line}: the login ${user.login} exists already`);
+        if (user.email && (await store.findUserByEmail(user.email)))
+            taken.push(`line ${line}: the e-mail ${user.email} belongs to a user already`);
+    }
+    return taken;
 }
 
 function csvField(value: string): string {
