@@ -143,11 +143,19 @@ describe.each(BACKENDS)('single sign-on on %s', (backendName) => {
 
     const isCallback = (url: URL) => url.pathname === '/api/oidc/callback';
 
-    /** Starts a sign-on at the lab and signs on at the provider as `subject`; returns the callback URL the provider sent the browser to. */
-    async function signOnAtProvider(browser: Browser, subject: string): Promise<{ callback: string; authorization: URL }> {
+    /**
+     * Starts a sign-on at the lab and signs on at the provider as `subject`; returns the callback
+     * URL the provider sent the browser to. `tamper` may change the authorization request first.
+     */
+    async function signOnAtProvider(
+        browser: Browser,
+        subject: string,
+        tamper?: (url: URL) => void,
+    ): Promise<{ callback: string; authorization: URL }> {
         const start = await browser.get(`${lab.url}/api/oidc/start`);
         expect(start.status).toBe(302);
         const authorization = new URL(start.headers.get('location') ?? '');
+        tamper?.(authorization);
         let at = await browser.follow(authorization.href, isCallback);
         for (let step = 0; step < 4 && !isCallback(new URL(at.url)); step++) {
             const page = (await at.response?.text()) ?? '';
@@ -208,7 +216,7 @@ describe.each(BACKENDS)('single sign-on on %s', (backendName) => {
         expect((await store.findUserByLogin('bob'))?.oidcSubject).toBeNull();
     });
 
-    it('refuses a tampered state, a replayed callback and a callback without the flow cookie (400)', async () => {
+    it('refuses a tampered state, another nonce, another PKCE challenge, a replayed callback and a callback without the flow cookie (400)', async () => {
         const tampered = new Browser();
         const { callback } = await signOnAtProvider(tampered, 'prof-0001');
         const bad = new URL(callback);
@@ -223,6 +231,21 @@ describe.each(BACKENDS)('single sign-on on %s', (backendName) => {
         const genuine = (await signOnAtProvider(replay, 'prof-0001')).callback;
         expect((await replay.get(genuine)).status).toBe(302);
         expect((await replay.get(genuine)).status).toBe(400);
+
+        // An ID token for another nonce (the authorization request changed on the way) is refused.
+        const noncey = new Browser();
+        const swapped = await noncey.get(
+            (await signOnAtProvider(noncey, 'prof-0001', (url) => url.searchParams.set('nonce', 'an-attackers-nonce'))).callback,
+        );
+        expect(swapped.status).toBe(400);
+        expect(((await swapped.json()) as { error: string }).error).toContain('nonce');
+        // PKCE: a code issued for another code challenge is refused at the token endpoint.
+        const pkce = new Browser();
+        const otherChallenge = await pkce.get(
+            (await signOnAtProvider(pkce, 'prof-0001', (url) => url.searchParams.set('code_challenge', 'A'.repeat(43)))).callback,
+        );
+        expect(otherChallenge.status).toBe(400);
+        expect((await pkce.get(`${lab.url}/api/me`)).status).toBe(401);
 
         // Another browser (an attacker who got the callback URL) has no flow cookie.
         const victim = new Browser();
