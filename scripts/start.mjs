@@ -90,7 +90,7 @@ async function simulatorPhase(phase, verbose) {
     console.log(`${end} ${/is up to date/.test(output) ? 'up to date' : 'set up'}, ${seconds(started)}`);
 }
 
-/** The folder the IDE edits: --workspace, or .maa-workspace (a copy of examples/ made once). */
+/** The folder the IDE edits: --workspace, or .maa-workspace (a copy of examples/ but examples/lab/, made once). */
 function prepareWorkspace() {
     const chosen = option('--workspace');
     if (chosen) {
@@ -101,8 +101,10 @@ function prepareWorkspace() {
     const workspace = path.join(repo, '.maa-workspace');
     if (args.includes('--reset-workspace')) rmSync(workspace, { recursive: true, force: true });
     if (!existsSync(workspace)) {
-        cpSync(path.join(repo, 'examples'), workspace, { recursive: true });
-        console.log(`      created the workspace ${workspace} (a copy of examples/)`);
+        // the lab's exercises (examples/lab/, with their reference solutions) belong to the lab server
+        const lab = path.join(repo, 'examples', 'lab');
+        cpSync(path.join(repo, 'examples'), workspace, { recursive: true, filter: (src) => src !== lab });
+        console.log(`      created the workspace ${workspace} (a copy of examples/ without the lab's exercises)`);
     }
     return workspace;
 }
