@@ -4,7 +4,9 @@
 // Reports medians of: time to interactive editor (and to the first diagram), keystroke →
 // updated diagnostics, keystroke → updated diagram; and the JavaScript bundle size of the app.
 //
-//   node e2e/bench.mjs [--runs N] [--components N] [--json]
+//   node e2e/bench.mjs [--runs N] [--components N] [--json] [--host]
+//   --host: the workbench host (host.html: VS Code's workbench with the MontiArc extension) instead of
+//           the IDE (index.html): load times and keystroke → diagnostics; it has no diagram yet.
 import { readdirSync, statSync, readFileSync, writeFileSync, mkdirSync } from 'node:fs';
 import path from 'node:path';
 import { gzipSync } from 'node:zlib';
@@ -15,6 +17,8 @@ const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name
 const RUNS = Number(option('--runs', '5'));
 const COMPONENTS = Number(option('--components', '200'));
 const asJson = args.includes('--json');
+const HOST = args.includes('--host');
+const PAGE = HOST ? 'host.html' : 'index.html';
 
 const progress = (line) => process.stderr.write(`bench: ${line}\n`);
 const median = (xs) => {
@@ -35,7 +39,7 @@ function bundleSize() {
         }
     };
     walk(appDir);
-    const index = readFileSync(path.join(appDir, 'index.html'), 'utf8');
+    const index = readFileSync(path.join(appDir, PAGE), 'utf8');
     const entries = [...index.matchAll(/src="\.\/(assets\/[^"]+\.js)"/g)].map((m) => path.join(appDir, m[1]));
     const sum = (list) => list.reduce((acc, f) => acc + statSync(f).size, 0);
     const gz = (list) => list.reduce((acc, f) => acc + gzipSync(readFileSync(f)).length, 0);
@@ -54,7 +58,18 @@ function bundleSize() {
     };
 }
 
+/** Loads host.html and waits until the extension is active (no diagram in the host yet). */
+async function loadHost(page, url, open) {
+    await page.goto(`${url}host.html${open ? `?open=${encodeURIComponent(open)}` : ''}`);
+    await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 120_000 });
+    const failed = await page.evaluate(() => document.body.dataset.failed);
+    if (failed) throw new Error(`the workbench host did not start: ${failed}`);
+    const timings = await page.evaluate(() => window.maaHost.timings);
+    return { interactiveMs: timings.editor, readyMs: timings.ready, diagramMs: NaN };
+}
+
 async function loadIde(page, url, open) {
+    if (HOST) return loadHost(page, url, open);
     const started = Date.now();
     await page.goto(open ? `${url}?open=${encodeURIComponent(open)}` : url);
     await page.waitForFunction(() => window.maaIde?.ready === true, undefined, { timeout: 120_000 });
@@ -76,7 +91,9 @@ async function loadIde(page, url, open) {
 async function keystroke(page, { needle, type, expectInDiagram, expectUpdate, path: file }) {
     return await page.evaluate(
         async ({ needle, type, expectInDiagram, expectUpdate, file }) => {
-            const ide = window.maaIde;
+            // The workbench host (--host) answers through the same three members.
+            const host = window.maaHost;
+            const ide = host ? { editor: host.activeEditor(), markers: () => host.allMarkers(), diagramUpdates: 0 } : window.maaIde;
             const editor = ide.editor;
             const model = editor.getModel();
             const match = model.findMatches(needle, false, false, true, null, false)[0];
@@ -136,11 +153,15 @@ async function benchWorkspace(label, workspaceFrom, startFile, edits, browser) {
         const { page } = browser;
         await ide.login(page);
         for (let i = 0; i < Math.max(2, Math.min(RUNS, 3)); i++) {
-            result.load.push(await loadIde(page, ide.url, startFile));
+            // The host opens the edited file first (it picks the lab's copy of the robot otherwise).
+            result.load.push(await loadIde(page, ide.url, startFile ?? (HOST ? edits[0]?.path : undefined)));
             progress(`${label}: load ${i + 1}: ${JSON.stringify(result.load.at(-1))}`);
         }
-        for (const edit of edits) {
-            if (edit.open && edit.open !== startFile) {
+        for (const edit of HOST ? edits.filter((e) => !e.expectInDiagram && !e.expectUpdate) : edits) {
+            if (HOST && edit.open && edit.open !== startFile) {
+                await page.evaluate((p) => window.maaHost.open(p), edit.open);
+                await page.waitForTimeout(1500);
+            } else if (edit.open && edit.open !== startFile) {
                 const opened = Date.now();
                 await page.evaluate((p) => window.maaIde.open(p), edit.open);
                 // The shown component's own node (its title is "<name>: <qualified name>"), not the toolbar
@@ -250,11 +271,16 @@ const summary = results.map((r) => ({
     runs: r.edits,
 }));
 mkdirSync(artifacts, { recursive: true });
-writeFileSync(path.join(artifacts, 'bench.json'), JSON.stringify({ summary, bundle, load: results.map((r) => r.load) }, null, 2));
+writeFileSync(
+    path.join(artifacts, HOST ? 'bench-host.json' : 'bench.json'),
+    JSON.stringify({ summary, bundle, load: results.map((r) => r.load) }, null, 2),
+);
 if (asJson) {
     console.log(JSON.stringify({ summary, bundle }, null, 2));
 } else {
-    console.log(`\nIDE benchmark (medians of ${RUNS} keystrokes; loads with a warm HTTP cache after the first)`);
+    console.log(
+        `\n${HOST ? 'Workbench host (host.html)' : 'IDE'} benchmark (medians of ${RUNS} keystrokes; loads with a warm HTTP cache after the first)`,
+    );
     for (const s of summary) {
         console.log(`\n${s.workspace}`);
         console.log(`  time to interactive editor      ${fmt(s.interactiveEditorMs)} (first load ${fmt(s.firstLoadInteractiveMs)})`);
@@ -272,5 +298,5 @@ if (asJson) {
             `entry ${kb(bundle.entryBytes)} (${kb(bundle.entryGzipBytes)} gzip); workers ${kb(bundle.workerBytes)}`,
     );
     console.log(`  largest: ${bundle.largest.map((f) => `${f.file} ${kb(f.bytes)}`).join(', ')}`);
-    console.log(`\n(details in ${path.relative(process.cwd(), path.join(artifacts, 'bench.json'))})`);
+    console.log(`\n(details in ${path.relative(process.cwd(), path.join(artifacts, HOST ? 'bench-host.json' : 'bench.json'))})`);
 }

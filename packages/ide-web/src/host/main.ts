@@ -33,6 +33,12 @@ export interface HostHooks {
     /** Whether the language server has published diagnostics for the file (possibly none) since the page loaded. */
     checked(path: string): boolean;
     extensionActive(): boolean;
+    /** Opens a workspace file in an editor (the benchmark). */
+    open(path: string): Promise<void>;
+    /** The code editor of the active text editor (the benchmark types into it). */
+    activeEditor(): monaco.editor.ICodeEditor | undefined;
+    /** Every marker of the workspace's files, with its path (the benchmark compares them). */
+    allMarkers(): { path: string; severity: number; message: string; line: number }[];
 }
 declare global {
     interface Window {
@@ -51,6 +57,23 @@ const hooks: HostHooks = {
         })),
     checked: (path) => checked.has(`${WORKSPACE_ROOT}/${path}`),
     extensionActive: () => vscode.extensions.getExtension(EXTENSION_ID)?.isActive === true,
+    open: async (path) => {
+        await vscode.window.showTextDocument(vscode.Uri.file(`${WORKSPACE_ROOT}/${path}`), { preview: false });
+    },
+    activeEditor: () => {
+        const uri = vscode.window.activeTextEditor?.document.uri.toString();
+        return monaco.editor.getEditors().find((e) => e.getModel()?.uri.toString() === uri);
+    },
+    allMarkers: () =>
+        monaco.editor
+            .getModelMarkers({})
+            .filter((m) => m.resource.path.startsWith(`${WORKSPACE_ROOT}/`))
+            .map((m) => ({
+                path: m.resource.path.slice(WORKSPACE_ROOT.length + 1),
+                severity: m.severity,
+                message: m.message,
+                line: m.startLineNumber,
+            })),
 };
 /** The files the language server has published diagnostics for (vscode.languages.onDidChangeDiagnostics, from main()). */
 const checked = new Set<string>();
@@ -114,7 +137,7 @@ async function main(): Promise<void> {
         for (const uri of e.uris) checked.add(uri.path);
     });
     const start = startFile(files.files());
-    if (start) await vscode.window.showTextDocument(vscode.Uri.file(`${WORKSPACE_ROOT}/${start}`), { preview: false });
+    if (start) await hooks.open(start);
     hooks.timings.editor = performance.now();
     // Opening a model activates the extension (onLanguage); wait for it, so `ready` means the language server runs.
     await vscode.extensions.getExtension(EXTENSION_ID)?.activate();

@@ -9,6 +9,8 @@ import * as vscode from 'vscode';
 import { LanguageClient, type LanguageClientOptions } from 'vscode-languageclient/browser.js';
 import { generate } from '../generate-command.js';
 import type { ContributedLanguage } from '../settings.js';
+import { registerStreamTests } from '../testing/controller.js';
+import { WebStreamTestRunner } from '../testing/web-runner.js';
 import { backendBase, backendRunner } from './backend.js';
 import { startServerWorker } from './server-worker.js';
 
@@ -60,10 +62,25 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
         generated,
         vscode.commands.registerCommand('maa.generate', () => generate(runner, generated)),
     );
+    registerTests(context, apiBase, root);
     try {
         client = await startClient(context, languages, apiBase);
     } catch (e) {
         void vscode.window.showErrorMessage(`MontiArc: the language server did not start: ${e instanceof Error ? e.message : String(e)}`);
+    }
+}
+
+/**
+ * The `.stream` tests in the Testing API, run through the backend's `POST /api/test`. A host
+ * without VS Code's testing service (the browser IDE's workbench at monaco-vscode-api 25.1.2,
+ * docs/ide.md) refuses the controller on its side and logs that; a host that throws here
+ * instead does not stop the rest of the extension either.
+ */
+function registerTests(context: vscode.ExtensionContext, apiBase: string, root: string): void {
+    try {
+        context.subscriptions.push(...registerStreamTests(new WebStreamTestRunner(apiBase, root)));
+    } catch (e) {
+        console.warn(`MontiArc: no stream tests in this host (${e instanceof Error ? e.message : String(e)})`);
     }
 }
 
