@@ -1,6 +1,7 @@
 // @maa/lab-server: the classroom lab server (docs/lab.md): its storage, its HTTP server with
 // accounts and sessions, and the `maa-lab` command.
 export * from './storage/index.js';
+export * from './exercises/index.js';
 export { type LabServer, type LabServerOptions, startLabServer, DEFAULT_PORT } from './http/server.js';
 export {
     type Access,

@@ -111,6 +111,25 @@ export interface InvitationsTable {
     used_at: Date | null;
 }
 
+/** Every version of an exercise's starter files (migration 0003). */
+export interface StarterVersionsTable {
+    exercise_id: number;
+    version: number;
+    /** path → content */
+    files: JSONColumnType<Record<string, string>, string, string>;
+    created_at: CreatedAt;
+}
+
+/** Per workspace file from a starter: the starter version it was last merged with (migration 0003). */
+export interface StarterFilesTable {
+    workspace_id: number;
+    path: string;
+    base_version: number;
+    /** a newer starter version that could not be merged into the file (null: none) */
+    conflict_version: number | null;
+    updated_at: Date;
+}
+
 export interface Database {
     users: UsersTable;
     courses: CoursesTable;
@@ -122,5 +141,7 @@ export interface Database {
     test_results: TestResultsTable;
     simulation_results: SimulationResultsTable;
     sessions: SessionsTable;
+    starter_versions: StarterVersionsTable;
+    starter_files: StarterFilesTable;
     invitations: InvitationsTable;
 }

@@ -13,6 +13,7 @@ import {
 import { importAll, insertInvitation, insertUser, redeem, toInvitation } from './invitations.js';
 import { toCourse, toExercise, toSession, toSimulationResult, toSubmission, toTestResult, toUser } from './rows.js';
 import type { Database } from './schema.js';
+import { insertStarterVersion, selectStarterFiles, selectStarterVersion, updateSpec, upsertStarterFile } from './starters.js';
 import {
     type Course,
     type Exercise,
@@ -26,6 +27,8 @@ import {
     type SaveFile,
     type Session,
     type SimulationResult,
+    type StarterFile,
+    type StarterVersion,
     StorageConflictError,
     type Submission,
     type TestResult,
@@ -196,6 +199,30 @@ class KyselyLabStore implements LabStore {
     async listExercises(courseId: number): Promise<Exercise[]> {
         return (await this.db.selectFrom('exercises').selectAll().where('course_id', '=', courseId).orderBy('name').execute()).map(
             toExercise,
+        );
+    }
+
+    updateExerciseSpec(exerciseId: number, spec: Record<string, unknown>): Promise<Exercise> {
+        return updateSpec(this.db, exerciseId, spec);
+    }
+
+    addStarterVersion(exerciseId: number, files: Record<string, string>): Promise<StarterVersion> {
+        return conflictsAsErrors(`cannot add a starter version to exercise ${exerciseId}`, () =>
+            insertStarterVersion(this.db, exerciseId, files),
+        );
+    }
+
+    starterVersion(exerciseId: number, version?: number): Promise<StarterVersion | undefined> {
+        return selectStarterVersion(this.db, exerciseId, version);
+    }
+
+    starterFiles(workspaceId: number): Promise<StarterFile[]> {
+        return selectStarterFiles(this.db, workspaceId);
+    }
+
+    setStarterFile(workspaceId: number, file: Omit<StarterFile, 'updatedAt'>): Promise<void> {
+        return conflictsAsErrors(`cannot record the starter of ${file.path} in workspace ${workspaceId}`, () =>
+            upsertStarterFile(this.db, workspaceId, file),
         );
     }
 

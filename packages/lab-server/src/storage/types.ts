@@ -44,6 +44,25 @@ export interface Exercise {
     createdAt: Date;
 }
 
+/** One version of an exercise's starter files (1 at the release, +1 at each update that changed them). */
+export interface StarterVersion {
+    exerciseId: number;
+    version: number;
+    /** path → content */
+    files: Record<string, string>;
+    createdAt: Date;
+}
+
+/** A workspace file that came from the starter: the starter version it was last merged with. */
+export interface StarterFile {
+    path: string;
+    /** the base of the next three-way merge */
+    baseVersion: number;
+    /** a newer starter version that could not be merged into the file (null: none) */
+    conflictVersion: number | null;
+    updatedAt: Date;
+}
+
 /** One student's (or the instructor's) workspace for one exercise. */
 export interface Workspace {
     id: number;
@@ -168,6 +187,16 @@ export interface LabStore {
     releaseExercise(exerciseId: number, at?: Date): Promise<Exercise>;
     findExercise(courseId: number, name: string): Promise<Exercise | undefined>;
     listExercises(courseId: number): Promise<Exercise[]>;
+    /** Replaces the exercise's spec (an updated exercise.json). */
+    updateExerciseSpec(exerciseId: number, spec: Record<string, unknown>): Promise<Exercise>;
+    /** Stores the next version of the exercise's starter files (1 for the first) and returns it. */
+    addStarterVersion(exerciseId: number, files: Record<string, string>): Promise<StarterVersion>;
+    /** The given starter version of the exercise, or its newest; undefined when there is none. */
+    starterVersion(exerciseId: number, version?: number): Promise<StarterVersion | undefined>;
+    /** The workspace's files that came from the starter, by path. */
+    starterFiles(workspaceId: number): Promise<StarterFile[]>;
+    /** Records the starter version a workspace file was merged with (and a conflict, if any). */
+    setStarterFile(workspaceId: number, file: Omit<StarterFile, 'updatedAt'>): Promise<void>;
 
     /** The owner's workspace for the exercise, created on first use. */
     workspace(ownerId: number, exerciseId: number): Promise<Workspace>;
