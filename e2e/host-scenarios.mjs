@@ -31,7 +31,7 @@ async function runCommand(page, title) {
 export const hostScenarios = [
     {
         id: 'h1-host-open',
-        name: "workbench host: the example in VS Code's workbench (explorer, editor, the extension active)",
+        name: "workbench host: the example in VS Code's workbench (explorer, editor, the extension active, quick open)",
         async run({ page, url, shot }) {
             await openHost(page, url);
             await page
@@ -45,6 +45,17 @@ export const hostScenarios = [
             const active = await page.evaluate(() => window.maaHost.extensionActive());
             if (!active) await fail('the MontiArc extension is not active');
             await shot('workbench');
+            // Quick open (Ctrl+P) finds workspace files through the host's file search provider.
+            const mod = process.platform === 'darwin' ? 'Meta' : 'Control';
+            await page.keyboard.press(`${mod}+KeyP`);
+            const input = page.locator('.quick-input-widget .quick-input-box input');
+            await input.waitFor({ timeout: 10_000 });
+            await input.fill('toastercontroller.arc');
+            const row = page.locator('.quick-input-list .monaco-list-row', { hasText: 'ToasterController.arc' }).first();
+            await row.waitFor({ timeout: 20_000 });
+            await shot('quick-open');
+            await row.click();
+            await page.locator('.tabs-container .tab.active', { hasText: 'ToasterController.arc' }).waitFor({ timeout: 10_000 });
         },
     },
     {
