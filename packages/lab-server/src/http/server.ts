@@ -6,6 +6,7 @@ import { HttpError, sendError, StaticApp } from '@maa/ide-server/http';
 import { type OidcSettings, OidcSignOn } from '../auth/oidc.js';
 import { DEFAULT_RATE_LIMITS, LoginRateLimiter, type RateLimitOptions } from '../auth/rate-limit.js';
 import { DEFAULT_SESSION_HOURS, SessionService } from '../auth/sessions.js';
+import { addDashboardRoutes } from '../dashboard/index.js';
 import type { LabStore } from '../storage/index.js';
 import { addAuthRoutes } from './auth-routes.js';
 import { addCourseRoutes } from './course-routes.js';
@@ -60,6 +61,7 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
     const routes = new LabRoutes();
     addAuthRoutes(routes, { sessions, limiter: new LoginRateLimiter(options.rateLimits ?? DEFAULT_RATE_LIMITS), log });
     addCourseRoutes(routes);
+    addDashboardRoutes(routes);
     addPages(routes, options.oidc !== undefined);
     if (options.oidc) {
         const signOn = await OidcSignOn.discover(options.oidc, `${publicUrl}/api/oidc/callback`);

@@ -1,0 +1,214 @@
+// The instructor's dashboard against a real server on both storage backends: the JSON of a course
+// with 2 students × 2 exercises (one workspace with errors, one with its stream tests passed), the
+// ETag (an unchanged dashboard is a 304, a save changes it), the CSV, the read-only workspace view,
+// the pages under their CSP, and 403 for a student on every dashboard route.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { hashPassword } from '../src/auth/passwords.js';
+import { buildDashboard, type FileDiagnostic, WorkspaceChecker } from '../src/dashboard/index.js';
+import { type LabServer, startLabServer } from '../src/http/server.js';
+import { type LabStore, openLabStore, type User } from '../src/storage/index.js';
+import { BACKENDS, type Backend, startBackend } from './backends.js';
+import { Client } from './http-client.js';
+
+const PASSWORD = 'correct horse battery staple';
+const GOOD = 'package lamp;\ncomponent Lamp {\n  port in boolean on;\n  port out boolean light;\n}\n';
+const BAD = 'package lamp;\ncomponent Lamp {\n  port in boolean on;\n  port out Nope light;\n}\n';
+
+describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
+    let backend: Backend;
+    let store: LabStore;
+    let server: LabServer;
+    let ada: User;
+    let adaLamp: number;
+
+    beforeAll(async () => {
+        backend = await startBackend(backendName);
+        store = await openLabStore(await backend.freshStorage());
+        const passwordHash = await hashPassword(PASSWORD);
+        const teacher = await store.createUser({ login: 'teacher', name: 'The Teacher', role: 'instructor', passwordHash });
+        ada = await store.createUser({ login: 'ada', name: 'Ada, "the first"', role: 'student', passwordHash });
+        const bob = await store.createUser({ login: 'bob', name: 'Bob\nNewline', role: 'student', passwordHash });
+        const course = await store.createCourse({ name: 'robotics', title: 'Robotics lab' });
+        for (const u of [teacher, ada, bob]) await store.enroll(course.id, u.id);
+        const lamp = await store.createExercise({ courseId: course.id, name: 'lamp', spec: { title: 'The lamp' } });
+        const tests = await store.createExercise({ courseId: course.id, name: 'tests', spec: { title: 'Stream tests' } });
+        await store.releaseExercise(lamp.id);
+        await store.releaseExercise(tests.id);
+        // ada: the lamp with an error; the tests exercise correct with every stream test passed.
+        adaLamp = (await store.workspace(ada.id, lamp.id)).id;
+        await store.saveFile({ workspaceId: adaLamp, path: 'lamp/Lamp.arc', content: BAD, authorId: ada.id });
+        const adaTests = (await store.workspace(ada.id, tests.id)).id;
+        await store.saveFile({ workspaceId: adaTests, path: 'lamp/Lamp.arc', content: GOOD, authorId: ada.id });
+        await store.recordTestResult({ workspaceId: adaTests, submissionId: null, passed: 3, failed: 0, skipped: 0, details: null });
+        await store.recordSimulationResult({
+            workspaceId: adaTests,
+            submissionId: null,
+            goalReached: true,
+            simulatedSeconds: 12,
+            details: null,
+        });
+        // bob: has not opened anything.
+        server = await startLabServer({ store, port: 0, log: () => undefined });
+    });
+    afterAll(async () => {
+        await server?.close();
+        await store?.close();
+        await backend?.dispose();
+    });
+
+    async function loggedIn(login: string): Promise<Client> {
+        const c = new Client(server.url);
+        const answer = await c.login(login, PASSWORD);
+        expect(answer.status, answer.text).toBe(200);
+        return c;
+    }
+
+    it('gives the instructor students × exercises with diagnostics, tests, goal and activity', async () => {
+        const teacher = await loggedIn('teacher');
+        const answer = await teacher.send('/api/courses/robotics/dashboard');
+        expect(answer.status, answer.text).toBe(200);
+        const d = answer.json;
+        expect(d.course).toEqual({ name: 'robotics', title: 'Robotics lab' });
+        expect(d.exercises).toEqual([
+            { name: 'lamp', title: 'The lamp', released: true },
+            { name: 'tests', title: 'Stream tests', released: true },
+        ]);
+        expect(d.students).toEqual([
+            { login: 'ada', name: 'Ada, "the first"' },
+            { login: 'bob', name: 'Bob\nNewline' },
+        ]);
+        expect(d.cells.map((c: { student: string; exercise: string }) => `${c.student}/${c.exercise}`)).toEqual([
+            'ada/lamp',
+            'ada/tests',
+            'bob/lamp',
+            'bob/tests',
+        ]);
+        const [adaLampCell, adaTestsCell, bobLamp] = d.cells;
+        expect(adaLampCell).toMatchObject({
+            workspace: '/api/ws/robotics/lamp/ada',
+            diagnostics: { errors: 1, warnings: 0 },
+            tests: null,
+            simulation: null,
+            simulating: false,
+        });
+        expect(Date.parse(adaLampCell.lastActivity)).not.toBeNaN();
+        expect(adaTestsCell).toMatchObject({
+            diagnostics: { errors: 0, warnings: 0 },
+            tests: { passed: 3, total: 3 },
+            simulation: { goalReached: true },
+        });
+        expect(bobLamp).toEqual({
+            student: 'bob',
+            exercise: 'lamp',
+            workspace: null,
+            diagnostics: null,
+            tests: null,
+            simulation: null,
+            lastActivity: null,
+            simulating: false,
+        });
+        expect((await teacher.send('/api/courses/nope/dashboard')).status).toBe(404);
+    });
+
+    it('answers an unchanged dashboard with 304 and a changed one with a new ETag', async () => {
+        const teacher = await loggedIn('teacher');
+        const first = await teacher.send('/api/courses/robotics/dashboard');
+        const etag = String(first.headers.etag);
+        expect(etag).toMatch(/^"[^"]+"$/);
+        const again = await teacher.send('/api/courses/robotics/dashboard', { headers: { 'If-None-Match': etag } });
+        expect(again.status).toBe(304);
+        expect(again.text).toBe('');
+        await store.saveFile({ workspaceId: adaLamp, path: 'lamp/Lamp.arc', content: GOOD, authorId: ada.id });
+        const changed = await teacher.send('/api/courses/robotics/dashboard', { headers: { 'If-None-Match': etag } });
+        expect(changed.status).toBe(200);
+        expect(changed.headers.etag).not.toBe(etag);
+        expect(changed.json.cells[0].diagnostics).toEqual({ errors: 0, warnings: 0 });
+        await store.saveFile({ workspaceId: adaLamp, path: 'lamp/Lamp.arc', content: BAD, authorId: ada.id });
+    });
+
+    it('exports one CSV row per student × exercise, names with commas, quotes and newlines quoted', async () => {
+        const teacher = await loggedIn('teacher');
+        const answer = await teacher.send('/api/courses/robotics/results.csv');
+        expect(answer.status).toBe(200);
+        expect(answer.headers['content-type']).toBe('text/csv; charset=utf-8');
+        expect(answer.headers['content-disposition']).toBe('attachment; filename="robotics-results.csv"');
+        const lines = answer.text.split('\r\n');
+        expect(lines[0]).toBe('login,name,exercise,errors,warnings,tests_passed,tests_total,goal_reached,last_activity,simulating');
+        expect(lines[1]).toMatch(/^ada,"Ada, ""the first""",lamp,1,0,,,,\d{4}-\d\d-\d\dT[^,]+,no$/);
+        expect(lines[2]).toMatch(/^ada,"Ada, ""the first""",tests,0,0,3,3,yes,[^,]+,no$/);
+        // bob's name holds a newline: one quoted field over two lines of text.
+        expect(answer.text).toContain('bob,"Bob\nNewline",lamp,,,,,,,no\r\n');
+        expect(answer.text).toContain('bob,"Bob\nNewline",tests,,,,,,,no\r\n');
+        expect(answer.text.endsWith('\r\n')).toBe(true);
+    });
+
+    it("shows one student's workspace read-only with its files and their diagnostics", async () => {
+        const teacher = await loggedIn('teacher');
+        const answer = await teacher.send('/api/courses/robotics/dashboard/lamp/ada');
+        expect(answer.status, answer.text).toBe(200);
+        expect(answer.json).toMatchObject({ course: 'robotics', exercise: 'lamp', student: { login: 'ada' }, errors: 1 });
+        expect(answer.json.files).toHaveLength(1);
+        expect(answer.json.files[0]).toMatchObject({ path: 'lamp/Lamp.arc', content: BAD });
+        expect(answer.json.files[0].diagnostics).toEqual([
+            expect.objectContaining({ line: 4, severity: 'error', code: 'arc/unresolved-type' }),
+        ]);
+        expect((await teacher.send('/api/courses/robotics/dashboard/lamp/bob')).status).toBe(404);
+        expect((await teacher.send('/api/courses/robotics/dashboard/lamp/nobody')).status).toBe(404);
+    });
+
+    it('serves the pages under the strict CSP, their script from /lab-assets', async () => {
+        const teacher = await loggedIn('teacher');
+        for (const path of ['/dashboard', '/dashboard/robotics', '/dashboard/robotics/lamp/ada']) {
+            const page = await teacher.send(path, { headers: { Accept: 'text/html' } });
+            expect(page.status).toBe(200);
+            expect(page.headers['content-security-policy']).toContain("script-src 'self'");
+            expect(page.headers['content-security-policy']).not.toContain('unsafe-eval');
+            expect(page.text).toContain('<script src="/lab-assets/dashboard.js" defer></script>');
+            expect(page.text).not.toMatch(/<script>/);
+        }
+        // Without a session the pages lead to the login page.
+        const anonymous = await new Client(server.url).send('/dashboard/robotics', { headers: { Accept: 'text/html' } });
+        expect(anonymous.status).toBe(302);
+        expect(anonymous.headers.location).toBe('/login');
+    });
+
+    it('refuses a student every dashboard route (403)', async () => {
+        const student = await loggedIn('ada');
+        for (const path of [
+            '/api/courses/robotics/dashboard',
+            '/api/courses/robotics/results.csv',
+            '/api/courses/robotics/dashboard/lamp/ada',
+            '/api/courses/robotics/dashboard/lamp/bob',
+            '/dashboard',
+            '/dashboard/robotics',
+            '/dashboard/robotics/lamp/ada',
+        ]) {
+            const answer = await student.send(path, { headers: { Accept: 'text/html' } });
+            expect(answer.status, path).toBe(403);
+            expect(answer.text, path).not.toContain('Lamp');
+        }
+        // and without a session: 401
+        expect((await new Client(server.url).send('/api/courses/robotics/dashboard')).status).toBe(401);
+        expect((await new Client(server.url).send('/api/courses/robotics/results.csv')).status).toBe(401);
+    });
+
+    it('checks a workspace again only when its files changed (cached by revision)', async () => {
+        const seen: string[] = [];
+        const checker = new WorkspaceChecker(store, async (root): Promise<FileDiagnostic[]> => {
+            seen.push(root);
+            return [{ file: 'lamp/Lamp.arc', line: 1, column: 1, severity: 'warning', code: 'x/y', message: 'counted' }];
+        });
+        const live = { isSimulating: (id: number) => id === adaLamp };
+        const first = await buildDashboard({ store, checker, live }, 'robotics');
+        expect(seen).toHaveLength(2); // ada's two workspaces; bob has none
+        expect(first.cells[0]).toMatchObject({ diagnostics: { errors: 0, warnings: 1 }, simulating: true });
+        expect(first.cells[1]?.simulating).toBe(false);
+        await Promise.all([buildDashboard({ store, checker, live }, 'robotics'), buildDashboard({ store, checker, live }, 'robotics')]);
+        expect(seen).toHaveLength(2);
+        expect(checker.checksRun).toBe(2);
+        await store.saveFile({ workspaceId: adaLamp, path: 'lamp/Other.arc', content: GOOD, authorId: ada.id });
+        await buildDashboard({ store, checker, live }, 'robotics');
+        expect(seen).toHaveLength(3);
+        await store.deleteFile({ workspaceId: adaLamp, path: 'lamp/Other.arc', authorId: ada.id });
+    });
+});
