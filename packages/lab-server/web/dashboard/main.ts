@@ -104,7 +104,7 @@ class CourseTable {
         const table = el(
             'table',
             { id: 'dashboard' },
-            el('caption', {}, `${students.length} of ${d.students.length} students × ${d.exercises.length} exercises`),
+            el('caption', {}, `${students.length} of ${d.students.length} students × ${d.exercises.length} exercise${d.exercises.length === 1 ? '' : 's'}`),
             el('thead', {}, head),
             el('tbody', {}, ...rows),
         );
