@@ -91,7 +91,7 @@ export const hostScenarios = [
         name: 'workbench host: "MontiArc: Generate" from the command palette generates timesync through the backend',
         async run({ page, url, shot }) {
             await openHost(page, url);
-            // This workbench has no notifications view at 25.x (docs/ide.md): its messages go to the console.
+            // This workbench has no notifications at 25.x (docs/ide.md): messages go to the console, the summary also to the status bar.
             const messages = [];
             const onConsole = (m) => messages.push(m.text());
             page.on('console', onConsole);
@@ -112,6 +112,11 @@ export const hostScenarios = [
                     await page.waitForTimeout(200);
                 }
                 if (!/MontiArc: generated \d+ files for timesync \(0 errors/.test(summary)) await fail(`Generate reported: ${summary}`);
+                // The summary in the status bar (what the user sees here).
+                await page
+                    .locator('.statusbar-item', { hasText: /MontiArc: generated \d+ files for timesync/ })
+                    .first()
+                    .waitFor({ timeout: 10_000 });
             } finally {
                 page.off('console', onConsole);
             }

@@ -10,6 +10,9 @@ import { summaryMessage } from './generate-report.js';
 import type { GenerateRunner } from './generate-runner.js';
 import { type PlatformItem, platformItems } from './platforms.js';
 
+/** How long the summary of a run stays in the status bar. */
+const STATUS_MS = 30_000;
+
 /** The platforms of the workspace's `.arcapp` files as quick pick items. */
 async function pickPlatform(): Promise<PlatformItem | undefined> {
     const uris = await vscode.workspace.findFiles('**/*.arcapp', '**/{node_modules,.git,out}/**');
@@ -78,9 +81,13 @@ export async function generate(runner: GenerateRunner, collection: vscode.Diagno
         );
         toDiagnostics(report, collection);
         const message = summaryMessage(item.platform, report);
+        // Also in the status bar: a host without notifications (the browser IDE's workbench, docs/ide.md) shows it there.
+        vscode.window.setStatusBarMessage(`$(${report.ok ? 'check' : 'error'}) ${message}`, STATUS_MS);
         if (report.ok) void vscode.window.showInformationMessage(message);
         else void vscode.window.showErrorMessage(message);
     } catch (e) {
-        void vscode.window.showErrorMessage(`MontiArc: ${e instanceof Error ? e.message : String(e)}`);
+        const message = `MontiArc: ${e instanceof Error ? e.message : String(e)}`;
+        vscode.window.setStatusBarMessage(`$(error) ${message}`, STATUS_MS);
+        void vscode.window.showErrorMessage(message);
     }
 }

@@ -130,8 +130,10 @@ async function main(): Promise<void> {
     hooks.timings.files = performance.now();
     const container = document.getElementById('workbench');
     if (!container) throw new Error('host.html has no #workbench element');
+    // Registered before the workbench starts, so the search provider is among the built-in extensions from the start.
+    const searching = registerFileSearch(WORKSPACE_ROOT, () => files.files());
     await startWorkbench(container);
-    await registerFileSearch(WORKSPACE_ROOT, () => files.files());
+    await searching;
     hooks.timings.services = performance.now();
     vscode.languages.onDidChangeDiagnostics((e) => {
         for (const uri of e.uris) checked.add(uri.path);
