@@ -67,7 +67,7 @@ describe('maa-gen new minimal', () => {
             results: Array<{ file: string; passed: boolean }>;
             summary: { passed: number; failed: number };
         };
-        expect(report.summary).toEqual({ passed: 4, failed: 0 });
+        expect(report.summary).toEqual({ generated: true, passed: 4, failed: 0 });
         expect(new Set(report.results.map((r) => path.basename(r.file)))).toEqual(new Set(['Lamp.stream', 'Toggle.stream']));
     }, 180_000);
 

@@ -4,7 +4,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { selectCases, type StreamTestResult } from '../src/commands/test.js';
-import { requireBuiltCli, runCli } from './helpers.js';
+import { ModelDir, requireBuiltCli, runCli } from './helpers.js';
 
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..', '..');
 const python = path.join(repo, 'packages', 'generators-python', '.venv', 'bin', 'python');
@@ -55,7 +55,7 @@ describe('maa-gen test --case (toast example)', () => {
         expect(report.results.map((x) => x.test)).toEqual(names);
         expect(report.results.every((x) => x.passed && x.file === CONTROLLER)).toBe(true);
         expect(report.results.map((x) => x.line)).toEqual([15, 33]);
-        expect(report.summary).toEqual({ passed: 2, failed: 0 });
+        expect(report.summary).toEqual({ generated: true, passed: 2, failed: 0 });
     }, 180_000);
 
     it('exits 2 for a name no test has', async () => {
@@ -63,5 +63,34 @@ describe('maa-gen test --case (toast example)', () => {
         const r = await runCli(['test', APP, CONTROLLER, '--python', python, '--case', 'no such test'], repo);
         expect(r.code).toBe(2);
         expect(r.stderr).toContain('no stream test named "no such test"');
+    }, 180_000);
+});
+
+describe('maa-gen test --format json when the models do not generate', () => {
+    it('prints one JSON object: the diagnostics, no results, summary.generated false; exit 1', async () => {
+        requireBuiltCli();
+        const models = new ModelDir();
+        try {
+            models.write('maa.json', '{}\n');
+            models.write('a/Broken.arc', 'package a;\ncomponent Broken {\n  port in int i;\n  port out int o;\n  i -> nowhere;\n}\n');
+            models.write('a/Broken.stream', 'stream test for a.Broken;\n');
+            models.write(
+                'App.arcapp',
+                'application App for a.Broken {\n  platform timesync {\n    timesync.Components;\n    timesync.DataTypes;\n  }\n}\n',
+            );
+            const r = await runCli(['test', 'App.arcapp', '--format', 'json', '--python', python], models.dir);
+            expect(r.code, r.stderr).toBe(1);
+            const report = JSON.parse(r.stdout) as {
+                diagnostics: Array<{ file: string; line: number; severity: string; code: string }>;
+                results: unknown[];
+                summary: { generated: boolean; passed: number; failed: number };
+            };
+            expect(report.summary).toEqual({ generated: false, passed: 0, failed: 0 });
+            expect(report.results).toEqual([]);
+            expect(report.diagnostics.some((d) => d.severity === 'error' && d.file.endsWith('Broken.arc') && d.line === 5)).toBe(true);
+            expect(r.stderr).toContain('generation failed');
+        } finally {
+            models.dispose();
+        }
     }, 180_000);
 });

@@ -139,6 +139,17 @@ describe('report mapping', () => {
         );
         expect(() => parseTestReport('{"results":[{"file":1}],"summary":{"passed":0,"failed":0}}', '')).toThrow();
         expect(parseTestReport('{"results":[],"summary":{"passed":0,"failed":0}}', '').results).toEqual([]);
+        const failed = {
+            diagnostics: [
+                { file: 'toast/Robot.arc', line: 7, column: 3, severity: 'error', code: 'arc/unknown-port', message: "no port 'x'" },
+                { file: 'toast/Robot.arc', line: 2, column: 1, severity: 'warning', code: 'arc/unused', message: 'unused' },
+            ],
+            results: [],
+            summary: { generated: false, passed: 0, failed: 0 },
+        };
+        expect(() => parseTestReport(JSON.stringify(failed), 'maa-gen test: generation failed; no stream test was run')).toThrow(
+            "generation failed; no stream test was run\ntoast/Robot.arc:7:3: no port 'x'",
+        );
     });
 
     it('the CLI arguments name the files, the cases and the Python', () => {
@@ -184,7 +195,7 @@ describe('the CLI runner on a copy of the toast example (real maa-gen test)', ()
     it('passes the example and fails a copy with a wrong expected stream, with a diff at its port', async () => {
         cpSync(toast, project, { recursive: true });
         const passing = await runner.run(request(), new AbortController().signal);
-        expect(passing.summary).toEqual({ passed: 5, failed: 0 });
+        expect(passing.summary).toEqual({ generated: true, passed: 5, failed: 0 });
         expect(passing.results.every((r) => r.file === fileRef(controller).uri)).toBe(true);
 
         // The second case expects LOAD_BREAD one slice late.
@@ -193,7 +204,7 @@ describe('the CLI runner on a copy of the toast example (real maa-gen test)', ()
         expect(wrong).not.toBe(text);
         writeFileSync(controller, wrong);
         const report = await runner.run(request(), new AbortController().signal);
-        expect(report.summary).toEqual({ passed: 4, failed: 1 });
+        expect(report.summary).toEqual({ generated: true, passed: 4, failed: 1 });
         const outline = outlineStreamFile(wrong);
         const plate = outline.cases[1]!;
         const result = resultOfCase(report.results, plate)!;

@@ -6,6 +6,7 @@ import { Command, Option } from 'commander';
 import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
 import { appFileArg, modelRootOfApp } from '../roots.js';
+import { jsonDiagnostic } from '../format/json.js';
 import { displayPath, formatDiagnosticsText } from '../format/text.js';
 import type { CliIo } from '../io.js';
 import { exitCodeOf, runGenerator } from './generate.js';
@@ -55,20 +56,21 @@ export async function runTest(appArg: string, files: string[], options: TestComm
     const outDir = options.out ? path.resolve(io.cwd, options.out) : tempOut!;
     try {
         const result = await runGenerator({ appFile, modelRoot, outDir }, [options.platform], false, io);
+        const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
         if (!result.ok) {
-            const diagnostics: CheckDiagnostic[] = [...result.diagnostics];
-            io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color: false }));
+            if (json) reportJson([], diagnostics, false, io);
+            else io.out(formatDiagnosticsText(diagnostics, { cwd: io.cwd, color: false }));
             io.err('maa-gen test: generation failed; no stream test was run\n');
             return exitCodeOf(false, diagnostics);
         }
         if (streamFiles.length === 0) {
             io.err(`maa-gen test: no .stream files in ${displayPath(modelRoot, io.cwd)}\n`);
-            if (json) io.out(`${JSON.stringify({ results: [], summary: { passed: 0, failed: 0 } }, null, 2)}\n`);
+            if (json) reportJson([], diagnostics, true, io);
             return ExitCode.ok;
         }
         const results = selectCases(runStreamTests(path.join(outDir, options.platform), streamFiles, options, io), options.case);
         const failed = results.filter((r) => !r.passed).length;
-        if (json) reportJson(results, io);
+        if (json) reportJson(results, diagnostics, true, io);
         else reportText(results, io);
         return failed === 0 ? ExitCode.ok : ExitCode.errors;
     } finally {
@@ -129,10 +131,19 @@ export function selectCases(results: readonly StreamTestResult[], cases: readonl
     return results.filter((r) => r.test === null || wanted.has(r.test));
 }
 
-function reportJson(results: readonly StreamTestResult[], io: CliIo): void {
+/**
+ * `--format json`: exactly one object on stdout, also when the models do not generate (then
+ * `summary.generated` is false, `results` empty and `diagnostics` says why; docs/cli.md).
+ */
+function reportJson(results: readonly StreamTestResult[], diagnostics: readonly CheckDiagnostic[], generated: boolean, io: CliIo): void {
     const passed = results.filter((r) => r.passed).length;
-    const summary = { passed, failed: results.length - passed };
-    io.out(`${JSON.stringify({ results: results.map((r) => ({ ...r, file: displayPath(r.file, io.cwd) })), summary }, null, 2)}\n`);
+    const summary = { generated, passed, failed: results.length - passed };
+    const report = {
+        diagnostics: diagnostics.map(jsonDiagnostic),
+        results: results.map((r) => ({ ...r, file: displayPath(r.file, io.cwd) })),
+        summary,
+    };
+    io.out(`${JSON.stringify(report, null, 2)}\n`);
 }
 
 function reportText(results: readonly StreamTestResult[], io: CliIo): void {

@@ -35,9 +35,24 @@ function isResult(x: unknown): x is StreamTestResult {
     );
 }
 
+/** A diagnostic of the CLI's JSON report (docs/cli.md), as far as a failed generation's message needs it. */
+interface ReportDiagnostic {
+    readonly file: string;
+    readonly line: number;
+    readonly column: number;
+    readonly severity: string;
+    readonly message: string;
+}
+
+/** The Error of a report whose models did not generate: its errors, one a line (`file:line:column: message`). */
+function generationFailed(diagnostics: readonly ReportDiagnostic[]): Error {
+    const errors = diagnostics.filter((d) => d.severity === 'error').map((d) => `${d.file}:${d.line}:${d.column}: ${d.message}`);
+    return new Error(['generation failed; no stream test was run', ...errors].join('\n'));
+}
+
 /**
- * The report in a run's stdout; when there is none (generation failed: the CLI then prints the
- * diagnostics as text; usage errors; no Python) an Error whose message is what the CLI said.
+ * The report in a run's stdout. A report whose models did not generate (`summary.generated`
+ * false), or no report at all (usage errors, no Python), is an Error saying why.
  */
 export function parseTestReport(stdout: string, stderr: string): StreamTestReport {
     let parsed: unknown;
@@ -46,7 +61,12 @@ export function parseTestReport(stdout: string, stderr: string): StreamTestRepor
     } catch {
         parsed = undefined;
     }
-    const report = parsed as { results?: unknown; summary?: { passed?: unknown; failed?: unknown } } | undefined;
+    const report = parsed as
+        | { results?: unknown; diagnostics?: unknown; summary?: { generated?: unknown; passed?: unknown; failed?: unknown } }
+        | undefined;
+    if (report?.summary?.generated === false && Array.isArray(report.diagnostics)) {
+        throw generationFailed(report.diagnostics as ReportDiagnostic[]);
+    }
     if (
         report &&
         Array.isArray(report.results) &&
