@@ -4,6 +4,7 @@
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
+import { fileURLToPath } from 'node:url';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type LabIo, runLab } from '../src/cli/main.js';
 import { BACKENDS, type Backend, startBackend } from './backends.js';
@@ -57,7 +58,7 @@ describe.each(BACKENDS)('maa-lab on %s', (backendName) => {
     it('has --help for every command', async () => {
         const top = await lab(['--help']);
         expect(top.code).toBe(0);
-        for (const name of ['serve', 'users', 'course']) expect(top.out).toContain(name);
+        for (const name of ['serve', 'users', 'course', 'exercise']) expect(top.out).toContain(name);
         for (const command of [
             ['serve'],
             ['users', 'add'],
@@ -66,6 +67,8 @@ describe.each(BACKENDS)('maa-lab on %s', (backendName) => {
             ['users', 'list'],
             ['course', 'create'],
             ['course', 'enroll'],
+            ['exercise', 'release'],
+            ['exercise', 'update'],
         ]) {
             const help = await lab([...command, '--help']);
             expect(help.code, command.join(' ')).toBe(0);
@@ -208,6 +211,16 @@ describe.each(BACKENDS)('maa-lab on %s', (backendName) => {
         } finally {
             await stop?.();
         }
+    });
+
+    it('releases an exercise to the course through the exercise command, with a clear error for an unknown course', async () => {
+        const folder = fileURLToPath(new URL('../../../examples/lab/toast-controller', import.meta.url));
+        const unknown = await lab(withStorage(['exercise', 'release', folder, '--course', 'nope']));
+        expect(unknown.code).toBe(1);
+        expect(unknown.err).toMatch(/^maa-lab: error: .*nope/);
+        const released = await lab(withStorage(['exercise', 'release', folder, '--course', 'robotics']));
+        expect(released.code, released.err).toBe(0);
+        expect(released.out).toMatch(/^released toast-controller to robotics: \d+ starter files, \d+ workspaces/);
     });
 
     it('refuses single sign-on settings without the client secret, and a bad port', async () => {

@@ -1,8 +1,9 @@
-// The `maa-lab` command (docs/lab.md): serve, users, course, and the commands other parts of
-// the lab register (registerLabCommand).
+// The `maa-lab` command (docs/lab.md): serve, users, course, exercise (src/exercises), and the
+// commands other parts of the lab register (registerLabCommand).
 import { Command, CommanderError } from 'commander';
+import { exerciseCommand } from '../exercises/command.js';
 import { courseCommand } from './course.js';
-import { LabCliError, type LabIo, processLabIo } from './io.js';
+import { type LabIo, processLabIo } from './io.js';
 import { serveCommand } from './serve.js';
 import { usersCommand } from './users.js';
 
@@ -34,6 +35,7 @@ export function createLabProgram(io: LabIo, hooks: ProgramHooks = {}): Command {
     program.addCommand(serveCommand(io, hooks.onServing));
     program.addCommand(usersCommand(io));
     program.addCommand(courseCommand(io));
+    program.addCommand(exerciseCommand(io));
     for (const factory of registered) program.addCommand(factory(io));
     const configure = (command: Command, name: string): void => {
         for (const sub of command.commands) {
@@ -57,16 +59,14 @@ export async function runLab(argv: readonly string[], io: LabIo = processLabIo()
         return 0;
     } catch (e) {
         if (e instanceof CommanderError) return e.exitCode === 0 ? 0 : 2;
-        if (e instanceof LabCliError) {
-            io.err(
-                e.message
-                    .split('\n')
-                    .map((line) => `maa-lab: error: ${line}\n`)
-                    .join(''),
-            );
-            return 1;
-        }
-        io.err(`maa-lab: error: ${e instanceof Error ? e.message : String(e)}\n`);
+        // A LabCliError, an exercise's ExerciseError (one problem a line), or a failure of the store.
+        const message = e instanceof Error ? e.message : String(e);
+        io.err(
+            message
+                .split('\n')
+                .map((line) => `maa-lab: error: ${line}\n`)
+                .join(''),
+        );
         return 1;
     }
 }
