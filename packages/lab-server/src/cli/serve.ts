@@ -3,6 +3,7 @@ import path from 'node:path';
 import { Command } from 'commander';
 import type { OidcSettings } from '../auth/oidc.js';
 import { DEFAULT_PORT, startLabServer } from '../http/server.js';
+import { DEFAULT_QUOTAS, type QuotaOptions } from '../quotas/index.js';
 import { openLabStore, storageFromEnvironment } from '../storage/index.js';
 import { DATA_DIR_HELP, DEFAULT_DATA_DIR, LabCliError, type LabIo } from './io.js';
 
@@ -16,6 +17,10 @@ interface ServeOptions {
     oidcIssuer?: string;
     oidcClientId?: string;
     oidcAllowHttp?: boolean;
+    maxSimulations: string;
+    maxSimSecondsPerHour: string;
+    maxWorkspaceBytes: string;
+    maxWorkspaceFiles: string;
 }
 
 /** The environment variable that holds the OpenID Connect client secret (never a command-line argument). */
@@ -37,6 +42,18 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
         .option('--oidc-issuer <url>', `single sign-on: the OpenID Connect provider (the client secret comes from ${OIDC_SECRET_VARIABLE})`)
         .option('--oidc-client-id <id>', 'single sign-on: the client id registered at the provider')
         .option('--oidc-allow-http', 'single sign-on: accept a provider on plain http (only for a provider on this machine)')
+        .option(
+            '--max-simulations <n>',
+            'quota: simulations a student may run at the same time',
+            String(DEFAULT_QUOTAS.concurrentSimulations),
+        )
+        .option(
+            '--max-sim-seconds-per-hour <n>',
+            'quota: simulated seconds a student may run within any hour',
+            String(DEFAULT_QUOTAS.simulatedSecondsPerHour),
+        )
+        .option('--max-workspace-bytes <n>', "quota: the bytes of a workspace's files", String(DEFAULT_QUOTAS.workspaceBytes))
+        .option('--max-workspace-files <n>', 'quota: the files of a workspace', String(DEFAULT_QUOTAS.workspaceFiles))
         .action(async (options: ServeOptions) => {
             const port = Number(options.port);
             if (!Number.isInteger(port) || port < 0 || port > 65535)
@@ -44,7 +61,9 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
             if (options.publicUrl !== undefined && !URL.canParse(options.publicUrl))
                 throw new LabCliError(`--public-url is not a URL: ${options.publicUrl}`);
             const oidc = oidcSettings(io, options);
-            const store = await openLabStore(storageFromEnvironment(io.env, path.resolve(io.cwd, options.dataDir ?? DEFAULT_DATA_DIR)));
+            const quotas = quotaSettings(options);
+            const dataDir = path.resolve(io.cwd, options.dataDir ?? DEFAULT_DATA_DIR);
+            const store = await openLabStore(storageFromEnvironment(io.env, dataDir));
             let server: Awaited<ReturnType<typeof startLabServer>>;
             try {
                 server = await startLabServer({
@@ -56,6 +75,7 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
                     ...(options.appDir ? { appDir: path.resolve(io.cwd, options.appDir) } : {}),
                     ...(oidc ? { oidc } : {}),
                     log: (line) => io.err(`maa-lab: ${line}\n`),
+                    workspaces: { dataDir, quotas },
                 });
             } catch (e) {
                 await store.close();
@@ -75,6 +95,24 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
                 process.once('SIGTERM', () => void stop());
             }
         });
+}
+
+/** The quota options, each a positive whole number (else a LabCliError naming it). */
+function quotaSettings(options: ServeOptions): QuotaOptions {
+    const given: Array<[keyof QuotaOptions, string, string]> = [
+        ['concurrentSimulations', '--max-simulations', options.maxSimulations],
+        ['simulatedSecondsPerHour', '--max-sim-seconds-per-hour', options.maxSimSecondsPerHour],
+        ['workspaceBytes', '--max-workspace-bytes', options.maxWorkspaceBytes],
+        ['workspaceFiles', '--max-workspace-files', options.maxWorkspaceFiles],
+    ];
+    const quotas = { ...DEFAULT_QUOTAS };
+    for (const [key, flag, text] of given) {
+        const value = Number(text);
+        if (!/^\d+$/.test(text) || !Number.isSafeInteger(value) || value < 1)
+            throw new LabCliError(`${flag} must be a positive whole number, not ${text}`);
+        quotas[key] = value;
+    }
+    return quotas;
 }
 
 function oidcSettings(io: LabIo, options: ServeOptions): OidcSettings | undefined {

@@ -8,6 +8,7 @@ import { DEFAULT_RATE_LIMITS, LoginRateLimiter, type RateLimitOptions } from '..
 import { DEFAULT_SESSION_HOURS, SessionService } from '../auth/sessions.js';
 import { addDashboardRoutes } from '../dashboard/index.js';
 import type { LabStore } from '../storage/index.js';
+import { type LabWorkspaceOptions, LabWorkspaces } from '../workspaces/index.js';
 import { addAuthRoutes } from './auth-routes.js';
 import { addCourseRoutes } from './course-routes.js';
 import { addOidcRoutes } from './oidc-routes.js';
@@ -33,6 +34,8 @@ export interface LabServerOptions {
     appDir?: string;
     /** where the server's log lines go (default: stderr) */
     log?: (line: string) => void;
+    /** students' workspaces: where their folders go, the quotas, the simulator (docs/lab.md "Workspaces") */
+    workspaces?: LabWorkspaceOptions;
 }
 
 export interface LabServer {
@@ -44,6 +47,8 @@ export interface LabServer {
     /** add routes behind the same session, role and CSRF checks (docs/lab.md "Adding routes") */
     routes: LabRoutes;
     sessions: SessionService;
+    /** students' workspaces: their runtimes and simulations */
+    workspaces: LabWorkspaces;
     close(): Promise<void>;
 }
 
@@ -61,7 +66,8 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
     const routes = new LabRoutes();
     addAuthRoutes(routes, { sessions, limiter: new LoginRateLimiter(options.rateLimits ?? DEFAULT_RATE_LIMITS), log });
     addCourseRoutes(routes);
-    addDashboardRoutes(routes);
+    // the instructor's dashboard; "is simulating" from the workspaces' running simulations
+    addDashboardRoutes(routes, { live: { isSimulating: (id) => workspaces.pool.find(id)?.sim !== undefined } });
     addPages(routes, options.oidc !== undefined);
     if (options.oidc) {
         const signOn = await OidcSignOn.discover(options.oidc, `${publicUrl}/api/oidc/callback`);
@@ -77,12 +83,16 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
         app: options.appDir ? new StaticApp(options.appDir, 'the web app folder') : undefined,
         log,
     };
+    const workspaces = new LabWorkspaces(
+        { routes, store: options.store, sessions, originRefusal: (req) => context.origin.refusal(req), log },
+        options.workspaces,
+    );
     server.on('request', (req: IncomingMessage, res: ServerResponse) => {
         res.on('finish', () => log(`${req.method} ${(req.url ?? '/').split('?')[0]} ${res.statusCode}`));
         void handle(context, req, res);
     });
-    // Browsers get no WebSocket here (a part that needs one mounts it with its own checks).
-    server.on('upgrade', (_req, socket) => socket.end('HTTP/1.1 404 Not Found\r\nContent-Length: 0\r\nConnection: close\r\n\r\n'));
+    // WebSockets: only a workspace's simulation endpoints, after their checks (else 404).
+    server.on('upgrade', (req, socket, head) => workspaces.upgrade(req, socket, head));
     const cleanup = setInterval(() => void options.store.deleteExpiredSessions().catch(() => undefined), 3600_000);
     cleanup.unref();
     return {
@@ -91,8 +101,10 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
         port,
         routes,
         sessions,
-        close: () => {
+        workspaces,
+        close: async () => {
             clearInterval(cleanup);
+            await workspaces.close();
             return new Promise<void>((resolve) => {
                 server.close(() => resolve());
                 server.closeAllConnections();
