@@ -17,3 +17,5 @@ export { CSRF_HEADER, type Authenticated } from './auth/sessions.js';
 export type { OidcSettings } from './auth/oidc.js';
 export type { RateLimitOptions } from './auth/rate-limit.js';
 export { createLabProgram, type LabCommandFactory, LabCliError, type LabIo, registerLabCommand, runLab } from './cli/main.js';
+export { type LabWorkspaceOptions, LabWorkspaces, WS_PREFIX, workspacePrefix } from './workspaces/index.js';
+export { DEFAULT_QUOTAS, type QuotaOptions } from './quotas/index.js';
