@@ -194,13 +194,16 @@ describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
 
     it('checks a workspace again only when its files changed (cached by revision)', async () => {
         const seen: string[] = [];
-        const checker = new WorkspaceChecker(store, async (root): Promise<FileDiagnostic[]> => {
-            seen.push(root);
-            return [{ file: 'lamp/Lamp.arc', line: 1, column: 1, severity: 'warning', code: 'x/y', message: 'counted' }];
+        const runs: number[] = [];
+        const checker = new WorkspaceChecker(store, async (roots): Promise<FileDiagnostic[][]> => {
+            seen.push(...roots);
+            runs.push(roots.length);
+            return roots.map(() => [{ file: 'lamp/Lamp.arc', line: 1, column: 1, severity: 'warning', code: 'x/y', message: 'counted' }]);
         });
         const live = { isSimulating: (id: number) => id === adaLamp };
         const first = await buildDashboard({ store, checker, live }, 'robotics');
         expect(seen).toHaveLength(2); // ada's two workspaces; bob has none
+        expect(runs).toEqual([2]); // in one run of the checker
         expect(first.cells[0]).toMatchObject({ diagnostics: { errors: 0, warnings: 1 }, simulating: true });
         expect(first.cells[1]?.simulating).toBe(false);
         await Promise.all([buildDashboard({ store, checker, live }, 'robotics'), buildDashboard({ store, checker, live }, 'robotics')]);
@@ -209,6 +212,7 @@ describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
         await store.saveFile({ workspaceId: adaLamp, path: 'lamp/Other.arc', content: GOOD, authorId: ada.id });
         await buildDashboard({ store, checker, live }, 'robotics');
         expect(seen).toHaveLength(3);
+        expect(runs).toEqual([2, 1]);
         await store.deleteFile({ workspaceId: adaLamp, path: 'lamp/Other.arc', authorId: ada.id });
     });
 });

@@ -2,8 +2,8 @@
 // students × its exercises, per cell the diagnostics of the workspace's current files, the latest
 // stream tests, the latest simulation's goal, the last activity and whether it simulates now.
 import { HttpError } from '@maa/ide-server/http';
-import type { LabStore, User } from '../storage/index.js';
-import type { WorkspaceChecker } from './checker.js';
+import type { LabStore, User, WorkspaceSummary } from '../storage/index.js';
+import type { WorkspaceCheck, WorkspaceChecker } from './checker.js';
 
 /** Which workspaces simulate right now (the lab's running simulations). */
 export interface LiveSimulations {
@@ -62,6 +62,10 @@ export async function buildDashboard(sources: DashboardSources, courseName: stri
     const byExercise = await Promise.all(
         exercises.map(async (e) => new Map((await store.listWorkspaces(e.id)).map((w) => [w.ownerId, w] as const))),
     );
+    // Every changed workspace of the students in one run of the checker.
+    const studentIds = new Set(students.map((s) => s.id));
+    const workspaceIds = byExercise.flatMap((m) => [...m.values()].filter((w) => studentIds.has(w.ownerId)).map((w) => w.id));
+    const checks = await sources.checker.checkAll(workspaceIds);
     for (const student of students) {
         for (const [i, exercise] of exercises.entries()) {
             const workspace = byExercise[i]?.get(student.id);
@@ -75,7 +79,7 @@ export async function buildDashboard(sources: DashboardSources, courseName: stri
                 lastActivity: null,
                 simulating: false,
             };
-            if (workspace) await fillCell(sources, cell, workspace.id, workspace.lastActivity, course.name);
+            if (workspace) await fillCell(sources, cell, workspace, checks.get(workspace.id), course.name);
             cells.push(cell);
         }
     }
@@ -90,21 +94,21 @@ export async function buildDashboard(sources: DashboardSources, courseName: stri
 async function fillCell(
     { store, checker, live }: DashboardSources,
     cell: DashboardCell,
-    workspaceId: number,
-    lastActivity: Date | null,
+    workspace: WorkspaceSummary,
+    checked: WorkspaceCheck | undefined,
     course: string,
 ): Promise<void> {
     cell.workspace = `/api/ws/${[course, cell.exercise, cell.student].map(encodeURIComponent).join('/')}`;
     const [check, tests, sim] = await Promise.all([
-        checker.check(workspaceId),
-        store.latestTestResult(workspaceId),
-        store.latestSimulationResult(workspaceId),
+        checked ?? checker.check(workspace.id),
+        store.latestTestResult(workspace.id),
+        store.latestSimulationResult(workspace.id),
     ]);
     cell.diagnostics = { errors: check.errors, warnings: check.warnings };
     if (tests) cell.tests = { passed: tests.passed, total: tests.passed + tests.failed + tests.skipped, at: tests.createdAt.toISOString() };
     if (sim) cell.simulation = { goalReached: sim.goalReached, at: sim.createdAt.toISOString() };
-    cell.lastActivity = lastActivity?.toISOString() ?? null;
-    cell.simulating = live.isSimulating(workspaceId);
+    cell.lastActivity = workspace.lastActivity?.toISOString() ?? null;
+    cell.simulating = live.isSimulating(workspace.id);
 }
 
 function byLogin(a: User, b: User): number {
