@@ -65,7 +65,12 @@ async function bundleSimulate(common) {
 }
 
 async function bundle() {
-    if (webOnly) return bundleWeb(outDir);
+    if (webOnly) {
+        // The web entry also opens the diagram webview (src/diagram), so the browser IDE serves its bundle too.
+        await bundleWeb(outDir);
+        await bundleDiagramWebview(outDir);
+        return;
+    }
     const common = { bundle: true, platform: 'node', target: 'node18', sourcemap: false, minify: true, legalComments: 'none', logLevel: 'warning' };
     await build({
         ...common,

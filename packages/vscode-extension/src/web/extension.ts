@@ -7,6 +7,7 @@
  */
 import * as vscode from 'vscode';
 import { LanguageClient, type LanguageClientOptions } from 'vscode-languageclient/browser.js';
+import { registerDiagram } from '../diagram/index.js';
 import { generate } from '../generate-command.js';
 import type { ContributedLanguage } from '../settings.js';
 import { registerStreamTests } from '../testing/controller.js';
@@ -65,6 +66,8 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
     registerTests(context, apiBase, root);
     try {
         client = await startClient(context, languages, apiBase);
+        // The diagram webview (src/diagram) talks to the same server through the client.
+        registerDiagram(context, client);
     } catch (e) {
         void vscode.window.showErrorMessage(`MontiArc: the language server did not start: ${e instanceof Error ? e.message : String(e)}`);
     }
