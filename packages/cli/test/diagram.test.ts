@@ -262,9 +262,9 @@ describe("the SVG writer's stylesheet", () => {
     it('is the one diagram stylesheet, which the IDE imports (and does not copy)', () => {
         const sheet = readFileSync(path.join(REPO, 'packages/language-server/styles/diagram-svg.css'), 'utf8');
         expect(IDE_DIAGRAM_CSS.trimEnd()).toBe(sheet.slice(sheet.indexOf('/* ---- SVG ---- */')).trimEnd());
-        const ide = readFileSync(path.join(REPO, 'packages/ide-web/src/diagram/index.ts'), 'utf8');
+        const ide = readFileSync(path.join(REPO, 'packages/diagram-view/src/index.ts'), 'utf8');
         expect(ide).toContain("import '@maa/language-server/diagram-svg.css';");
-        const ideCss = readFileSync(path.join(REPO, 'packages/ide-web/src/diagram/diagram.css'), 'utf8');
+        const ideCss = readFileSync(path.join(REPO, 'packages/diagram-view/src/diagram.css'), 'utf8');
         expect(ideCss).not.toContain('.maa-component-body');
     });
 });

@@ -4,7 +4,7 @@ import type { DiagramGeometry } from './geometry.js';
 import { classes, el, num, type XmlElement, type XmlNode } from './xml.js';
 
 /**
- * The elements of the IDE's diagram views (packages/ide-web/src/diagram: component-view.ts,
+ * The elements of the IDE's diagram views (packages/diagram-view/src: component-view.ts,
  * node-views.ts, edge-views.ts, label-view.ts) as the IDE's Export SVG holds them for a model
  * without a run: the same element structure, CSS classes and `data-*` hooks, and every model
  * element's `id` (the element id behind a prefix, as Sprotty's `<baseDiv>_<id>`). Live values,
