@@ -3,6 +3,7 @@
 // (PGlite ships a node-postgres connection for itself), so one Kysely dialect, one set of queries
 // and one migrator serve both.
 import { mkdirSync } from 'node:fs';
+import path from 'node:path';
 import { PGlite } from '@electric-sql/pglite';
 import { createPgConfig } from '@electric-sql/pglite/node-postgres';
 import { Kysely, Migrator, PostgresDialect } from 'kysely';
@@ -51,12 +52,19 @@ function openPostgres(databaseUrl: string): OpenDatabase {
     return { db, backend: 'postgresql', close: () => db.destroy() };
 }
 
+/**
+ * The PostgreSQL cluster's folder in a lab's data directory: its own subfolder, since the data
+ * directory also holds the lock and the lab's other folders (the students' materialized workspaces).
+ */
+export const PGLITE_SUBDIR = 'postgres';
+
 async function openPglite(dataDir: string): Promise<OpenDatabase> {
     mkdirSync(dataDir, { recursive: true });
     const unlock = lockDataDir(dataDir);
     let pglite: PGlite;
     try {
-        pglite = await PGlite.create({ fs: new DurableNodeFS(dataDir), relaxedDurability: false, startParams: durableStartParams() });
+        const fs = new DurableNodeFS(path.join(dataDir, PGLITE_SUBDIR));
+        pglite = await PGlite.create({ fs, relaxedDurability: false, startParams: durableStartParams() });
     } catch (error) {
         unlock();
         throw error;
