@@ -2,7 +2,7 @@
 // with 2 students × 2 exercises (one workspace with errors, one with its stream tests passed), the
 // ETag (an unchanged dashboard is a 304, a save changes it), the CSV, the read-only workspace view,
 // the pages under their CSP, and 403 for a student on every dashboard route.
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import { hashPassword } from '../src/auth/passwords.js';
 import { buildDashboard, type FileDiagnostic, WorkspaceChecker } from '../src/dashboard/index.js';
 import { type LabServer, startLabServer } from '../src/http/server.js';
@@ -124,6 +124,25 @@ describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
         expect(changed.headers.etag).not.toBe(etag);
         expect(changed.json.cells[0].diagnostics).toEqual({ errors: 0, warnings: 0 });
         await store.saveFile({ workspaceId: adaLamp, path: 'lamp/Lamp.arc', content: BAD, authorId: ada.id });
+    });
+
+    it("shows a workspace as simulating while the lab's workspaces have its simulation running", async () => {
+        const teacher = await loggedIn('teacher');
+        // The simulation itself is workspaces-sim.test.ts's (the real maa-sim); here only whether
+        // the dashboard asks the server's runtime pool, as server.ts wires it.
+        const realFind = server.workspaces.pool.find.bind(server.workspaces.pool);
+        const find = vi
+            .spyOn(server.workspaces.pool, 'find')
+            .mockImplementation((id: number) => (id === adaLamp ? ({ sim: {} } as unknown as ReturnType<typeof realFind>) : realFind(id)));
+        try {
+            const answer = await teacher.send('/api/courses/robotics/dashboard');
+            expect(answer.json.cells.map((c: { simulating: boolean }) => c.simulating)).toEqual([true, false, false, false]);
+            const csv = await teacher.send('/api/courses/robotics/results.csv');
+            expect(csv.text.split('\r\n')[1]).toMatch(/,yes$/);
+        } finally {
+            find.mockRestore();
+        }
+        expect((await teacher.send('/api/courses/robotics/dashboard')).json.cells[0].simulating).toBe(false);
     });
 
     it('exports one CSV row per student × exercise, names with commas, quotes and newlines quoted', async () => {
