@@ -71,7 +71,15 @@ async function bundle() {
         await bundleDiagramWebview(outDir);
         return;
     }
-    const common = { bundle: true, platform: 'node', target: 'node18', sourcemap: false, minify: true, legalComments: 'none', logLevel: 'warning' };
+    const common = {
+        bundle: true,
+        platform: 'node',
+        target: 'node18',
+        sourcemap: false,
+        minify: true,
+        legalComments: 'none',
+        logLevel: 'warning',
+    };
     await build({
         ...common,
         entryPoints: [path.join(pkgDir, 'src', 'extension.ts')],
@@ -86,7 +94,9 @@ async function bundle() {
         outfile: path.join(outDir, 'out', 'server', 'main.mjs'),
         format: 'esm',
         // CommonJS dependencies of the server call require(); an ES module has none of its own.
-        banner: { js: "import { createRequire as __maaCreateRequire } from 'node:module'; const require = __maaCreateRequire(import.meta.url);" },
+        banner: {
+            js: "import { createRequire as __maaCreateRequire } from 'node:module'; const require = __maaCreateRequire(import.meta.url);",
+        },
     });
     await bundleWeb(outDir);
     await bundleDiagramWebview(outDir);
@@ -95,7 +105,14 @@ async function bundle() {
 /** Loads src/contributions.ts (TypeScript) by bundling it to a temporary ES module. */
 async function loadContributions() {
     const tmp = path.join(outDir, '..', `.contributions-${process.pid}.mjs`);
-    await build({ entryPoints: [path.join(pkgDir, 'src', 'contributions.ts')], outfile: tmp, bundle: true, platform: 'node', format: 'esm', logLevel: 'warning' });
+    await build({
+        entryPoints: [path.join(pkgDir, 'src', 'contributions.ts')],
+        outfile: tmp,
+        bundle: true,
+        platform: 'node',
+        format: 'esm',
+        logLevel: 'warning',
+    });
     const { contributions } = await import(pathToFileURL(tmp).href);
     rmSync(tmp, { force: true });
     const facts = JSON.parse(readFileSync(require.resolve('@maa/language-server/language-facts.json'), 'utf8'));
@@ -112,7 +129,14 @@ async function main() {
     mkdirSync(outDir, { recursive: true });
     const [{ contributes, files, activationEvents, capabilities }] = await Promise.all([loadContributions(), bundle()]);
     const own = JSON.parse(readFileSync(path.join(pkgDir, 'package.json'), 'utf8'));
-    writeJson(path.join(outDir, 'package.json'), { ...IDENTITY, version: own.version, description: own.description, capabilities, activationEvents, contributes });
+    writeJson(path.join(outDir, 'package.json'), {
+        ...IDENTITY,
+        version: own.version,
+        description: own.description,
+        capabilities,
+        activationEvents,
+        contributes,
+    });
     for (const f of files) {
         // Text files (the icons' SVG) as they are, the rest as JSON.
         if (typeof f.content === 'string') {

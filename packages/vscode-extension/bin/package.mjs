@@ -18,7 +18,17 @@ const outArg = process.argv.indexOf('--out');
 const out = path.resolve(outArg > 0 ? process.argv[outArg + 1] : path.join(pkgDir, 'dist', `${manifest.name}-${manifest.version}.vsix`));
 const vsce = path.join(path.dirname(require.resolve('@vscode/vsce/package.json')), 'vsce');
 
-const args = [vsce, 'package', '--no-dependencies', '--no-update-package-json', '--no-git-tag-version', '--allow-missing-repository', '--skip-license', '--out', out];
+const args = [
+    vsce,
+    'package',
+    '--no-dependencies',
+    '--no-update-package-json',
+    '--no-git-tag-version',
+    '--allow-missing-repository',
+    '--skip-license',
+    '--out',
+    out,
+];
 const child = spawn(process.execPath, args, { cwd: extDir, stdio: ['ignore', 'inherit', 'inherit'] });
 child.on('exit', (code) => {
     if (code !== 0) {

@@ -15,7 +15,15 @@ const require = createRequire(import.meta.url);
 
 /** @param {string} outDir the extension folder (the bundles go to its out/web/) */
 export async function bundleWeb(outDir, { minify = true } = {}) {
-    const common = { bundle: true, platform: 'browser', target: 'es2022', sourcemap: false, minify, legalComments: 'none', logLevel: 'warning' };
+    const common = {
+        bundle: true,
+        platform: 'browser',
+        target: 'es2022',
+        sourcemap: false,
+        minify,
+        legalComments: 'none',
+        logLevel: 'warning',
+    };
     await Promise.all([
         build({
             ...common,

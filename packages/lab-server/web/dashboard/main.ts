@@ -104,7 +104,11 @@ class CourseTable {
         const table = el(
             'table',
             { id: 'dashboard' },
-            el('caption', {}, `${students.length} of ${d.students.length} students × ${d.exercises.length} exercise${d.exercises.length === 1 ? '' : 's'}`),
+            el(
+                'caption',
+                {},
+                `${students.length} of ${d.students.length} students × ${d.exercises.length} exercise${d.exercises.length === 1 ? '' : 's'}`,
+            ),
             el('thead', {}, head),
             el('tbody', {}, ...rows),
         );
@@ -143,7 +147,8 @@ class CourseTable {
 
     private async reset(cell: DashboardCell): Promise<void> {
         if (!cell.workspace) return;
-        if (!confirm(`Reset ${cell.student}'s workspace of ${cell.exercise} to the exercise's starter? (The history keeps every file.)`)) return;
+        if (!confirm(`Reset ${cell.student}'s workspace of ${cell.exercise} to the exercise's starter? (The history keeps every file.)`))
+            return;
         const answer = await fetch(`${cell.workspace}/reset`, {
             method: 'POST',
             headers: { 'Content-Type': 'application/json', 'X-CSRF-Token': this.csrf ?? '' },
@@ -193,7 +198,12 @@ async function workspacePage(course: string, exercise: string, student: string):
             el('pre', {}, f.content),
         ),
     );
-    app.replaceChildren(back, el('h1', {}, `${view.student.name} (${view.student.login}): ${view.exercise}`), el('p', {}, summary), ...files);
+    app.replaceChildren(
+        back,
+        el('h1', {}, `${view.student.name} (${view.student.login}): ${view.exercise}`),
+        el('p', {}, summary),
+        ...files,
+    );
 }
 
 const parts = location.pathname
