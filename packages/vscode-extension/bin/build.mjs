@@ -27,7 +27,7 @@ const IDENTITY = {
     name: 'maa',
     displayName: 'MontiArcAutomaton',
     publisher: 'maa-web',
-    license: 'SEE LICENSE IN LICENSE',
+    license: 'MIT',
     categories: ['Programming Languages', 'Snippets'],
     engines: { vscode: '^1.82.0' },
     main: './out/extension.cjs',
@@ -147,8 +147,7 @@ async function main() {
     mkdirSync(path.join(outDir, 'snippets'), { recursive: true });
     for (const name of ['arc.json', 'arcapp.json']) copyFileSync(path.join(pkgDir, 'snippets', name), path.join(outDir, 'snippets', name));
     copyFileSync(path.join(repo, 'docs', 'vscode.md'), path.join(outDir, 'README.md'));
-    if (existsSync(path.join(repo, 'LICENSE'))) copyFileSync(path.join(repo, 'LICENSE'), path.join(outDir, 'LICENSE'));
-    else writeFileSync(path.join(outDir, 'LICENSE'), 'See the repository of MontiArcAutomaton for the web.\n');
+    copyFileSync(path.join(repo, 'LICENSE'), path.join(outDir, 'LICENSE'));
     console.log(`vscode-extension: built ${path.relative(repo, outDir)}`);
 }
 

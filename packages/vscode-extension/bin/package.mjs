@@ -25,7 +25,6 @@ const args = [
     '--no-update-package-json',
     '--no-git-tag-version',
     '--allow-missing-repository',
-    '--skip-license',
     '--out',
     out,
 ];
