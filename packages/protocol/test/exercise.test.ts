@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { exerciseIssues, exerciseManifestContract, isReadOnly, releasedExerciseContract } from '../dist/exercise/index.js';
+import { exerciseIssues, exerciseManifestContract, isReadOnly, layerStarter, releasedExerciseContract } from '../dist/exercise/index.js';
 
 const valid = {
     format: 'maa-exercise/1',
@@ -17,6 +17,7 @@ describe('exercise.json (the lab exercise format)', () => {
         expect(exerciseIssues(valid)).toEqual([]);
         expect(exerciseIssues(valid, files)).toEqual([]);
         expect(exerciseManifestContract.check({ ...valid, starter: 'files' })).toBe(true);
+        expect(exerciseIssues({ ...valid, base: '../../toast-service', omit: ['README.md', 'toast/tests/'] })).toEqual([]);
     });
 
     test.each([
@@ -29,6 +30,11 @@ describe('exercise.json (the lab exercise format)', () => {
         ['a test that is no .stream', { ...valid, tests: ['toast/Controller.arc'] }, '/tests/0', 'ending in .stream'],
         ['no platform', { ...valid, platforms: [] }, '/platforms', 'non-empty list'],
         ['unknown field', { ...valid, solution: 'solution' }, '/solution', ''],
+        ['absolute base', { ...valid, base: '/srv/examples/toast' }, '/base', 'relative folder path'],
+        ['a . segment in the base', { ...valid, base: '../../toast/./x' }, '/base', 'relative folder path'],
+        ['a backslash in the base', { ...valid, base: '..\\toast' }, '/base', 'relative folder path'],
+        ['.. in an omit entry', { ...valid, base: '../x', omit: ['../README.md'] }, '/omit/0', 'relative path'],
+        ['omit twice the same', { ...valid, base: '../x', omit: ['a', 'a'] }, '/omit', 'distinct'],
     ])('%s: an issue at the field', (_what, value, pointer, message) => {
         const issues = exerciseIssues(value);
         expect(issues.length).toBeGreaterThan(0);
@@ -87,5 +93,42 @@ describe('exercise.json (the lab exercise format)', () => {
         expect(releasedExerciseContract.issues(released)).toEqual([]);
         expect(releasedExerciseContract.issues({ ...released, starterVersion: 0 }).map((i) => i.pointer)).toContain('/starterVersion');
         expect(releasedExerciseContract.issues({ ...released, name: 'Toast Controller' }).map((i) => i.pointer)).toContain('/name');
+    });
+
+    test('layerStarter: the base without what omit names, the starter over it, sorted; where each file comes from', () => {
+        const base = [
+            'README.md',
+            'TR.arcapp',
+            'toast/Controller.arc',
+            'toast/Robot.stream',
+            'toast/tests/A.stream',
+            'toast/tests/B.stream',
+        ];
+        const manifest = { base: '../../toast-service', omit: ['README.md', 'toast/tests/'] };
+        expect(layerStarter(manifest, base, ['toast/Controller.arc', 'toast/New.arc'])).toEqual({
+            files: [
+                { path: 'TR.arcapp', from: 'base' },
+                { path: 'toast/Controller.arc', from: 'starter' },
+                { path: 'toast/New.arc', from: 'starter' },
+                { path: 'toast/Robot.stream', from: 'base' },
+            ],
+            issues: [],
+        });
+        // No base: the starter folder alone.
+        expect(layerStarter({}, [], ['b', 'a']).files).toEqual([
+            { path: 'a', from: 'starter' },
+            { path: 'b', from: 'starter' },
+        ]);
+    });
+
+    test('layerStarter: omit without a base, naming no file of the base, or one the starter replaces', () => {
+        expect(layerStarter({ omit: ['README.md'] }, [], ['a']).issues).toEqual([
+            { pointer: '/omit', message: 'omit drops files of the base: it needs a base' },
+        ]);
+        expect(layerStarter({ base: '../b', omit: ['Gone.md', 'none/', 'a'], starter: 'files' }, ['a', 'c'], ['a']).issues).toEqual([
+            { pointer: '/omit/0', message: '../b/Gone.md does not exist (omit names files of the base)' },
+            { pointer: '/omit/1', message: '../b/none/ holds no file (omit names files of the base)' },
+            { pointer: '/omit/2', message: "files/a replaces the base's file already: omit only what the starter leaves out" },
+        ]);
     });
 });

@@ -15,6 +15,9 @@ export { EXERCISE_FILE_NAME, EXERCISE_FORMAT } from '../formats.js';
  */
 const RELATIVE_PATH = '^(?!/)(?!.*\\\\)(?!.*//)(?!(.*/)?\\.\\.?(/|$))[^\\u0000-\\u001f]{1,512}$';
 
+/** The base folder: relative, `/`-separated, `..` segments allowed (it lies beside the exercise), no `.` or empty ones. */
+const BASE_PATH = '^(?!/)(?!.*\\\\)(?!.*//)(?!(.*/)?\\.(/|$))[^\\u0000-\\u001f]{1,512}$';
+
 const StarterPath = (what: string, suffix = '') =>
     Type.String({
         pattern: suffix ? `(?=${RELATIVE_PATH})^.*${suffix.replace(/\./g, '\\.')}$` : RELATIVE_PATH,
@@ -60,6 +63,24 @@ export const ExerciseManifest = Type.Object(
         description: StarterPath('description', '.md'),
         /** The folder (in the exercise folder) whose files every student starts with; default `starter`. */
         starter: Type.Optional(StarterPath('starter')),
+        /**
+         * A folder (relative to the exercise folder, e.g. `../../toast-service`) whose files form the
+         * starter first; the starter folder's files add to or replace them. It lies beside the
+         * exercises (below the exercise folder's grandparent, in the repository `examples/`).
+         */
+        base: Type.Optional(
+            Type.String({
+                pattern: BASE_PATH,
+                errorMessage: 'base must be a relative folder path with / (.. allowed, no leading /)',
+            }),
+        ),
+        /** Files of the base left out of the starter: a path, or a folder ending in `/` (everything below it). */
+        omit: Type.Optional(
+            Type.Array(StarterPath('omit entry'), {
+                uniqueItems: true,
+                errorMessage: 'omit must be a list of distinct relative paths (a folder ends in /)',
+            }),
+        ),
     },
     {
         $id: 'urn:maa:protocol:exercise',
