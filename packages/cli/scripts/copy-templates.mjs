@@ -4,10 +4,13 @@
 // The sources are listed in templates/templates.json: `minimal` lives in this package,
 // `toast-service` IS the repository's examples/toast-service, copied here so there is no second
 // hand-edited copy and a packed @maa/cli (whose `files` holds dist/) carries every template; the
-// lab exercises are the starters of examples/lab/<name>/ with their description as README.md.
-import { copyFileSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+// lab exercises are the starters of examples/lab/<name>/ with their description as README.md (an
+// exercise with a `base` in its exercise.json: the base's files without those it omits, with the
+// starter folder's over them, as the lab server releases it).
+import { copyFileSync, existsSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { layerStarter } from '@maa/protocol/exercise';
 
 const packageDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const repoDir = path.resolve(packageDir, '..', '..');
@@ -57,19 +60,35 @@ export function adaptReadme(text, fromRepoPath, templateName) {
     return firstBreak < 0 ? `${adapted}\n\n${note}` : `${adapted.slice(0, firstBreak + 2)}${note}${adapted.slice(firstBreak + 2)}`;
 }
 
+/**
+ * The files of a template: relative path → the file to copy. A lab exercise's starter (`from`,
+ * beside its exercise.json) with a `base`: the base's files, without those `omit` names, with the
+ * starter's over them.
+ */
+export function templateSources(from) {
+    const own = templateFiles(from);
+    const exerciseJson = path.join(path.dirname(from), 'exercise.json');
+    const exercise = existsSync(exerciseJson) ? JSON.parse(readFileSync(exerciseJson, 'utf8')) : {};
+    if (typeof exercise.base !== 'string') return own.map((rel) => ({ rel, file: path.join(from, rel) }));
+    const base = path.resolve(path.dirname(from), ...exercise.base.split('/'));
+    const { files, issues } = layerStarter(exercise, templateFiles(base), own);
+    if (issues.length > 0) throw new Error(`${exerciseJson}: ${issues.map((i) => `${i.pointer}: ${i.message}`).join('; ')}`);
+    return files.map((f) => ({ rel: f.path, file: path.join(f.from === 'base' ? base : from, f.path) }));
+}
+
 function copyTemplate(template) {
     const from = path.resolve(packageDir, template.from);
     const to = path.join(outDir, template.name);
     const outsidePackage = path.relative(packageDir, from).startsWith('..');
-    const files = templateFiles(from);
-    for (const rel of files) {
+    const files = templateSources(from);
+    for (const { rel, file } of files) {
         const target = path.join(to, ...rel.split('/'));
         mkdirSync(path.dirname(target), { recursive: true });
         if (outsidePackage && rel === 'README.md') {
             const fromRepoPath = path.relative(repoDir, from).split(path.sep).join('/');
-            writeFileSync(target, adaptReadme(readFileSync(path.join(from, rel), 'utf8'), fromRepoPath, template.name));
+            writeFileSync(target, adaptReadme(readFileSync(file, 'utf8'), fromRepoPath, template.name));
         } else {
-            copyFileSync(path.join(from, rel), target);
+            copyFileSync(file, target);
         }
     }
     if (template.readme) {

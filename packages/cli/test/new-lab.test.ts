@@ -26,6 +26,14 @@ const STARTER_ERRORS: Record<string, string[]> = {
     'toast-controller': [],
 };
 
+/** The files below `dir` (relative, `/`, sorted). */
+function filesOf(dir: string): string[] {
+    return readdirSync(dir, { recursive: true, encoding: 'utf8' })
+        .filter((f) => statSync(path.join(dir, f)).isFile())
+        .map((f) => f.split(path.sep).join('/'))
+        .sort();
+}
+
 let dirs: ModelDir[] = [];
 beforeAll(() => requireBuiltCli());
 afterEach(() => {
@@ -61,6 +69,20 @@ describe('maa-gen new <lab exercise>', () => {
             if (!statSync(path.join(solution, file)).isFile()) continue;
             // The student gets the starter's version of each file the solution changes.
             expect(readFileSync(path.join(demo, file), 'utf8'), file).toBe(readFileSync(path.join(labDir, name, 'starter', file), 'utf8'));
+        }
+        const exercise = JSON.parse(readFileSync(path.join(labDir, name, 'exercise.json'), 'utf8')) as { base?: string; omit?: string[] };
+        if (exercise.base) {
+            // The base's files (without those omitted) with the starter's over them, byte for byte.
+            const base = path.resolve(labDir, name, exercise.base);
+            const omitted = (f: string) => (exercise.omit ?? []).some((o) => (o.endsWith('/') ? f.startsWith(o) : f === o));
+            const expected = new Map<string, string>();
+            for (const [dir, keep] of [
+                [base, (f: string) => !omitted(f)],
+                [path.join(labDir, name, 'starter'), () => true],
+            ] as const)
+                for (const f of filesOf(dir)) if (keep(f)) expected.set(f, path.join(dir, f));
+            expect(filesOf(demo).filter((f) => f !== 'README.md')).toEqual([...expected.keys()].sort());
+            for (const [f, source] of expected) expect(readFileSync(path.join(demo, f), 'utf8'), f).toBe(readFileSync(source, 'utf8'));
         }
         const check = await runCli(['check', '.', '--format', 'json'], demo);
         const diagnostics = (JSON.parse(check.stdout) as { diagnostics: Array<{ severity: string; code: string }> }).diagnostics;

@@ -1,8 +1,9 @@
-// The exercises under examples/lab/ are solvable: their starter has the expected diagnostics and
-// failing stream tests, the starter with the reference solution (solution/, never released) over
-// it passes `maa-gen check` and `maa-gen test` (the real CLI, on the generators-python venv).
+// The exercises under examples/lab/ are solvable: their starter (as the loader gives it: with an
+// exercise's base) has the expected diagnostics and failing stream tests, the starter with the
+// reference solution (solution/, never released) over it passes `maa-gen check` and `maa-gen test`
+// (the real CLI, on the generators-python venv).
 import { execFile } from 'node:child_process';
-import { cpSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -56,14 +57,17 @@ async function streamTests(dir: string, app: string): Promise<{ code: number; re
     return { code: r.code, results: report.results, errors };
 }
 
-/** A copy of the exercise's starter, and one with its solution over it. */
-function copies(name: string): { starter: string; solved: string } {
-    const exercise = path.join(repo, 'examples/lab', name);
+/** The exercise's starter as released (written out), and one with its solution over it. */
+function copies(name: string, files: Record<string, string>): { starter: string; solved: string } {
     const starter = path.join(work, name, 'starter');
     const solved = path.join(work, name, 'solved');
-    cpSync(path.join(exercise, 'starter'), starter, { recursive: true });
-    cpSync(path.join(exercise, 'starter'), solved, { recursive: true });
-    cpSync(path.join(exercise, 'solution'), solved, { recursive: true });
+    for (const dir of [starter, solved])
+        for (const [rel, content] of Object.entries(files)) {
+            const file = path.join(dir, ...rel.split('/'));
+            mkdirSync(path.dirname(file), { recursive: true });
+            writeFileSync(file, content);
+        }
+    cpSync(path.join(repo, 'examples/lab', name, 'solution'), solved, { recursive: true });
     return { starter, solved };
 }
 
@@ -79,8 +83,8 @@ const EXERCISES = [
 
 describe.each(EXERCISES)('examples/lab/$name', ({ name, starterErrors, failingTests }) => {
     it('the starter has the expected diagnostics and failing stream tests; the solution passes check and test', async () => {
-        const { manifest } = await loadExercise(path.join(repo, 'examples/lab', name));
-        const { starter, solved } = copies(name);
+        const { manifest, files } = await loadExercise(path.join(repo, 'examples/lab', name));
+        const { starter, solved } = copies(name, files);
 
         const before = await check(starter);
         expect(before.diagnostics.filter((d) => d.severity === 'error').map((d) => d.code)).toEqual(starterErrors);
@@ -102,18 +106,33 @@ describe.each(EXERCISES)('examples/lab/$name', ({ name, starterErrors, failingTe
 });
 
 describe('examples/lab/toast-controller', () => {
-    it('gives the rest of examples/toast-service unchanged (read-only), so the two never drift', async () => {
-        const { files, manifest } = await loadExercise(path.join(repo, 'examples/lab/toast-controller'));
+    it('takes the rest of examples/toast-service from its base (read-only), so there is no copy to drift', async () => {
+        const folder = path.join(repo, 'examples/lab/toast-controller');
+        const { files, manifest } = await loadExercise(folder);
+        expect(manifest.base).toBe('../../toast-service');
+        // starter/ holds only what differs: the stub Controller.
+        expect(readdirSync(path.join(folder, 'starter'), { recursive: true, encoding: 'utf8' }).sort()).toEqual([
+            'toast',
+            'toast/Controller.arc',
+        ]);
         const given = Object.keys(files).filter((f) => f !== 'toast/Controller.arc');
         expect(given.length).toBeGreaterThan(10);
         for (const rel of given) {
+            expect(existsSync(path.join(folder, 'starter', rel)), rel).toBe(false);
             expect(files[rel], rel).toBe(readFileSync(path.join(repo, 'examples/toast-service', rel), 'utf8'));
             expect(
                 manifest.readOnly.some((e) => rel === e || (e.endsWith('/') && rel.startsWith(e))),
                 rel,
             ).toBe(true);
         }
-        const solution = readFileSync(path.join(repo, 'examples/lab/toast-controller/solution/toast/Controller.arc'), 'utf8');
+        // The example's own tests of other components, its README and its RobotArm program are not handed out.
+        for (const omitted of manifest.omit ?? []) expect(files[omitted], omitted).toBeUndefined();
+        expect(Object.keys(files).filter((f) => f.endsWith('.stream'))).toEqual(manifest.tests);
+        // The stub replaces the example's Controller, which is the reference solution.
+        expect(files['toast/Controller.arc']).not.toBe(
+            readFileSync(path.join(repo, 'examples/toast-service/toast/Controller.arc'), 'utf8'),
+        );
+        const solution = readFileSync(path.join(folder, 'solution/toast/Controller.arc'), 'utf8');
         expect(solution).toBe(readFileSync(path.join(repo, 'examples/toast-service/toast/Controller.arc'), 'utf8'));
     });
 });

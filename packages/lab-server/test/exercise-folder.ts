@@ -12,6 +12,15 @@ export const MANIFEST = {
     platforms: ['timesync'],
 };
 
+/** Writes `files` (relative path → content) below `root`: e.g. the base folder of an exercise. */
+export function writeFiles(root: string, files: Record<string, string>): void {
+    for (const [rel, content] of Object.entries(files)) {
+        const file = path.join(root, ...rel.split('/'));
+        mkdirSync(path.dirname(file), { recursive: true });
+        writeFileSync(file, content);
+    }
+}
+
 /** An exercise folder `dir/name` with exercise.json, description.md, starter/ and solution/. */
 export function writeExercise(
     dir: string,
@@ -20,15 +29,12 @@ export function writeExercise(
     manifest: Record<string, unknown> = MANIFEST,
 ): string {
     const folder = path.join(dir, name);
-    const write = (rel: string, content: string) => {
-        const file = path.join(folder, ...rel.split('/'));
-        mkdirSync(path.dirname(file), { recursive: true });
-        writeFileSync(file, content);
-    };
-    write('exercise.json', JSON.stringify(manifest, null, 2));
-    write('description.md', `# ${name}\n`);
-    write('solution/hello/Lamp.arc', 'the solution, never released\n');
-    for (const [rel, content] of Object.entries(files)) write(`starter/${rel}`, content);
+    writeFiles(folder, {
+        'exercise.json': JSON.stringify(manifest, null, 2),
+        'description.md': `# ${name}\n`,
+        'solution/hello/Lamp.arc': 'the solution, never released\n',
+    });
+    writeFiles(path.join(folder, 'starter'), files);
     return folder;
 }
 

@@ -18,7 +18,7 @@ import {
 } from '../src/exercises/index.js';
 import { type LabStore, openLabStore, type StorageOptions } from '../src/storage/index.js';
 import { BACKENDS, type Backend, startBackend } from './backends.js';
-import { STARTER, writeExercise } from './exercise-folder.js';
+import { MANIFEST, STARTER, writeExercise, writeFiles } from './exercise-folder.js';
 
 describe.each(BACKENDS)('exercises on %s', (backendName) => {
     let backend: Backend;
@@ -73,6 +73,29 @@ describe.each(BACKENDS)('exercises on %s', (backendName) => {
             );
         }
         await expect(releaseExercise(store, loaded, { course: c.name, authorId: teacher.id })).rejects.toThrow(/already: update it/);
+    });
+
+    it('an exercise with a base: students get the merged starter, and a change of the base reaches them as an update', async () => {
+        const { course: c, teacher, students } = await course(1);
+        const [student] = students as [(typeof students)[0]];
+        // dir/<example> is the base, dir/lab/<name> the exercise (the base lies beside the exercises).
+        const example = fresh('example');
+        const writeBase = (files: Record<string, string>) => writeFiles(path.join(dir, example), files);
+        writeBase({ ...STARTER, 'hello/Lamp.arc': 'package hello;\ncomponent Lamp {\n  // the solution\n}\n', 'README.md': '# example\n' });
+        const stub = { 'hello/Lamp.arc': STARTER['hello/Lamp.arc'] as string };
+        const manifest = { ...MANIFEST, base: `../../${example}`, omit: ['README.md'] };
+        const folder = writeExercise(path.join(dir, 'lab'), fresh('lamp'), stub, manifest);
+        const released = await releaseExercise(store, await loadExercise(folder), { course: c.name, authorId: teacher.id });
+        expect(specOf(released.exercise).files).toEqual(Object.keys(STARTER));
+        const ws = (await store.workspace(student.id, released.exercise.id)).id;
+        expect(await files(ws)).toEqual(STARTER);
+        // A fix in the example (a read-only file of the exercise) is a new starter version.
+        writeBase({ 'lib/Toggle.arc': 'package lib;\ncomponent Toggle {\n  port in boolean press;\n}\n' });
+        const updated = await updateExercise(store, await loadExercise(folder), { course: c.name, authorId: teacher.id });
+        expect(updated.newStarter).toBe(true);
+        expect(updated.spec.starterVersion).toBe(2);
+        expect((await files(ws))['lib/Toggle.arc']).toBe('package lib;\ncomponent Toggle {\n  port in boolean press;\n}\n');
+        expect((await files(ws))['hello/Lamp.arc']).toBe(STARTER['hello/Lamp.arc']);
     });
 
     it('a student enrolled after the release gets the starter when first opening it, once', async () => {

@@ -1,9 +1,17 @@
 // Loads an exercise folder (examples/lab/<name>/): exercise.json checked against the format of
-// @maa/protocol/exercise, its description and its starter files. Nothing else of the folder (a
-// reference solution) is read, so nothing else can be released.
-import { readdir, readFile } from 'node:fs/promises';
+// @maa/protocol/exercise, its description and its starter files (its `base` folder's, without
+// those it omits, with the starter folder's over them). Nothing else of the folder (a reference
+// solution) is read, so nothing else can be released.
+import { readdir, readFile, realpath, stat } from 'node:fs/promises';
 import path from 'node:path';
-import { EXERCISE_FILE_NAME, type ExerciseManifest, exerciseIssues, type ReleasedExercise } from '@maa/protocol/exercise';
+import {
+    EXERCISE_FILE_NAME,
+    type ExerciseManifest,
+    exerciseIssues,
+    layerStarter,
+    type ReleasedExercise,
+    type StarterSource,
+} from '@maa/protocol/exercise';
 import { ExerciseError } from './errors.js';
 
 /** An exercise folder, read and valid. */
@@ -77,6 +85,42 @@ async function readText(file: string, where: string, what: string): Promise<stri
     }
 }
 
+/** Whether `inner` is `outer` or lies below it (both absolute). */
+function within(outer: string, inner: string): boolean {
+    const rel = path.relative(outer, inner);
+    return rel === '' || (!rel.startsWith('..') && !path.isAbsolute(rel));
+}
+
+/**
+ * The base folder, real path: it must exist, be a folder, lie below the exercise folder's
+ * grandparent (the repository's examples/ for examples/lab/<name>) and neither hold the exercise
+ * folder nor lie inside it (its solution would be released).
+ */
+async function baseFolder(folder: string, base: string, where: string): Promise<string> {
+    const fail = (why: string) => new ExerciseError(`${where}: /base: ${why}`);
+    const exercise = await realpath(folder);
+    const root = path.dirname(path.dirname(exercise));
+    let dir: string;
+    try {
+        dir = await realpath(path.resolve(folder, ...base.split('/')));
+    } catch {
+        throw fail(`the folder ${base} does not exist`);
+    }
+    if (!(await stat(dir)).isDirectory()) throw fail(`${base} is not a folder`);
+    if (!within(root, dir)) throw fail(`${base} lies outside ${root} (a base lies beside the exercises, e.g. ../../toast-service)`);
+    if (within(dir, exercise) || within(exercise, dir))
+        throw fail(`${base} holds the exercise folder or lies in it (a base lies beside the exercises)`);
+    return dir;
+}
+
+/** The starter's files and where each comes from, with the issues of `omit`. */
+async function starterSources(folder: string, manifest: ExerciseManifest, where: string) {
+    const own = await starterFiles(folder, manifest.starter ?? 'starter', where);
+    const base = manifest.base === undefined ? undefined : await baseFolder(folder, manifest.base, where);
+    const layered = layerStarter(manifest, base ? await filesBelow(base) : [], own);
+    return { ...layered, base };
+}
+
 /** Reads and checks an exercise folder; an {@link ExerciseError} lists every problem by file and JSON path. */
 export async function loadExercise(folder: string): Promise<LoadedExercise> {
     const name = path.basename(path.resolve(folder));
@@ -86,10 +130,16 @@ export async function loadExercise(folder: string): Promise<LoadedExercise> {
     const json = await readJson(where);
     const schemaIssues = exerciseIssues(json);
     if (schemaIssues.length === 0) {
-        const starter = (json as ExerciseManifest).starter ?? 'starter';
-        const paths = await starterFiles(folder, starter, where);
-        schemaIssues.push(...exerciseIssues(json, paths));
-        if (schemaIssues.length === 0) return readExercise(folder, name, json as ExerciseManifest, paths, where);
+        const manifest = json as ExerciseManifest;
+        const { files, issues, base } = await starterSources(folder, manifest, where);
+        schemaIssues.push(
+            ...issues,
+            ...exerciseIssues(
+                json,
+                files.map((f) => f.path),
+            ),
+        );
+        if (schemaIssues.length === 0) return readExercise(folder, name, manifest, files, where, base);
     }
     const problems = schemaIssues.map((i) => `${where}: ${i.pointer || '/'}: ${i.message}`);
     throw new ExerciseError(problems.join('\n'), problems);
@@ -99,8 +149,9 @@ async function readExercise(
     folder: string,
     name: string,
     manifest: ExerciseManifest,
-    paths: string[],
+    sources: readonly StarterSource[],
     where: string,
+    base: string | undefined,
 ): Promise<LoadedExercise> {
     const starter = path.join(folder, ...(manifest.starter ?? 'starter').split('/'));
     const description = await readText(
@@ -109,8 +160,10 @@ async function readExercise(
         manifest.description,
     );
     const files: Record<string, string> = {};
-    for (const rel of paths)
-        files[rel] = await readText(path.join(starter, ...rel.split('/')), path.join(starter, rel), 'the starter file');
+    for (const { path: rel, from } of sources) {
+        const file = path.join(from === 'base' && base ? base : starter, ...rel.split('/'));
+        files[rel] = await readText(file, file, from === 'base' ? 'the base file' : 'the starter file');
+    }
     return { name, folder, manifest, description, files };
 }
 
