@@ -37,7 +37,9 @@ export class WebStreamTestRunner implements StreamTestRunner {
     constructor(
         private readonly base: string,
         private readonly root: string,
-        private readonly fetchFn: typeof fetch = fetch,
+        // a wrapper, not `fetch` itself: a browser's fetch called as a method of this object
+        // throws "Illegal invocation" (Node's does not, so only the browser host shows it)
+        private readonly fetchFn: typeof fetch = (input, init) => fetch(input, init),
     ) {}
 
     /** A file's path below the workspace folder. */
