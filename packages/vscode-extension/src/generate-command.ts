@@ -8,28 +8,11 @@ import * as vscode from 'vscode';
 import type { GenerateReport } from './generate-report.js';
 import { summaryMessage } from './generate-report.js';
 import type { GenerateRunner } from './generate-runner.js';
-import { type PlatformItem, platformItems } from './platforms.js';
+import { pickPlatform } from './platform-pick.js';
+import type { PlatformItem } from './platforms.js';
 
 /** How long the summary of a run stays in the status bar. */
 const STATUS_MS = 30_000;
-
-/** The platforms of the workspace's `.arcapp` files as quick pick items. */
-async function pickPlatform(): Promise<PlatformItem | undefined> {
-    const uris = await vscode.workspace.findFiles('**/*.arcapp', '**/{node_modules,.git,out}/**');
-    const files = await Promise.all(
-        uris.map(async (uri) => ({
-            file: uri.fsPath,
-            displayPath: vscode.workspace.asRelativePath(uri),
-            text: new TextDecoder().decode(await vscode.workspace.fs.readFile(uri)),
-        })),
-    );
-    const items = platformItems(files);
-    if (items.length === 0) {
-        void vscode.window.showWarningMessage('MontiArc: no application configuration (.arcapp) with a platform in the workspace.');
-        return undefined;
-    }
-    return vscode.window.showQuickPick(items, { placeHolder: 'Generate which platform?', matchOnDescription: true });
-}
 
 export function toDiagnostics(report: GenerateReport, collection: vscode.DiagnosticCollection): void {
     const severity = {
@@ -68,7 +51,7 @@ export async function generate(runner: GenerateRunner, collection: vscode.Diagno
         );
         return;
     }
-    const item = await pickPlatform();
+    const item = await pickPlatform('Generate');
     if (!item) return;
     try {
         const report = await vscode.window.withProgress(

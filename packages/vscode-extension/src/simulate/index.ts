@@ -11,7 +11,7 @@ import path from 'node:path';
 import type { FromWebview } from '@maa/simulate-view/host-messages';
 import * as vscode from 'vscode';
 import { showActiveStates, showLiveValues } from '../diagram/index.js';
-import { type PlatformItem, platformItems } from '../platforms.js';
+import { pickPlatform } from '../platform-pick.js';
 import { IdeBackend } from './backend-process.js';
 import { backendAppPath, backendScript, readSimulateSettings } from './launch.js';
 import { SimulateView } from './panel.js';
@@ -65,7 +65,7 @@ class Simulation implements vscode.Disposable {
             void vscode.window.showWarningMessage('MontiArc: simulations run generated code and are available in trusted workspaces only.');
             return;
         }
-        const item = await pickPlatform();
+        const item = await pickPlatform('Simulate');
         if (!item) return;
         const folder = vscode.workspace.getWorkspaceFolder(vscode.Uri.file(item.appFile))?.uri.fsPath;
         const app = folder ? backendAppPath(folder, item.appFile) : undefined;
@@ -142,22 +142,4 @@ class Simulation implements vscode.Disposable {
                 break;
         }
     }
-}
-
-/** The platforms of the workspace's `.arcapp` files (as Generate offers them). */
-async function pickPlatform(): Promise<PlatformItem | undefined> {
-    const uris = await vscode.workspace.findFiles('**/*.arcapp', '**/{node_modules,.git,out}/**');
-    const files = await Promise.all(
-        uris.map(async (uri) => ({
-            file: uri.fsPath,
-            displayPath: vscode.workspace.asRelativePath(uri),
-            text: new TextDecoder().decode(await vscode.workspace.fs.readFile(uri)),
-        })),
-    );
-    const items = platformItems(files);
-    if (items.length === 0) {
-        void vscode.window.showWarningMessage('MontiArc: no application configuration (.arcapp) with a platform in the workspace.');
-        return undefined;
-    }
-    return vscode.window.showQuickPick(items, { placeHolder: 'Simulate which platform?', matchOnDescription: true });
 }

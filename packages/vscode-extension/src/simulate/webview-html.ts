@@ -4,7 +4,7 @@
  * nonce and lets the page reach nothing but the relay (fetch and WebSockets: `connect-src`; the
  * viser view: `frame-src`). Pure.
  */
-import { randomBytes } from 'node:crypto';
+import { newNonce, webviewCsp, webviewPageHtml } from '../webview-page.js';
 
 export interface SimulatePage {
     /** The webview's `cspSource` (where its own resources come from). */
@@ -17,11 +17,6 @@ export interface SimulatePage {
     nonce?: string;
 }
 
-/** A fresh nonce (128 random bits). */
-export function newNonce(): string {
-    return randomBytes(16).toString('base64url');
-}
-
 /** The WebSocket origin of an http(s) origin (`http:` → `ws:`, `https:` → `wss:`). */
 export function webSocketOrigin(origin: string): string {
     const url = new URL(origin);
@@ -29,40 +24,22 @@ export function webSocketOrigin(origin: string): string {
     return `${url.protocol === 'https:' ? 'wss:' : 'ws:'}//${url.host}`;
 }
 
-/** The Content-Security-Policy of the page. */
+/** The Content-Security-Policy of the page: the common one (../webview-page.ts) plus the relay for connections and frames. */
 export function simulateCsp(page: Required<Pick<SimulatePage, 'cspSource' | 'relayOrigin' | 'nonce'>>): string {
     const relay = new URL(page.relayOrigin).origin;
-    return [
-        "default-src 'none'",
-        `script-src 'nonce-${page.nonce}'`,
-        `style-src ${page.cspSource}`,
-        `img-src ${page.cspSource} data:`,
-        `font-src ${page.cspSource}`,
-        `connect-src ${relay} ${webSocketOrigin(relay)}`,
-        `frame-src ${relay}`,
-    ].join('; ');
+    return webviewCsp(page.cspSource, page.nonce, { extra: [`connect-src ${relay} ${webSocketOrigin(relay)}`, `frame-src ${relay}`] });
 }
 
-function attr(value: string): string {
-    return value.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
-}
-
+/** The page's HTML (a fresh nonce unless `page.nonce`). */
 export function simulateHtml(page: SimulatePage): string {
     const nonce = page.nonce ?? newNonce();
-    const csp = simulateCsp({ cspSource: page.cspSource, relayOrigin: page.relayOrigin, nonce });
-    return `<!doctype html>
-<html lang="en">
-<head>
-<meta charset="utf-8">
-<meta http-equiv="Content-Security-Policy" content="${attr(csp)}">
-<meta name="viewport" content="width=device-width, initial-scale=1">
-<link rel="stylesheet" href="${attr(page.style)}">
-<title>MontiArc Simulation</title>
-</head>
-<body class="maa-vscode-simulate">
-<div id="simulate-root"></div>
-<script nonce="${attr(nonce)}" src="${attr(page.script)}"></script>
-</body>
-</html>
-`;
+    return webviewPageHtml({
+        title: 'MontiArc Simulation',
+        csp: simulateCsp({ cspSource: page.cspSource, relayOrigin: page.relayOrigin, nonce }),
+        nonce,
+        scriptUri: page.script,
+        styleUri: page.style,
+        rootId: 'simulate-root',
+        bodyClass: 'maa-vscode-simulate',
+    });
 }
