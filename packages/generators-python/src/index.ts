@@ -7,3 +7,4 @@ export { default as robotArmBehavior, robotArmRule } from './behavior/robotarm.j
 export { computeClass } from './behavior/compute.js';
 export * from './behavior/common.js';
 export * from './python/expressions.js';
+export { findStreamFiles, selectCases as selectStreamCases, type StreamTestResult } from './timesync/stream-tests.js';

@@ -10,10 +10,10 @@
 import { spawn } from 'node:child_process';
 import { stat } from 'node:fs/promises';
 import path from 'node:path';
+import { findStreamFiles, type StreamTestResult, selectStreamCases } from '@maa/generators-python';
 import type { IdeDiagnostic } from '@maa/protocol';
 import type { GenerationService } from './generation.js';
 import { HttpError } from './http-util.js';
-import { walkTree } from './walk.js';
 import type { Workspace } from './workspace.js';
 
 /** The request body. Paths are relative to the workspace (POSIX). */
@@ -29,13 +29,7 @@ export interface StreamTestRequestBody {
 }
 
 /** One test's result, as in `maa-gen test --format json` (`file` relative to the workspace). */
-export interface StreamTestResult {
-    file: string;
-    test: string | null;
-    line: number;
-    passed: boolean;
-    problems: string[];
-}
+export type { StreamTestResult };
 
 export interface StreamTestAnswer {
     /** False when the platform did not generate (no test ran; `diagnostics` says why). */
@@ -63,11 +57,6 @@ export function streamTestRequest(body: Record<string, unknown>): StreamTestRequ
     return { app, ...(files ? { files } : {}), ...(cases ? { cases } : {}), ...(platform ? { platform } : {}) };
 }
 
-/** Whether the walk of `maa-gen test` enters a folder (it skips hidden ones, node_modules and generated). */
-function entered(name: string): boolean {
-    return !name.startsWith('.') && name !== 'node_modules' && name !== 'generated';
-}
-
 const summaryOf = (results: readonly StreamTestResult[]): StreamTestAnswer['summary'] => {
     const passed = results.filter((r) => r.passed).length;
     return { passed, failed: results.length - passed };
@@ -86,7 +75,7 @@ export class StreamTestService {
         const files = await this.streamFiles(request);
         const generated = await this.generation.generate(request.app, request.platform ?? 'timesync');
         if (!generated.ok) return { ok: false, results: [], summary: summaryOf([]), diagnostics: generated.diagnostics };
-        const chosen = files ?? (await this.filesBelow(this.generation.modelRootOf(await this.workspace.confined.resolve(request.app))));
+        const chosen = files ?? (await findStreamFiles(this.generation.modelRootOf(await this.workspace.confined.resolve(request.app))));
         const results = chosen.length === 0 ? [] : selectCases(await this.runPython(generated.platformDir, chosen, signal), request.cases);
         return { ok: true, results, summary: summaryOf(results), diagnostics: generated.diagnostics };
     }
@@ -102,15 +91,6 @@ export class StreamTestService {
                 return abs;
             }),
         );
-    }
-
-    /** Every `*.stream` below the model root, sorted (the files `maa-gen test` finds). */
-    private async filesBelow(root: string): Promise<string[]> {
-        const found: string[] = [];
-        for await (const e of walkTree(root, (entry) => entered(entry.dirent.name))) {
-            if (e.dirent.isFile() && e.dirent.name.endsWith('.stream') && e.rel.split('/').slice(0, -1).every(entered)) found.push(e.abs);
-        }
-        return found.sort();
     }
 
     private runPython(build: string, files: readonly string[], signal: AbortSignal): Promise<StreamTestResult[]> {
@@ -149,15 +129,7 @@ export class StreamTestService {
     }
 }
 
-/**
- * The results of the named tests (all when none is named), as `maa-gen test --case`: a file
- * whose tests did not run keeps its error; a name no file has a test of is refused (400).
- */
+/** The results of the named tests (all when none is named), as `maa-gen test --case` (@maa/generators-python's selection): a name no file has a test of is refused (400). */
 export function selectCases(results: readonly StreamTestResult[], cases: readonly string[] | undefined): StreamTestResult[] {
-    if (!cases || cases.length === 0) return [...results];
-    const missing = cases.filter((c) => !results.some((r) => r.test === c));
-    if (missing.length > 0 && !results.some((r) => r.test === null)) {
-        throw new HttpError(400, `no stream test named ${missing.map((c) => JSON.stringify(c)).join(', ')} in the files run`);
-    }
-    return results.filter((r) => r.test === null || cases.includes(r.test));
+    return selectStreamCases(results, cases, (message) => new HttpError(400, message));
 }

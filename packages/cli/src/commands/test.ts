@@ -1,8 +1,9 @@
 import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readdirSync, rmSync, statSync } from 'node:fs';
+import { mkdtempSync, rmSync, statSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { Command, Option } from 'commander';
+import { findStreamFiles, type StreamTestResult, selectStreamCases } from '@maa/generators-python';
 import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
 import { appFileArg, modelRootOfApp } from '../roots.js';
@@ -21,36 +22,13 @@ export interface TestCommandOptions {
     case?: string[];
 }
 
-export interface StreamTestResult {
-    file: string;
-    test: string | null;
-    line: number;
-    passed: boolean;
-    problems: string[];
-}
-
-/** Every `*.stream` file below a folder (skipping node_modules, generated output and hidden folders), sorted. */
-export function findStreamFiles(dir: string): string[] {
-    const out: string[] = [];
-    const visit = (d: string): void => {
-        for (const entry of readdirSync(d, { withFileTypes: true }).sort((a, b) => (a.name < b.name ? -1 : a.name > b.name ? 1 : 0))) {
-            if (entry.name.startsWith('.') || entry.name === 'node_modules' || entry.name === 'generated') continue;
-            const full = path.join(d, entry.name);
-            if (entry.isDirectory()) visit(full);
-            else if (entry.isFile() && entry.name.endsWith('.stream')) out.push(full);
-        }
-    };
-    visit(dir);
-    return out;
-}
-
 /**
  * `maa-gen test APP.arcapp [FILE.stream...]`: generates the application's python-timesync
  * platform and runs the stream tests (`*.stream` next to the models) against it.
  */
 export async function runTest(appArg: string, files: string[], options: TestCommandOptions, io: CliIo): Promise<ExitCode> {
     const { appFile, modelRoot } = resolveApp(appArg, options, io);
-    const streamFiles = resolveStreamFiles(files, modelRoot, io);
+    const streamFiles = await resolveStreamFiles(files, modelRoot, io);
     const json = options.format === 'json';
     const tempOut = options.out ? undefined : mkdtempSync(path.join(tmpdir(), 'maa-gen-test-'));
     const outDir = options.out ? path.resolve(io.cwd, options.out) : tempOut!;
@@ -86,7 +64,7 @@ function resolveApp(appArg: string, options: TestCommandOptions, io: CliIo): { a
 }
 
 /** The named stream files (each must exist), or every one below the model root. */
-function resolveStreamFiles(files: readonly string[], modelRoot: string, io: CliIo): string[] {
+async function resolveStreamFiles(files: readonly string[], modelRoot: string, io: CliIo): Promise<string[]> {
     if (files.length === 0) return findStreamFiles(modelRoot);
     const streamFiles = files.map((f) => path.resolve(io.cwd, f));
     for (const f of streamFiles) {
@@ -115,20 +93,9 @@ function runStreamTests(build: string, streamFiles: readonly string[], options: 
     }
 }
 
-/**
- * The results of the tests `--case` names (all when it names none). A file-level result (a file
- * that does not parse or names no component of the application: `test` null) stays, since its
- * cases did not run; a name no file has a test of is a usage problem.
- */
+/** The results of the tests `--case` names (@maa/generators-python's selection); a name no file has a test of is a usage problem. */
 export function selectCases(results: readonly StreamTestResult[], cases: readonly string[] | undefined): StreamTestResult[] {
-    if (!cases || cases.length === 0) return [...results];
-    const wanted = new Set(cases);
-    const missing = cases.filter((c) => !results.some((r) => r.test === c));
-    const fileErrors = new Set(results.filter((r) => r.test === null).map((r) => r.file));
-    if (missing.length > 0 && fileErrors.size === 0) {
-        throw new CliError(`no stream test named ${missing.map((c) => JSON.stringify(c)).join(', ')} in the files run`);
-    }
-    return results.filter((r) => r.test === null || wanted.has(r.test));
+    return selectStreamCases(results, cases, (message) => new CliError(message));
 }
 
 /**
