@@ -8,6 +8,8 @@ const cell = (student: string, exercise: string, more: Partial<DashboardCell> = 
     exercise,
     workspace: `/api/ws/c/${exercise}/${student}`,
     diagnostics: { errors: 0, warnings: 0 },
+    checking: false,
+    checkError: null,
     tests: null,
     simulation: null,
     lastActivity: '2026-01-02T03:04:05.000Z',
@@ -62,6 +64,17 @@ describe('the table', () => {
         const lines = cellSummary(cell('a', 'e', { diagnostics: { errors: 2, warnings: 1 }, tests: { passed: 1, total: 3, at: '' } }));
         expect(lines.slice(0, 3)).toEqual(['2 errors, 1 warning', 'tests 1/3 passed', 'not simulated']);
         expect(cellSummary(cell('a', 'e', { simulation: { goalReached: true, at: '' } }))[2]).toBe('goal reached');
+    });
+    it('says "checking…" while the current files are checked, and a failed check', () => {
+        expect(cellSummary(cell('a', 'e', { diagnostics: null, checking: true }))[0]).toBe('checking…');
+        expect(cellSummary(cell('a', 'e', { diagnostics: { errors: 1, warnings: 0 }, checking: true }))[0]).toBe(
+            '1 error, 0 warnings (checking…)',
+        );
+        expect(cellSummary(cell('a', 'e', { diagnostics: null, checkError: 'the checker crashed' }))[0]).toBe(
+            'check failed: the checker crashed',
+        );
+        expect(cellTone(cell('a', 'e', { diagnostics: null, checking: true }))).toBe('warn');
+        expect(cellTone(cell('a', 'e', { diagnostics: null, checkError: 'x' }))).toBe('warn');
     });
     it('colours errors, passed tests and the rest apart', () => {
         expect(cellTone(cell('a', 'e', { diagnostics: null }))).toBe('none');

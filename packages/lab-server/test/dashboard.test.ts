@@ -1,10 +1,13 @@
 // The instructor's dashboard against a real server on both storage backends: the JSON of a course
 // with 2 students × 2 exercises (one workspace with errors, one with its stream tests passed), the
 // ETag (an unchanged dashboard is a 304, a save changes it), the CSV, the read-only workspace view,
-// the pages under their CSP, and 403 for a student on every dashboard route.
+// the pages under their CSP, and 403 for a student on every dashboard route; the checks in the
+// checker thread: a request during a check answers at once with the cells still "checking", a
+// crashed thread gives an error cell and the next check a new thread.
+import { Worker } from 'node:worker_threads';
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import { hashPassword } from '../src/auth/passwords.js';
-import { buildDashboard, type FileDiagnostic, WorkspaceChecker } from '../src/dashboard/index.js';
+import { buildDashboard, CheckThread, type FileDiagnostic, NO_LIVE_SIMULATIONS, WorkspaceChecker } from '../src/dashboard/index.js';
 import { type LabServer, startLabServer } from '../src/http/server.js';
 import { type LabStore, openLabStore, type User } from '../src/storage/index.js';
 import { BACKENDS, type Backend, startBackend } from './backends.js';
@@ -13,6 +16,12 @@ import { Client } from './http-client.js';
 const PASSWORD = 'correct horse battery staple';
 const GOOD = 'package lamp;\ncomponent Lamp {\n  port in boolean on;\n  port out boolean light;\n}\n';
 const BAD = 'package lamp;\ncomponent Lamp {\n  port in boolean on;\n  port out Nope light;\n}\n';
+/** checker threads for the crash test (eval'd CommonJS): one that dies on its first check, one that answers */
+const CRASHING = "require('node:worker_threads').parentPort.on('message', () => process.exit(7));";
+const ANSWERING = `const { parentPort } = require('node:worker_threads');
+parentPort.on('message', (m) => parentPort.postMessage({ id: m.id, diagnostics: m.files.map((f) =>
+    ({ file: f.path, line: 1, column: 1, severity: 'error', code: 'test/fake', message: 'from the thread' })) }));`;
+const WARNING: FileDiagnostic = { file: 'lamp/Lamp.arc', line: 1, column: 1, severity: 'warning', code: 'x/y', message: 'counted' };
 
 describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
     let backend: Backend;
@@ -63,9 +72,18 @@ describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
         return c;
     }
 
+    /** The dashboard once no cell is checking any more (waits for the server's checker thread between tries). */
+    async function complete(c: Client, path: string, headers: Record<string, string> = {}) {
+        for (;;) {
+            const answer = await c.send(path, { headers });
+            if (answer.status !== 200 || !answer.json.cells.some((cell: { checking: boolean }) => cell.checking)) return answer;
+            await server.dashboard.settled();
+        }
+    }
+
     it('gives the instructor students × exercises with diagnostics, tests, goal and activity', async () => {
         const teacher = await loggedIn('teacher');
-        const answer = await teacher.send('/api/courses/robotics/dashboard');
+        const answer = await complete(teacher, '/api/courses/robotics/dashboard');
         expect(answer.status, answer.text).toBe(200);
         const d = answer.json;
         expect(d.course).toEqual({ name: 'robotics', title: 'Robotics lab' });
@@ -87,6 +105,8 @@ describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
         expect(adaLampCell).toMatchObject({
             workspace: '/api/ws/robotics/lamp/ada',
             diagnostics: { errors: 1, warnings: 0 },
+            checking: false,
+            checkError: null,
             tests: null,
             simulation: null,
             simulating: false,
@@ -102,6 +122,8 @@ describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
             exercise: 'lamp',
             workspace: null,
             diagnostics: null,
+            checking: false,
+            checkError: null,
             tests: null,
             simulation: null,
             lastActivity: null,
@@ -112,14 +134,14 @@ describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
 
     it('answers an unchanged dashboard with 304 and a changed one with a new ETag', async () => {
         const teacher = await loggedIn('teacher');
-        const first = await teacher.send('/api/courses/robotics/dashboard');
+        const first = await complete(teacher, '/api/courses/robotics/dashboard');
         const etag = String(first.headers.etag);
         expect(etag).toMatch(/^"[^"]+"$/);
         const again = await teacher.send('/api/courses/robotics/dashboard', { headers: { 'If-None-Match': etag } });
         expect(again.status).toBe(304);
         expect(again.text).toBe('');
         await store.saveFile({ workspaceId: adaLamp, path: 'lamp/Lamp.arc', content: GOOD, authorId: ada.id });
-        const changed = await teacher.send('/api/courses/robotics/dashboard', { headers: { 'If-None-Match': etag } });
+        const changed = await complete(teacher, '/api/courses/robotics/dashboard', { 'If-None-Match': etag });
         expect(changed.status).toBe(200);
         expect(changed.headers.etag).not.toBe(etag);
         expect(changed.json.cells[0].diagnostics).toEqual({ errors: 0, warnings: 0 });
@@ -213,25 +235,94 @@ describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
 
     it('checks a workspace again only when its files changed (cached by revision)', async () => {
         const seen: string[] = [];
-        const runs: number[] = [];
-        const checker = new WorkspaceChecker(store, async (roots): Promise<FileDiagnostic[][]> => {
-            seen.push(...roots);
-            runs.push(roots.length);
-            return roots.map(() => [{ file: 'lamp/Lamp.arc', line: 1, column: 1, severity: 'warning', code: 'x/y', message: 'counted' }]);
+        const checker = new WorkspaceChecker(store, async (files) => {
+            seen.push(files.map((f) => f.path).join(' '));
+            return files.map(() => WARNING);
         });
         const live = { isSimulating: (id: number) => id === adaLamp };
-        const first = await buildDashboard({ store, checker, live }, 'robotics');
+        await buildDashboard({ store, checker, live }, 'robotics');
+        await checker.settled();
         expect(seen).toHaveLength(2); // ada's two workspaces; bob has none
-        expect(runs).toEqual([2]); // in one run of the checker
-        expect(first.cells[0]).toMatchObject({ diagnostics: { errors: 0, warnings: 1 }, simulating: true });
+        const first = await buildDashboard({ store, checker, live }, 'robotics');
+        expect(first.cells[0]).toMatchObject({ diagnostics: { errors: 0, warnings: 1 }, checking: false, simulating: true });
         expect(first.cells[1]?.simulating).toBe(false);
         await Promise.all([buildDashboard({ store, checker, live }, 'robotics'), buildDashboard({ store, checker, live }, 'robotics')]);
         expect(seen).toHaveLength(2);
         expect(checker.checksRun).toBe(2);
         await store.saveFile({ workspaceId: adaLamp, path: 'lamp/Other.arc', content: GOOD, authorId: ada.id });
-        await buildDashboard({ store, checker, live }, 'robotics');
+        const changed = await buildDashboard({ store, checker, live }, 'robotics');
+        // the files last checked while the new ones are
+        expect(changed.cells[0]).toMatchObject({ diagnostics: { errors: 0, warnings: 1 }, checking: true });
+        await checker.settled();
         expect(seen).toHaveLength(3);
-        expect(runs).toEqual([2, 1]);
+        expect(seen[2]?.split(' ').sort()).toEqual(['lamp/Lamp.arc', 'lamp/Other.arc']);
+        expect((await buildDashboard({ store, checker, live }, 'robotics')).cells[0]).toMatchObject({
+            diagnostics: { errors: 0, warnings: 2 },
+            checking: false,
+        });
         await store.deleteFile({ workspaceId: adaLamp, path: 'lamp/Other.arc', authorId: ada.id });
+    });
+
+    it('answers at once during a long check with the cells still checking, one workspace at a time, then the complete data', async () => {
+        let release: () => void = () => undefined;
+        const gate = new Promise<void>((resolve) => {
+            release = resolve;
+        });
+        let active = 0;
+        let mostActive = 0;
+        const checker = new WorkspaceChecker(store, async (files) => {
+            active++;
+            mostActive = Math.max(mostActive, active);
+            await gate;
+            active--;
+            return files.map(() => ({ ...WARNING, severity: 'error' as const }));
+        });
+        const sources = { store, checker, live: NO_LIVE_SIMULATIONS };
+        const pending = await buildDashboard(sources, 'robotics');
+        expect(pending.cells.map((c) => [c.checking, c.diagnostics])).toEqual([
+            [true, null],
+            [true, null],
+            [false, null], // bob: no workspace
+            [false, null],
+        ]);
+        // a second request while the check still runs answers too
+        expect((await buildDashboard(sources, 'robotics')).cells[0]?.checking).toBe(true);
+        release();
+        await checker.settled();
+        expect(mostActive).toBe(1);
+        expect(checker.checksRun).toBe(2);
+        const done = await buildDashboard(sources, 'robotics');
+        expect(done.cells.slice(0, 2).map((c) => [c.checking, c.diagnostics, c.checkError])).toEqual([
+            [false, { errors: 1, warnings: 0 }, null],
+            [false, { errors: 1, warnings: 0 }, null],
+        ]);
+    });
+
+    it('gives an error cell when the checker thread crashes, and a new thread checks the next time', async () => {
+        let spawned = 0;
+        const thread = new CheckThread(() => new Worker(++spawned === 1 ? CRASHING : ANSWERING, { eval: true }));
+        const checker = new WorkspaceChecker(store, (files) => thread.check(files));
+        const sources = { store, checker, live: NO_LIVE_SIMULATIONS };
+        try {
+            expect((await buildDashboard(sources, 'robotics')).cells[0]?.checking).toBe(true);
+            await checker.settled();
+            // ada's lamp was the crashed thread's check; her tests workspace the new thread's
+            const failed = await buildDashboard(sources, 'robotics');
+            expect(failed.cells[0]).toMatchObject({
+                checking: false,
+                diagnostics: null,
+                checkError: expect.stringContaining('exit code 7'),
+            });
+            expect(failed.cells[1]).toMatchObject({ checking: false, diagnostics: { errors: 1, warnings: 0 }, checkError: null });
+            expect(spawned).toBe(2);
+            // the next request checks the failed workspace again
+            expect((await buildDashboard(sources, 'robotics')).cells[0]).toMatchObject({ checking: true, checkError: null });
+            await checker.settled();
+            const again = await buildDashboard(sources, 'robotics');
+            expect(again.cells[0]).toMatchObject({ checking: false, diagnostics: { errors: 1, warnings: 0 }, checkError: null });
+            expect(spawned).toBe(2);
+        } finally {
+            await thread.close();
+        }
     });
 });

@@ -1,12 +1,12 @@
 // The diagnostics of a workspace's current files (docs/lab.md "The instructor's dashboard"): the
-// language family's checker (`maa-gen check`'s checkModelRoots) runs in-process on a temporary
-// copy of the files. Results are cached per workspace by its files' revisions, so refreshing a
-// dashboard of 30 students re-checks only the workspaces that changed; checks run one at a time
-// (the language services are heavy and the machine is shared with the students' simulations).
-import { mkdir, mkdtemp, rm, writeFile } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
-import path from 'node:path';
+// language family's checker (`maa-gen check`'s checkModelRoots) runs in a worker thread
+// (check-thread.ts), one workspace at a time, so the lab server's event loop stays free for the
+// students between and during the checks. Results are cached per workspace by its files'
+// revisions, so refreshing a dashboard of 30 students re-checks only the workspaces that changed.
+// A dashboard request takes what is ready (states()) and leaves the rest checking; the next poll
+// brings it.
 import type { LabStore } from '../storage/index.js';
+import { CheckThread } from './check-thread.js';
 
 export interface FileDiagnostic {
     /** the workspace path of the file (`/`-separated) */
@@ -26,123 +26,164 @@ export interface WorkspaceCheck {
     diagnostics: FileDiagnostic[];
 }
 
-/**
- * Checks model roots (each an independent scope) and gives each root's diagnostics, files
- * relative to their root; by default the language family's checker, loaded on first use.
- */
-export type FolderChecker = (roots: readonly string[]) => Promise<FileDiagnostic[][]>;
+/** One file of a workspace: its path (`/`-separated) and text. */
+export interface WorkspaceFile {
+    path: string;
+    content: string;
+}
 
-/** The language server's checker on the roots in one run (their nested `maa.json` folders are roots of their own). */
-export const familyChecker: FolderChecker = async (roots) => {
-    const { checkModelRoots } = await import('@maa/language-server');
-    const found = await checkModelRoots(roots.map((root) => ({ root })));
-    return roots.map((root) =>
-        found
-            .filter((d) => d.file.startsWith(`${root}${path.sep}`))
-            .map((d) => ({
-                file: path.relative(root, d.file).split(path.sep).join('/'),
-                line: d.line,
-                column: d.column,
-                severity: d.severity,
-                code: d.code,
-                message: d.message,
-            })),
-    );
-};
+/** What the lab server sends the checker thread, and its answer. */
+export interface CheckRequest {
+    id: number;
+    files: readonly WorkspaceFile[];
+}
+export type CheckResponse = { id: number; diagnostics: FileDiagnostic[] } | { id: number; error: string };
 
-/** A workspace whose files changed since its last check. */
-interface Stale {
-    workspaceId: number;
-    fingerprint: string;
-    paths: string[];
+/** Checks one workspace's files and gives their diagnostics (by default in the checker thread). */
+export type FilesChecker = (files: readonly WorkspaceFile[]) => Promise<FileDiagnostic[]>;
+
+/** Where a workspace's check stands. */
+export interface CheckState {
+    /** the latest finished check: of the current files, or of earlier ones while `checking` */
+    check: WorkspaceCheck | undefined;
+    /** the current files are being checked or wait for their turn */
+    checking: boolean;
+    /** the check of the current files failed (e.g. the checker crashed); the next request checks again */
+    error: string | undefined;
 }
 
 export class WorkspaceChecker {
     private readonly cache = new Map<number, WorkspaceCheck>();
+    /** the last failed check per workspace (reported once, then checked again) */
+    private readonly failed = new Map<number, { fingerprint: string; message: string }>();
     /** the check in progress per workspace and fingerprint (a second request waits for it) */
     private readonly running = new Map<string, Promise<WorkspaceCheck>>();
     private queue: Promise<unknown> = Promise.resolve();
+    private readonly thread: CheckThread | undefined;
+    private readonly checkFiles: FilesChecker;
     /** how many workspaces were really checked (not answered from the cache): for tests and the log */
     checksRun = 0;
 
+    /** @param checkFiles the checker (default: the language family's in one worker thread, started on first use) */
     constructor(
         private readonly store: LabStore,
-        private readonly checkRoots: FolderChecker = familyChecker,
-    ) {}
-
-    /** The diagnostics of the workspace's current files (from the cache while they are unchanged). */
-    async check(workspaceId: number): Promise<WorkspaceCheck> {
-        return (await this.checkAll([workspaceId])).get(workspaceId) as WorkspaceCheck;
+        checkFiles?: FilesChecker,
+    ) {
+        if (checkFiles) this.checkFiles = checkFiles;
+        else {
+            const thread = new CheckThread();
+            this.thread = thread;
+            this.checkFiles = (files) => thread.check(files);
+        }
     }
 
-    /**
-     * The diagnostics of each workspace: unchanged ones from the cache, the changed ones checked
-     * together in one run of the checker (one set of language services for all of them).
-     */
+    /** The diagnostics of the workspace's current files (from the cache while they are unchanged; waits for a check). */
+    async check(workspaceId: number): Promise<WorkspaceCheck> {
+        const fingerprint = await this.fingerprint(workspaceId);
+        const cached = this.cache.get(workspaceId);
+        if (cached?.fingerprint === fingerprint) return cached;
+        return this.start(workspaceId, fingerprint);
+    }
+
+    /** The diagnostics of each workspace, waiting for every check (one workspace after the other). */
     async checkAll(workspaceIds: readonly number[]): Promise<Map<number, WorkspaceCheck>> {
-        const pending = new Map<number, Promise<WorkspaceCheck>>();
-        const stale: Stale[] = [];
-        for (const workspaceId of workspaceIds) {
-            const files = await this.store.listFiles(workspaceId);
-            const fingerprint = files
-                .map((f) => `${f.path}@${f.revision}`)
-                .sort()
-                .join(' ');
-            const cached = this.cache.get(workspaceId);
-            const running = this.running.get(`${workspaceId} ${fingerprint}`);
-            if (cached?.fingerprint === fingerprint) pending.set(workspaceId, Promise.resolve(cached));
-            else if (running) pending.set(workspaceId, running);
-            else stale.push({ workspaceId, fingerprint, paths: files.map((f) => f.path) });
-        }
-        if (stale.length > 0) {
-            const batch = this.queue.then(() => this.run(stale));
-            this.queue = batch.catch(() => undefined);
-            for (const s of stale) {
-                const key = `${s.workspaceId} ${s.fingerprint}`;
-                const one = batch.then((checks) => checks.get(s.workspaceId) as WorkspaceCheck);
-                this.running.set(key, one);
-                pending.set(s.workspaceId, one);
-                void one.finally(() => this.running.delete(key)).catch(() => undefined);
-            }
-        }
         const checks = new Map<number, WorkspaceCheck>();
-        for (const [id, check] of pending) checks.set(id, await check);
+        for (const id of workspaceIds) checks.set(id, await this.check(id));
         return checks;
     }
 
-    private async run(stale: readonly Stale[]): Promise<Map<number, WorkspaceCheck>> {
-        const base = await mkdtemp(path.join(tmpdir(), 'maa-lab-check-'));
-        try {
-            const roots: string[] = [];
-            for (const s of stale) {
-                const root = path.join(base, String(s.workspaceId));
-                await mkdir(root);
-                for (const p of s.paths) {
-                    const file = await this.store.readFile(s.workspaceId, p);
-                    if (!file || file.content === null) continue;
-                    const target = path.join(root, ...p.split('/'));
-                    await mkdir(path.dirname(target), { recursive: true });
-                    await writeFile(target, file.content);
-                }
-                roots.push(root);
+    /**
+     * Where each workspace's check stands, without waiting: unchanged ones from the cache, changed
+     * ones queued for the checker thread (`checking`), a failed check reported once (`error`).
+     */
+    async states(workspaceIds: readonly number[]): Promise<Map<number, CheckState>> {
+        const states = new Map<number, CheckState>();
+        for (const id of workspaceIds) {
+            const fingerprint = await this.fingerprint(id);
+            const cached = this.cache.get(id);
+            const failed = this.failed.get(id);
+            this.failed.delete(id);
+            if (cached?.fingerprint === fingerprint) states.set(id, { check: cached, checking: false, error: undefined });
+            else if (failed?.fingerprint === fingerprint) states.set(id, { check: cached, checking: false, error: failed.message });
+            else {
+                void this.start(id, fingerprint).catch(() => undefined);
+                states.set(id, { check: cached, checking: true, error: undefined });
             }
-            this.checksRun += stale.length;
-            const found = await this.checkRoots(roots);
-            const checks = new Map<number, WorkspaceCheck>();
-            for (const [i, s] of stale.entries()) {
-                const diagnostics = found[i] ?? [];
-                const result: WorkspaceCheck = {
-                    fingerprint: s.fingerprint,
-                    errors: diagnostics.filter((d) => d.severity === 'error').length,
-                    warnings: diagnostics.filter((d) => d.severity === 'warning').length,
-                    diagnostics,
-                };
-                this.cache.set(s.workspaceId, result);
-                checks.set(s.workspaceId, result);
-            }
-            return checks;
-        } finally {
-            await rm(base, { recursive: true, force: true });
         }
+        return states;
     }
+
+    /** Each workspace's state after its check finished (waits; a failed check is an `error`). */
+    async completeStates(workspaceIds: readonly number[]): Promise<Map<number, CheckState>> {
+        const states = new Map<number, CheckState>();
+        for (const id of workspaceIds) {
+            try {
+                states.set(id, { check: await this.check(id), checking: false, error: undefined });
+            } catch (e) {
+                this.failed.delete(id);
+                states.set(id, { check: undefined, checking: false, error: (e as Error).message });
+            }
+        }
+        return states;
+    }
+
+    /** Resolves when no check runs or waits (failed ones included). */
+    async settled(): Promise<void> {
+        while (this.running.size > 0) await Promise.allSettled([...this.running.values()]);
+    }
+
+    /** Ends the checker thread (the server's close). */
+    async close(): Promise<void> {
+        await this.thread?.close();
+    }
+
+    private async fingerprint(workspaceId: number): Promise<string> {
+        return fingerprintOf(await this.store.listFiles(workspaceId));
+    }
+
+    /** Queues the workspace's check (one at a time), or joins the one already queued for these files. */
+    private start(workspaceId: number, fingerprint: string): Promise<WorkspaceCheck> {
+        const key = `${workspaceId} ${fingerprint}`;
+        const running = this.running.get(key);
+        if (running) return running;
+        const one = this.queue.then(() => this.run(workspaceId, fingerprint));
+        this.queue = one.catch(() => undefined);
+        this.running.set(key, one);
+        void one.finally(() => this.running.delete(key)).catch(() => undefined);
+        return one;
+    }
+
+    private async run(workspaceId: number, queuedAs: string): Promise<WorkspaceCheck> {
+        // the files as they are now (a save since queuing is checked too)
+        const infos = await this.store.listFiles(workspaceId);
+        const fingerprint = fingerprintOf(infos);
+        const files: WorkspaceFile[] = [];
+        for (const info of infos) {
+            const file = await this.store.readFile(workspaceId, info.path);
+            if (file && file.content !== null) files.push({ path: info.path, content: file.content });
+        }
+        this.checksRun++;
+        let diagnostics: FileDiagnostic[];
+        try {
+            diagnostics = await this.checkFiles(files);
+        } catch (e) {
+            this.failed.set(workspaceId, { fingerprint: queuedAs, message: (e as Error).message });
+            throw e;
+        }
+        const result: WorkspaceCheck = {
+            fingerprint,
+            errors: diagnostics.filter((d) => d.severity === 'error').length,
+            warnings: diagnostics.filter((d) => d.severity === 'warning').length,
+            diagnostics,
+        };
+        this.cache.set(workspaceId, result);
+        return result;
+    }
+}
+
+function fingerprintOf(files: readonly { path: string; revision: number }[]): string {
+    return files
+        .map((f) => `${f.path}@${f.revision}`)
+        .sort()
+        .join(' ');
 }

@@ -3,7 +3,7 @@
 // stream tests, the latest simulation's goal, the last activity and whether it simulates now.
 import { HttpError } from '@maa/ide-server/http';
 import type { LabStore, User, WorkspaceSummary } from '../storage/index.js';
-import type { WorkspaceCheck, WorkspaceChecker } from './checker.js';
+import type { CheckState, WorkspaceChecker } from './checker.js';
 
 /** Which workspaces simulate right now (the lab's running simulations). */
 export interface LiveSimulations {
@@ -26,8 +26,12 @@ export interface DashboardCell {
     exercise: string;
     /** the workspace's route prefix (`/api/ws/<course>/<exercise>/<login>`); null: no workspace yet */
     workspace: string | null;
-    /** errors and warnings in the current files; null: no workspace */
+    /** errors and warnings in the current files (while `checking`: in the files last checked); null: no workspace or not checked yet */
     diagnostics: { errors: number; warnings: number } | null;
+    /** the current files are being checked (the next poll brings their diagnostics) */
+    checking: boolean;
+    /** the check of the current files failed (e.g. the checker crashed); the next poll checks again */
+    checkError: string | null;
     /** the latest stream test run; null: none yet */
     tests: { passed: number; total: number; at: string } | null;
     /** the latest simulation's goal; null: none yet */
@@ -51,8 +55,11 @@ export interface DashboardSources {
     live: LiveSimulations;
 }
 
-/** The dashboard of the course (404 when there is no such course). */
-export async function buildDashboard(sources: DashboardSources, courseName: string): Promise<Dashboard> {
+/**
+ * The dashboard of the course (404 when there is no such course). Diagnostics still being checked
+ * are `checking` (the answer does not wait for them) unless `complete` (the CSV export) waits.
+ */
+export async function buildDashboard(sources: DashboardSources, courseName: string, complete = false): Promise<Dashboard> {
     const { store } = sources;
     const course = await store.findCourse(courseName);
     if (!course) throw new HttpError(404, `there is no course ${JSON.stringify(courseName)}`);
@@ -62,10 +69,10 @@ export async function buildDashboard(sources: DashboardSources, courseName: stri
     const byExercise = await Promise.all(
         exercises.map(async (e) => new Map((await store.listWorkspaces(e.id)).map((w) => [w.ownerId, w] as const))),
     );
-    // Every changed workspace of the students in one run of the checker.
+    // Every changed workspace of the students queued for the checker thread.
     const studentIds = new Set(students.map((s) => s.id));
     const workspaceIds = byExercise.flatMap((m) => [...m.values()].filter((w) => studentIds.has(w.ownerId)).map((w) => w.id));
-    const checks = await sources.checker.checkAll(workspaceIds);
+    const checks = complete ? await sources.checker.completeStates(workspaceIds) : await sources.checker.states(workspaceIds);
     for (const student of students) {
         for (const [i, exercise] of exercises.entries()) {
             const workspace = byExercise[i]?.get(student.id);
@@ -74,6 +81,8 @@ export async function buildDashboard(sources: DashboardSources, courseName: stri
                 exercise: exercise.name,
                 workspace: null,
                 diagnostics: null,
+                checking: false,
+                checkError: null,
                 tests: null,
                 simulation: null,
                 lastActivity: null,
@@ -92,19 +101,18 @@ export async function buildDashboard(sources: DashboardSources, courseName: stri
 }
 
 async function fillCell(
-    { store, checker, live }: DashboardSources,
+    { store, live }: DashboardSources,
     cell: DashboardCell,
     workspace: WorkspaceSummary,
-    checked: WorkspaceCheck | undefined,
+    state: CheckState | undefined,
     course: string,
 ): Promise<void> {
     cell.workspace = `/api/ws/${[course, cell.exercise, cell.student].map(encodeURIComponent).join('/')}`;
-    const [check, tests, sim] = await Promise.all([
-        checked ?? checker.check(workspace.id),
-        store.latestTestResult(workspace.id),
-        store.latestSimulationResult(workspace.id),
-    ]);
-    cell.diagnostics = { errors: check.errors, warnings: check.warnings };
+    const [tests, sim] = await Promise.all([store.latestTestResult(workspace.id), store.latestSimulationResult(workspace.id)]);
+    const check = state?.check;
+    if (check) cell.diagnostics = { errors: check.errors, warnings: check.warnings };
+    cell.checking = state?.checking ?? true;
+    cell.checkError = state?.error ?? null;
     if (tests) cell.tests = { passed: tests.passed, total: tests.passed + tests.failed + tests.skipped, at: tests.createdAt.toISOString() };
     if (sim) cell.simulation = { goalReached: sim.goalReached, at: sim.createdAt.toISOString() };
     cell.lastActivity = workspace.lastActivity?.toISOString() ?? null;

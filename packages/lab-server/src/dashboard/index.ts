@@ -1,5 +1,15 @@
 // The instructor's dashboard (docs/lab.md "The instructor's dashboard").
-export { type FileDiagnostic, type FolderChecker, familyChecker, type WorkspaceCheck, WorkspaceChecker } from './checker.js';
+export { CheckThread, checkWorkerScript } from './check-thread.js';
+export {
+    type CheckRequest,
+    type CheckResponse,
+    type CheckState,
+    type FileDiagnostic,
+    type FilesChecker,
+    type WorkspaceCheck,
+    WorkspaceChecker,
+    type WorkspaceFile,
+} from './checker.js';
 export { CSV_COLUMNS, csvField, dashboardCsv } from './csv.js';
 export {
     buildDashboard,
@@ -11,4 +21,4 @@ export {
     NO_LIVE_SIMULATIONS,
 } from './data.js';
 export { DASHBOARD_CSP } from './pages.js';
-export { addDashboardRoutes, type DashboardOptions } from './routes.js';
+export { addDashboardRoutes, type DashboardHandle, type DashboardOptions } from './routes.js';

@@ -18,8 +18,16 @@ export interface DashboardOptions {
     checker?: (store: LabStore) => WorkspaceChecker;
 }
 
+/** The dashboard's checker, seen from the server: for its close and for tests. */
+export interface DashboardHandle {
+    /** resolves when no check runs or waits */
+    settled(): Promise<void>;
+    /** ends the checker thread */
+    close(): Promise<void>;
+}
+
 /** Adds the dashboard's routes and pages (instructors only). */
-export function addDashboardRoutes(routes: LabRoutes, options: DashboardOptions = {}): void {
+export function addDashboardRoutes(routes: LabRoutes, options: DashboardOptions = {}): DashboardHandle {
     let checker: WorkspaceChecker | undefined;
     const sources = (store: LabStore): DashboardSources => {
         checker ??= options.checker ? options.checker(store) : new WorkspaceChecker(store);
@@ -46,7 +54,7 @@ export function addDashboardRoutes(routes: LabRoutes, options: DashboardOptions 
         path: '/api/courses/:course/results.csv',
         access: 'instructor',
         handler: async ({ res, store, params }) => {
-            const dashboard = await buildDashboard(sources(store), params['course'] ?? '');
+            const dashboard = await buildDashboard(sources(store), params['course'] ?? '', true);
             const file = `${dashboard.course.name.replace(/[^A-Za-z0-9._-]/g, '_')}-results.csv`;
             send(res, dashboardCsv(dashboard), 'text/csv; charset=utf-8', {
                 'Content-Disposition': `attachment; filename="${file}"`,
@@ -63,6 +71,14 @@ export function addDashboardRoutes(routes: LabRoutes, options: DashboardOptions 
         },
     });
     addDashboardPages(routes);
+    return {
+        settled: async () => {
+            await checker?.settled();
+        },
+        close: async () => {
+            await checker?.close();
+        },
+    };
 }
 
 /** One student's workspace of an exercise: its current files with their contents and diagnostics. */

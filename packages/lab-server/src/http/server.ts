@@ -6,7 +6,7 @@ import { HttpError, sendError, StaticApp } from '@maa/ide-server/http';
 import { type OidcSettings, OidcSignOn } from '../auth/oidc.js';
 import { DEFAULT_RATE_LIMITS, LoginRateLimiter, type RateLimitOptions } from '../auth/rate-limit.js';
 import { DEFAULT_SESSION_HOURS, SessionService } from '../auth/sessions.js';
-import { addDashboardRoutes } from '../dashboard/index.js';
+import { addDashboardRoutes, type DashboardHandle } from '../dashboard/index.js';
 import type { LabStore } from '../storage/index.js';
 import { type LabWorkspaceOptions, LabWorkspaces } from '../workspaces/index.js';
 import { addAuthRoutes } from './auth-routes.js';
@@ -49,6 +49,8 @@ export interface LabServer {
     sessions: SessionService;
     /** students' workspaces: their runtimes and simulations */
     workspaces: LabWorkspaces;
+    /** the instructor's dashboard's checker thread */
+    dashboard: DashboardHandle;
     close(): Promise<void>;
 }
 
@@ -67,7 +69,7 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
     addAuthRoutes(routes, { sessions, limiter: new LoginRateLimiter(options.rateLimits ?? DEFAULT_RATE_LIMITS), log });
     addCourseRoutes(routes);
     // the instructor's dashboard; "is simulating" from the workspaces' running simulations
-    addDashboardRoutes(routes, { live: { isSimulating: (id) => workspaces.pool.find(id)?.sim !== undefined } });
+    const dashboard = addDashboardRoutes(routes, { live: { isSimulating: (id) => workspaces.pool.find(id)?.sim !== undefined } });
     addPages(routes, options.oidc !== undefined);
     if (options.oidc) {
         const signOn = await OidcSignOn.discover(options.oidc, `${publicUrl}/api/oidc/callback`);
@@ -102,9 +104,11 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
         routes,
         sessions,
         workspaces,
+        dashboard,
         close: async () => {
             clearInterval(cleanup);
             await workspaces.close();
+            await dashboard.close();
             return new Promise<void>((resolve) => {
                 server.close(() => resolve());
                 server.closeAllConnections();

@@ -9,18 +9,29 @@ export interface SortKey {
 
 /** The cell's lines of text: every state is said in words, the colour only repeats it. */
 export function cellSummary(cell: DashboardCell): string[] {
-    if (!cell.diagnostics) return ['not started'];
-    const { errors, warnings } = cell.diagnostics;
-    const lines = [errors === 0 && warnings === 0 ? 'no problems' : `${plural(errors, 'error')}, ${plural(warnings, 'warning')}`];
+    if (!cell.diagnostics && !cell.checking && !cell.checkError) return ['not started'];
+    const lines = [diagnosticsLine(cell)];
     lines.push(cell.tests ? `tests ${cell.tests.passed}/${cell.tests.total} passed` : 'tests not run');
     lines.push(cell.simulation ? (cell.simulation.goalReached ? 'goal reached' : 'goal not reached') : 'not simulated');
     lines.push(`last activity ${cell.lastActivity ? new Date(cell.lastActivity).toLocaleString() : 'none'}`);
     return lines;
 }
 
-/** The cell's class: `none` (no workspace), `bad` (errors), `good` (tests all passed or goal reached, no errors), `warn`. */
+/** The diagnostics' line: the counts, `checking…` while the current files are checked, or the failed check. */
+function diagnosticsLine(cell: DashboardCell): string {
+    if (cell.checkError) return `check failed: ${cell.checkError}`;
+    if (!cell.diagnostics) return 'checking…';
+    const { errors, warnings } = cell.diagnostics;
+    const counts = errors === 0 && warnings === 0 ? 'no problems' : `${plural(errors, 'error')}, ${plural(warnings, 'warning')}`;
+    return cell.checking ? `${counts} (checking…)` : counts;
+}
+
+/**
+ * The cell's class: `none` (no workspace), `bad` (errors), `good` (tests all passed or goal
+ * reached, no errors), `warn` (else, and while a first check runs or after a failed one).
+ */
 export function cellTone(cell: DashboardCell): 'none' | 'bad' | 'warn' | 'good' {
-    if (!cell.diagnostics) return 'none';
+    if (!cell.diagnostics) return cell.checking || cell.checkError ? 'warn' : 'none';
     if (cell.diagnostics.errors > 0) return 'bad';
     const testsOk = cell.tests !== null && cell.tests.total > 0 && cell.tests.passed === cell.tests.total;
     return testsOk || cell.simulation?.goalReached ? 'good' : 'warn';
