@@ -44,6 +44,64 @@ function parseHost(value: string): URL | undefined {
     }
 }
 
+/**
+ * Which Host headers a server answers to, and the origin each belongs to (docs/ide.md "Access",
+ * docs/lab.md "Security"): a request must name the server by a loopback name or the address it
+ * listens on, with its port, or by the host of its public URL, so a DNS-rebound name is refused;
+ * and when the browser says where a request comes from (CSRF, cross-site WebSockets), that
+ * origin must be the named host's own. maa-ide and maa-lab both admit requests with it.
+ */
+export class HostOriginCheck {
+    /** Accepted Host headers (`host[:port]` as the URL parser normalizes it) → the origin they belong to. */
+    private readonly origins = new Map<string, string>();
+
+    /**
+     * @param server the server's name in refusals (`maa-ide`)
+     * @param listenHost the address it listens on (also accepted as Host unless a wildcard)
+     * @param port the port it listens on
+     * @param publicUrl the address users open when that is another (behind a proxy: the proxy's https address)
+     */
+    constructor(
+        private readonly server: string,
+        listenHost: string,
+        port: number,
+        publicUrl?: string,
+    ) {
+        const own = parseHost(listenHost.includes(':') && !listenHost.startsWith('[') ? `[${listenHost}]` : listenHost)?.hostname;
+        // 0.0.0.0 and :: are "every address", never a name a browser would send.
+        const wildcard = own === '0.0.0.0' || own === '[::]';
+        for (const name of [...LOOPBACK_NAMES, ...(own && !wildcard ? [own] : [])]) {
+            const url = new URL(`http://${name}:${port}`);
+            this.origins.set(url.host, url.origin);
+        }
+        if (publicUrl) {
+            const url = new URL(publicUrl);
+            this.origins.set(url.host, url.origin);
+        }
+    }
+
+    /** Undefined when the request's Host and Origin are acceptable, else why not. */
+    refusal(req: IncomingMessage): string | undefined {
+        const header = req.headers.host;
+        if (!header) return 'the request has no Host header';
+        const host = parseHost(header);
+        const expected = host && this.origins.get(host.host);
+        if (expected === undefined) {
+            return `${this.server} does not serve the host ${JSON.stringify(header)} (it serves ${[...this.origins.keys()].join(', ')})`;
+        }
+        const given = req.headers.origin;
+        if (given === undefined) return undefined;
+        let origin: string | undefined;
+        try {
+            origin = new URL(given).origin;
+        } catch {
+            origin = undefined;
+        }
+        if (origin !== expected) return `requests from the origin ${JSON.stringify(given)} are not accepted (only from ${expected})`;
+        return undefined;
+    }
+}
+
 export type AccessRefusal = { status: 400 | 401 | 403; message: string };
 
 export type Authentication =
@@ -60,7 +118,7 @@ export type Admission =
     | { ok: false; refusal: AccessRefusal; unauthenticated: boolean };
 
 export class AccessGuard {
-    private readonly hostnames: Set<string>;
+    private readonly hostOrigin: HostOriginCheck;
 
     /**
      * @param listenHost the `--host` the server listens on (also accepted as Host)
@@ -72,10 +130,7 @@ export class AccessGuard {
         readonly port: number,
         readonly token: string,
     ) {
-        const own = parseHost(listenHost.includes(':') && !listenHost.startsWith('[') ? `[${listenHost}]` : listenHost)?.hostname;
-        // 0.0.0.0 and :: are "every address", never a name a browser would send.
-        const wildcard = own === '0.0.0.0' || own === '[::]';
-        this.hostnames = new Set([...LOOPBACK_NAMES, ...(own && !wildcard ? [own] : [])]);
+        this.hostOrigin = new HostOriginCheck('maa-ide', listenHost, port);
     }
 
     /** The cookie that holds the token; the port is in its name because cookies ignore ports. */
@@ -105,33 +160,10 @@ export class AccessGuard {
         return auth.ok ? { ok: true, url, via: auth.via } : { ok: false, refusal: auth.refusal, unauthenticated: true };
     }
 
-    /** Host and Origin (docs/ide.md): undefined when both are acceptable. */
+    /** Host and Origin (docs/ide.md, HostOriginCheck): undefined when both are acceptable. */
     checkOrigin(req: IncomingMessage): AccessRefusal | undefined {
-        const hostHeader = req.headers.host;
-        if (!hostHeader) return { status: 403, message: 'the request has no Host header' };
-        const host = parseHost(hostHeader);
-        const port = host ? Number(host.port || '80') : NaN;
-        if (!host || !this.hostnames.has(host.hostname) || port !== this.port) {
-            return {
-                status: 403,
-                message: `maa-ide does not serve the host ${JSON.stringify(hostHeader)} (use ${[...this.hostnames].join(', ')} with port ${this.port})`,
-            };
-        }
-        const origin = req.headers.origin;
-        if (origin === undefined) return undefined;
-        let parsed: URL | undefined;
-        try {
-            parsed = new URL(origin);
-        } catch {
-            parsed = undefined;
-        }
-        if (parsed?.protocol !== 'http:' || parsed.host !== host.host) {
-            return {
-                status: 403,
-                message: `requests from the origin ${JSON.stringify(origin)} are not accepted (only from http://${host.host})`,
-            };
-        }
-        return undefined;
+        const message = this.hostOrigin.refusal(req);
+        return message === undefined ? undefined : { status: 403, message };
     }
 
     /** Checks the token of a request: the query parameter, the cookie, or `Authorization: Bearer`. */

@@ -1,8 +1,10 @@
 // maa-lab's HTTP server (docs/lab.md "Running a lab"): every request passes the Host/Origin
-// check, then its route's access rule (routes.ts), then its handler; errors are JSON.
+// check (docs/lab.md "Security": maa-ide's HostOriginCheck, which also accepts the host of
+// --public-url and then wants its origin), then its route's access rule (routes.ts), then its
+// handler; errors are JSON.
 import { createServer, type IncomingMessage, type Server, type ServerResponse } from 'node:http';
 import type { AddressInfo } from 'node:net';
-import { HttpError, sendError, StaticApp } from '@maa/ide-server/http';
+import { HostOriginCheck, HttpError, sendError, StaticApp } from '@maa/ide-server/http';
 import { type OidcSettings, OidcSignOn } from '../auth/oidc.js';
 import { DEFAULT_RATE_LIMITS, LoginRateLimiter, type RateLimitOptions } from '../auth/rate-limit.js';
 import { DEFAULT_SESSION_HOURS, SessionService } from '../auth/sessions.js';
@@ -12,7 +14,6 @@ import { type LabWorkspaceOptions, LabWorkspaces } from '../workspaces/index.js'
 import { addAuthRoutes } from './auth-routes.js';
 import { addCourseRoutes } from './course-routes.js';
 import { addOidcRoutes } from './oidc-routes.js';
-import { OriginCheck } from './origin.js';
 import { addPages } from './pages.js';
 import { type LabRequest, LabRoutes, type Match, SAFE_METHODS } from './routes.js';
 
@@ -77,7 +78,7 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
     }
     const context: Context = {
         store: options.store,
-        origin: new OriginCheck(host, port, options.publicUrl),
+        origin: new HostOriginCheck('maa-lab', host, port, options.publicUrl),
         routes,
         sessions,
         publicUrl,
@@ -119,7 +120,7 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
 
 interface Context {
     store: LabStore;
-    origin: OriginCheck;
+    origin: HostOriginCheck;
     routes: LabRoutes;
     sessions: SessionService;
     publicUrl: string;
