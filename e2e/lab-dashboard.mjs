@@ -80,6 +80,10 @@ try {
         await Promise.all([page.waitForURL((u) => !u.pathname.startsWith('/login')), page.click('button')]);
         await page.goto(`${server.url}/dashboard/robotics`);
         await page.waitForSelector('table#dashboard tbody tr', { timeout: 120_000 });
+        // the first answer may have cells still "checking…" (the checker thread); the page polls every 5 s
+        await page.waitForFunction(() => !document.querySelector('table#dashboard')?.textContent?.includes('checking'), undefined, {
+            timeout: 120_000,
+        });
         const rows = await page.$$eval('table#dashboard tbody tr', (trs) => trs.map((tr) => tr.textContent ?? ''));
         if (rows.length !== 2) throw new Error(`expected 2 rows, got ${rows.length}: ${rows.join(' | ')}`);
         if (!rows[0].includes('Ada Lovelace (ada)') || !/\d+ errors?/.test(rows[0]) || rows[0].includes('no problems'))
