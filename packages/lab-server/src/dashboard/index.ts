@@ -20,5 +20,4 @@ export {
     type LiveSimulations,
     NO_LIVE_SIMULATIONS,
 } from './data.js';
-export { DASHBOARD_CSP } from './pages.js';
 export { addDashboardRoutes, type DashboardHandle, type DashboardOptions } from './routes.js';

@@ -1,15 +1,12 @@
 // The dashboard's pages for instructors: `/dashboard` (asks for a course), `/dashboard/<course>`
 // (the table) and `/dashboard/<course>/<exercise>/<login>` (one workspace read-only). They are
 // the same small HTML shell; the script (web/dashboard/, bundled by esbuild into
-// dist/web/dashboard.js at the build) renders them, under the login page's strict CSP.
+// dist/web/dashboard.js at the build) renders them, under the lab's page policy (sendLabPage).
 import { readFile } from 'node:fs/promises';
 import { fileURLToPath } from 'node:url';
 import { HttpError, sendText } from '@maa/ide-server/http';
+import { sendLabPage } from '../http/pages.js';
 import type { LabRoutes } from '../http/routes.js';
-
-/** No inline script: only the lab's own script; styles are inline (the page's <style>). */
-export const DASHBOARD_CSP =
-    "default-src 'none'; script-src 'self'; style-src 'unsafe-inline'; connect-src 'self'; form-action 'self'; frame-ancestors 'none'";
 
 /** The bundle, from src/dashboard or dist/dashboard alike (both are two folders below the package). */
 const BUNDLE = fileURLToPath(new URL('../../dist/web/dashboard.js', import.meta.url));
@@ -38,11 +35,7 @@ export const DASHBOARD_HTML = `<!doctype html>
 `;
 
 export function addDashboardPages(routes: LabRoutes): void {
-    const page = ({ res }: { res: Parameters<typeof sendText>[0] }) => {
-        res.setHeader('Content-Security-Policy', DASHBOARD_CSP);
-        res.setHeader('X-Frame-Options', 'DENY');
-        sendText(res, 200, DASHBOARD_HTML, 'text/html; charset=utf-8');
-    };
+    const page = ({ res }: { res: Parameters<typeof sendText>[0] }) => sendLabPage(res, DASHBOARD_HTML);
     for (const path of ['/dashboard', '/dashboard/:course', '/dashboard/:course/:exercise/:student'])
         routes.add({ method: 'GET', path, access: 'instructor', handler: page });
     let script: Promise<string> | undefined;

@@ -3,8 +3,16 @@
 import { sendText } from '@maa/ide-server/http';
 import type { LabRoutes } from './routes.js';
 
-const CSP =
+/** The policy of every page the lab serves itself (login, invitation, dashboard): no inline script. */
+export const LAB_PAGE_CSP =
     "default-src 'none'; script-src 'self'; style-src 'unsafe-inline'; connect-src 'self'; form-action 'self'; frame-ancestors 'none'";
+
+/** Answers one of the lab's own HTML pages, under LAB_PAGE_CSP and never framed. */
+export function sendLabPage(res: Parameters<typeof sendText>[0], html: string): void {
+    res.setHeader('Content-Security-Policy', LAB_PAGE_CSP);
+    res.setHeader('X-Frame-Options', 'DENY');
+    sendText(res, 200, html, 'text/html; charset=utf-8');
+}
 
 function page(title: string, body: string): string {
     return `<!doctype html>
@@ -66,11 +74,8 @@ fetch('/api/oidc/enabled').then((r) => r.json()).then((j) => { if (j.enabled) do
 export function addPages(routes: LabRoutes, ssoEnabled: boolean): void {
     const html =
         (text: string) =>
-        ({ res }: { res: Parameters<typeof sendText>[0] }) => {
-            res.setHeader('Content-Security-Policy', CSP);
-            res.setHeader('X-Frame-Options', 'DENY');
-            sendText(res, 200, text, 'text/html; charset=utf-8');
-        };
+        ({ res }: { res: Parameters<typeof sendText>[0] }) =>
+            sendLabPage(res, text);
     routes.add({ method: 'GET', path: '/login', access: 'public', handler: html(LOGIN) });
     routes.add({ method: 'GET', path: '/invite', access: 'public', handler: html(INVITE) });
     routes.add({
