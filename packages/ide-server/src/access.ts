@@ -113,9 +113,23 @@ export type Authentication =
 
 /** A request (or WebSocket upgrade) let in, with its parsed URL, or refused and why. */
 export type Admission =
-    | { ok: true; url: URL; via: 'cookie' | 'bearer' | 'query' }
+    | { ok: true; url: URL; via: 'cookie' | 'bearer' | 'query' | 'public' }
     /** `unauthenticated`: the Host and Origin were fine, the token was missing or wrong (401). */
     | { ok: false; refusal: AccessRefusal; unauthenticated: boolean };
+
+/**
+ * The one path served without the token: the script of VS Code's webview service worker
+ * (`assets/service-worker-<hash>.js`, a build file of the workbench that holds no workspace data).
+ * Chromium fetches a service worker's script without the page's SameSite=Strict token cookie
+ * when a webview frame registers it, so without this exception no webview (the diagram, the
+ * simulate view) could start. Only GET and HEAD, only that name (the URL is already normalized, so
+ * no `..` reaches past it), and only after the Host and Origin checks (docs/ide.md, "Access").
+ */
+const PUBLIC_SCRIPT = /^\/assets\/service-worker-[\w-]+\.js$/;
+
+export function isPublicScript(method: string | undefined, pathname: string): boolean {
+    return (method === 'GET' || method === 'HEAD') && PUBLIC_SCRIPT.test(pathname);
+}
 
 export class AccessGuard {
     private readonly hostOrigin: HostOriginCheck;
@@ -156,6 +170,7 @@ export class AccessGuard {
         } catch {
             return { ok: false, refusal: { status: 400, message: 'malformed URL' }, unauthenticated: false };
         }
+        if (isPublicScript(req.method, url.pathname)) return { ok: true, url, via: 'public' };
         const auth = this.authenticate(req, url.searchParams);
         return auth.ok ? { ok: true, url, via: auth.via } : { ok: false, refusal: auth.refusal, unauthenticated: true };
     }

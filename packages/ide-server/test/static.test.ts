@@ -1,7 +1,7 @@
 import { mkdirSync, symlinkSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { authFetch, json, rawGet, startSite, TEST_TOKEN, type TestSite } from './helpers.js';
+import { authFetch, json, rawGet, rawRequest, startSite, TEST_TOKEN, type TestSite } from './helpers.js';
 
 describe('static serving of the built app', () => {
     let site: TestSite;
@@ -21,6 +21,7 @@ describe('static serving of the built app', () => {
             'font.ttf': 'ttf',
             'font.woff2': 'woff2',
             'blob.bin': 'bin',
+            'service-worker-Ab1_c.js': 'self.addEventListener("fetch", () => {});',
         };
         for (const [name, content] of Object.entries(files)) writeFileSync(path.join(app, 'assets', name), content);
         writeFileSync(path.join(site.dir, 'secret.txt'), 'TOP-SECRET-CONTENT');
@@ -70,6 +71,31 @@ describe('static serving of the built app', () => {
         const post = await authFetch(site.url('/'), { method: 'POST' });
         expect(post.status).toBe(405);
         expect((await json(post))['error']).toContain('POST');
+    });
+
+    it("serves VS Code's webview service worker script without the token, and nothing else (docs/ide.md, Access)", async () => {
+        const noToken = { Authorization: null };
+        const own = `127.0.0.1:${site.server.port}`;
+        const worker = await rawRequest(site.server.url, '/assets/service-worker-Ab1_c.js', { headers: noToken });
+        expect(worker.status).toBe(200);
+        expect(worker.body).toContain('addEventListener');
+        // Attacks on the exception: other files, other methods, look-alike names, dot segments, and a foreign Host or Origin.
+        const refused: [string, Parameters<typeof rawRequest>[2], number][] = [
+            ['/assets/main-abc123.js', { headers: noToken }, 401],
+            ['/api/files', { headers: noToken }, 401],
+            ['/assets/service-worker-Ab1_c.js', { method: 'POST', headers: noToken }, 401],
+            ['/assets/service-worker-Ab1_c.js.map', { headers: noToken }, 401],
+            ['/assets/sub/service-worker-Ab1_c.js', { headers: noToken }, 401],
+            ['/assets/service-worker-Ab1_c.js/../main-abc123.js', { headers: noToken }, 401],
+            ['/assets/service-worker-%2e%2e/../../api/files', { headers: noToken }, 401],
+            ['/assets/service-worker-Ab1_c.js', { headers: { ...noToken, Host: 'evil.example:80' } }, 403],
+            ['/assets/service-worker-Ab1_c.js', { headers: { ...noToken, Host: own, Origin: 'https://evil.example' } }, 403],
+        ];
+        for (const [p, options, status] of refused) {
+            const res = await rawRequest(site.server.url, p, options);
+            expect(res.status, `${options?.method ?? 'GET'} ${p} ${JSON.stringify(options?.headers)}`).toBe(status);
+            expect(res.body).not.toContain('export {}');
+        }
     });
 
     it('answers 503 with the build command when the app is not built', async () => {
