@@ -18,7 +18,7 @@ const RUNS = Number(option('--runs', '5'));
 const COMPONENTS = Number(option('--components', '200'));
 const asJson = args.includes('--json');
 const HOST = args.includes('--host');
-const PAGE = HOST ? 'host.html' : 'index.html';
+const PAGE = 'index.html';
 
 const progress = (line) => process.stderr.write(`bench: ${line}\n`);
 const median = (xs) => {
@@ -60,7 +60,7 @@ function bundleSize() {
 
 /** Loads host.html and waits until the extension is active (no diagram in the host yet). */
 async function loadHost(page, url, open) {
-    await page.goto(`${url}host.html${open ? `?open=${encodeURIComponent(open)}` : ''}`);
+    await page.goto(`${url}${open ? `?open=${encodeURIComponent(open)}` : ''}`);
     await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 120_000 });
     const failed = await page.evaluate(() => document.body.dataset.failed);
     if (failed) throw new Error(`the workbench host did not start: ${failed}`);

@@ -9,7 +9,7 @@ async function fail(message) {
 
 /** Loads host.html with `open` as the first editor and waits until the extension is active. */
 async function openHost(page, url, open = ROBOT) {
-    await page.goto(`${url}host.html?open=${encodeURIComponent(open)}`);
+    await page.goto(`${url}?open=${encodeURIComponent(open)}`);
     await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 90_000 });
     const failed = await page.evaluate(() => document.body.dataset.failed);
     if (failed) await fail(`the workbench host did not start: ${failed}`);
@@ -91,7 +91,7 @@ export const hostScenarios = [
         name: 'workbench host: "MontiArc: Generate" from the command palette generates timesync through the backend',
         async run({ page, url, shot }) {
             await openHost(page, url);
-            // This workbench has no notifications at 25.x (docs/ide.md): messages go to the console, the summary also to the status bar.
+            // The summary: a notification (the notifications service), and the status bar.
             const messages = [];
             const onConsole = (m) => messages.push(m.text());
             page.on('console', onConsole);
@@ -106,7 +106,10 @@ export const hostScenarios = [
                 await row.first().click();
                 const started = Date.now();
                 let summary;
-                while (!(summary = messages.find((m) => /MontiArc: (generated|nothing generated)/.test(m)))) {
+                const toasts = page.locator('.notifications-toasts .notification-toast');
+                const summaryOf = async () =>
+                    [...messages, ...(await toasts.allInnerTexts())].find((m) => /MontiArc: (generated|nothing generated)/.test(m));
+                while (!(summary = await summaryOf())) {
                     if (Date.now() - started > 120_000)
                         await fail(`no summary of the generation; console: ${messages.slice(-5).join(' | ')}`);
                     await page.waitForTimeout(200);

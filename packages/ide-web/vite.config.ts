@@ -45,7 +45,6 @@ export default defineConfig({
     optimizeDeps: {
         // monaco-vscode-api resolves its workers and assets with `new URL(..., import.meta.url)`.
         esbuildOptions: { plugins: [importMetaUrlPlugin] },
-        include: ['vscode-languageclient/browser.js', 'vscode-languageserver-protocol', 'roslib'],
     },
     worker: { format: 'es' },
     build: {
@@ -54,8 +53,8 @@ export default defineConfig({
         emptyOutDir: true,
         chunkSizeWarningLimit: 12000,
         reportCompressedSize: false,
-        // The IDE (index.html) and the workbench host of the VS Code extension (host.html, docs/ide.md).
-        rollupOptions: { input: { main: path.join(here, 'index.html'), host: path.join(here, 'host.html') } },
+        // The IDE: the workbench host of the VS Code extension (index.html, docs/ide.md).
+        rollupOptions: { input: { main: path.join(here, 'index.html') } },
     },
     server: {
         proxy: {

@@ -5,7 +5,6 @@
  * its `browser` entry, activated by the manifest's activation events like in VS Code).
  */
 import type { IExtensionManifest } from '@codingame/monaco-vscode-api/extensions';
-import type { ExtensionConfig } from 'monaco-languageclient/vscodeApiWrapper';
 
 /** The folder of the built extension, relative to the page. */
 export const EXTENSION_DIR = 'maa-extension/';
@@ -22,13 +21,19 @@ export function extensionFiles(listing: unknown): string[] {
     );
 }
 
-/** The extension for the api wrapper: its manifest and a URL for each of its files. */
-export async function loadExtension(base: URL): Promise<ExtensionConfig> {
+/** The extension as the workbench registers it: its manifest and a URL for each of its files. */
+export interface LoadedExtension {
+    manifest: IExtensionManifest;
+    files: Map<string, URL>;
+}
+
+/** Fetches the built extension's manifest and file listing. */
+export async function loadExtension(base: URL): Promise<LoadedExtension> {
     const dir = new URL(EXTENSION_DIR, base);
     const [manifest, listing] = await Promise.all([json(new URL('package.json', dir)), json(new URL(FILE_LIST, dir))]);
-    const filesOrContents = new Map<string, string | URL>();
-    for (const file of extensionFiles(listing)) filesOrContents.set(file, new URL(file, dir));
-    return { config: manifest as IExtensionManifest, filesOrContents };
+    const files = new Map<string, URL>();
+    for (const file of extensionFiles(listing)) files.set(file, new URL(file, dir));
+    return { manifest: manifest as IExtensionManifest, files };
 }
 
 async function json(url: URL): Promise<unknown> {

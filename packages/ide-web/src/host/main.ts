@@ -6,16 +6,31 @@
  * provider over the backend's API, loading the extension's files, and the hooks the e2e tests and
  * the benchmark read (`window.maaHost`). docs/ide.md, "The workbench host".
  */
-import { LogLevel } from '@codingame/monaco-vscode-api';
+import { initialize, LogLevel } from '@codingame/monaco-vscode-api';
+import { ExtensionHostKind, registerExtension } from '@codingame/monaco-vscode-api/extensions';
+import getConfigurationServiceOverride, { initUserConfiguration } from '@codingame/monaco-vscode-configuration-service-override';
+import getDialogsServiceOverride from '@codingame/monaco-vscode-dialogs-service-override';
 import * as monaco from '@codingame/monaco-vscode-editor-api';
 import EditorWorker from '@codingame/monaco-vscode-editor-api/esm/vs/editor/editor.worker.js?worker';
 import getExplorerServiceOverride from '@codingame/monaco-vscode-explorer-service-override';
+import getExtensionsServiceOverride from '@codingame/monaco-vscode-extensions-service-override';
 import { registerFileSystemOverlay } from '@codingame/monaco-vscode-files-service-override';
 import getKeybindingsServiceOverride from '@codingame/monaco-vscode-keybindings-service-override';
+import getLanguagesServiceOverride from '@codingame/monaco-vscode-languages-service-override';
+import getLogServiceOverride from '@codingame/monaco-vscode-log-service-override';
+import getMarkersServiceOverride from '@codingame/monaco-vscode-markers-service-override';
+import getModelServiceOverride from '@codingame/monaco-vscode-model-service-override';
+import getNotificationsServiceOverride from '@codingame/monaco-vscode-notifications-service-override';
+import getOutputServiceOverride from '@codingame/monaco-vscode-output-service-override';
+import getPreferencesServiceOverride from '@codingame/monaco-vscode-preferences-service-override';
 import getSearchServiceOverride from '@codingame/monaco-vscode-search-service-override';
+import getTestingServiceOverride from '@codingame/monaco-vscode-testing-service-override';
+import getTextmateServiceOverride from '@codingame/monaco-vscode-textmate-service-override';
 import TextMateWorker from '@codingame/monaco-vscode-textmate-service-override/worker?worker';
-import { MonacoVscodeApiWrapper } from 'monaco-languageclient/vscodeApiWrapper';
+import getThemeServiceOverride from '@codingame/monaco-vscode-theme-service-override';
+import getWorkbenchServiceOverride from '@codingame/monaco-vscode-workbench-service-override';
 import * as vscode from 'vscode';
+import 'vscode/localExtensionHost';
 import { loadExtension } from './extension.js';
 import { BackendFileSystem, WORKSPACE_ROOT } from './file-system.js';
 import { registerFileSearch } from './file-search.js';
@@ -87,41 +102,54 @@ function startFile(files: string[]): string | undefined {
 
 async function startWorkbench(container: HTMLElement): Promise<void> {
     const extension = await loadExtension(new URL('.', document.baseURI));
-    const wrapper = new MonacoVscodeApiWrapper({
-        $type: 'extended',
-        viewsConfig: { $type: 'WorkbenchService', htmlContainer: container },
-        logLevel: LogLevel.Warning,
-        serviceOverrides: {
+    // Monaco's own worker and the TextMate tokenizer (the extension's grammars), bundled by Vite.
+    const environment: monaco.Environment = {
+        getWorker: (_moduleId, label) => (label === 'TextMateWorker' ? new TextMateWorker() : new EditorWorker()),
+    };
+    (globalThis as { MonacoEnvironment?: monaco.Environment }).MonacoEnvironment = environment;
+    await initUserConfiguration(
+        JSON.stringify({
+            'workbench.colorTheme': 'Default Dark Modern',
+            'workbench.startupEditor': 'none',
+            'editor.semanticHighlighting.enabled': true,
+            'editor.guides.bracketPairsHorizontal': 'active',
+        }),
+    );
+    await initialize(
+        {
+            ...getConfigurationServiceOverride(),
+            ...getLogServiceOverride(),
+            ...getModelServiceOverride(),
+            ...getExtensionsServiceOverride({ enableWorkerExtensionHost: false }),
+            ...getLanguagesServiceOverride(),
+            ...getTextmateServiceOverride(),
+            ...getThemeServiceOverride(),
+            ...getWorkbenchServiceOverride(),
             ...getKeybindingsServiceOverride(),
             ...getExplorerServiceOverride(),
             ...getSearchServiceOverride(),
+            ...getMarkersServiceOverride(),
+            ...getNotificationsServiceOverride(),
+            ...getDialogsServiceOverride(),
+            ...getOutputServiceOverride(),
+            ...getTestingServiceOverride(),
+            ...getPreferencesServiceOverride(),
         },
-        workspaceConfig: {
+        container,
+        {
             workspaceProvider: {
                 trusted: true,
                 workspace: { folderUri: monaco.Uri.file(WORKSPACE_ROOT) },
                 open: async () => false,
             },
             productConfiguration: { nameShort: 'MontiArcAutomaton', nameLong: 'MontiArcAutomaton for the web' },
+            developmentOptions: { logLevel: LogLevel.Warning },
         },
-        userConfiguration: {
-            json: JSON.stringify({
-                'workbench.colorTheme': 'Default Dark Modern',
-                'workbench.startupEditor': 'none',
-                'editor.semanticHighlighting.enabled': true,
-                'editor.guides.bracketPairsHorizontal': 'active',
-            }),
-        },
-        extensions: [extension],
-        // Monaco's own worker and the TextMate tokenizer (the extension's grammars), bundled by Vite.
-        monacoWorkerFactory: () => {
-            const environment: monaco.Environment = {
-                getWorker: (_moduleId, label) => (label === 'TextMateWorker' ? new TextMateWorker() : new EditorWorker()),
-            };
-            (globalThis as { MonacoEnvironment?: monaco.Environment }).MonacoEnvironment = environment;
-        },
-    });
-    await wrapper.start();
+    );
+    await import('@codingame/monaco-vscode-theme-defaults-default-extension');
+    const registered = registerExtension(extension.manifest, ExtensionHostKind.LocalProcess);
+    for (const [file, url] of extension.files) registered.registerFileUrl(file, url.href);
+    await registered.whenReady();
 }
 
 async function main(): Promise<void> {
