@@ -1,32 +1,7 @@
 // The e2e scenarios of the workbench host (issue 14, host.html): VS Code's workbench from
 // @codingame/monaco-vscode-api with the MontiArc extension's web entry loaded into it. They run
 // after the scenarios of the old IDE (run.mjs), in the same workspace, on their own page.
-const ROBOT = 'toast-service/toast/ToastServiceRobot.arc';
-
-async function fail(message) {
-    throw new Error(message);
-}
-
-/** Loads host.html with `open` as the first editor and waits until the extension is active. */
-async function openHost(page, url, open = ROBOT) {
-    await page.goto(`${url}?open=${encodeURIComponent(open)}`);
-    await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 90_000 });
-    const failed = await page.evaluate(() => document.body.dataset.failed);
-    if (failed) await fail(`the workbench host did not start: ${failed}`);
-}
-
-const editorOf = (page, name) =>
-    page.locator('.editor-instance .monaco-editor', { has: page.locator('.view-lines') }).filter({ hasText: name });
-
-/** Runs a command by its title from the command palette (F1). */
-async function runCommand(page, title) {
-    await page.keyboard.press('F1');
-    const input = page.locator('.quick-input-widget .quick-input-box input');
-    await input.waitFor({ timeout: 10_000 });
-    await input.fill(`>${title}`);
-    await page.locator('.quick-input-list .monaco-list-row', { hasText: title }).first().waitFor({ timeout: 10_000 });
-    await page.keyboard.press('Enter');
-}
+import { editorOf, fail, openHost, ROBOT, runCommand } from './host-kit.mjs';
 
 export const hostScenarios = [
     {
