@@ -4,9 +4,9 @@
 // Reports medians of: time to interactive editor (and to the first diagram), keystroke →
 // updated diagnostics, keystroke → updated diagram; and the JavaScript bundle size of the app.
 //
-//   node e2e/bench.mjs [--runs N] [--components N] [--json] [--host]
-//   --host: the workbench host (host.html: VS Code's workbench with the MontiArc extension) instead of
-//           the IDE (index.html): load times and keystroke → diagnostics; it has no diagram yet.
+// The IDE is VS Code's workbench with the MontiArc extension; the diagram is the extension's webview.
+//
+//   node e2e/bench.mjs [--runs N] [--components N] [--json]
 import { readdirSync, statSync, readFileSync, writeFileSync, mkdirSync } from 'node:fs';
 import path from 'node:path';
 import { gzipSync } from 'node:zlib';
@@ -17,7 +17,6 @@ const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name
 const RUNS = Number(option('--runs', '5'));
 const COMPONENTS = Number(option('--components', '200'));
 const asJson = args.includes('--json');
-const HOST = args.includes('--host');
 const PAGE = 'index.html';
 
 const progress = (line) => process.stderr.write(`bench: ${line}\n`);
@@ -58,43 +57,65 @@ function bundleSize() {
     };
 }
 
-/** Loads host.html and waits until the extension is active (no diagram in the host yet). */
-async function loadHost(page, url, open) {
+/**
+ * In the page: every document reachable from the top one through same-origin iframes (the
+ * diagram is in a webview: an iframe holding another iframe, both served by maa-ide).
+ */
+const FIND_DIAGRAM = `(() => {
+    const docs = (doc) => [doc, ...[...doc.querySelectorAll('iframe')].flatMap((f) => {
+        try { return f.contentDocument ? docs(f.contentDocument) : []; } catch { return []; }
+    })];
+    window.maaBenchDiagram = () => docs(document).map((d) => d.querySelector('.maa-root')?.closest('svg')).find(Boolean);
+})()`;
+
+/** Runs a command by its title from the command palette. */
+async function runCommand(page, title) {
+    await page.keyboard.press('F1');
+    const input = page.locator('.quick-input-widget .quick-input-box input');
+    await input.waitFor({ timeout: 10_000 });
+    await input.fill(`>${title}`);
+    await page.locator('.quick-input-list .monaco-list-row', { hasText: title }).first().waitFor({ timeout: 10_000 });
+    await page.keyboard.press('Enter');
+}
+
+/**
+ * Loads the IDE with `open` as the first editor, waits until it is interactive (its editor shows
+ * the file), then opens the extension's diagram beside it (MontiArc: Open Diagram) and waits until
+ * the webview draws a component. Times are from the start of the navigation (performance.now()).
+ */
+async function loadIde(page, url, open) {
     await page.goto(`${url}${open ? `?open=${encodeURIComponent(open)}` : ''}`);
     await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 120_000 });
     const failed = await page.evaluate(() => document.body.dataset.failed);
-    if (failed) throw new Error(`the workbench host did not start: ${failed}`);
+    if (failed) throw new Error(`the IDE did not start: ${failed}`);
+    await page.evaluate(FIND_DIAGRAM);
     const timings = await page.evaluate(() => window.maaHost.timings);
-    return { interactiveMs: timings.editor, readyMs: timings.ready, diagramMs: NaN };
-}
-
-async function loadIde(page, url, open) {
-    if (HOST) return loadHost(page, url, open);
-    const started = Date.now();
-    await page.goto(open ? `${url}?open=${encodeURIComponent(open)}` : url);
-    await page.waitForFunction(() => window.maaIde?.ready === true, undefined, { timeout: 120_000 });
-    const timings = await page.evaluate(() => window.maaIde.timings);
     let diagramMs = NaN;
     try {
-        await page.locator('[data-testid=diagram] .maa-component').first().waitFor({ timeout: 60_000 });
-        diagramMs = Date.now() - started;
-    } catch {
-        /* no diagram */
+        await runCommand(page, 'MontiArc: Open Diagram');
+        const drawn = await page.waitForFunction(
+            () => (window.maaBenchDiagram()?.querySelector('.maa-component') ? performance.now() : false),
+            undefined,
+            { timeout: 120_000, polling: 'raf' },
+        );
+        diagramMs = await drawn.jsonValue();
+    } catch (error) {
+        progress(`no diagram: ${String(error?.message ?? error).split('\n')[0]}`);
     }
+    if (open) await page.evaluate((p) => window.maaHost.open(p), open);
     return { interactiveMs: timings.editor, readyMs: timings.ready, diagramMs };
 }
 
-/** Types `text` at the end of the first match of `needle` (active editor) and measures, in the page,
+/** Types `text` at the end of the first match of `needle` (in the editor of `file`) and measures, in the page,
  *  how long until the markers of the file change and until the diagram's DOM shows `expectInDiagram`
- *  (or, with `expectUpdate`, until a diagram update arrived and the next frame was drawn: in a huge
+ *  (or, with `expectUpdate`, until the diagram's DOM changed and the next frame was drawn: in a huge
  *  diagram the edited element may lie outside the view, where Sprotty draws nothing). */
 async function keystroke(page, { needle, type, expectInDiagram, expectUpdate, path: file }) {
+    await page.evaluate((p) => window.maaHost.open(p), file);
     return await page.evaluate(
         async ({ needle, type, expectInDiagram, expectUpdate, file }) => {
-            // The workbench host (--host) answers through the same three members.
             const host = window.maaHost;
-            const ide = host ? { editor: host.activeEditor(), markers: () => host.allMarkers(), diagramUpdates: 0 } : window.maaIde;
-            const editor = ide.editor;
+            const editor = host.activeEditor();
             const model = editor.getModel();
             const match = model.findMatches(needle, false, false, true, null, false)[0];
             if (!match) throw new Error(`${needle} not found`);
@@ -102,15 +123,17 @@ async function keystroke(page, { needle, type, expectInDiagram, expectUpdate, pa
             editor.focus();
             const markerKey = () =>
                 JSON.stringify(
-                    ide
-                        .markers()
+                    host
+                        .allMarkers()
                         .filter((m) => m.path === file)
                         .map((m) => `${m.line}:${m.message}`)
                         .sort(),
                 );
-            const diagramEl = document.querySelector('[data-testid=diagram]');
+            const diagramEl = window.maaBenchDiagram();
+            let mutations = 0;
+            const observer = new MutationObserver(() => mutations++);
+            if (diagramEl) observer.observe(diagramEl, { subtree: true, childList: true, attributes: true, characterData: true });
             const before = markerKey();
-            const updatesBefore = ide.diagramUpdates;
             const t0 = performance.now();
             for (const ch of type) editor.trigger('keyboard', 'type', { text: ch });
             let diagnosticsMs = NaN;
@@ -122,13 +145,14 @@ async function keystroke(page, { needle, type, expectInDiagram, expectUpdate, pa
                     if (Number.isNaN(diagnosticsMs) && markerKey() !== before) diagnosticsMs = now - t0;
                     if (Number.isNaN(diagramMs) && expectInDiagram && diagramEl?.textContent?.includes(expectInDiagram))
                         diagramMs = now - t0;
-                    if (Number.isNaN(diagramMs) && expectUpdate && ide.diagramUpdates > updatesBefore) diagramMs = now - t0;
+                    if (Number.isNaN(diagramMs) && expectUpdate && mutations > 0) diagramMs = now - t0;
                     const done = !Number.isNaN(diagnosticsMs) && (!(expectInDiagram || expectUpdate) || !Number.isNaN(diagramMs));
                     if (done || now > limit) resolve(undefined);
                     else requestAnimationFrame(poll);
                 };
                 poll();
             });
+            observer.disconnect();
             // Undo and wait until the markers are back (the next run starts from the same state).
             const t1 = performance.now();
             for (let i = 0; i < type.length; i++) editor.trigger('keyboard', 'deleteLeft', {});
@@ -153,24 +177,20 @@ async function benchWorkspace(label, workspaceFrom, startFile, edits, browser) {
         const { page } = browser;
         await ide.login(page);
         for (let i = 0; i < Math.max(2, Math.min(RUNS, 3)); i++) {
-            // The host opens the edited file first (it picks the lab's copy of the robot otherwise).
-            result.load.push(await loadIde(page, ide.url, startFile ?? (HOST ? edits[0]?.path : undefined)));
+            result.load.push(await loadIde(page, ide.url, startFile ?? edits[0]?.path));
             progress(`${label}: load ${i + 1}: ${JSON.stringify(result.load.at(-1))}`);
         }
-        for (const edit of HOST ? edits.filter((e) => !e.expectInDiagram && !e.expectUpdate) : edits) {
-            if (HOST && edit.open && edit.open !== startFile) {
-                await page.evaluate((p) => window.maaHost.open(p), edit.open);
-                await page.waitForTimeout(1500);
-            } else if (edit.open && edit.open !== startFile) {
+        for (const edit of edits) {
+            if (edit.open && edit.open !== startFile) {
+                // The diagram follows the active editor: the time until it shows the opened component
+                // (its own node's title is "<name>: <qualified name>").
                 const opened = Date.now();
-                await page.evaluate((p) => window.maaIde.open(p), edit.open);
-                // The shown component's own node (its title is "<name>: <qualified name>"), not the toolbar
-                // title, which changes as soon as the diagram is requested.
+                await page.evaluate((p) => window.maaHost.open(p), edit.open);
                 const shown = await page
                     .waitForFunction(
-                        (name) => document.querySelector('[data-testid=diagram] .maa-root > title')?.textContent?.startsWith(`${name}:`),
+                        (name) => window.maaBenchDiagram()?.querySelector('.maa-root > title')?.textContent?.startsWith(`${name}:`),
                         path.basename(edit.open, '.arc'),
-                        { timeout: edit.openTimeout ?? 60_000 },
+                        { timeout: edit.openTimeout ?? 60_000, polling: 'raf' },
                     )
                     .then(
                         () => true,
@@ -271,16 +291,11 @@ const summary = results.map((r) => ({
     runs: r.edits,
 }));
 mkdirSync(artifacts, { recursive: true });
-writeFileSync(
-    path.join(artifacts, HOST ? 'bench-host.json' : 'bench.json'),
-    JSON.stringify({ summary, bundle, load: results.map((r) => r.load) }, null, 2),
-);
+writeFileSync(path.join(artifacts, 'bench.json'), JSON.stringify({ summary, bundle, load: results.map((r) => r.load) }, null, 2));
 if (asJson) {
     console.log(JSON.stringify({ summary, bundle }, null, 2));
 } else {
-    console.log(
-        `\n${HOST ? 'Workbench host (host.html)' : 'IDE'} benchmark (medians of ${RUNS} keystrokes; loads with a warm HTTP cache after the first)`,
-    );
+    console.log(`\nIDE benchmark (medians of ${RUNS} keystrokes; loads with a warm HTTP cache after the first)`);
     for (const s of summary) {
         console.log(`\n${s.workspace}`);
         console.log(`  time to interactive editor      ${fmt(s.interactiveEditorMs)} (first load ${fmt(s.firstLoadInteractiveMs)})`);
@@ -298,5 +313,5 @@ if (asJson) {
             `entry ${kb(bundle.entryBytes)} (${kb(bundle.entryGzipBytes)} gzip); workers ${kb(bundle.workerBytes)}`,
     );
     console.log(`  largest: ${bundle.largest.map((f) => `${f.file} ${kb(f.bytes)}`).join(', ')}`);
-    console.log(`\n(details in ${path.relative(process.cwd(), path.join(artifacts, HOST ? 'bench-host.json' : 'bench.json'))})`);
+    console.log(`\n(details in ${path.relative(process.cwd(), path.join(artifacts, 'bench.json'))})`);
 }
