@@ -15,7 +15,7 @@ function listFiles(dir: string, prefix = ''): string[] {
 }
 
 /**
- * The workbench host (host.html, src/host/) loads the MontiArc extension's web build from
+ * The IDE (index.html, src/host/) loads the MontiArc extension's web build from
  * `dist/maa-extension/`: built here by the extension's own build (`--web`) after the bundle, with
  * `files.json` listing its files for the host to register.
  */
@@ -55,11 +55,5 @@ export default defineConfig({
         reportCompressedSize: false,
         // The IDE: the workbench host of the VS Code extension (index.html, docs/ide.md).
         rollupOptions: { input: { main: path.join(here, 'index.html') } },
-    },
-    server: {
-        proxy: {
-            '/api': 'http://127.0.0.1:3000',
-            '/sim': { target: 'http://127.0.0.1:3000', ws: true },
-        },
     },
 });
