@@ -30,6 +30,21 @@ export const DIAGRAM_PALETTE = [
     { command: 'maa.exportDiagramSvg', when: 'maa.diagramOpen' },
 ] as const;
 
+/** The diagram's settings (`maa.diagram.*`), merged into the manifest's configuration (contributions.ts). */
+export const DIAGRAM_SETTINGS = {
+    'maa.diagram.openOnStart': {
+        type: 'boolean',
+        default: false,
+        markdownDescription:
+            'Opens the diagram beside the first component file (`.arc`) shown once the extension has started. The browser IDE sets it, so its start page shows the model and its diagram.',
+    },
+} as const;
+
+/** Whether the diagram opens by itself at start (`maa.diagram.openOnStart`; anything but `true` is no). */
+export function openOnStart(get: (key: string) => unknown): boolean {
+    return get('maa.diagram.openOnStart') === true;
+}
+
 /** A language's manifest `icon` entry. */
 export function languageIconOf(language: { id: string; fileExtensions: readonly string[] }): LanguageIcon {
     return languageIcon(language.id, language.fileExtensions[0] ?? language.id).icon;

@@ -8,6 +8,7 @@
 import type { DiagramTarget } from '@maa/diagram-view/contracts';
 import type { ActionMessage } from 'sprotty-protocol';
 import * as vscode from 'vscode';
+import { openOnStart } from './contributions.js';
 import { type DiagramChannel, DiagramPanel } from './panel.js';
 import { DiagramRelay } from './relay.js';
 import { inAutomaton, type SymbolNode, targetAt } from './selection.js';
@@ -151,4 +152,26 @@ export function registerDiagram(context: vscode.ExtensionContext, client: Diagra
         ...followEditors(),
         { dispose: () => panel?.dispose() },
     );
+    if (openOnStart((key) => vscode.workspace.getConfiguration().get(key)))
+        context.subscriptions.push(openWithFirstComponent(context, client));
+}
+
+/**
+ * `maa.diagram.openOnStart`: the diagram of the first component file shown, now or when one is
+ * (once; a diagram the user closes stays closed).
+ */
+function openWithFirstComponent(context: vscode.ExtensionContext, client: DiagramClient): vscode.Disposable {
+    const isComponent = (editor: vscode.TextEditor | undefined): editor is vscode.TextEditor =>
+        editor !== undefined && DIAGRAM_LANGUAGES.has(editor.document.languageId);
+    const open = (): void => void openDiagram(context, client, false);
+    if (isComponent(vscode.window.activeTextEditor)) {
+        open();
+        return { dispose: () => undefined };
+    }
+    const waiting = vscode.window.onDidChangeActiveTextEditor((editor) => {
+        if (!isComponent(editor)) return;
+        waiting.dispose();
+        open();
+    });
+    return waiting;
 }
