@@ -113,6 +113,8 @@ async function startWorkbench(container: HTMLElement): Promise<void> {
             'workbench.startupEditor': 'none',
             'editor.semanticHighlighting.enabled': true,
             'editor.guides.bracketPairsHorizontal': 'active',
+            // The start page shows the model and its diagram (the extension's setting, off in VS Code desktop).
+            'maa.diagram.openOnStart': true,
         }),
     );
     await initialize(
