@@ -47,14 +47,7 @@ function serverEntry() {
 
 /** The simulate view: the webview's panel (@maa/simulate-view, browser IIFE and its CSS) and maa-ide's launcher (src/simulate). */
 async function bundleSimulate(common) {
-    await build({
-        ...common,
-        entryPoints: [require.resolve('@maa/simulate-view/vscode-webview')],
-        outfile: path.join(outDir, 'out', 'webview', 'simulate.js'),
-        platform: 'browser',
-        format: 'iife',
-        target: 'es2022',
-    });
+    await bundleSimulateWebview(common);
     await build({
         ...common,
         entryPoints: [path.join(pkgDir, 'src', 'simulate', 'backend-launcher.ts')],
@@ -64,11 +57,24 @@ async function bundleSimulate(common) {
     });
 }
 
+/** The simulate view's panel alone (the web entry opens it too, src/simulate/web.ts). */
+async function bundleSimulateWebview(common) {
+    await build({
+        ...common,
+        entryPoints: [require.resolve('@maa/simulate-view/vscode-webview')],
+        outfile: path.join(outDir, 'out', 'webview', 'simulate.js'),
+        platform: 'browser',
+        format: 'iife',
+        target: 'es2022',
+    });
+}
+
 async function bundle() {
     if (webOnly) {
         // The web entry also opens the diagram webview (src/diagram), so the browser IDE serves its bundle too.
         await bundleWeb(outDir);
         await bundleDiagramWebview(outDir);
+        await bundleSimulateWebview({ bundle: true, sourcemap: false, minify: true, legalComments: 'none', logLevel: 'warning' });
         return;
     }
     const common = {

@@ -4,9 +4,16 @@
  * and commands of the extension. bin/build.mjs writes them into the packaged manifest.
  */
 import type { LanguageFacts } from '@maa/language-server/language-facts';
-import { DIAGRAM_COMMANDS, DIAGRAM_PALETTE, DIAGRAM_SETTINGS, DIAGRAM_TITLE_MENU, iconFiles, languageIconOf } from './diagram/contributions.js';
+import {
+    DIAGRAM_COMMANDS,
+    DIAGRAM_PALETTE,
+    DIAGRAM_SETTINGS,
+    DIAGRAM_TITLE_MENU,
+    iconFiles,
+    languageIconOf,
+} from './diagram/contributions.js';
 import { SETTINGS } from './settings.js';
-import { SIMULATE_COMMANDS, SIMULATE_PALETTE, SIMULATE_SETTINGS } from './simulate/contributions.js';
+import { SIMULATE_COMMANDS, SIMULATE_SETTINGS } from './simulate/contributions.js';
 import { TEST_SETTINGS } from './testing/test-settings.js';
 import { fileLanguages, type TmGrammar, textMateGrammar } from './textmate.js';
 
@@ -105,12 +112,14 @@ export function contributions(facts: LanguageFacts): Contributions {
                 'editor/title': [...DIAGRAM_TITLE_MENU],
                 commandPalette: [
                     ...DIAGRAM_PALETTE,
-                    ...SIMULATE_PALETTE,
                     { command: 'maa.showGeneratedCode', when: `editorLangId in maa.modelLanguages` },
                     { command: 'maa.showModelElement', when: 'editorIsOpen' },
                 ],
             },
-            configuration: { title: 'MontiArcAutomaton', properties: { ...SETTINGS, ...DIAGRAM_SETTINGS, ...TEST_SETTINGS, ...SIMULATE_SETTINGS } },
+            configuration: {
+                title: 'MontiArcAutomaton',
+                properties: { ...SETTINGS, ...DIAGRAM_SETTINGS, ...TEST_SETTINGS, ...SIMULATE_SETTINGS },
+            },
         },
         files,
         capabilities: CAPABILITIES,

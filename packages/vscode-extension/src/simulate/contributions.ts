@@ -7,5 +7,4 @@ export const SIMULATE_COMMANDS = [
     { command: 'maa.simulate.reset', title: 'MontiArc: Reset Simulation', category: 'MontiArc' },
 ] as const;
 
-/** In the command palette only where the commands are registered: the desktop entry (the web entry has no backend of its own to start). */
-export const SIMULATE_PALETTE = SIMULATE_COMMANDS.map((c) => ({ command: c.command, when: '!isWeb' }));
+// Both entries register the commands (desktop: index.ts, web: web.ts), so the palette shows them everywhere (no `when`).

@@ -1,7 +1,8 @@
 /**
  * The simulate view: a webview panel beside the editor with @maa/simulate-view's panel
  * (`out/webview/simulate.js`, the same code as the browser IDE's simulate panel), reaching the
- * backend through the relay. One panel; commands are messages to it (host-messages).
+ * backend below the base it is shown with (desktop: the relay, web: the page's origin). One
+ * panel; commands are messages to it (host-messages).
  */
 import { type FromWebview, type PanelCommand, parseFromWebview, type ToWebview } from '@maa/simulate-view/host-messages';
 import * as vscode from 'vscode';
@@ -23,7 +24,7 @@ export class SimulateView implements vscode.Disposable {
         return this.panel !== undefined;
     }
 
-    /** Shows the view against the backend below `base` (an external URI of the relay). */
+    /** Shows the view against the backend below `base` (desktop: an external URI of the relay; web: the page's backend). */
     async show(base: string): Promise<void> {
         if (this.panel && this.base === base) {
             this.panel.reveal(undefined, true);

@@ -12,7 +12,7 @@ export interface SimulatePage {
     /** The panel's script and stylesheet as webview URIs. */
     script: string;
     style: string;
-    /** The relay's origin as the webview reaches it (`asExternalUri`), e.g. `http://127.0.0.1:40123`. */
+    /** The backend's origin as the webview reaches it: desktop the relay's (`asExternalUri`), e.g. `http://127.0.0.1:40123`; web the page's. */
     relayOrigin: string;
     nonce?: string;
 }
