@@ -68,20 +68,10 @@ const FIND_DIAGRAM = `(() => {
     window.maaBenchDiagram = () => docs(document).map((d) => d.querySelector('.maa-root')?.closest('svg')).find(Boolean);
 })()`;
 
-/** Runs a command by its title from the command palette. */
-async function runCommand(page, title) {
-    await page.keyboard.press('F1');
-    const input = page.locator('.quick-input-widget .quick-input-box input');
-    await input.waitFor({ timeout: 10_000 });
-    await input.fill(`>${title}`);
-    await page.locator('.quick-input-list .monaco-list-row', { hasText: title }).first().waitFor({ timeout: 10_000 });
-    await page.keyboard.press('Enter');
-}
-
 /**
- * Loads the IDE with `open` as the first editor, waits until it is interactive (its editor shows
- * the file), then opens the extension's diagram beside it (MontiArc: Open Diagram) and waits until
- * the webview draws a component. Times are from the start of the navigation (performance.now()).
+ * Loads the IDE with `open` as the first editor and waits until it is interactive (its editor shows
+ * the file) and until the diagram, which the IDE opens beside the first component file
+ * (`maa.diagram.openOnStart`), draws a component. Times are from the start of the navigation.
  */
 async function loadIde(page, url, open) {
     await page.goto(`${url}${open ? `?open=${encodeURIComponent(open)}` : ''}`);
@@ -92,7 +82,6 @@ async function loadIde(page, url, open) {
     const timings = await page.evaluate(() => window.maaHost.timings);
     let diagramMs = NaN;
     try {
-        await runCommand(page, 'MontiArc: Open Diagram');
         const drawn = await page.waitForFunction(
             () => (window.maaBenchDiagram()?.querySelector('.maa-component') ? performance.now() : false),
             undefined,
@@ -102,7 +91,6 @@ async function loadIde(page, url, open) {
     } catch (error) {
         progress(`no diagram: ${String(error?.message ?? error).split('\n')[0]}`);
     }
-    if (open) await page.evaluate((p) => window.maaHost.open(p), open);
     return { interactiveMs: timings.editor, readyMs: timings.ready, diagramMs };
 }
 
