@@ -1,5 +1,6 @@
 // `maa-lab serve` (docs/lab.md "Running a lab").
 import path from 'node:path';
+import { defaults as ideDefaults } from '@maa/ide-server';
 import { Command } from 'commander';
 import type { OidcSettings } from '../auth/oidc.js';
 import { DEFAULT_PORT, startLabServer } from '../http/server.js';
@@ -38,7 +39,7 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
         .option('--data-dir <dir>', DATA_DIR_HELP)
         .option('--public-url <url>', 'the address students open, e.g. https://lab.example.org behind a reverse proxy')
         .option('--trust-proxy', 'behind a reverse proxy: take the client address from X-Forwarded-For and mark cookies Secure')
-        .option('--app-dir <dir>', 'the web app to serve (static files)')
+        .option('--app-dir <dir>', "the web app to serve: the students' IDE (default: the installed @maa/ide-web's dist/)")
         .option('--oidc-issuer <url>', `single sign-on: the OpenID Connect provider (the client secret comes from ${OIDC_SECRET_VARIABLE})`)
         .option('--oidc-client-id <id>', 'single sign-on: the client id registered at the provider')
         .option('--oidc-allow-http', 'single sign-on: accept a provider on plain http (only for a provider on this machine)')
@@ -72,7 +73,7 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
                     host: options.host,
                     ...(options.publicUrl ? { publicUrl: options.publicUrl } : {}),
                     trustProxy: options.trustProxy === true,
-                    ...(options.appDir ? { appDir: path.resolve(io.cwd, options.appDir) } : {}),
+                    appDir: options.appDir ? path.resolve(io.cwd, options.appDir) : ideDefaults.appDir,
                     ...(oidc ? { oidc } : {}),
                     log: (line) => io.err(`maa-lab: ${line}\n`),
                     workspaces: { dataDir, quotas },

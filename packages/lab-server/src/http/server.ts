@@ -9,6 +9,7 @@ import { type OidcSettings, OidcSignOn } from '../auth/oidc.js';
 import { DEFAULT_RATE_LIMITS, LoginRateLimiter, type RateLimitOptions } from '../auth/rate-limit.js';
 import { DEFAULT_SESSION_HOURS, SessionService } from '../auth/sessions.js';
 import { addDashboardRoutes, type DashboardHandle } from '../dashboard/index.js';
+import { addIdePage, rewriteIdePath } from '../ide/index.js';
 import type { LabStore } from '../storage/index.js';
 import { type LabWorkspaceOptions, LabWorkspaces } from '../workspaces/index.js';
 import { addAuthRoutes } from './auth-routes.js';
@@ -72,6 +73,7 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
     // the instructor's dashboard; "is simulating" from the workspaces' running simulations
     const dashboard = addDashboardRoutes(routes, { live: { isSimulating: (id) => workspaces.pool.find(id)?.sim !== undefined } });
     addPages(routes, options.oidc !== undefined);
+    addIdePage(routes, options.appDir);
     if (options.oidc) {
         const signOn = await OidcSignOn.discover(options.oidc, `${publicUrl}/api/oidc/callback`);
         addOidcRoutes(routes, signOn, sessions, secure, log);
@@ -94,8 +96,14 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
         res.on('finish', () => log(`${req.method} ${(req.url ?? '/').split('?')[0]} ${res.statusCode}`));
         void handle(context, req, res);
     });
-    // WebSockets: only a workspace's simulation endpoints, after their checks (else 404).
-    server.on('upgrade', (req, socket, head) => workspaces.upgrade(req, socket, head));
+    // WebSockets: only a workspace's simulation endpoints, after their checks (else 404); the
+    // IDE's (`/ide/<c>/<e>/<o>/sim/...`) are the same endpoints under the page's path.
+    server.on('upgrade', (req, socket, head) => {
+        const [pathname = '/', query] = (req.url ?? '/').split('?', 2);
+        const rewritten = rewriteIdePath(pathname);
+        if (rewritten) req.url = query === undefined ? rewritten : `${rewritten}?${query}`;
+        workspaces.upgrade(req, socket, head);
+    });
     const cleanup = setInterval(() => void options.store.deleteExpiredSessions().catch(() => undefined), 3600_000);
     cleanup.unref();
     return {
@@ -140,6 +148,9 @@ async function handle(ctx: Context, req: IncomingMessage, res: ServerResponse): 
         } catch {
             throw new HttpError(400, 'malformed URL');
         }
+        // A request of a workspace's IDE page is the workspace's route it stands for (ide/paths.ts).
+        const rewritten = rewriteIdePath(url.pathname);
+        if (rewritten !== undefined) url = new URL(`${rewritten}${url.search}`, url);
         let match: Match;
         try {
             match = ctx.routes.match(method, url.pathname);

@@ -1,0 +1,2 @@
+export { addIdePage, CSRF_META, WORKSPACE_META, withLabMeta } from './page.js';
+export { EXERCISE_INFO, IDE_PAGE, rewriteIdePath } from './paths.js';
