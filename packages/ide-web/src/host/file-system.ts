@@ -8,6 +8,7 @@ import { Emitter } from '@codingame/monaco-vscode-api/vscode/vs/base/common/even
 import type { URI } from '@codingame/monaco-vscode-api/vscode/vs/base/common/uri';
 import {
     FileChangeType,
+    FilePermission,
     FileSystemProviderCapabilities,
     FileSystemProviderError,
     FileSystemProviderErrorCode,
@@ -24,18 +25,24 @@ export const WORKSPACE_ROOT = '/workspace';
 
 const fileType = (type: EntryType): FileType => (type === 'directory' ? FileType.Directory : FileType.File);
 
+/** Which files the user may not change (lab mode: the exercise's read-only files; all, for an instructor's view). */
+export type ReadOnlyRule = (path: string) => boolean;
+
 export class BackendFileSystem implements IFileSystemProviderWithFileReadWriteCapability {
     readonly capabilities = FileSystemProviderCapabilities.FileReadWrite | FileSystemProviderCapabilities.PathCaseSensitive;
     private readonly changes = new Emitter<readonly IFileChange[]>();
     readonly onDidChangeFile = this.changes.event;
     readonly onDidChangeCapabilities = new Emitter<void>().event;
 
-    private constructor(private readonly tree: WorkspaceTree) {}
+    private constructor(
+        private readonly tree: WorkspaceTree,
+        private readonly readOnly: ReadOnlyRule,
+    ) {}
 
-    /** The provider over the backend's current listing. */
-    static async load(): Promise<BackendFileSystem> {
+    /** The provider over the backend's current listing; `readOnly` files open as read-only editors. */
+    static async load(readOnly: ReadOnlyRule = () => false): Promise<BackendFileSystem> {
         const listing = await api.files();
-        return new BackendFileSystem(new WorkspaceTree(listing.entries));
+        return new BackendFileSystem(new WorkspaceTree(listing.entries), readOnly);
     }
 
     /** The model files of the workspace (paths below the root), for the language server to see at start. */
@@ -58,9 +65,16 @@ export class BackendFileSystem implements IFileSystemProviderWithFileReadWriteCa
     }
 
     async stat(resource: URI): Promise<IStat> {
-        const stat = this.tree.stat(this.pathOf(resource));
+        const path = this.pathOf(resource);
+        const stat = this.tree.stat(path);
         if (!stat) throw FileSystemProviderError.create(`not found: ${resource.path}`, FileSystemProviderErrorCode.FileNotFound);
-        return { type: fileType(stat.type), size: stat.size, mtime: stat.mtime, ctime: 0 };
+        return {
+            type: fileType(stat.type),
+            size: stat.size,
+            mtime: stat.mtime,
+            ctime: 0,
+            ...(stat.type === 'file' && this.readOnly(path) ? { permissions: FilePermission.Readonly } : {}),
+        };
     }
 
     async readdir(resource: URI): Promise<[string, FileType][]> {
@@ -79,6 +93,7 @@ export class BackendFileSystem implements IFileSystemProviderWithFileReadWriteCa
 
     async writeFile(resource: URI, content: Uint8Array): Promise<void> {
         const path = this.pathOf(resource);
+        this.refuseReadOnly(path);
         const existed = this.tree.stat(path) !== undefined;
         await api.writeFile(path, new TextDecoder().decode(content));
         this.tree.written(path, content.byteLength);
@@ -95,6 +110,7 @@ export class BackendFileSystem implements IFileSystemProviderWithFileReadWriteCa
         const stat = this.tree.stat(path);
         if (!stat) throw FileSystemProviderError.create(`not found: ${resource.path}`, FileSystemProviderErrorCode.FileNotFound);
         if (stat.type === 'file') {
+            this.refuseReadOnly(path);
             const response = await fetch(`api/file?path=${encodeURIComponent(path)}`, { method: 'DELETE' });
             if (!response.ok)
                 throw FileSystemProviderError.create(
@@ -116,6 +132,11 @@ export class BackendFileSystem implements IFileSystemProviderWithFileReadWriteCa
             `renaming is not supported by the backend: ${from.path}`,
             FileSystemProviderErrorCode.NoPermissions,
         );
+    }
+
+    private refuseReadOnly(path: string): void {
+        if (this.readOnly(path))
+            throw FileSystemProviderError.create(`${path} is read-only in this exercise`, FileSystemProviderErrorCode.NoPermissions);
     }
 
     /** The path below the workspace root; "not found" for anything else (the overlay's next provider answers). */

@@ -33,7 +33,9 @@ import * as vscode from 'vscode';
 import 'vscode/localExtensionHost';
 import { loadExtension } from './extension.js';
 import { BackendFileSystem, WORKSPACE_ROOT } from './file-system.js';
+import { registerExercisePanel } from './exercise-panel.js';
 import { registerFileSearch } from './file-search.js';
+import { startLabMode } from './lab.js';
 
 /** The extension's id (publisher.name of its manifest). */
 const EXTENSION_ID = 'maa-web.maa';
@@ -155,7 +157,9 @@ async function startWorkbench(container: HTMLElement): Promise<void> {
 }
 
 async function main(): Promise<void> {
-    const files = await BackendFileSystem.load();
+    // Lab mode first (docs/lab.md): its CSRF token goes on every write, the exercise names the read-only files.
+    const lab = await startLabMode();
+    const files = await BackendFileSystem.load(lab?.readOnly);
     registerFileSystemOverlay(1, files);
     hooks.timings.files = performance.now();
     const container = document.getElementById('workbench');
@@ -164,6 +168,7 @@ async function main(): Promise<void> {
     const searching = registerFileSearch(WORKSPACE_ROOT, () => files.files());
     await startWorkbench(container);
     await searching;
+    if (lab) await registerExercisePanel(lab.exercise, WORKSPACE_ROOT);
     hooks.timings.services = performance.now();
     vscode.languages.onDidChangeDiagnostics((e) => {
         for (const uri of e.uris) checked.add(uri.path);
