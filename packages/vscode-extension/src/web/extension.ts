@@ -10,6 +10,7 @@ import { LanguageClient, type LanguageClientOptions } from 'vscode-languageclien
 import { registerDiagram } from '../diagram/index.js';
 import { generate } from '../generate-command.js';
 import type { ContributedLanguage } from '../settings.js';
+import { registerWebSimulate } from '../simulate/web.js';
 import { registerStreamTests } from '../testing/controller.js';
 import { WebStreamTestRunner } from '../testing/web-runner.js';
 import { backendBase, backendRunner } from './backend.js';
@@ -64,6 +65,7 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
         vscode.commands.registerCommand('maa.generate', () => generate(runner, generated)),
     );
     registerTests(context, apiBase, root);
+    context.subscriptions.push(registerWebSimulate(context, apiBase));
     try {
         client = await startClient(context, languages, apiBase);
         // The diagram webview (src/diagram) talks to the same server through the client.
