@@ -25,6 +25,8 @@ class DesktopBackend implements SimulationBackend {
     private readonly output = vscode.window.createOutputChannel('MontiArc Simulation');
     private readonly backend: IdeBackend;
     private relay: SimRelay | undefined;
+    /** The last start failed while starting or reaching maa-ide (its output tells why). */
+    private backendFailed = false;
 
     constructor(context: vscode.ExtensionContext) {
         this.backend = new IdeBackend(context.asAbsolutePath(path.join('out', 'simulate', 'backend-launcher.mjs')), (line) =>
@@ -35,16 +37,19 @@ class DesktopBackend implements SimulationBackend {
     async target(item: PlatformItem): Promise<SimulationTarget> {
         const folder = vscode.workspace.getWorkspaceFolder(vscode.Uri.file(item.appFile))?.uri.fsPath;
         const app = folder ? backendAppPath(folder, item.appFile) : undefined;
+        this.backendFailed = false;
         if (!folder || !app) throw new Error(`${item.appFile} is not inside a workspace folder.`);
+        this.backendFailed = true;
         const base = await vscode.window.withProgress(
             { location: vscode.ProgressLocation.Notification, title: 'MontiArc: starting the IDE backend' },
             () => this.connect(folder),
         );
+        this.backendFailed = false;
         return { app, base };
     }
 
     failed(): void {
-        this.output.show(true);
+        if (this.backendFailed) this.output.show(true);
     }
 
     dispose(): void {
