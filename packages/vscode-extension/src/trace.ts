@@ -1,9 +1,10 @@
 /**
  * **Show generated code** and **Show model element**: lookups in a trace file
  * (`<out>/<platform>/.maa-trace.json`, @maa/protocol's TraceFile) in both directions. Pure: paths
- * in, paths and 0-based ranges out; the extension opens the editors.
+ * in, paths and 0-based ranges out; the extension opens the editors. No Node built-ins (the web
+ * entry bundles this for the browser): paths are handled with `/`, a Windows path's `\` read as
+ * `/` (`C:/a/b`), which `vscode.Uri.file` accepts too.
  */
-import path from 'node:path';
 import type { Position, Range, Trace, TraceFile } from '@maa/protocol';
 
 /** Where generated lines are: an absolute file and 0-based inclusive lines. */
@@ -22,10 +23,35 @@ export interface ModelLocation {
     readonly name?: string;
 }
 
+/** `p` with `/` separators, `.` and `..` segments resolved (an absolute path: `/a`, `C:/a`). */
+function normalize(p: string): string {
+    const slashed = p.replace(/\\/g, '/');
+    const root = /^[A-Za-z]:\//.exec(slashed)?.[0] ?? (slashed.startsWith('/') ? '/' : '');
+    const parts: string[] = [];
+    for (const segment of slashed.slice(root.length).split('/')) {
+        if (segment === '..') parts.pop();
+        else if (segment !== '' && segment !== '.') parts.push(segment);
+    }
+    return root + parts.join('/');
+}
+
+function isAbsolute(p: string): boolean {
+    return /^([A-Za-z]:)?[\\/]/.test(p);
+}
+
+/** Like `path.resolve` for absolute bases: the last absolute segment onwards, joined and normalized. */
+function resolve(...segments: string[]): string {
+    let start = 0;
+    segments.forEach((s, i) => {
+        if (isAbsolute(s)) start = i;
+    });
+    return normalize(segments.slice(start).join('/'));
+}
+
 /** The absolute model file of a trace element (relative to the model root, which is relative to the platform folder). */
 export function modelFileOf(trace: TraceFile, platformDir: string, elementFile: string): string {
     if (/^[a-z][a-z0-9+.-]*:\/\//i.test(elementFile)) return elementFile;
-    return path.resolve(platformDir, trace.modelRoot, elementFile);
+    return resolve(platformDir, trace.modelRoot, elementFile);
 }
 
 function before(a: Position, b: Position): boolean {
@@ -46,13 +72,13 @@ function extent(range: Range): number {
  * span of that element (in generated-file order); empty when nothing traced contains the position.
  */
 export function generatedCodeAt(trace: TraceFile, platformDir: string, modelFile: string, pos: Position): GeneratedLocation[] {
-    const target = path.resolve(modelFile);
+    const target = resolve(modelFile);
     const hits: Array<{ file: string; t: Trace; range: Range }> = [];
     for (const f of trace.files) {
         for (const t of f.traces) {
             const range = t.element.range;
             if (!range || modelFileOf(trace, platformDir, t.element.file) !== target || !contains(range, pos)) continue;
-            hits.push({ file: path.resolve(platformDir, f.path), t, range });
+            hits.push({ file: resolve(platformDir, f.path), t, range });
         }
     }
     if (hits.length === 0) return [];
@@ -66,8 +92,10 @@ export function generatedCodeAt(trace: TraceFile, platformDir: string, modelFile
 
 /** The model element the generated `line` (0-based) of `generatedFile` comes from: the narrowest traced span around it. */
 export function modelElementAt(trace: TraceFile, platformDir: string, generatedFile: string, line: number): ModelLocation | undefined {
-    const rel = path.relative(platformDir, path.resolve(generatedFile)).split(path.sep).join('/');
-    const file = trace.files.find((f) => f.path === rel);
+    const dir = `${resolve(platformDir)}/`;
+    const generated = resolve(generatedFile);
+    const rel = generated.startsWith(dir) ? generated.slice(dir.length) : undefined;
+    const file = rel === undefined ? undefined : trace.files.find((f) => f.path === rel);
     if (!file) return undefined;
     let best: Trace | undefined;
     for (const t of file.traces) {
@@ -83,11 +111,11 @@ export function modelElementAt(trace: TraceFile, platformDir: string, generatedF
     };
 }
 
-/** The platform folder a generated file belongs to: the nearest ancestor among the folders holding a trace file. */
+/** The platform folder a generated file belongs to: the nearest ancestor among the folders holding a trace file (as given). */
 export function platformDirOf(generatedFile: string, traceDirs: readonly string[]): string | undefined {
-    const file = path.resolve(generatedFile);
+    const file = resolve(generatedFile);
     return traceDirs
-        .map((d) => path.resolve(d))
-        .filter((d) => file.startsWith(d + path.sep))
-        .sort((a, b) => b.length - a.length)[0];
+        .map((given) => ({ given, dir: resolve(given) }))
+        .filter(({ dir }) => file.startsWith(`${dir}/`))
+        .sort((a, b) => b.dir.length - a.dir.length)[0]?.given;
 }

@@ -21,7 +21,7 @@ export function backendBase(location: PageLocation | undefined = (globalThis as 
 }
 
 /** The error of a refused request: the backend's `{ error }` when it sent one, else the status. */
-async function failure(response: Response, what: string): Promise<Error> {
+export async function failure(response: Response, what: string): Promise<Error> {
     let message = `${response.status} ${response.statusText}`;
     try {
         const body = (await response.json()) as { error?: unknown };
@@ -30,6 +30,20 @@ async function failure(response: Response, what: string): Promise<Error> {
         /* not JSON */
     }
     return new Error(`${what}: ${message}`);
+}
+
+/** What was generated: the app (its path below the workspace) and the platform. */
+export interface Generation {
+    readonly app: string;
+    readonly platform: string;
+}
+
+const generationListeners = new Set<(g: Generation) => void>();
+
+/** Calls `listener` after each generation through a backendRunner (Show Generated Code follows the last one); returns its removal. */
+export function onGenerated(listener: (g: Generation) => void): () => void {
+    generationListeners.add(listener);
+    return () => generationListeners.delete(listener);
 }
 
 /**
@@ -52,6 +66,7 @@ export function backendRunner(
                 signal,
             });
             if (!response.ok) throw await failure(response, what);
+            for (const listener of generationListeners) listener({ app: relative(request.appFile), platform: request.platform });
             return reportFromAnswer(answers.generate.parse(await response.json(), `${what}: the backend's answer`), root);
         },
     };

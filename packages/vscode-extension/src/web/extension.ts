@@ -14,6 +14,7 @@ import { registerWebSimulate } from '../simulate/web.js';
 import { registerStreamTests } from '../testing/controller.js';
 import { WebStreamTestRunner } from '../testing/web-runner.js';
 import { backendBase, backendRunner } from './backend.js';
+import { registerGeneratedCode } from './generated-code.js';
 import { startServerWorker } from './server-worker.js';
 
 /** The file languages of the family, from the manifest (generated from the language facts). */
@@ -66,6 +67,7 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
     );
     registerTests(context, apiBase, root);
     context.subscriptions.push(registerWebSimulate(context, apiBase));
+    registerGeneratedCode(context, apiBase);
     try {
         client = await startClient(context, languages, apiBase);
         // The diagram webview (src/diagram) talks to the same server through the client.
