@@ -25,6 +25,7 @@ import { SelectAction } from 'sprotty-protocol';
 import { ClearHiddenCommand, RedrawCommand } from './commands.js';
 import { ComponentNode, ConnectorEdge, MaaGraph, MaaPort, StateNode, TransitionEdge } from './model.js';
 import { MaaDiagramProxy } from './proxy.js';
+import { StandaloneSvgExporter } from './svg-exporter.js';
 import type { createViews } from './views.js';
 
 export const ZOOM_LIMITS = { min: 0.01, max: 5 };
@@ -44,6 +45,7 @@ export function createDiagramContainer(
     const diagramModule = new ContainerModule((bind, unbind, isBound, rebind) => {
         const context = { bind, unbind, isBound, rebind };
         bind(TYPES.ModelSource).to(MaaDiagramProxy).inSingletonScope();
+        rebind(TYPES.SvgExporter).to(StandaloneSvgExporter).inSingletonScope();
         const fixed = { disable: [moveFeature, popupFeature] };
         const fixedEdge = { disable: [moveFeature, editFeature, popupFeature] };
         configureModelElement(context, 'graph', MaaGraph, views.GraphView);
