@@ -61,49 +61,4 @@ export const hostScenarios = [
             await page.waitForFunction((p) => !window.maaHost.markers(p).some((m) => m.severity === 8), ROBOT, { timeout: 30_000 });
         },
     },
-    {
-        id: 'h3-host-generate',
-        name: 'workbench host: "MontiArc: Generate" from the command palette generates timesync through the backend',
-        async run({ page, url, shot }) {
-            await openHost(page, url);
-            // The summary: a notification (the notifications service), and the status bar.
-            const messages = [];
-            const onConsole = (m) => messages.push(m.text());
-            page.on('console', onConsole);
-            try {
-                await runCommand(page, 'MontiArc: Generate');
-                // The platform pick: the platforms of the workspace's .arcapp files (found through the host's file search).
-                const row = page
-                    .locator('.quick-input-list .monaco-list-row', { hasText: 'toast-service/TR.arcapp' })
-                    .filter({ hasText: 'timesync' });
-                await row.first().waitFor({ timeout: 20_000 });
-                await shot('platform-pick');
-                await row.first().click();
-                const started = Date.now();
-                let summary;
-                const toasts = page.locator('.notifications-toasts .notification-toast');
-                const summaryOf = async () =>
-                    [...messages, ...(await toasts.allInnerTexts())].find((m) => /MontiArc: (generated|nothing generated)/.test(m));
-                while (!(summary = await summaryOf())) {
-                    if (Date.now() - started > 120_000)
-                        await fail(`no summary of the generation; console: ${messages.slice(-5).join(' | ')}`);
-                    await page.waitForTimeout(200);
-                }
-                if (!/MontiArc: generated \d+ files for timesync \(0 errors/.test(summary)) await fail(`Generate reported: ${summary}`);
-                // The summary in the status bar (what the user sees here).
-                await page
-                    .locator('.statusbar-item', { hasText: /MontiArc: generated \d+ files for timesync/ })
-                    .first()
-                    .waitFor({ timeout: 10_000 });
-            } finally {
-                page.off('console', onConsole);
-            }
-            // The backend has the generated platform (its trace file).
-            const status = await page.evaluate(() =>
-                fetch('api/generated/trace?app=toast-service%2FTR.arcapp&platform=timesync').then((r) => r.status),
-            );
-            if (status !== 200) await fail(`the generated trace of timesync answered ${status}`);
-            await shot('generated');
-        },
-    },
 ];
