@@ -15,10 +15,57 @@ export interface GenerationOutcome extends GenerateAnswer {
     platformDir: string;
 }
 
+/** One run of generator-core's orchestrator, as plain data (it can be sent to a worker thread). */
+export interface GenerateJob {
+    appFile: string;
+    modelRoot: string;
+    platform: string;
+    outDir: string;
+    discoveryRoots: readonly string[];
+}
+
+/** What a run gives back, as plain data: its diagnostics and the platform's files, or an input error (a 400). */
+export type GenerateJobResult =
+    | { kind: 'done'; ok: boolean; diagnostics: CheckDiagnostic[]; files: string[] | undefined }
+    | { kind: 'input-error'; message: string };
+
+/** Runs one GenerateJob (in-process by default; the lab server runs them in worker threads). */
+export type GenerateRunner = (job: GenerateJob) => Promise<GenerateJobResult>;
+
+/** Runs one GenerateJob in this thread: fresh language services, generator-core's orchestrator. */
+export async function runGenerateJob(job: GenerateJob): Promise<GenerateJobResult> {
+    const [{ createMaaServices }, { generate, GenerateInputError }, { NodeFileSystem }] = await Promise.all([
+        import('@maa/language-server'),
+        import('@maa/generator-core/node'),
+        import('langium/node'),
+    ]);
+    try {
+        const result = await generate({
+            services: createMaaServices(NodeFileSystem),
+            appFile: job.appFile,
+            modelRoot: job.modelRoot,
+            platforms: [job.platform],
+            outDir: job.outDir,
+            discoveryRoots: job.discoveryRoots,
+        });
+        const generated = result.platforms.find((p) => p.platform === job.platform);
+        return {
+            kind: 'done',
+            ok: result.ok,
+            diagnostics: result.diagnostics.map((d) => ({ ...d })),
+            files: generated ? [...generated.files] : undefined,
+        };
+    } catch (e) {
+        if (e instanceof GenerateInputError) return { kind: 'input-error', message: e.message };
+        throw e;
+    }
+}
+
 /**
- * Runs generator-core's orchestrator in-process for the workspace's applications, one run at a
- * time (a queue): two runs must not interleave their transactions on one output folder, and the
- * language services are not shared between runs (every run loads the model root afresh).
+ * Runs generator-core's orchestrator for the workspace's applications (in-process unless a runner
+ * is given), one run at a time (a queue): two runs must not interleave their transactions on one
+ * output folder, and the language services are not shared between runs (every run loads the
+ * model root afresh).
  */
 export class GenerationService {
     private queue: Promise<unknown> = Promise.resolve();
@@ -26,11 +73,13 @@ export class GenerationService {
     /**
      * @param outRoot the backend's output folder: `<app path>/<platform>/` below it
      * @param discoveryRoots further folders generators are discovered from (the backend's installation)
+     * @param runner runs one generator run (default: in this thread, runGenerateJob)
      */
     constructor(
         private readonly workspace: Workspace,
         readonly outRoot: string,
         private readonly discoveryRoots: readonly string[],
+        private readonly runner: GenerateRunner = runGenerateJob,
     ) {}
 
     /** The output folder (of every platform) of an application, after checking the app path's syntax. */
@@ -56,30 +105,18 @@ export class GenerationService {
         const appFile = await this.workspace.confined.resolve(app, 'app');
         if (!existsSync(appFile) || !statSync(appFile).isFile()) throw new HttpError(404, `not found: ${app}`);
         const outDir = this.appOutDir(app);
-        const [{ createMaaServices }, { generate, GenerateInputError }, { NodeFileSystem }] = await Promise.all([
-            import('@maa/language-server'),
-            import('@maa/generator-core/node'),
-            import('langium/node'),
-        ]);
-        let result: Awaited<ReturnType<typeof import('@maa/generator-core/node').generate>>;
-        try {
-            result = await generate({
-                services: createMaaServices(NodeFileSystem),
-                appFile,
-                modelRoot: this.modelRootOf(appFile),
-                platforms: [platform],
-                outDir,
-                discoveryRoots: this.discoveryRoots,
-            });
-        } catch (e) {
-            if (e instanceof GenerateInputError) throw new HttpError(400, e.message);
-            throw e;
-        }
+        const result = await this.runner({
+            appFile,
+            modelRoot: this.modelRootOf(appFile),
+            platform,
+            outDir,
+            discoveryRoots: this.discoveryRoots,
+        });
+        if (result.kind === 'input-error') throw new HttpError(400, result.message);
         const platformDir = path.join(outDir, platform);
-        const generated = result.platforms.find((p) => p.platform === platform);
-        const files = generated
+        const files = result.files
             ? await Promise.all(
-                  [...generated.files].sort().map(async (f) => ({ path: f, size: (await stat(path.join(platformDir, f))).size })),
+                  [...result.files].sort().map(async (f) => ({ path: f, size: (await stat(path.join(platformDir, f))).size })),
               )
             : [];
         return { ok: result.ok, platform, files, diagnostics: result.diagnostics.map((d) => this.toIde(d)), platformDir };

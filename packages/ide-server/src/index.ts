@@ -8,7 +8,7 @@ export type { WorkspaceEntry } from './workspace.js';
 // The services the lab server runs per student workspace (docs/lab.md "Workspaces").
 export { type ApiOptions, createApiRouter, startSimulation } from './api.js';
 export { listApps } from './apps.js';
-export { GenerationService } from './generation.js';
+export { type GenerateJob, type GenerateJobResult, type GenerateRunner, GenerationService, runGenerateJob } from './generation.js';
 export { readRequest, requireQuery } from './http-util.js';
 export { descendantGroups, groupAlive, processAlive } from './process-group.js';
 export { ROSBRIDGE_PATH, rejectUpgrade, SimProxy, VISER_PATH } from './proxy.js';

@@ -235,10 +235,14 @@ describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
 
     it('checks a workspace again only when its files changed (cached by revision)', async () => {
         const seen: string[] = [];
-        const checker = new WorkspaceChecker(store, async (files) => {
-            seen.push(files.map((f) => f.path).join(' '));
-            return files.map(() => WARNING);
-        });
+        const checker = new WorkspaceChecker(
+            store,
+            async (files) => {
+                seen.push(files.map((f) => f.path).join(' '));
+                return files.map(() => WARNING);
+            },
+            { recheckMs: 0 }, // every poll re-checks a changed workspace (the interval has its own tests below)
+        );
         const live = { isSimulating: (id: number) => id === adaLamp };
         await buildDashboard({ store, checker, live }, 'robotics');
         await checker.settled();
@@ -324,5 +328,77 @@ describe.each(BACKENDS)('the dashboard on %s', (backendName) => {
         } finally {
             await thread.close();
         }
+    });
+
+    it('coalesces the polls’ re-checks: one check per interval, of the files as they are then; a view checks at once', async () => {
+        const seen: string[][] = [];
+        const checker = new WorkspaceChecker(
+            store,
+            async (files) => {
+                seen.push(files.map((f) => f.path).sort());
+                return files.map(() => WARNING);
+            },
+            { recheckMs: 3_600_000 },
+        );
+        const sources = { store, checker, live: NO_LIVE_SIMULATIONS };
+        const added = ['lamp/A.arc', 'lamp/B.arc', 'lamp/C.arc'];
+        try {
+            await buildDashboard(sources, 'robotics');
+            await checker.settled();
+            expect(checker.checksRun).toBe(2); // ada's two workspaces, checked at once the first time
+            // three saves, each followed by a poll: within the interval no check runs, the cell says checking
+            for (const file of added) {
+                await store.saveFile({ workspaceId: adaLamp, path: file, content: GOOD, authorId: ada.id });
+                const polled = await buildDashboard(sources, 'robotics');
+                expect(polled.cells[0]).toMatchObject({ checking: true, diagnostics: { errors: 0, warnings: 1 } });
+                expect(polled.cells[1]).toMatchObject({ checking: false });
+            }
+            expect(checker.checksRun).toBe(2);
+            // what waits for the workspace (the read-only view, the CSV) checks now: once, the newest files
+            const now = await checker.check(adaLamp);
+            expect(checker.checksRun).toBe(3);
+            expect(now.warnings).toBe(4);
+            expect(seen.at(-1)).toEqual([...added, 'lamp/Lamp.arc']);
+            await checker.settled();
+            expect(checker.checksRun).toBe(3);
+            expect((await buildDashboard(sources, 'robotics')).cells[0]).toMatchObject({ checking: false, diagnostics: { warnings: 4 } });
+        } finally {
+            await checker.close();
+            for (const file of added) await store.deleteFile({ workspaceId: adaLamp, path: file, authorId: ada.id });
+        }
+    });
+
+    it('runs a re-check that waited for its interval by itself, and drops a waiting one when closed', async () => {
+        const seen: string[][] = [];
+        const checkFiles = async (files: readonly { path: string }[]) => {
+            seen.push(files.map((f) => f.path).sort());
+            return files.map(() => WARNING);
+        };
+        const checker = new WorkspaceChecker(store, checkFiles, { recheckMs: 100 });
+        const sources = { store, checker, live: NO_LIVE_SIMULATIONS };
+        try {
+            await buildDashboard(sources, 'robotics');
+            await checker.settled();
+            await store.saveFile({ workspaceId: adaLamp, path: 'lamp/D.arc', content: GOOD, authorId: ada.id });
+            await buildDashboard(sources, 'robotics');
+            await store.saveFile({ workspaceId: adaLamp, path: 'lamp/E.arc', content: GOOD, authorId: ada.id });
+            await buildDashboard(sources, 'robotics');
+            await checker.settled(); // the interval's timer queued it (no further poll)
+            expect(seen.at(-1)).toEqual(['lamp/D.arc', 'lamp/E.arc', 'lamp/Lamp.arc']);
+            expect((await buildDashboard(sources, 'robotics')).cells[0]).toMatchObject({ checking: false, diagnostics: { warnings: 3 } });
+        } finally {
+            await checker.close();
+        }
+        // a check waiting for a long interval is dropped by close() (settled() does not wait for it)
+        const slow = new WorkspaceChecker(store, checkFiles, { recheckMs: 3_600_000 });
+        await slow.check(adaLamp);
+        await store.saveFile({ workspaceId: adaLamp, path: 'lamp/F.arc', content: GOOD, authorId: ada.id });
+        expect((await buildDashboard({ store, checker: slow, live: NO_LIVE_SIMULATIONS }, 'robotics')).cells[0]?.checking).toBe(true);
+        await slow.close();
+        await slow.settled();
+        // ada's lamp once (the view), her other workspace once (the poll); the lamp's re-check was dropped
+        expect(slow.checksRun).toBe(2);
+        for (const file of ['lamp/D.arc', 'lamp/E.arc', 'lamp/F.arc'])
+            await store.deleteFile({ workspaceId: adaLamp, path: file, authorId: ada.id });
     });
 });

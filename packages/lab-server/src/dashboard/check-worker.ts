@@ -1,11 +1,13 @@
 // The dashboard's checker thread (docs/lab.md "The instructor's dashboard"): receives one
 // workspace's files at a time, checks a temporary copy of them with the language family's checker
 // (`maa-gen check`'s checkModelRoots) and answers their diagnostics, so the lab server's event loop
-// stays free for the students' requests while the heavy language services work here.
+// stays free for the students' requests while the heavy language services work here, at a lower
+// CPU priority than the server's main thread (thread-priority.ts).
 import { mkdir, mkdtemp, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { parentPort } from 'node:worker_threads';
+import { lowerThreadPriority } from '../thread-priority.js';
 import type { CheckRequest, CheckResponse, FileDiagnostic, WorkspaceFile } from './checker.js';
 
 async function checkFiles(files: readonly WorkspaceFile[]): Promise<FileDiagnostic[]> {
@@ -33,6 +35,7 @@ async function checkFiles(files: readonly WorkspaceFile[]): Promise<FileDiagnost
 
 const port = parentPort;
 if (port) {
+    lowerThreadPriority();
     port.on('message', (request: CheckRequest) => {
         void checkFiles(request.files).then(
             (diagnostics) => port.postMessage({ id: request.id, diagnostics } satisfies CheckResponse),

@@ -4,7 +4,10 @@
 // students between and during the checks. Results are cached per workspace by its files'
 // revisions, so refreshing a dashboard of 30 students re-checks only the workspaces that changed.
 // A dashboard request takes what is ready (states()) and leaves the rest checking; the next poll
-// brings it.
+// brings it. The polls re-check a workspace at most every `recheckMs` (10 s) after its last
+// check: saves in between are coalesced into one check of the files as they are when it runs, so
+// the checks take a bounded share of the machine while students save often. What waits for a
+// check (check(): one workspace's view, the CSV export) checks at once.
 import type { LabStore } from '../storage/index.js';
 import { CheckThread } from './check-thread.js';
 
@@ -52,15 +55,39 @@ export interface CheckState {
     error: string | undefined;
 }
 
+/** How often the dashboard's polls re-check one workspace at most (after its last check ended). */
+export const RECHECK_MS = 10_000;
+
+export interface CheckerOptions {
+    /** a workspace is re-checked by states() at most this long after its last check ended (default RECHECK_MS) */
+    recheckMs?: number;
+}
+
+/** A check that waits for its workspace's re-check interval (it reads the files when it runs). */
+interface DelayedCheck {
+    /** the newest fingerprint asked for (names the queued check; run() reads the files as they are then) */
+    fingerprint: string;
+    promise: Promise<WorkspaceCheck>;
+    /** queues it now */
+    fire(): void;
+    /** drops it (the checker closes) */
+    cancel(error: Error): void;
+}
+
 export class WorkspaceChecker {
     private readonly cache = new Map<number, WorkspaceCheck>();
     /** the last failed check per workspace (reported once, then checked again) */
     private readonly failed = new Map<number, { fingerprint: string; message: string }>();
     /** the check in progress per workspace and fingerprint (a second request waits for it) */
     private readonly running = new Map<string, Promise<WorkspaceCheck>>();
+    /** per workspace: the check waiting for the re-check interval (coalesces the saves meanwhile) */
+    private readonly delayed = new Map<number, DelayedCheck>();
+    /** per workspace: when its last successful check ended (Date.now()) */
+    private readonly lastChecked = new Map<number, number>();
     private queue: Promise<unknown> = Promise.resolve();
     private readonly thread: CheckThread | undefined;
     private readonly checkFiles: FilesChecker;
+    private readonly recheckMs: number;
     /** how many workspaces were really checked (not answered from the cache): for tests and the log */
     checksRun = 0;
 
@@ -68,7 +95,9 @@ export class WorkspaceChecker {
     constructor(
         private readonly store: LabStore,
         checkFiles?: FilesChecker,
+        options: CheckerOptions = {},
     ) {
+        this.recheckMs = options.recheckMs ?? RECHECK_MS;
         if (checkFiles) this.checkFiles = checkFiles;
         else {
             const thread = new CheckThread();
@@ -82,7 +111,7 @@ export class WorkspaceChecker {
         const fingerprint = await this.fingerprint(workspaceId);
         const cached = this.cache.get(workspaceId);
         if (cached?.fingerprint === fingerprint) return cached;
-        return this.start(workspaceId, fingerprint);
+        return this.start(workspaceId, fingerprint, true);
     }
 
     /** The diagnostics of each workspace, waiting for every check (one workspace after the other). */
@@ -106,7 +135,7 @@ export class WorkspaceChecker {
             if (cached?.fingerprint === fingerprint) states.set(id, { check: cached, checking: false, error: undefined });
             else if (failed?.fingerprint === fingerprint) states.set(id, { check: cached, checking: false, error: failed.message });
             else {
-                void this.start(id, fingerprint).catch(() => undefined);
+                void this.start(id, fingerprint, false).catch(() => undefined);
                 states.set(id, { check: cached, checking: true, error: undefined });
             }
         }
@@ -129,11 +158,14 @@ export class WorkspaceChecker {
 
     /** Resolves when no check runs or waits (failed ones included). */
     async settled(): Promise<void> {
-        while (this.running.size > 0) await Promise.allSettled([...this.running.values()]);
+        while (this.running.size > 0 || this.delayed.size > 0)
+            await Promise.allSettled([...this.running.values(), ...[...this.delayed.values()].map((d) => d.promise)]);
     }
 
-    /** Ends the checker thread (the server's close). */
+    /** Ends the checker thread (the server's close); checks waiting for their interval are dropped. */
     async close(): Promise<void> {
+        const error = new Error('the dashboard checker was closed');
+        for (const waiting of [...this.delayed.values()]) waiting.cancel(error);
         await this.thread?.close();
     }
 
@@ -141,8 +173,54 @@ export class WorkspaceChecker {
         return fingerprintOf(await this.store.listFiles(workspaceId));
     }
 
+    /**
+     * The workspace's check: joins one waiting for its interval (`urgent` queues it now) or one
+     * queued for these files; else queues one, after the re-check interval unless `urgent`.
+     */
+    private start(workspaceId: number, fingerprint: string, urgent: boolean): Promise<WorkspaceCheck> {
+        const waiting = this.delayed.get(workspaceId);
+        if (waiting) {
+            waiting.fingerprint = fingerprint;
+            if (urgent) waiting.fire();
+            return waiting.promise;
+        }
+        const wait = urgent ? 0 : (this.lastChecked.get(workspaceId) ?? Number.NEGATIVE_INFINITY) + this.recheckMs - Date.now();
+        if (wait > 0 && !this.running.has(`${workspaceId} ${fingerprint}`)) return this.delay(workspaceId, fingerprint, wait);
+        return this.enqueue(workspaceId, fingerprint);
+    }
+
+    /** A check of the workspace queued after `wait` ms (or when fired), of its files as they are then. */
+    private delay(workspaceId: number, fingerprint: string, wait: number): Promise<WorkspaceCheck> {
+        let timer: NodeJS.Timeout | undefined;
+        const settle = { resolve: (_c: WorkspaceCheck) => {}, reject: (_e: Error) => {} };
+        const promise = new Promise<WorkspaceCheck>((resolve, reject) => {
+            settle.resolve = resolve;
+            settle.reject = reject;
+        });
+        const leave = (): boolean => {
+            clearTimeout(timer);
+            if (this.delayed.get(workspaceId) !== check) return false;
+            this.delayed.delete(workspaceId);
+            return true;
+        };
+        const check: DelayedCheck = {
+            fingerprint,
+            promise,
+            fire: () => {
+                if (leave()) this.enqueue(workspaceId, check.fingerprint).then(settle.resolve, settle.reject);
+            },
+            cancel: (error) => {
+                if (leave()) settle.reject(error);
+            },
+        };
+        this.delayed.set(workspaceId, check);
+        timer = setTimeout(check.fire, wait);
+        timer.unref();
+        return promise;
+    }
+
     /** Queues the workspace's check (one at a time), or joins the one already queued for these files. */
-    private start(workspaceId: number, fingerprint: string): Promise<WorkspaceCheck> {
+    private enqueue(workspaceId: number, fingerprint: string): Promise<WorkspaceCheck> {
         const key = `${workspaceId} ${fingerprint}`;
         const running = this.running.get(key);
         if (running) return running;
@@ -177,6 +255,7 @@ export class WorkspaceChecker {
             diagnostics,
         };
         this.cache.set(workspaceId, result);
+        this.lastChecked.set(workspaceId, Date.now());
         return result;
     }
 }

@@ -1,11 +1,13 @@
 // The instructor's dashboard (docs/lab.md "The instructor's dashboard").
 export { CheckThread, checkWorkerScript } from './check-thread.js';
 export {
+    type CheckerOptions,
     type CheckRequest,
     type CheckResponse,
     type CheckState,
     type FileDiagnostic,
     type FilesChecker,
+    RECHECK_MS,
     type WorkspaceCheck,
     WorkspaceChecker,
     type WorkspaceFile,

@@ -16,6 +16,8 @@ export interface DashboardOptions {
     live?: LiveSimulations;
     /** the checker (default: the language family's, cached per workspace revision) */
     checker?: (store: LabStore) => WorkspaceChecker;
+    /** a workspace is re-checked by the polls at most this often (default RECHECK_MS, 10 s) */
+    recheckMs?: number;
 }
 
 /** The dashboard's checker, seen from the server: for its close and for tests. */
@@ -30,7 +32,7 @@ export interface DashboardHandle {
 export function addDashboardRoutes(routes: LabRoutes, options: DashboardOptions = {}): DashboardHandle {
     let checker: WorkspaceChecker | undefined;
     const sources = (store: LabStore): DashboardSources => {
-        checker ??= options.checker ? options.checker(store) : new WorkspaceChecker(store);
+        checker ??= options.checker ? options.checker(store) : new WorkspaceChecker(store, undefined, { recheckMs: options.recheckMs });
         return { store, checker, live: options.live ?? NO_LIVE_SIMULATIONS };
     };
     routes.add({

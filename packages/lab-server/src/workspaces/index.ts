@@ -7,12 +7,14 @@ import type { IncomingMessage } from 'node:http';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import type { Duplex } from 'node:stream';
+import type { Worker } from 'node:worker_threads';
 import { defaults } from '@maa/ide-server';
 import type { SessionService } from '../auth/sessions.js';
 import type { LabRoutes } from '../http/routes.js';
 import { type QuotaOptions, quotaOptions } from '../quotas/index.js';
 import type { LabStore } from '../storage/index.js';
 import { addFileRoutes } from './file-routes.js';
+import { GeneratePool } from './generate-pool.js';
 import { addInfoRoute } from './info-route.js';
 import { RuntimePool } from './pool.js';
 import { addProxyRoutes, WorkspaceUpgrades } from './proxy.js';
@@ -40,6 +42,10 @@ export interface LabWorkspaceOptions {
     workspaceIdleSeconds?: number;
     /** how often simulations are checked against their student's session and time quota (default 2 s) */
     sweepMs?: number;
+    /** how many worker threads run generators (default: the cores but one, at least 1, at most 4) */
+    generateThreads?: number;
+    /** starts one generator thread (default: generate-worker.js; tests give their own) */
+    generateThread?: () => Worker;
 }
 
 export const WORKSPACE_DEFAULTS = { simIdleSeconds: 60, workspaceIdleSeconds: 600, sweepMs: 2000 };
@@ -57,6 +63,8 @@ export class LabWorkspaces {
     readonly quotas: QuotaOptions;
     readonly pool: RuntimePool;
     readonly simulations: LabSimulations;
+    /** the generator threads every workspace's generation runs in */
+    readonly generators: GeneratePool;
     private readonly upgrades: WorkspaceUpgrades;
     private readonly timer: NodeJS.Timeout;
     private closing: Promise<void> | undefined;
@@ -69,6 +77,7 @@ export class LabWorkspaces {
         if (options.dataDir === undefined) this.temporary = base;
         const root = path.resolve(base, 'workspaces');
         mkdirSync(root, { recursive: true, mode: 0o700 });
+        this.generators = new GeneratePool(options.generateThreads, options.generateThread);
         this.pool = new RuntimePool(
             deps.store,
             {
@@ -78,6 +87,7 @@ export class LabWorkspaces {
                 simIdleMs: (options.simIdleSeconds ?? WORKSPACE_DEFAULTS.simIdleSeconds) * 1000,
                 simReadyTimeoutMs: options.simReadyTimeoutMs,
                 simStopGraceMs: options.simStopGraceMs,
+                generate: this.generators.run,
             },
             (options.workspaceIdleSeconds ?? WORKSPACE_DEFAULTS.workspaceIdleSeconds) * 1000,
         );
@@ -111,6 +121,7 @@ export class LabWorkspaces {
             await this.simulations.stopAll();
             this.upgrades.closeAll();
             await this.pool.closeAll();
+            await this.generators.close();
             if (this.temporary) await rm(this.temporary, { recursive: true, force: true });
         })();
         return this.closing;

@@ -5,6 +5,7 @@ import { realpathSync } from 'node:fs';
 import path from 'node:path';
 import {
     createApiRouter,
+    type GenerateRunner,
     GenerationService,
     PathRedactor,
     packageDir,
@@ -30,6 +31,8 @@ export interface RuntimeSettings {
     simIdleMs: number;
     simReadyTimeoutMs: number | undefined;
     simStopGraceMs: number | undefined;
+    /** runs the generator (the lab's generator threads, generate-pool.ts) */
+    generate: GenerateRunner;
 }
 
 /** A simulation one student started in this workspace (until the sweep records its end). */
@@ -67,7 +70,7 @@ export class WorkspaceRuntime {
         this.folder = new MaterializedFolder(path.join(base, exerciseName), store, workspaceId);
         this.ide = new Workspace(this.folder.root);
         const outDir = path.join(base, 'generated');
-        this.generation = new GenerationService(this.ide, outDir, [packageDir]);
+        this.generation = new GenerationService(this.ide, outDir, [packageDir], settings.generate);
         this.tests = new StreamTestService(this.ide, this.generation);
         this.sims = new SimSessions(
             settings.maaSim,
