@@ -26,3 +26,103 @@ export async function runCommand(page, title) {
     await page.locator('.quick-input-list .monaco-list-row', { hasText: title }).first().waitFor({ timeout: 10_000 });
     await page.keyboard.press('Enter');
 }
+
+export const ARM = 'toast-service/toast/ArmController.arc';
+export const CONTROLLER = 'toast-service/toast/Controller.arc';
+export const mod = process.platform === 'darwin' ? 'Meta' : 'Control';
+
+/**
+ * Selects `needle` (or `length` characters from `offset` into it) in the editor showing `path`
+ * and focuses that editor (window.maaHost.editorOf: also while the diagram webview has the focus).
+ */
+export async function select(page, path, needle, { offset = 0, length } = {}) {
+    const problem = await page.evaluate(
+        ([p, n, o, l]) => {
+            const editor = window.maaHost.editorOf(p);
+            const model = editor?.getModel();
+            if (!editor || !model) return `no editor shows ${p}`;
+            const at = model.getValue().indexOf(n);
+            if (at < 0) return `"${n}" not found in ${p}`;
+            const start = model.getPositionAt(at + o);
+            const end = model.getPositionAt(at + o + (l ?? n.length - o));
+            editor.setSelection({
+                startLineNumber: start.lineNumber,
+                startColumn: start.column,
+                endLineNumber: end.lineNumber,
+                endColumn: end.column,
+            });
+            editor.revealRangeInCenter(editor.getSelection());
+            editor.focus();
+            return '';
+        },
+        [path, needle, offset, length],
+    );
+    if (problem) await fail(problem);
+}
+
+/** The cursor's line in the editor showing `path`. */
+export const cursorLine = (page, path) => page.evaluate((p) => window.maaHost.editorOf(p)?.getPosition()?.lineNumber, path);
+
+/** Waits until the text of `path`'s model (saved or not) satisfies `predicate` (polled). */
+export async function waitForText(page, path, predicate, what, timeout = 30_000) {
+    const started = Date.now();
+    for (;;) {
+        const current = await page.evaluate((p) => window.maaHost.text(p), path);
+        if (current !== undefined && predicate(current)) return current;
+        if (Date.now() - started > timeout) await fail(`${path}: ${what} (text now:\n${current})`);
+        await page.waitForTimeout(200);
+    }
+}
+
+/** The frame of the diagram webview (nested iframes of the webview host page), once its diagram is mounted. */
+export async function diagramFrame(page, timeout = 60_000) {
+    const started = Date.now();
+    for (;;) {
+        for (const frame of page.frames()) {
+            if (frame === page.mainFrame()) continue;
+            const mounted = await frame
+                .locator('[data-testid=diagram]')
+                .count()
+                .catch(() => 0);
+            if (mounted) return frame;
+        }
+        if (Date.now() - started > timeout) await fail('no diagram webview with a mounted diagram');
+        await page.waitForTimeout(250);
+    }
+}
+
+/** Opens the diagram of the active model file with the editor title button (MontiArc: Open Diagram); resolves with its frame. */
+export async function openDiagram(page, timeout = 60_000) {
+    const button = page.locator('.editor-actions .action-label[aria-label^="MontiArc: Open Diagram"]').first();
+    await button.waitFor({ timeout: 30_000 });
+    await button.click();
+    await page.locator('.tabs-container .tab', { hasText: 'MontiArc Diagram' }).first().waitFor({ timeout: 20_000 });
+    const frame = await diagramFrame(page, timeout);
+    await frame.locator('.maa-component').first().waitFor({ state: 'visible', timeout });
+    return frame;
+}
+
+/**
+ * Runs **MontiArc: Export Diagram as SVG** and answers the save dialog (the workbench's own
+ * simple file dialog on the web) with `name` beside the suggested path; resolves with the path
+ * written, relative to the workspace.
+ */
+export async function exportDiagram(page, name) {
+    await runCommand(page, 'MontiArc: Export Diagram as SVG');
+    const input = page.locator('.quick-input-widget .quick-input-box input');
+    await page.waitForFunction(
+        () => /\.svg$/.test(document.querySelector('.quick-input-widget .quick-input-box input')?.value ?? ''),
+        undefined,
+        { timeout: 30_000 },
+    );
+    const suggested = await input.inputValue();
+    const target = `${suggested.slice(0, suggested.lastIndexOf('/') + 1)}${name}`;
+    await input.fill(target);
+    await page.keyboard.press('Enter');
+    await page
+        .locator('.notifications-toasts .notification-toast', { hasText: `diagram saved to` })
+        .filter({ hasText: name })
+        .first()
+        .waitFor({ timeout: 30_000 });
+    return target.replace(/^\/workspace\//, '');
+}

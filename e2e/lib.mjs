@@ -142,8 +142,3 @@ export async function screenshot(page, name) {
     await page.screenshot({ path: file });
     return file;
 }
-
-/** Waits until the workbench reports ready (editor, language client, diagram mounted). */
-export async function waitForWorkbench(page, timeout = 60_000) {
-    await page.waitForFunction(() => window.maaIde?.ready === true, undefined, { timeout });
-}

@@ -1,6 +1,11 @@
 #!/usr/bin/env node
-// The IDE's end-to-end tests (issue 7): maa-ide on a fresh copy of examples/ (port 0), Debian's
-// chromium through playwright-core, one scenario after the other, screenshots in e2e/artifacts/.
+// The browser IDE's end-to-end tests (issues 7 and 14): maa-ide on a fresh copy of examples/
+// (port 0) serving VS Code's workbench with the MontiArc extension (packages/ide-web), Debian's
+// chromium through playwright-core, one scenario after the other in one workspace, screenshots in
+// e2e/artifacts/. The scenarios: e2e/host-scenarios.mjs (open, errors, quick fix, completion,
+// rename, the diagram and its export, the test explorer, the workbench host), generation
+// (e2e/generated-scenarios.mjs), simulation (e2e/simulate-scenarios.mjs), then the large model's
+// (last: it adds 200 component types to the workspace).
 //
 //   node e2e/run.mjs                 all scenarios (needs packages/ide-web/dist: npm run build -w @maa/ide-web)
 //   node e2e/run.mjs --only 'error|fix'   scenarios whose name matches the regular expression
@@ -8,11 +13,11 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { artifacts, freshWorkspace, launchBrowser, screenshot, startIde } from './lib.mjs';
-import { hostScenarios } from './host-scenarios.mjs';
-import { scenarios as ideScenarios } from './scenarios.mjs';
+import { generatedScenarios } from './generated-scenarios.mjs';
+import { hostScenarios, largeModelScenarios } from './host-scenarios.mjs';
+import { simulateScenarios } from './simulate-scenarios.mjs';
 
-// The old IDE's scenarios, then the workbench host's (host.html, e2e/host-scenarios.mjs).
-const scenarios = [...ideScenarios, ...hostScenarios];
+const scenarios = [...hostScenarios, ...generatedScenarios, ...simulateScenarios, ...largeModelScenarios];
 
 const args = process.argv.slice(2);
 const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : undefined;

@@ -56,6 +56,10 @@ export interface HostHooks {
     activeEditor(): monaco.editor.ICodeEditor | undefined;
     /** Every marker of the workspace's files, with its path (the benchmark compares them). */
     allMarkers(): { path: string; severity: number; message: string; line: number }[];
+    /** The code editor showing a workspace file, also while another part (a webview) has the focus (the e2e tests). */
+    editorOf(path: string): monaco.editor.ICodeEditor | undefined;
+    /** The current text of a workspace file's model, saved or not; undefined when no model has it (the e2e tests). */
+    text(path: string): string | undefined;
 }
 declare global {
     interface Window {
@@ -91,6 +95,12 @@ const hooks: HostHooks = {
                 message: m.message,
                 line: m.startLineNumber,
             })),
+    editorOf: (path) => {
+        const uri = monaco.Uri.file(`${WORKSPACE_ROOT}/${path}`).toString();
+        const showing = monaco.editor.getEditors().filter((e) => e.getModel()?.uri.toString() === uri);
+        return showing.find((e) => e.hasTextFocus()) ?? showing[0];
+    },
+    text: (path) => monaco.editor.getModel(monaco.Uri.file(`${WORKSPACE_ROOT}/${path}`))?.getValue(),
 };
 /** The files the language server has published diagnostics for (vscode.languages.onDidChangeDiagnostics, from main()). */
 const checked = new Set<string>();
