@@ -118,6 +118,19 @@ describe.each(BACKENDS)('the lab server on %s', (backendName) => {
         expect((await teacher.send('/api/courses/nope/students')).status).toBe(404);
     });
 
+    it("accepts a write from the lab's own pages without the token (their Origin), never from another origin or `null`", async () => {
+        const c = await loggedIn('ada', STUDENT_PASSWORD);
+        const own = new URL(c.base).origin;
+        for (const origin of ['https://evil.example', 'null', `${own}.evil.example`]) {
+            const answer = await c.send('/api/logout', { body: {}, headers: { Origin: origin } });
+            expect(answer.status, origin).toBe(403);
+        }
+        expect((await c.send('/api/me')).status).toBe(200);
+        const fromPage = await c.send('/api/logout', { body: {}, headers: { Origin: own } });
+        expect(fromPage.status, fromPage.text).toBe(200);
+        expect((await c.send('/api/me')).status).toBe(401);
+    });
+
     it('refuses a forged state-changing request without the session CSRF token (403), and logs out with it', async () => {
         const c = await loggedIn('ada', STUDENT_PASSWORD);
         // A cross-site form or script has the cookie (the browser sends it) but not the token.

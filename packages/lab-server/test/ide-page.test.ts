@@ -6,7 +6,7 @@ import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { CSRF_META, rewriteIdePath, WORKSPACE_META, withLabMeta } from '../src/ide/index.js';
+import { CSRF_META, homePage, rewriteIdePath, WORKSPACE_META, withLabMeta } from '../src/ide/index.js';
 import { startBackend, type Backend } from './backends.js';
 import { Client } from './http-client.js';
 import { COURSE, EXERCISE, type Lab, put, startLab } from './workspace-setup.js';
@@ -46,6 +46,26 @@ describe('withLabMeta', () => {
     });
 });
 
+describe('homePage', () => {
+    it('links each released exercise to the IDE of the user’s own workspace, escaped', () => {
+        const html = homePage({ login: 'ada', name: 'Ada <Lovelace>', role: 'student' }, [
+            { course: 'robotics', courseTitle: 'Robotics & more', exercise: 'toast-controller', title: 'The "toast" robot' },
+        ]);
+        expect(html).toContain('<a href="/ide/robotics/toast-controller/ada/">The &quot;toast&quot; robot</a>');
+        expect(html).toContain('Hello, Ada &lt;Lovelace&gt;');
+        expect(html).toContain('<h2>Robotics &amp; more</h2>');
+        expect(html).not.toContain('/dashboard/');
+        expect(homePage({ login: 't', name: 'T', role: 'instructor' }, [])).toContain('No exercise has been released');
+        // An instructor has no workspace of their own: the course's dashboard, the exercises unlinked.
+        const teachers = homePage({ login: 't', name: 'T', role: 'instructor' }, [
+            { course: 'robotics', courseTitle: 'Robotics', exercise: 'toast-controller', title: 'Toast' },
+        ]);
+        expect(teachers).toContain('<a href="/dashboard/robotics">Dashboard of Robotics</a>');
+        expect(teachers).toContain('<li>Toast <small>(toast-controller)</small></li>');
+        expect(teachers).not.toContain('/ide/');
+    });
+});
+
 describe('the IDE of a workspace over HTTP', () => {
     let backend: Backend;
     let lab: Lab;
@@ -81,6 +101,20 @@ describe('the IDE of a workspace over HTTP', () => {
         expect(page.text).toContain(`<meta name="${CSRF_META}" content="${ada.csrf}">`);
         expect(page.text).toContain(`<meta name="${WORKSPACE_META}" content="/api/ws/${COURSE}/${EXERCISE}/ada">`);
         expect((await ada.send(`${ide('ada')}/index.html`)).text).toContain(CSRF_META);
+    });
+
+    it('starts at a page that lists the exercises of the user’s courses (instructors: the dashboards too)', async () => {
+        const home = await ada.send('/');
+        expect(home.status, home.text).toBe(200);
+        expect(home.headers['content-security-policy']).toContain("default-src 'none'");
+        expect(home.text).toContain(`href="/ide/${COURSE}/${EXERCISE}/ada/"`);
+        expect(home.text).toContain(`href="/ide/${COURSE}/toast-copy/ada/"`);
+        expect(home.text).not.toContain('/dashboard/');
+        const teachers = await teacher.send('/');
+        expect(teachers.text).toContain(`href="/dashboard/${COURSE}"`);
+        const anonymous = await new Client(lab.server.url).send('/', { headers: { Accept: 'text/html' } });
+        expect(anonymous.status).toBe(302);
+        expect(anonymous.headers.location).toBe('/login');
     });
 
     it('answers the IDE’s relative paths from the workspace: files, saves, the exercise, the app’s files', async () => {

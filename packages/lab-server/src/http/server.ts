@@ -9,7 +9,7 @@ import { type OidcSettings, OidcSignOn } from '../auth/oidc.js';
 import { DEFAULT_RATE_LIMITS, LoginRateLimiter, type RateLimitOptions } from '../auth/rate-limit.js';
 import { DEFAULT_SESSION_HOURS, SessionService } from '../auth/sessions.js';
 import { addDashboardRoutes, type DashboardHandle } from '../dashboard/index.js';
-import { addIdePage, rewriteIdePath } from '../ide/index.js';
+import { addHomePage, addIdePage, rewriteIdePath } from '../ide/index.js';
 import type { LabStore } from '../storage/index.js';
 import { type LabWorkspaceOptions, LabWorkspaces } from '../workspaces/index.js';
 import { addAuthRoutes } from './auth-routes.js';
@@ -74,6 +74,7 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
     const dashboard = addDashboardRoutes(routes, { live: { isSimulating: (id) => workspaces.pool.find(id)?.sim !== undefined } });
     addPages(routes, options.oidc !== undefined);
     addIdePage(routes, options.appDir);
+    addHomePage(routes);
     if (options.oidc) {
         const signOn = await OidcSignOn.discover(options.oidc, `${publicUrl}/api/oidc/callback`);
         addOidcRoutes(routes, signOn, sessions, secure, log);
@@ -188,9 +189,20 @@ async function dispatch(ctx: Context, { route }: Match, request: LabRequest): Pr
     const auth = await ctx.sessions.authenticate(request.req);
     if (!auth) throw new HttpError(401, 'log in first (POST /api/login, or open /login)');
     if (route.access === 'instructor' && auth.user.role !== 'instructor') throw new HttpError(403, 'only an instructor may do this');
-    if (!SAFE_METHODS.has(route.method) && !ctx.sessions.csrfOk(request.req, auth.session))
+    if (!SAFE_METHODS.has(route.method) && !ctx.sessions.csrfOk(request.req, auth.session) && !fromOwnPage(request.req))
         throw new HttpError(403, "the request lacks the session's CSRF token (send it in the X-CSRF-Token header; GET /api/me gives it)");
     await route.handler({ ...request, auth });
+}
+
+/**
+ * A write a browser sent from one of the lab's own pages: browsers name the sending page's origin
+ * in `Origin` on every request that is no GET or HEAD, and the Host/Origin check in front of the
+ * routes has already refused every origin but the lab's (and `null`). That proves what the CSRF
+ * token proves, also for the IDE's webviews (the simulate view), which are frames of the lab's
+ * origin but cannot read the page's token. Clients without an `Origin` still need the token.
+ */
+function fromOwnPage(req: IncomingMessage): boolean {
+    return typeof req.headers.origin === 'string' && req.headers.origin !== '';
 }
 
 /** The client's address: the socket's, or behind a trusted proxy the last address the proxy added. */

@@ -13,12 +13,12 @@ import { IDE_PAGE } from './paths.js';
 export const CSRF_META = 'maa-csrf-token';
 export const WORKSPACE_META = 'maa-lab-workspace';
 
-const escapeAttribute = (s: string): string => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
+import { escapeHtml } from './html.js';
 
 /** index.html with the lab's meta tags at the start of its head. */
 export function withLabMeta(html: string, meta: Record<string, string>): string {
     const tags = Object.entries(meta)
-        .map(([name, content]) => `<meta name="${escapeAttribute(name)}" content="${escapeAttribute(content)}">`)
+        .map(([name, content]) => `<meta name="${escapeHtml(name)}" content="${escapeHtml(content)}">`)
         .join('');
     const head = /<head[^>]*>/i.exec(html);
     if (!head) throw new Error("the web app's index.html has no <head>");

@@ -16,6 +16,7 @@ import type { Database } from './schema.js';
 import { insertStarterVersion, selectStarterFiles, selectStarterVersion, updateSpec, upsertStarterFile } from './starters.js';
 import {
     type Course,
+    type EnrolledExercise,
     type Exercise,
     type FileRevision,
     type FileRevisionInfo,
@@ -151,6 +152,32 @@ class KyselyLabStore implements LabStore {
                 .onConflict((oc) => oc.columns(['course_id', 'user_id']).doNothing())
                 .execute();
         });
+    }
+
+    /** The released exercises, by course and name: of the courses `enrolledUserId` is enrolled in, or of every course. */
+    async listReleasedExercises(enrolledUserId?: number): Promise<EnrolledExercise[]> {
+        let query = this.db
+            .selectFrom('courses')
+            .innerJoin('exercises', 'exercises.course_id', 'courses.id')
+            .select(['courses.name as course', 'courses.title as courseTitle', 'exercises.name as exercise', 'exercises.spec as spec'])
+            .where('exercises.released_at', 'is not', null);
+        if (enrolledUserId !== undefined)
+            query = query.where((eb) =>
+                eb.exists(
+                    eb
+                        .selectFrom('enrollments')
+                        .select('enrollments.user_id')
+                        .whereRef('enrollments.course_id', '=', 'courses.id')
+                        .where('enrollments.user_id', '=', enrolledUserId),
+                ),
+            );
+        const rows = await query.orderBy('courses.name').orderBy('exercises.name').execute();
+        return rows.map((r) => ({
+            course: r.course,
+            courseTitle: r.courseTitle,
+            exercise: r.exercise,
+            title: typeof r.spec['title'] === 'string' ? r.spec['title'] : r.exercise,
+        }));
     }
 
     async listEnrolled(courseId: number): Promise<User[]> {

@@ -27,6 +27,15 @@ export interface NewUser {
     oidcSubject?: string | null;
 }
 
+/** A released exercise of a course (LabStore.listReleasedExercises). */
+export interface EnrolledExercise {
+    course: string;
+    courseTitle: string;
+    exercise: string;
+    /** the exercise's title (its name when it has none) */
+    title: string;
+}
+
 export interface Course {
     id: number;
     name: string;
@@ -181,6 +190,8 @@ export interface LabStore {
     findCourse(name: string): Promise<Course | undefined>;
     enroll(courseId: number, userId: number): Promise<void>;
     listEnrolled(courseId: number): Promise<User[]>;
+    /** The released exercises, by course and name: of the courses `enrolledUserId` is enrolled in, or of every course. */
+    listReleasedExercises(enrolledUserId?: number): Promise<EnrolledExercise[]>;
 
     createExercise(exercise: { courseId: number; name: string; spec: Record<string, unknown> }): Promise<Exercise>;
     /** Releases the exercise (now unless `at` says when); a released exercise stays released. */
