@@ -103,11 +103,13 @@ export async function openDiagram(page, timeout = 60_000) {
 }
 
 /**
- * Runs **MontiArc: Export Diagram as SVG** and answers the save dialog (the workbench's own
- * simple file dialog on the web) with `name` beside the suggested path; resolves with the path
- * written, relative to the workspace.
+ * Runs **MontiArc: Export Diagram as SVG** from the editor of `model` (the command palette's keys
+ * go to the workbench, not to the webview after a click into the diagram) and answers the save
+ * dialog (the workbench's own simple file dialog on the web) with `name` beside the suggested
+ * path; resolves with the path written, relative to the workspace.
  */
-export async function exportDiagram(page, name) {
+export async function exportDiagram(page, name, model) {
+    await page.evaluate((p) => window.maaHost.editorOf(p)?.focus(), model);
     await runCommand(page, 'MontiArc: Export Diagram as SVG');
     const input = page.locator('.quick-input-widget .quick-input-box input');
     await page.waitForFunction(

@@ -33,9 +33,13 @@ import { cliDiagram, diagramClasses, diagramIds, diagramRoutes, diagramTexts, id
  */
 async function restoreFiles(page, workspace, files) {
     await runCommand(page, 'File: Save All');
-    await page.locator('.tabs-container .tab.dirty').first().waitFor({ state: 'detached', timeout: 30_000 });
     await page.waitForFunction(() => !document.querySelector('.tabs-container .tab.dirty'), undefined, { timeout: 30_000 });
-    for (const file of files) copyFileSync(path.join(repo, 'examples', file), path.join(workspace, file));
+    for (const file of files) {
+        // The disk has what the editor has (also a file edited without a tab, as a rename's other file).
+        const edited = await page.evaluate((p) => window.maaHost.text(p), file);
+        if (edited !== undefined) await waitForDisk(page, path.join(workspace, file), (t) => t === edited, `${file} was not saved`);
+        copyFileSync(path.join(repo, 'examples', file), path.join(workspace, file));
+    }
 }
 
 /** Waits until the file on disk satisfies `predicate` (a save's PUT may still be under way; polled). */
@@ -61,9 +65,9 @@ async function settledBox(page, locator, timeout = 10_000) {
 }
 
 /** Exports the shown diagram (the extension's command) and compares its element ids, labels, classes and routes with `maa-gen diagram ARGS`'s SVG. */
-async function compareExport(page, workspace, args, what) {
+async function compareExport(page, workspace, model, args, what) {
     const name = args[0].split('.').pop() + (args.includes('--automaton') ? '-automaton' : '');
-    const file = await exportDiagram(page, `5c-export-${name}.svg`);
+    const file = await exportDiagram(page, `5c-export-${name}.svg`, model);
     const ide = readFileSync(path.join(workspace, file), 'utf8');
     rmSync(path.join(workspace, file));
     const cli = await cliDiagram(args);
@@ -206,6 +210,8 @@ export const hostScenarios = [
                 .locator('.tabs-container .tab.active:not(.dirty)', { hasText: 'ToastServiceRobot.arc' })
                 .waitFor({ timeout: 20_000 });
             await waitForDisk(page, path.join(workspace, ROBOT), (t) => t.includes('ctrl.arm -> arm.cmd;'), 'the saved file lacks the fix');
+            // The example as it was (the fix may put the connector elsewhere) for the scenarios after this one.
+            await restoreFiles(page, workspace, [ROBOT]);
         },
     },
     {
@@ -321,7 +327,7 @@ export const hostScenarios = [
             }
             await restoreFiles(page, workspace, [ROBOT]);
             // MontiArc: Export Diagram as SVG writes a standalone SVG of the shown diagram where the save dialog says.
-            const file = await exportDiagram(page, '5b-ToastServiceRobot.svg');
+            const file = await exportDiagram(page, '5b-ToastServiceRobot.svg', ROBOT);
             const svgText = readFileSync(path.join(workspace, file), 'utf8');
             rmSync(path.join(workspace, file));
             if (
@@ -343,13 +349,19 @@ export const hostScenarios = [
             await diagram.locator('.maa-component[data-instance-path=arm]').first().waitFor({ timeout: 30_000 });
             const root = path.join(workspace, 'toast-service');
             // The C&C view of the example's robot, then the state machine of its Controller.
-            await compareExport(page, workspace, ['toast.ToastServiceRobot', '--root', root], 'C&C view of toast.ToastServiceRobot');
+            await compareExport(page, workspace, ROBOT, ['toast.ToastServiceRobot', '--root', root], 'C&C view of toast.ToastServiceRobot');
             await page.evaluate((p) => window.maaHost.open(p), CONTROLLER);
             const toggle = diagram.locator('[data-testid=diagram-switch]');
             await toggle.waitFor({ state: 'visible', timeout: 20_000 });
             await toggle.click();
             await diagram.locator('.maa-state', { hasText: 'Toasting' }).first().waitFor({ timeout: 20_000 });
-            await compareExport(page, workspace, ['toast.Controller', '--automaton', '--root', root], 'state machine of toast.Controller');
+            await compareExport(
+                page,
+                workspace,
+                CONTROLLER,
+                ['toast.Controller', '--automaton', '--root', root],
+                'state machine of toast.Controller',
+            );
             await shot('automaton');
         },
     },
@@ -456,7 +468,7 @@ export const hostScenarios = [
     {
         id: 'h2-host-diagnostic',
         name: "workbench host: an edit gives a diagnostic from the extension's language server, undo clears it",
-        async run({ page, url, shot }) {
+        async run({ page, url, workspace, shot }) {
             await openHost(page, url);
             const errors = () => page.evaluate((p) => window.maaHost.markers(p).filter((m) => m.severity === 8), ROBOT);
             // The example is clean before the edit (the server has checked it: wait for its first answer).
@@ -474,11 +486,12 @@ export const hostScenarios = [
             );
             await page.locator('.monaco-editor .squiggly-error').first().waitFor({ timeout: 10_000 });
             await shot('diagnostic');
-            // Undo the edit (the file on disk was never saved): the error goes away.
-            const mod = process.platform === 'darwin' ? 'Meta' : 'Control';
+            // Undo the edit: the error goes away. The web workbench saves edits by itself (files.autoSave
+            // "afterDelay"): the file goes back to the example's on disk for the scenarios after this one.
             await page.keyboard.press(`${mod}+KeyZ`);
             await page.keyboard.press(`${mod}+KeyZ`);
             await page.waitForFunction((p) => !window.maaHost.markers(p).some((m) => m.severity === 8), ROBOT, { timeout: 30_000 });
+            await restoreFiles(page, workspace, [ROBOT]);
         },
     },
 ];
