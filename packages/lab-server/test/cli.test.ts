@@ -191,7 +191,7 @@ describe.each(BACKENDS)('maa-lab on %s', (backendName) => {
         expect(token).not.toBe('');
         let stop: (() => Promise<void>) | undefined;
         let url = '';
-        const serve = await lab(withStorage(['serve', '--port', '0']), '', {
+        const serve = await lab(withStorage(['serve', '--port', '0', '--generate-threads', '2']), '', {
             onServing: (s, u) => {
                 stop = s;
                 url = u;
@@ -234,5 +234,9 @@ describe.each(BACKENDS)('maa-lab on %s', (backendName) => {
         const half = await lab(withStorage(['serve', '--oidc-issuer', 'https://id.example.org']));
         expect(half.err).toContain('needs both --oidc-issuer and --oidc-client-id');
         expect((await lab(withStorage(['serve', '--port', 'http']))).err).toContain('--port must be a port number');
+        for (const bad of ['0', 'two', '65'])
+            expect((await lab(withStorage(['serve', '--port', '0', '--generate-threads', bad]))).err).toBe(
+                `maa-lab: error: --generate-threads must be a whole number from 1 to 64, not ${bad}\n`,
+            );
     });
 });

@@ -6,6 +6,7 @@ import type { OidcSettings } from '../auth/oidc.js';
 import { DEFAULT_PORT, startLabServer } from '../http/server.js';
 import { DEFAULT_QUOTAS, type QuotaOptions } from '../quotas/index.js';
 import { openLabStore, storageFromEnvironment } from '../storage/index.js';
+import { defaultGenerateThreads } from '../workspaces/generate-pool.js';
 import { DATA_DIR_HELP, DEFAULT_DATA_DIR, LabCliError, type LabIo } from './io.js';
 
 interface ServeOptions {
@@ -22,6 +23,7 @@ interface ServeOptions {
     maxSimSecondsPerHour: string;
     maxWorkspaceBytes: string;
     maxWorkspaceFiles: string;
+    generateThreads?: string;
 }
 
 /** The environment variable that holds the OpenID Connect client secret (never a command-line argument). */
@@ -55,6 +57,10 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
         )
         .option('--max-workspace-bytes <n>', "quota: the bytes of a workspace's files", String(DEFAULT_QUOTAS.workspaceBytes))
         .option('--max-workspace-files <n>', 'quota: the files of a workspace', String(DEFAULT_QUOTAS.workspaceFiles))
+        .option(
+            '--generate-threads <n>',
+            `the worker threads that run the students' generators (default: the cores but one, 1 to 4; here ${defaultGenerateThreads()})`,
+        )
         .action(async (options: ServeOptions) => {
             const port = Number(options.port);
             if (!Number.isInteger(port) || port < 0 || port > 65535)
@@ -63,6 +69,7 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
                 throw new LabCliError(`--public-url is not a URL: ${options.publicUrl}`);
             const oidc = oidcSettings(io, options);
             const quotas = quotaSettings(options);
+            const generateThreads = threadsSetting(options.generateThreads);
             const dataDir = path.resolve(io.cwd, options.dataDir ?? DEFAULT_DATA_DIR);
             const store = await openLabStore(storageFromEnvironment(io.env, dataDir));
             let server: Awaited<ReturnType<typeof startLabServer>>;
@@ -76,7 +83,7 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
                     appDir: options.appDir ? path.resolve(io.cwd, options.appDir) : ideDefaults.appDir,
                     ...(oidc ? { oidc } : {}),
                     log: (line) => io.err(`maa-lab: ${line}\n`),
-                    workspaces: { dataDir, quotas },
+                    workspaces: { dataDir, quotas, ...(generateThreads ? { generateThreads } : {}) },
                 });
             } catch (e) {
                 await store.close();
@@ -114,6 +121,15 @@ function quotaSettings(options: ServeOptions): QuotaOptions {
         quotas[key] = value;
     }
     return quotas;
+}
+
+/** --generate-threads: a whole number from 1 to 64, or undefined (the default) when not given. */
+function threadsSetting(text: string | undefined): number | undefined {
+    if (text === undefined) return undefined;
+    const value = Number(text);
+    if (!/^\d+$/.test(text) || value < 1 || value > 64)
+        throw new LabCliError(`--generate-threads must be a whole number from 1 to 64, not ${text}`);
+    return value;
 }
 
 function oidcSettings(io: LabIo, options: ServeOptions): OidcSettings | undefined {
