@@ -279,7 +279,7 @@ function e2eSuite() {
     }
     if (status !== 0 && results.every((r) => r.ok)) tally.fail('runners that failed without a reason', `the e2e run exited with ${status}`);
     // the e2e checks that run on their own pages, outside the IDE's scenario runner (e2e/run.mjs)
-    for (const script of ['vscode-diagram-webview.mjs', 'vscode-simulate.mjs', 'lab-dashboard.mjs']) {
+    for (const script of ['vscode-diagram-webview.mjs', 'vscode-simulate.mjs', 'lab-dashboard.mjs', 'lab-ide.mjs']) {
         // each is one test: it prints its checks and exits 0 only when all pass
         if (step(`e2e: ${script}`, process.execPath, [path.join(repo, 'e2e', script)]) === 0) tally.passed += 1;
         else tally.fail('failed tests', `e2e: ${script} (its checks are printed above)`);
