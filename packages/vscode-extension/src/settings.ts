@@ -87,14 +87,4 @@ export function generateArgs(appFile: string, platform: string, settings: MaaSet
     return ['generate', appFile, '--platform', platform, '--out', outDirOf(appFile, settings), '--format', 'json'];
 }
 
-/** A file language of the family as the manifest contributes it (generated from the language facts). */
-export interface ContributedLanguage {
-    readonly id: string;
-    readonly extensions: readonly string[];
-}
-
-/** The files whose changes the server hears of: every model file of the family and the model roots' maa.json. */
-export function watchedFiles(languages: readonly ContributedLanguage[]): string {
-    const names = ['maa.json', ...languages.flatMap((l) => l.extensions.map((e) => `*${e}`))];
-    return `**/{${names.join(',')}}`;
-}
+export { type ContributedLanguage, watchedFiles } from './model-files.js';

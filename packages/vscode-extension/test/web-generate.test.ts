@@ -72,8 +72,10 @@ describe('reportFromAnswer', () => {
 
 describe('backendBase', () => {
     it('is the folder of the hosting page, without a trailing slash', () => {
-        expect(backendBase({ href: 'http://127.0.0.1:3000/host.html?open=x' })).toBe('http://127.0.0.1:3000');
-        expect(backendBase({ href: 'https://lab.example/ide/u1/host.html' })).toBe('https://lab.example/ide/u1');
+        expect(backendBase({ href: 'http://127.0.0.1:3000/?open=x' })).toBe('http://127.0.0.1:3000');
+        expect(backendBase({ href: 'https://lab.example/ide/robotics/toast-controller/ada/' })).toBe(
+            'https://lab.example/ide/robotics/toast-controller/ada',
+        );
     });
     it('refuses to guess without a page', () => {
         expect(() => backendBase(undefined)).toThrow(/browser IDE/);

@@ -1,6 +1,6 @@
 /**
  * The MontiArc extension as the host's workbench loads it: its manifest and files as built by
- * `packages/vscode-extension/bin/build.mjs --web` into `maa-extension/` next to host.html (see
+ * `packages/vscode-extension/bin/build.mjs --web` into `maa-extension/` next to index.html (see
  * vite.config.ts), registered in VS Code's extension service (the local extension host runs
  * its `browser` entry, activated by the manifest's activation events like in VS Code).
  */

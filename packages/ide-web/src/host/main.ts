@@ -1,10 +1,10 @@
 /**
- * The new IDE entry (host.html): VS Code's own workbench from @codingame/monaco-vscode-api
+ * The browser IDE's page (index.html): VS Code's own workbench from @codingame/monaco-vscode-api
  * (explorer, editors, quick open, command palette, keybindings, settings) over the workspace the
  * backend serves, with the MontiArc extension (packages/vscode-extension, its web entry)
  * registered and activated in it. The project's code here is only the glue: the file system
  * provider over the backend's API, loading the extension's files, and the hooks the e2e tests and
- * the benchmark read (`window.maaHost`). docs/ide.md, "The workbench host".
+ * the benchmark read (`window.maaHost`). docs/ide.md, "How the page hosts the extension".
  */
 import { initialize, LogLevel } from '@codingame/monaco-vscode-api';
 import { ExtensionHostKind, registerExtension } from '@codingame/monaco-vscode-api/extensions';
@@ -173,7 +173,7 @@ async function main(): Promise<void> {
     registerFileSystemOverlay(1, files);
     hooks.timings.files = performance.now();
     const container = document.getElementById('workbench');
-    if (!container) throw new Error('host.html has no #workbench element');
+    if (!container) throw new Error('index.html has no #workbench element');
     // Registered before the workbench starts, so the search provider is among the built-in extensions from the start.
     const searching = registerFileSearch(WORKSPACE_ROOT, () => files.files());
     await startWorkbench(container);

@@ -13,7 +13,7 @@ interface PageLocation {
 
 /**
  * The backend's base URL: the folder of the page that hosts the workbench (`maa-ide` serves the
- * page and the API from one origin, `http://host:port/host.html` → `http://host:port`).
+ * page and the API from one origin, `http://host:port/` → `http://host:port`; the lab's `…/ide/<course>/<exercise>/<login>/` → that folder).
  */
 export function backendBase(location: PageLocation | undefined = (globalThis as { location?: PageLocation }).location): string {
     if (!location) throw new Error('the MontiArc web extension needs the page of the browser IDE (maa-ide) to find its backend');

@@ -1,15 +1,17 @@
 /**
  * The extension's web entry (the manifest's `browser`, bundled to CommonJS with `vscode`
- * external): the family's language server in a Web Worker (`out/web/server.js`, the
- * `@maa/language-server/browser` entry) over `vscode-languageclient/browser`, and **MontiArc:
- * Generate** through the browser IDE backend's `POST /api/generate` instead of the CLI. The
- * desktop entry is ../extension.ts; what both do is in the shared modules next to it.
+ * external), which the browser IDE runs: the family's language server in a Web Worker
+ * (`out/web/server.js`, the `@maa/language-server/browser` entry) over
+ * `vscode-languageclient/browser`, and everything that runs programs through the browser IDE's
+ * backend at the page's origin (web/backend.ts) instead of the CLI: Generate, Show Generated
+ * Code, the stream tests, the simulation. The desktop entry is ../extension.ts; what both do is
+ * in the shared modules next to it.
  */
 import * as vscode from 'vscode';
 import { LanguageClient, type LanguageClientOptions } from 'vscode-languageclient/browser.js';
 import { registerDiagram } from '../diagram/index.js';
 import { generate } from '../generate-command.js';
-import type { ContributedLanguage } from '../settings.js';
+import { type ContributedLanguage, watchedFiles } from '../model-files.js';
 import { registerWebSimulate } from '../simulate/web.js';
 import { registerStreamTests } from '../testing/controller.js';
 import { WebStreamTestRunner } from '../testing/web-runner.js';
@@ -33,6 +35,8 @@ async function startClient(
     const worker = await startServerWorker(context.extensionUri);
     const clientOptions: LanguageClientOptions = {
         documentSelector: languages.map((l) => ({ language: l.id })),
+        // Files created, saved or deleted in the workbench (the explorer, other editors) reach the server.
+        synchronize: { fileEvents: vscode.workspace.createFileSystemWatcher(watchedFiles(languages)) },
         // The server reads the workspace over the backend API at this base (docs/ide.md).
         initializationOptions: { apiBase },
     };
