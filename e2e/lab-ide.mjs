@@ -6,7 +6,8 @@
 // served by the lab at /ide/<course>/<exercise>/<login>/): ada edits and saves her controller (a
 // read-only exercise file refuses the change) and runs the stream tests from the Testing view;
 // bob starts a simulation. The instructor's dashboard shows both while bob's run goes on; ada
-// gets 403 for bob's files. Screenshots in e2e/artifacts/lab-ide-*.png.
+// gets 403 for bob's files; the instructor opens ada's IDE from the dashboard, read-only.
+// Screenshots in e2e/artifacts/lab-ide-*.png.
 //
 //   flock /tmp/helpers/e2e.lock node e2e/lab-ide.mjs   (needs npm run build: lab-server, ide-web)
 import { mkdtempSync, rmSync } from 'node:fs';
@@ -219,6 +220,18 @@ try {
             { timeout: 120_000 },
         );
         await screenshot(page, 'lab-ide-dashboard');
+    });
+
+    await step("the instructor opens ada's IDE from the dashboard: everything read-only", async () => {
+        const { page } = ada;
+        const link = page.locator('table#dashboard tbody tr', { hasText: '(ada)' }).locator('a', { hasText: 'in the IDE' }).first();
+        await Promise.all([page.waitForURL(/\/ide\/robotics\/toast-controller\/ada\/$/), link.click()]);
+        await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 180_000 });
+        await page.locator('.pane-body .monaco-list-row', { hasText: "ada's workspace" }).first().waitFor({ timeout: 30_000 });
+        await page.evaluate(() => window.maaHost.open('toast/Controller.arc'));
+        const readOnly = await page.evaluate(() => window.maaHost.activeEditor()?.getRawOptions().readOnly === true);
+        if (!readOnly) await fail("ada's controller opens writable for the instructor");
+        await screenshot(page, 'lab-ide-instructor-view');
     });
 
     await step('bob stops his simulation', async () => {

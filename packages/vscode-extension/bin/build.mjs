@@ -152,9 +152,17 @@ async function main() {
     }
     mkdirSync(path.join(outDir, 'snippets'), { recursive: true });
     for (const name of ['arc.json', 'arcapp.json']) copyFileSync(path.join(pkgDir, 'snippets', name), path.join(outDir, 'snippets', name));
-    copyFileSync(path.join(repo, 'docs', 'vscode.md'), path.join(outDir, 'README.md'));
+    writeFileSync(path.join(outDir, 'README.md'), packagedReadme(readFileSync(path.join(repo, 'docs', 'vscode.md'), 'utf8')));
     copyFileSync(path.join(repo, 'LICENSE'), path.join(outDir, 'LICENSE'));
     console.log(`vscode-extension: built ${path.relative(repo, outDir)}`);
+}
+
+/**
+ * docs/vscode.md as the .vsix's README, without its Screenshots section: vsce refuses relative
+ * image links in a package without a public repository address.
+ */
+function packagedReadme(markdown) {
+    return markdown.replace(/\n## Screenshots\n[\s\S]*?(?=\n## |$)/, '\n');
 }
 
 await main();

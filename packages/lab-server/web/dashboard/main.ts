@@ -133,14 +133,13 @@ class CourseTable {
         td.append(el('div', {}, ...cellSummary(cell).flatMap((line, i) => (i ? [el('br'), line] : [line]))));
         if (cell.simulating) td.prepend(el('div', { className: 'live' }, '● simulating now'));
         if (cell.workspace) {
-            const view = el(
-                'a',
-                { href: `/dashboard/${[this.course, cell.exercise, cell.student].map(encodeURIComponent).join('/')}` },
-                'open read-only',
-            );
+            const names = [this.course, cell.exercise, cell.student].map(encodeURIComponent).join('/');
+            const view = el('a', { href: `/dashboard/${names}` }, 'open read-only');
+            // The student's IDE, read-only for the instructor (docs/lab.md "The IDE in the lab").
+            const ide = el('a', { href: `/ide/${names}/` }, 'in the IDE');
             const reset = el('button', { type: 'button' }, 'Reset');
             reset.addEventListener('click', () => void this.reset(cell));
-            td.append(el('div', {}, view, ' ', reset));
+            td.append(el('div', {}, view, ' (', ide, ') ', reset));
         }
         return td;
     }
