@@ -1,7 +1,9 @@
 #!/usr/bin/env node
-// The classroom lab end to end (issue 15, docs/lab.md "The IDE in the lab"): a lab server (built
-// packages/lab-server/dist, PGlite in a temporary folder) with an instructor and a roster of three
-// students, the toast-controller exercise released. Two students work in separate browsers, each
+// The classroom lab end to end (issue 15, docs/lab.md "The IDE in the lab"), as an instructor runs
+// it: `maa-lab course create`, `users add` (the instructor), `users import` of a roster of three
+// students (invitation links), `exercise release`, then `maa-lab serve` on that data directory
+// (PGlite in a temporary folder). The students set their passwords through their invitation
+// links and reach the exercise from the start page. Two students work in separate browsers, each
 // in the browser IDE of their own workspace (VS Code's workbench with the MontiArc extension,
 // served by the lab at /ide/<course>/<exercise>/<login>/): ada edits and saves her controller (a
 // read-only exercise file refuses the change) and runs the stream tests from the Testing view;
@@ -10,18 +12,14 @@
 // Screenshots in e2e/artifacts/lab-ide-*.png.
 //
 //   flock /tmp/helpers/e2e.lock node e2e/lab-ide.mjs   (needs npm run build: lab-server, ide-web)
-import { mkdtempSync, rmSync } from 'node:fs';
+import { execFile, spawn } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fail, runCommand } from './host-kit.mjs';
 import { appDir, launchBrowser, repo, screenshot } from './lib.mjs';
 
-const dist = path.join(repo, 'packages', 'lab-server', 'dist');
-const { openLabStore } = await import(path.join(dist, 'storage', 'index.js'));
-const { startLabServer } = await import(path.join(dist, 'http', 'server.js'));
-const { hashPassword } = await import(path.join(dist, 'auth', 'passwords.js'));
-const { parseRoster } = await import(path.join(dist, 'auth', 'roster.js'));
-const { loadExercise, releaseExercise } = await import(path.join(dist, 'exercises', 'index.js'));
+const MAA_LAB = path.join(repo, 'packages', 'lab-server', 'bin', 'maa-lab.js');
 
 const PASSWORD = 'correct horse battery staple';
 const COURSE = 'robotics';
@@ -70,14 +68,6 @@ async function logIn(page, base, login) {
     await Promise.all([page.waitForURL((u) => !u.pathname.startsWith('/login')), page.click('button')]);
 }
 
-/** Opens a student's IDE in the lab and waits until the extension runs. */
-async function openIde(page, base, login) {
-    await page.goto(`${base}/ide/${COURSE}/${EXERCISE}/${login}/`);
-    await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 180_000 });
-    const failed = await page.evaluate(() => document.body.dataset.failed);
-    if (failed) await fail(`the IDE did not start in the lab: ${failed}`);
-}
-
 /** The first frame below the page that holds `selector` (webviews are nested iframes). */
 async function frameWith(page, selector, what, timeout = 60_000) {
     return until(
@@ -100,26 +90,111 @@ async function frameWith(page, selector, what, timeout = 60_000) {
 }
 
 const data = mkdtempSync(path.join(os.tmpdir(), 'maa-lab-ide-e2e-'));
-let store;
+const dataDir = path.join(data, 'lab-data');
+
+/** Runs a `maa-lab` command on the data directory (its output is printed when it fails). */
+async function maaLab(args, input) {
+    const child = execFile(process.execPath, [MAA_LAB, ...args, '--data-dir', dataDir], { cwd: data });
+    if (input !== undefined) child.stdin.end(input);
+    const [code, out, err] = await new Promise((resolve) => {
+        let stdout = '';
+        let stderr = '';
+        child.stdout.on('data', (d) => (stdout += d));
+        child.stderr.on('data', (d) => (stderr += d));
+        child.on('close', (c) => resolve([c, stdout, stderr]));
+    });
+    if (code !== 0) await fail(`maa-lab ${args.join(' ')} exited with ${code}:\n${out}${err}`);
+    return out;
+}
+
+/** Starts `maa-lab serve` on a free port; resolves with its URL and a stop function. */
+async function serve() {
+    const child = spawn(process.execPath, [MAA_LAB, 'serve', '--port', '0', '--data-dir', dataDir, '--app-dir', appDir], {
+        cwd: data,
+        stdio: ['ignore', 'pipe', 'pipe'],
+    });
+    let log = '';
+    child.stderr.on('data', (d) => (log = (log + d).slice(-4000)));
+    const url = await new Promise((resolve, reject) => {
+        let out = '';
+        child.stdout.on('data', (d) => {
+            out += d;
+            const m = /maa-lab serves (http:\/\/\S+) /.exec(out);
+            if (m) resolve(m[1]);
+        });
+        child.once('exit', (code) => reject(new Error(`maa-lab serve exited with ${code}: ${log}`)));
+    });
+    return {
+        url,
+        log: () => log,
+        stop: async () => {
+            if (child.exitCode !== null) return;
+            const exited = new Promise((resolve) => child.once('exit', resolve));
+            child.kill('SIGTERM');
+            const timer = setTimeout(() => child.kill('SIGKILL'), 10_000);
+            await exited;
+            clearTimeout(timer);
+        },
+    };
+}
+
+/** Sets a student's password through their invitation link (the link's address is the lab's). */
+async function acceptInvitation(page, base, link) {
+    const invitation = new URL(link);
+    await page.goto(`${base}${invitation.pathname}${invitation.search}${invitation.hash}`);
+    await page.fill('input[name=password]', PASSWORD);
+    await Promise.all([page.waitForURL((u) => u.pathname === '/'), page.click('button')]);
+}
+
+/** From the start page, the exercise's link: the IDE of the student's own workspace. */
+async function openFromStartPage(page, login) {
+    await page.locator('a', { hasText: "The toast robot's controller" }).first().click();
+    await page.waitForURL(new RegExp(`/ide/${COURSE}/${EXERCISE}/${login}/$`));
+    await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 180_000 });
+    const failed = await page.evaluate(() => document.body.dataset.failed);
+    if (failed) await fail(`the IDE did not start in the lab: ${failed}`);
+}
+
+/** Opens the explorer's Exercise view (the explorer shows it collapsed under the files). */
+async function expandExerciseView(page) {
+    const header = page.locator('.pane-header', { hasText: 'Exercise' }).first();
+    await header.waitFor({ timeout: 30_000 });
+    if ((await header.getAttribute('aria-expanded')) !== 'true') await header.click();
+}
+
+/** A JSON answer of the lab, asked from the page (its session cookie). */
+const ask = (page, url, init) =>
+    page.evaluate(
+        async ({ url, init }) => {
+            const r = await fetch(url, init);
+            return { status: r.status, json: await r.json().catch(() => undefined) };
+        },
+        { url, init },
+    );
+
 let server;
 const browsers = [];
 try {
-    store = await openLabStore({ dataDir: path.join(data, 'db') });
-    const passwordHash = await hashPassword(PASSWORD);
-    const teacher = await store.createUser({ login: 'teacher', name: 'The Teacher', role: 'instructor', passwordHash });
-    const course = await store.createCourse({ name: COURSE, title: 'Robotics lab' });
-    await store.enroll(course.id, teacher.id);
-    const students = {};
-    for (const { user } of parseRoster(ROSTER)) {
-        students[user.login] = await store.createUser({ ...user, passwordHash });
-        await store.enroll(course.id, students[user.login].id);
-    }
-    const exercise = await loadExercise(path.join(repo, 'examples', 'lab', EXERCISE));
-    const released = await releaseExercise(store, exercise, { course: COURSE, authorId: teacher.id });
-    const workspaceOf = async (login) => (await store.workspace(students[login].id, released.exercise.id)).id;
-    server = await startLabServer({ store, port: 0, log: () => undefined, appDir, workspaces: { dataDir: path.join(data, 'ws') } });
+    await maaLab(['course', 'create', COURSE, '--title', 'Robotics lab']);
+    await maaLab(
+        ['users', 'add', 'teacher', '--name', 'The Teacher', '--role', 'instructor', '--course', COURSE, '--password-stdin'],
+        `${PASSWORD}\n`,
+    );
+    const roster = path.join(data, 'roster.csv');
+    writeFileSync(roster, ROSTER);
+    const linksFile = path.join(data, 'links.csv');
+    await maaLab(['users', 'import', roster, '--course', COURSE, '--out', linksFile, '--public-url', 'http://lab.invalid']);
+    const links = Object.fromEntries(
+        readFileSync(linksFile, 'utf8')
+            .trim()
+            .split('\n')
+            .slice(1)
+            .map((line) => [line.split(',')[0], line.split(',').at(-1)]),
+    );
+    await maaLab(['exercise', 'release', path.join(repo, 'examples', 'lab', EXERCISE), '--course', COURSE]);
+    server = await serve();
     const base = server.url;
-    console.log(`e2e: maa-lab at ${base}, ${Object.keys(students).length} students, ${EXERCISE} released`);
+    console.log(`e2e: maa-lab at ${base}, ${Object.keys(links).length} students invited, ${EXERCISE} released`);
 
     const ada = await launchBrowser({ width: 1400, height: 900 });
     browsers.push(ada);
@@ -127,9 +202,12 @@ try {
     browsers.push(bob);
 
     await step('ada opens the IDE of her workspace: the workbench, the Exercise view, her files', async () => {
-        await logIn(ada.page, base, 'ada');
-        await openIde(ada.page, base, 'ada');
-        await ada.page.locator('.pane-header', { hasText: 'Exercise' }).first().waitFor({ timeout: 30_000 });
+        await acceptInvitation(ada.page, base, links.ada);
+        await openFromStartPage(ada.page, 'ada');
+        await expandExerciseView(ada.page);
+        await ada.page.locator('.pane-body .monaco-list-row', { hasText: 'Your workspace (ada)' }).first().waitFor({ timeout: 30_000 });
+        // The exercise's description opens with the IDE, in a read-only tab.
+        await ada.page.locator('.tabs-container .tab', { hasText: 'description.md' }).first().waitFor({ timeout: 30_000 });
         await ada.page.locator('.explorer-folders-view .monaco-list-row', { hasText: 'toast' }).first().waitFor({ timeout: 30_000 });
         await screenshot(ada.page, 'lab-ide-ada');
     });
@@ -146,8 +224,11 @@ try {
         await page.keyboard.press('Control+End');
         await page.keyboard.type(`\n${CHANGE}`);
         await page.keyboard.press('Control+S');
-        const id = await workspaceOf('ada');
-        await until(async () => (await store.readFile(id, 'toast/Controller.arc'))?.content.includes(CHANGE), 'the lab stores ada’s save');
+        // The lab's answer comes from its database: a new revision of the file.
+        await until(
+            async () => (await page.evaluate(async () => (await fetch('api/file?path=toast/Controller.arc')).text())).includes(CHANGE),
+            'the lab stores ada’s save',
+        );
     });
 
     await step('ada runs the stream tests from the Testing view; the lab records the result', async () => {
@@ -160,16 +241,19 @@ try {
             .locator('.test-explorer .codicon-testing-passed-icon, .test-explorer .codicon-testing-failed-icon')
             .first()
             .waitFor({ timeout: 240_000 });
-        const id = await workspaceOf('ada');
-        const recorded = await until(() => store.latestTestResult(id), 'the lab records ada’s test run', 120_000);
+        const recorded = await until(
+            async () => (await ask(page, 'api/exercise')).json?.latestTests,
+            'the lab records ada’s test run',
+            120_000,
+        );
         if (recorded.passed + recorded.failed === 0) await fail(`the recorded run has no tests: ${JSON.stringify(recorded)}`);
         await screenshot(page, 'lab-ide-ada-tests');
     });
 
     await step('bob, in his own browser, starts a simulation in his IDE', async () => {
         const { page } = bob;
-        await logIn(page, base, 'bob');
-        await openIde(page, base, 'bob');
+        await acceptInvitation(page, base, links.bob);
+        await openFromStartPage(page, 'bob');
         await runCommand(page, 'MontiArc: Start Simulation');
         const row = page.locator('.quick-input-list .monaco-list-row', { hasText: 'TR.arcapp' }).filter({ hasText: 'timesync' }).first();
         await row.waitFor({ timeout: 30_000 });
@@ -199,8 +283,8 @@ try {
             { course: COURSE, exercise: EXERCISE },
         );
         if (statuses.some((s) => s !== 403)) await fail(`ada on bob's workspace got ${statuses.join(', ')}, expected 403 each`);
-        const bobs = await store.readFile(await workspaceOf('bob'), 'toast/Controller.arc');
-        if (bobs.content.includes('ada was here')) await fail("bob's controller was changed by ada");
+        const bobs = await bob.page.evaluate(async () => (await fetch('api/file?path=toast/Controller.arc')).text());
+        if (bobs.includes('ada was here')) await fail("bob's controller was changed by ada");
     });
 
     await step("the instructor's dashboard shows ada's tests and bob simulating", async () => {
@@ -227,6 +311,7 @@ try {
         const link = page.locator('table#dashboard tbody tr', { hasText: '(ada)' }).locator('a', { hasText: 'in the IDE' }).first();
         await Promise.all([page.waitForURL(/\/ide\/robotics\/toast-controller\/ada\/$/), link.click()]);
         await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 180_000 });
+        await expandExerciseView(page);
         await page.locator('.pane-body .monaco-list-row', { hasText: "ada's workspace" }).first().waitFor({ timeout: 30_000 });
         await page.evaluate(() => window.maaHost.open('toast/Controller.arc'));
         const readOnly = await page.evaluate(() => window.maaHost.activeEditor()?.getRawOptions().readOnly === true);
@@ -249,10 +334,10 @@ try {
     results.push({ name: 'run', ok: false });
     for (const [i, b] of browsers.entries()) await screenshot(b.page, `lab-ide-FAIL-${i}`).catch(() => undefined);
     for (const b of browsers) console.error(`  browser console (last lines):\n    ${b.consoleLines.slice(-10).join('\n    ')}`);
+    if (server) console.error(`  maa-lab's log (last lines):\n${server.log()}`);
 } finally {
     for (const b of browsers) await b.close();
-    await server?.close();
-    await store?.close();
+    await server?.stop();
     rmSync(data, { recursive: true, force: true });
 }
 const failed = results.filter((r) => !r.ok).length;

@@ -8,6 +8,7 @@ const INFO: ExerciseInfo = {
     owner: 'ada',
     writable: true,
     title: "The toast robot's controller",
+    description: '# The controller\n\nWrite the automaton.',
     app: 'TR.arcapp',
     readOnly: ['TR.arcapp', 'toast/types/'],
     tests: ['toast/Controller.stream'],
@@ -63,6 +64,7 @@ describe('lab mode of the page', () => {
         expect(parseExerciseInfo({ ...INFO, extra: 1 })).toMatchObject({ exercise: 'toast-controller', writable: true });
         expect(() => parseExerciseInfo({ ...INFO, readOnly: 'TR.arcapp' })).toThrow(/readOnly/);
         expect(() => parseExerciseInfo(null)).toThrow(/exercise/);
+        expect(() => parseExerciseInfo({ ...INFO, description: undefined })).toThrow(/description/);
     });
 });
 
@@ -76,6 +78,7 @@ describe('the Exercise view', () => {
             'Tests',
             'Read-only files',
         ]);
+        expect(items[0]).toMatchObject({ markdown: '# The controller\n\nWrite the automaton.' });
         expect(items[2]).toMatchObject({ description: 'TR.arcapp', file: 'TR.arcapp' });
         expect(items[3]).toMatchObject({
             description: 'not run yet',

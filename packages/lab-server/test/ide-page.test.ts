@@ -127,6 +127,7 @@ describe('the IDE of a workspace over HTTP', () => {
         const exercise = await ada.send(`${ide('ada')}/api/exercise`);
         expect(exercise.status).toBe(200);
         expect(exercise.json).toMatchObject({ exercise: EXERCISE, owner: 'ada', writable: true });
+        expect(exercise.json.description).toMatch(/^#/);
         const asset = await ada.send(`${ide('ada')}/assets/main-abc.js`);
         expect(asset.status).toBe(200);
         expect(asset.text).toBe('export {};');

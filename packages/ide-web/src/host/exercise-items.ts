@@ -10,13 +10,15 @@ export interface ExerciseItem {
     readonly file?: string;
     readonly icon: string;
     readonly children?: readonly ExerciseItem[];
+    /** Markdown the row shows in its tooltip and opens as a read-only document */
+    readonly markdown?: string;
 }
 
 /** The rows of the view for an exercise (pure: the tests read them). */
 export function exerciseItems(info: ExerciseInfo): ExerciseItem[] {
     const latest = info.latestTests;
     return [
-        { label: info.title, description: `${info.course} / ${info.exercise}`, icon: 'mortar-board' },
+        { label: info.title, description: `${info.course} / ${info.exercise}`, icon: 'mortar-board', markdown: info.description },
         info.writable
             ? { label: `Your workspace (${info.owner})`, icon: 'account' }
             : { label: `${info.owner}'s workspace`, description: 'read-only (instructor view)', icon: 'lock' },

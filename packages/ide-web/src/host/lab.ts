@@ -21,6 +21,8 @@ export interface ExerciseInfo {
     readonly owner: string;
     readonly writable: boolean;
     readonly title: string;
+    /** the exercise's description, Markdown */
+    readonly description: string;
     readonly app: string;
     readonly readOnly: readonly string[];
     readonly tests: readonly string[];
@@ -71,11 +73,14 @@ export function parseExerciseInfo(value: unknown): ExerciseInfo {
         typeof v.owner !== 'string' ||
         typeof v.writable !== 'boolean' ||
         typeof v.title !== 'string' ||
+        typeof v.description !== 'string' ||
         !strings(v.readOnly) ||
         !strings(v.tests) ||
         !strings(v.platforms)
     )
-        throw new Error("the lab's answer about the exercise lacks exercise, owner, writable, title, readOnly, tests or platforms");
+        throw new Error(
+            "the lab's answer about the exercise lacks exercise, owner, writable, title, description, readOnly, tests or platforms",
+        );
     return v as ExerciseInfo;
 }
 

@@ -1,5 +1,5 @@
 // `GET <prefix>`: what the front end needs to know of a workspace besides its files: whose it
-// is, whether the sender may write, the exercise (its read-only files, app, tests, platforms)
+// is, whether the sender may write, the exercise (its description, read-only files, app, tests, platforms)
 // and the newest test and simulation results.
 import { sendJson } from '@maa/ide-server/http';
 import type { LabRoutes } from '../http/routes.js';
@@ -24,6 +24,7 @@ export function addInfoRoute(routes: LabRoutes): void {
                 owner: opened.owner.login,
                 writable: !opened.viewer,
                 title: spec.title,
+                description: spec.description,
                 app: spec.app,
                 readOnly: spec.readOnly,
                 tests: spec.tests,
