@@ -154,8 +154,8 @@ describe('the IDE of a workspace over HTTP', () => {
         expect(noToken.status).toBe(403);
         expect(noToken.json.error).toMatch(/CSRF/);
         // Dot segments are resolved before the rewrite: they cannot reach another workspace.
-        const escape = await ada.send(`${ide('ada')}/api/../../bob/api/files`);
-        expect(escape.status).not.toBe(200);
+        const outside = await ada.send(`${ide('ada')}/api/../../bob/api/files`);
+        expect(outside.status).not.toBe(200);
         // The instructor sees the student's IDE read-only.
         const viewed = await teacher.send(`${ide('ada')}/api/exercise`);
         expect(viewed.json).toMatchObject({ owner: 'ada', writable: false });
