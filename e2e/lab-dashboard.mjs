@@ -10,7 +10,7 @@
 import { mkdtempSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { launchBrowser, repo, screenshot } from './lib.mjs';
+import { launchBrowser, repo, screenshot, stepRunner } from './lib.mjs';
 
 const dist = path.join(repo, 'packages', 'lab-server', 'dist');
 const { openLabStore } = await import(path.join(dist, 'storage', 'index.js'));
@@ -20,22 +20,7 @@ const { loadExercise, releaseExercise } = await import(path.join(dist, 'exercise
 
 const PASSWORD = 'correct horse battery staple';
 const results = [];
-const step = async (name, run) => {
-    const started = Date.now();
-    try {
-        await run();
-        results.push({ name, ok: true });
-        console.log(`  ✓ ${name} (${Date.now() - started} ms)`);
-    } catch (error) {
-        results.push({ name, ok: false });
-        console.log(
-            `  ✗ ${name}\n    ${String(error?.message ?? error)
-                .split('\n')
-                .join('\n    ')}`,
-        );
-        throw error;
-    }
-};
+const step = stepRunner(results);
 
 const data = mkdtempSync(path.join(os.tmpdir(), 'maa-lab-e2e-'));
 let store;

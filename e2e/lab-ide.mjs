@@ -17,7 +17,7 @@ import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fail, runCommand } from './host-kit.mjs';
-import { appDir, launchBrowser, repo, screenshot } from './lib.mjs';
+import { appDir, launchBrowser, repo, screenshot, stepRunner } from './lib.mjs';
 
 const MAA_LAB = path.join(repo, 'packages', 'lab-server', 'bin', 'maa-lab.js');
 
@@ -32,22 +32,7 @@ Carl Friedrich,carl@example.org,carl,student
 const CHANGE = "// ada's first change";
 
 const results = [];
-const step = async (name, run) => {
-    const started = Date.now();
-    try {
-        await run();
-        results.push({ name, ok: true });
-        console.log(`  ✓ ${name} (${Date.now() - started} ms)`);
-    } catch (error) {
-        results.push({ name, ok: false });
-        console.log(
-            `  ✗ ${name}\n    ${String(error?.message ?? error)
-                .split('\n')
-                .join('\n    ')}`,
-        );
-        throw error;
-    }
-};
+const step = stepRunner(results);
 
 /** Polls `check` (async) until it is truthy; fails with `what` after `timeout` ms. */
 async function until(check, what, timeout = 60_000) {

@@ -142,3 +142,27 @@ export async function screenshot(page, name) {
     await page.screenshot({ path: file });
     return file;
 }
+
+/**
+ * The steps of a page script (lab-dashboard.mjs, lab-ide.mjs): `step(name, run)` runs one, prints
+ * ✓ or ✗ with its time or error, records it in `results` and rethrows a failure (the later steps
+ * build on it).
+ */
+export function stepRunner(results) {
+    return async (name, run) => {
+        const started = Date.now();
+        try {
+            await run();
+            results.push({ name, ok: true });
+            console.log(`  ✓ ${name} (${Date.now() - started} ms)`);
+        } catch (error) {
+            results.push({ name, ok: false });
+            console.log(
+                `  ✗ ${name}\n    ${String(error?.message ?? error)
+                    .split('\n')
+                    .join('\n    ')}`,
+            );
+            throw error;
+        }
+    };
+}
