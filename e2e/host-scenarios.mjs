@@ -35,8 +35,7 @@ async function restoreFiles(page, workspace, files) {
     await runCommand(page, 'File: Save All');
     await page.waitForFunction(() => !document.querySelector('.tabs-container .tab.dirty'), undefined, { timeout: 30_000 });
     for (const file of files) {
-        // The disk has what the editor has. (A file edited without an editor, as a rename's other file,
-        // keeps the edit in memory here: Save All does not write it; nothing to wait for then.)
+        // The disk has what the editor has (a file without an editor was saved by its refactoring).
         const edited = await page.evaluate((p) => (window.maaHost.editorOf(p) ? window.maaHost.text(p) : undefined), file);
         if (edited !== undefined) {
             const disk = path.join(workspace, file);
@@ -277,7 +276,14 @@ export const hostScenarios = [
             await page.locator('.rename-input').fill('progress');
             await page.keyboard.press('Enter');
             await waitForText(page, ROBOT, (t) => t.includes('arm.progress -> ctrl.armStatus'), 'the connector was not renamed');
-            await waitForText(page, ARM, (t) => /out\s+ArmStatus\s+progress/.test(t), 'the port declaration was not renamed');
+            // The port's declaration in the other file, which has no editor: the rename saves it
+            // (VS Code's refactoring auto-save), and the workbench keeps no model of it open.
+            await waitForDisk(
+                page,
+                path.join(workspace, ARM),
+                (t) => /out\s+ArmStatus\s+progress/.test(t),
+                'the rename did not rename and save the port declaration in ArmController.arc, which has no editor',
+            );
             await diagram
                 .locator('.maa-port[data-port-path="arm.progress"]')
                 .first()

@@ -6,10 +6,10 @@
 // links and reach the exercise from the start page. Two students work in separate browsers, each
 // in the browser IDE of their own workspace (VS Code's workbench with the MontiArc extension,
 // served by the lab at /ide/<course>/<exercise>/<login>/): ada edits and saves her controller (a
-// read-only exercise file refuses the change) and runs the stream tests from the Testing view;
-// bob starts a simulation. The instructor's dashboard shows both while bob's run goes on; ada
-// gets 403 for bob's files; the instructor opens ada's IDE from the dashboard, read-only.
-// Screenshots in e2e/artifacts/lab-ide-*.png.
+// read-only exercise file refuses the change), runs the stream tests from the Testing view and
+// simulates; bob does the same and keeps his simulation running. The instructor's dashboard
+// shows both students' tests and bob simulating; ada gets 403 for bob's files; the instructor
+// opens ada's IDE from the dashboard, read-only. Screenshots in e2e/artifacts/lab-ide-*.png.
 //
 //   flock /tmp/helpers/e2e.lock node e2e/lab-ide.mjs   (needs npm run build: lab-server, ide-web)
 import { execFile, spawn } from 'node:child_process';
@@ -29,7 +29,6 @@ Ada Lovelace,ada@example.org,ada,student
 Bob Builder,bob@example.org,bob,student
 Carl Friedrich,carl@example.org,carl,student
 `;
-const CHANGE = "// ada's first change";
 
 const results = [];
 const step = stepRunner(results);
@@ -157,6 +156,65 @@ const ask = (page, url, init) =>
         { url, init },
     );
 
+/** Appends a line to the student's controller in the editor and saves it (Ctrl+S); the lab stores it. */
+async function saveEdit(page, login) {
+    const change = `// ${login}'s first change`;
+    await page.evaluate(() => window.maaHost.open('toast/Controller.arc'));
+    await page.locator('.editor-instance .monaco-editor .view-lines').first().click();
+    await page.keyboard.press('Control+End');
+    await page.keyboard.type(`\n${change}`);
+    await page.keyboard.press('Control+S');
+    // The lab's answer comes from its database: a new revision of the file.
+    await until(
+        async () => (await page.evaluate(async () => (await fetch('api/file?path=toast/Controller.arc')).text())).includes(change),
+        `the lab stores ${login}'s save`,
+    );
+}
+
+/** Runs every stream test from the Testing view and waits until the lab recorded the run. */
+async function runTests(page, login) {
+    await page.locator('.activitybar .action-item a[aria-label^="Testing"]').first().click();
+    await page.locator('.test-explorer .monaco-list-row').first().waitFor({ timeout: 60_000 });
+    await runCommand(page, 'Test: Run All Tests');
+    await page
+        .locator('.test-explorer .codicon-testing-passed-icon, .test-explorer .codicon-testing-failed-icon')
+        .first()
+        .waitFor({ timeout: 240_000 });
+    const recorded = await until(
+        async () => (await ask(page, 'api/exercise')).json?.latestTests,
+        `the lab records ${login}'s test run`,
+        120_000,
+    );
+    if (recorded.passed + recorded.failed === 0) await fail(`${login}'s recorded run has no tests: ${JSON.stringify(recorded)}`);
+}
+
+/** The focus in a model editor (keys then reach the workbench, not a webview or the test results). */
+async function focusEditor(page) {
+    await page.keyboard.press('Escape');
+    await page.evaluate(() => window.maaHost.open('toast/Controller.arc'));
+}
+
+const simRunning = async (page) => (await ask(page, 'api/sim/status')).json?.running === true;
+
+/** MontiArc: Start Simulation (TR.arcapp on timesync): the simulate view with the 3D view, and the run. */
+async function startSimulation(page, login) {
+    await focusEditor(page);
+    await runCommand(page, 'MontiArc: Start Simulation');
+    const row = page.locator('.quick-input-list .monaco-list-row', { hasText: 'TR.arcapp' }).filter({ hasText: 'timesync' }).first();
+    await row.waitFor({ timeout: 30_000 });
+    await row.click();
+    const view = await frameWith(page, '[data-testid=simulate-panel]', 'the simulate panel', 90_000);
+    await view.locator('[data-testid=viser-frame]').waitFor({ timeout: 240_000 });
+    await until(() => simRunning(page), `${login}'s simulation runs`, 120_000);
+}
+
+/** MontiArc: Stop Simulation, from the editor (the command palette belongs to the workbench, not the webview). */
+async function stopSimulation(page, login) {
+    await focusEditor(page);
+    await runCommand(page, 'MontiArc: Stop Simulation');
+    await until(async () => !(await simRunning(page)), `${login}'s simulation stops`, 60_000);
+}
+
 let server;
 const browsers = [];
 try {
@@ -204,53 +262,30 @@ try {
         if (!readOnly) await fail('TR.arcapp (read-only in exercise.json) opens as a writable editor');
         const refused = await page.evaluate(async () => (await fetch('api/file?path=TR.arcapp', { method: 'PUT', body: 'x' })).status);
         if (refused !== 403) await fail(`saving TR.arcapp answered ${refused}, expected 403`);
-        await page.evaluate(() => window.maaHost.open('toast/Controller.arc'));
-        await page.locator('.editor-instance .monaco-editor .view-lines').first().click();
-        await page.keyboard.press('Control+End');
-        await page.keyboard.type(`\n${CHANGE}`);
-        await page.keyboard.press('Control+S');
-        // The lab's answer comes from its database: a new revision of the file.
-        await until(
-            async () => (await page.evaluate(async () => (await fetch('api/file?path=toast/Controller.arc')).text())).includes(CHANGE),
-            'the lab stores ada’s save',
-        );
+        await saveEdit(page, 'ada');
     });
 
     await step('ada runs the stream tests from the Testing view; the lab records the result', async () => {
-        const { page } = ada;
-        // The Testing view shows the results; its run-all command runs every case of the exercise's tests.
-        await page.locator('.activitybar .action-item a[aria-label^="Testing"]').first().click();
-        await page.locator('.test-explorer .monaco-list-row').first().waitFor({ timeout: 60_000 });
-        await runCommand(page, 'Test: Run All Tests');
-        await page
-            .locator('.test-explorer .codicon-testing-passed-icon, .test-explorer .codicon-testing-failed-icon')
-            .first()
-            .waitFor({ timeout: 240_000 });
-        const recorded = await until(
-            async () => (await ask(page, 'api/exercise')).json?.latestTests,
-            'the lab records ada’s test run',
-            120_000,
-        );
-        if (recorded.passed + recorded.failed === 0) await fail(`the recorded run has no tests: ${JSON.stringify(recorded)}`);
-        await screenshot(page, 'lab-ide-ada-tests');
+        await runTests(ada.page, 'ada');
+        await screenshot(ada.page, 'lab-ide-ada-tests');
     });
 
-    await step('bob, in his own browser, starts a simulation in his IDE', async () => {
+    await step('ada simulates: the run starts in her IDE and stops', async () => {
+        await startSimulation(ada.page, 'ada');
+        await stopSimulation(ada.page, 'ada');
+    });
+
+    await step('bob, in his own browser, edits and saves his controller and runs the tests', async () => {
         const { page } = bob;
         await acceptInvitation(page, base, links.bob);
         await openFromStartPage(page, 'bob');
-        await runCommand(page, 'MontiArc: Start Simulation');
-        const row = page.locator('.quick-input-list .monaco-list-row', { hasText: 'TR.arcapp' }).filter({ hasText: 'timesync' }).first();
-        await row.waitFor({ timeout: 30_000 });
-        await row.click();
-        const view = await frameWith(page, '[data-testid=simulate-panel]', 'the simulate panel', 90_000);
-        await view.locator('[data-testid=viser-frame]').waitFor({ timeout: 240_000 });
-        await until(
-            async () => (await page.evaluate(async () => (await fetch('api/sim/status')).json())).running,
-            'bob’s simulation runs',
-            120_000,
-        );
-        await screenshot(page, 'lab-ide-bob-simulating');
+        await saveEdit(page, 'bob');
+        await runTests(page, 'bob');
+    });
+
+    await step('bob starts a simulation in his IDE', async () => {
+        await startSimulation(bob.page, 'bob');
+        await screenshot(bob.page, 'lab-ide-bob-simulating');
     });
 
     await step("ada gets 403 for bob's workspace, through his IDE's paths and the API", async () => {
@@ -272,7 +307,7 @@ try {
         if (bobs.includes('ada was here')) await fail("bob's controller was changed by ada");
     });
 
-    await step("the instructor's dashboard shows ada's tests and bob simulating", async () => {
+    await step("the instructor's dashboard shows both students' tests and bob simulating", async () => {
         const { page } = ada;
         await page.context().clearCookies();
         await logIn(page, base, 'teacher');
@@ -283,7 +318,8 @@ try {
                 const rows = [...document.querySelectorAll('table#dashboard tbody tr')].map((tr) => tr.textContent ?? '');
                 const adaRow = rows.find((r) => r.includes('(ada)')) ?? '';
                 const bobRow = rows.find((r) => r.includes('(bob)')) ?? '';
-                return rows.length === 3 && /tests \d+\/\d+/.test(adaRow) && bobRow.includes('simulating now');
+                const tested = (row) => /tests \d+\/\d+/.test(row);
+                return rows.length === 3 && tested(adaRow) && tested(bobRow) && bobRow.includes('simulating now');
             },
             undefined,
             { timeout: 120_000 },
@@ -305,14 +341,7 @@ try {
     });
 
     await step('bob stops his simulation', async () => {
-        const { page } = bob;
-        await page.locator('.editor-instance .monaco-editor .view-lines').first().click();
-        await runCommand(page, 'MontiArc: Stop Simulation');
-        await until(
-            async () => !(await page.evaluate(async () => (await fetch('api/sim/status')).json())).running,
-            'bob’s simulation stops',
-            60_000,
-        );
+        await stopSimulation(bob.page, 'bob');
     });
 } catch (error) {
     console.error(`e2e: ${error?.stack ?? error}`);

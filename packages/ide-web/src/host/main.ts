@@ -8,6 +8,7 @@
  */
 import { initialize, LogLevel } from '@codingame/monaco-vscode-api';
 import { ExtensionHostKind, registerExtension } from '@codingame/monaco-vscode-api/extensions';
+import getBulkEditServiceOverride from '@codingame/monaco-vscode-bulk-edit-service-override';
 import getConfigurationServiceOverride, { initUserConfiguration } from '@codingame/monaco-vscode-configuration-service-override';
 import getDialogsServiceOverride from '@codingame/monaco-vscode-dialogs-service-override';
 import * as monaco from '@codingame/monaco-vscode-editor-api';
@@ -28,6 +29,7 @@ import getTestingServiceOverride from '@codingame/monaco-vscode-testing-service-
 import getTextmateServiceOverride from '@codingame/monaco-vscode-textmate-service-override';
 import TextMateWorker from '@codingame/monaco-vscode-textmate-service-override/worker?worker';
 import getThemeServiceOverride from '@codingame/monaco-vscode-theme-service-override';
+import getWorkingCopyServiceOverride from '@codingame/monaco-vscode-working-copy-service-override';
 import getWorkbenchServiceOverride from '@codingame/monaco-vscode-workbench-service-override';
 import * as vscode from 'vscode';
 import 'vscode/localExtensionHost';
@@ -148,6 +150,10 @@ async function startWorkbench(container: HTMLElement): Promise<void> {
             ...getOutputServiceOverride(),
             ...getTestingServiceOverride(),
             ...getPreferencesServiceOverride(),
+            // Workspace edits (rename, quick fixes across files) through VS Code's own bulk edit
+            // service and working copies: files they change without an editor are saved too.
+            ...getBulkEditServiceOverride(),
+            ...getWorkingCopyServiceOverride(),
         },
         container,
         {
