@@ -96,7 +96,9 @@ export class MountedDiagram implements MaaDiagramView {
         this.current = { ...target };
         if (target.diagramType === 'maa-cc') this.lastCc = this.current;
         this.updateBars();
-        this.request(changed);
+        // The shown diagram again (Open Diagram on its file): the server keeps it up to date, and a
+        // new model would drop the selection; ask again only while no model has come.
+        if (changed || !this.schema) this.request(changed);
     }
 
     revealPosition(uri: string, position: TextPosition): void {
