@@ -6,7 +6,7 @@
 // shot(name) } (run.mjs) and loads its own page.
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { CONTROLLER, fail, mod, openHost, ROBOT, runCommand, select, waitForText } from './host-kit.mjs';
+import { CONTROLLER, fail, mod, openHost, ROBOT, runCommand, select, waitForDisk, waitForText } from './host-kit.mjs';
 import { repo } from './lib.mjs';
 
 const APP = 'toast-service/TR.arcapp';
@@ -71,15 +71,6 @@ async function waitForActive(page, predicate, what, timeout = 30_000) {
         const editor = await activeEditor(page);
         if (editor && predicate(editor)) return editor;
         if (Date.now() - started > timeout) await fail(`${what} (active editor: ${editor?.uri ?? 'none'})`);
-        await page.waitForTimeout(200);
-    }
-}
-
-/** Waits until the file on disk satisfies `predicate` (a save's PUT may still be under way; polled). */
-async function waitForDisk(page, file, predicate, what, timeout = 20_000) {
-    const started = Date.now();
-    while (!predicate(readFileSync(file, 'utf8'))) {
-        if (Date.now() - started > timeout) await fail(what);
         await page.waitForTimeout(200);
     }
 }

@@ -1,17 +1,50 @@
 // Shared steps of the e2e scenarios on the browser IDE (VS Code's workbench from
 // @codingame/monaco-vscode-api with the MontiArc extension's web entry, docs/ide.md).
+import { readFileSync } from 'node:fs';
+
 export const ROBOT = 'toast-service/toast/ToastServiceRobot.arc';
 
 export async function fail(message) {
     throw new Error(message);
 }
 
+/** Waits until the loaded IDE page reports the extension active (`maaHost.ready`); fails with why it did not start. */
+export async function waitForIde(page, timeout = 90_000) {
+    await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout });
+    const failed = await page.evaluate(() => document.body.dataset.failed);
+    if (failed) await fail(`the workbench host did not start: ${failed}`);
+}
+
 /** Loads the IDE with `open` as the first editor and waits until the extension is active. */
 export async function openHost(page, url, open = ROBOT) {
     await page.goto(`${url}?open=${encodeURIComponent(open)}`);
-    await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 90_000 });
-    const failed = await page.evaluate(() => document.body.dataset.failed);
-    if (failed) await fail(`the workbench host did not start: ${failed}`);
+    await waitForIde(page);
+}
+
+/** The first frame below the page that holds `selector` (webviews are nested iframes of the workbench). */
+export async function frameWith(page, selector, what, timeout = 60_000) {
+    const started = Date.now();
+    for (;;) {
+        for (const frame of page.frames()) {
+            if (frame === page.mainFrame()) continue;
+            const n = await frame
+                .locator(selector)
+                .count()
+                .catch(() => 0);
+            if (n > 0) return frame;
+        }
+        if (Date.now() - started > timeout) await fail(`no webview shows ${what}`);
+        await page.waitForTimeout(250);
+    }
+}
+
+/** Waits until the file on disk satisfies `predicate` (a save's PUT may still be under way; polled). */
+export async function waitForDisk(page, file, predicate, what, timeout = 20_000) {
+    const started = Date.now();
+    while (!predicate(readFileSync(file, 'utf8'))) {
+        if (Date.now() - started > timeout) await fail(what);
+        await page.waitForTimeout(200);
+    }
 }
 
 export const editorOf = (page, name) =>
@@ -75,20 +108,8 @@ export async function waitForText(page, path, predicate, what, timeout = 30_000)
 }
 
 /** The frame of the diagram webview (nested iframes of the webview host page), once its diagram is mounted. */
-export async function diagramFrame(page, timeout = 60_000) {
-    const started = Date.now();
-    for (;;) {
-        for (const frame of page.frames()) {
-            if (frame === page.mainFrame()) continue;
-            const mounted = await frame
-                .locator('[data-testid=diagram]')
-                .count()
-                .catch(() => 0);
-            if (mounted) return frame;
-        }
-        if (Date.now() - started > timeout) await fail('no diagram webview with a mounted diagram');
-        await page.waitForTimeout(250);
-    }
+export function diagramFrame(page, timeout = 60_000) {
+    return frameWith(page, '[data-testid=diagram]', 'a mounted diagram', timeout);
 }
 
 /** Opens the diagram of the active model file with the editor title button (MontiArc: Open Diagram); resolves with its frame. */

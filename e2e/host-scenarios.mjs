@@ -21,6 +21,7 @@ import {
     ROBOT,
     runCommand,
     select,
+    waitForDisk,
     waitForText,
 } from './host-kit.mjs';
 import { artifacts, repo, writeLargeModel } from './lib.mjs';
@@ -44,15 +45,6 @@ async function restoreFiles(page, workspace, files) {
             );
         }
         copyFileSync(path.join(repo, 'examples', file), path.join(workspace, file));
-    }
-}
-
-/** Waits until the file on disk satisfies `predicate` (a save's PUT may still be under way; polled). */
-async function waitForDisk(page, file, predicate, what, timeout = 20_000) {
-    const started = Date.now();
-    while (!predicate(readFileSync(file, 'utf8'))) {
-        if (Date.now() - started > timeout) await fail(what);
-        await page.waitForTimeout(200);
     }
 }
 

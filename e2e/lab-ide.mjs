@@ -16,7 +16,7 @@ import { execFile, spawn } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { fail, runCommand } from './host-kit.mjs';
+import { fail, frameWith, runCommand, waitForIde } from './host-kit.mjs';
 import { appDir, launchBrowser, repo, screenshot, stepRunner } from './lib.mjs';
 
 const MAA_LAB = path.join(repo, 'packages', 'lab-server', 'bin', 'maa-lab.js');
@@ -50,27 +50,6 @@ async function logIn(page, base, login) {
     await page.fill('input[name=login]', login);
     await page.fill('input[name=password]', PASSWORD);
     await Promise.all([page.waitForURL((u) => !u.pathname.startsWith('/login')), page.click('button')]);
-}
-
-/** The first frame below the page that holds `selector` (webviews are nested iframes). */
-async function frameWith(page, selector, what, timeout = 60_000) {
-    return until(
-        async () => {
-            for (const frame of page.frames()) {
-                if (frame === page.mainFrame()) continue;
-                if (
-                    (await frame
-                        .locator(selector)
-                        .count()
-                        .catch(() => 0)) > 0
-                )
-                    return frame;
-            }
-            return undefined;
-        },
-        `a webview shows ${what}`,
-        timeout,
-    );
 }
 
 const data = mkdtempSync(path.join(os.tmpdir(), 'maa-lab-ide-e2e-'));
@@ -134,9 +113,7 @@ async function acceptInvitation(page, base, link) {
 async function openFromStartPage(page, login) {
     await page.locator('a', { hasText: "The toast robot's controller" }).first().click();
     await page.waitForURL(new RegExp(`/ide/${COURSE}/${EXERCISE}/${login}/$`));
-    await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 180_000 });
-    const failed = await page.evaluate(() => document.body.dataset.failed);
-    if (failed) await fail(`the IDE did not start in the lab: ${failed}`);
+    await waitForIde(page, 180_000);
 }
 
 /** Opens the explorer's Exercise view (the explorer shows it collapsed under the files). */
@@ -331,7 +308,7 @@ try {
         const { page } = ada;
         const link = page.locator('table#dashboard tbody tr', { hasText: '(ada)' }).locator('a', { hasText: 'in the IDE' }).first();
         await Promise.all([page.waitForURL(/\/ide\/robotics\/toast-controller\/ada\/$/), link.click()]);
-        await page.waitForFunction(() => window.maaHost?.ready === true || document.body.dataset.failed, undefined, { timeout: 180_000 });
+        await waitForIde(page, 180_000);
         await expandExerciseView(page);
         await page.locator('.pane-body .monaco-list-row', { hasText: "ada's workspace" }).first().waitFor({ timeout: 30_000 });
         await page.evaluate(() => window.maaHost.open('toast/Controller.arc'));

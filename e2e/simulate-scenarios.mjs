@@ -4,24 +4,7 @@
 // lock-step mode), the simulate view opens in a webview, a port value changes in its inspector,
 // the viser canvas renders (a non-blank picture), the open diagram shows a live value, and
 // MontiArc: Stop Simulation stops the run. Each gets { page, url, workspace, shot(name) } (run.mjs).
-import { fail, openHost, ROBOT, runCommand } from './host-kit.mjs';
-
-/** The first frame below the page that holds `selector` (webviews are nested iframes of the workbench). */
-async function frameWith(page, selector, what, timeout = 60_000) {
-    const started = Date.now();
-    for (;;) {
-        for (const frame of page.frames()) {
-            if (frame === page.mainFrame()) continue;
-            const n = await frame
-                .locator(selector)
-                .count()
-                .catch(() => 0);
-            if (n > 0) return frame;
-        }
-        if (Date.now() - started > timeout) await fail(`no webview shows ${what}`);
-        await page.waitForTimeout(250);
-    }
-}
+import { fail, frameWith, openHost, ROBOT, runCommand } from './host-kit.mjs';
 
 /** How many different colours a PNG picture has (decoded by the browser on a blank page of its own). */
 async function colours(page, png) {
