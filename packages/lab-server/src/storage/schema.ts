@@ -130,6 +130,49 @@ export interface StarterFilesTable {
     updated_at: Date;
 }
 
+/** An exercise's grading specification and hidden files as released (migration 0004). */
+export interface ExerciseGradingsTable {
+    exercise_id: number;
+    /** grading.json (maa-grading/1) */
+    spec: JSONColumnType<Record<string, unknown>, string, string>;
+    /** the hidden files it names: path (relative to the grading folder) → content */
+    files: JSONColumnType<Record<string, string>, string, string>;
+    updated_at: Date;
+}
+
+export type GradingRunKind = 'submission' | 'course';
+export type GradingRunStatus = 'queued' | 'running' | 'done' | 'failed';
+
+/** One grading run: a student's submission or every student's latest of an exercise (migration 0004). */
+export interface GradingRunsTable {
+    id: Generated<number>;
+    exercise_id: number;
+    kind: GradingRunKind;
+    requested_by: number;
+    status: GradingRunStatus;
+    done: ColumnType<number, number | undefined, number>;
+    total: ColumnType<number, number | undefined, number>;
+    error: string | null;
+    created_at: CreatedAt;
+    started_at: Date | null;
+    finished_at: Date | null;
+}
+
+/** One graded submission of a run (migration 0004). */
+export interface GradingResultsTable {
+    id: Generated<number>;
+    run_id: number;
+    submission_id: number;
+    user_id: number;
+    score: number;
+    max_score: number;
+    /** the SubmissionGrade of @maa/protocol/grading (its recordings' paths as the engine gave them) */
+    criteria: JSONColumnType<Record<string, unknown>, string, string>;
+    /** scenario → the recording's path relative to the data directory */
+    recordings: JSONColumnType<Array<{ scenario: string; path: string }>, string, string>;
+    created_at: CreatedAt;
+}
+
 export interface Database {
     users: UsersTable;
     courses: CoursesTable;
@@ -144,4 +187,7 @@ export interface Database {
     starter_versions: StarterVersionsTable;
     starter_files: StarterFilesTable;
     invitations: InvitationsTable;
+    exercise_gradings: ExerciseGradingsTable;
+    grading_runs: GradingRunsTable;
+    grading_results: GradingResultsTable;
 }

@@ -10,6 +10,23 @@ import {
     restoreRevision,
     revisionHistory,
 } from './files.js';
+import {
+    failUnfinished,
+    findSubmission,
+    insertResult,
+    insertRun,
+    latestSubmissions,
+    removeExerciseGrading,
+    selectExerciseGrading,
+    selectLatestResults,
+    selectResult,
+    selectRun,
+    selectRunResults,
+    selectRuns,
+    updateRecordings,
+    updateRun,
+    upsertExerciseGrading,
+} from './grading.js';
 import { importAll, insertInvitation, insertUser, redeem, toInvitation } from './invitations.js';
 import { toCourse, toExercise, toSession, toSimulationResult, toSubmission, toTestResult, toUser } from './rows.js';
 import type { Database } from './schema.js';
@@ -18,12 +35,19 @@ import {
     type Course,
     type EnrolledExercise,
     type Exercise,
+    type ExerciseGrading,
+    type GradingRecording,
+    type GradingResult,
+    type GradingRun,
+    type GradingRunKind,
+    type GradingRunUpdate,
     type FileRevision,
     type FileRevisionInfo,
     type ImportedUser,
     type Invitation,
     type LabStore,
     type NewUser,
+    type OwnedSubmission,
     type Redemption,
     type SaveFile,
     type Session,
@@ -384,6 +408,73 @@ class KyselyLabStore implements LabStore {
             .orderBy('id', 'desc')
             .executeTakeFirst();
         return row && toSimulationResult(row);
+    }
+
+    // --- grading (grading.ts)
+
+    findSubmission(id: number): Promise<OwnedSubmission | undefined> {
+        return findSubmission(this.db, id);
+    }
+
+    latestSubmissions(exerciseId: number): Promise<OwnedSubmission[]> {
+        return latestSubmissions(this.db, exerciseId);
+    }
+
+    setExerciseGrading(
+        exerciseId: number,
+        grading: { spec: Record<string, unknown>; files: Record<string, string> },
+    ): Promise<ExerciseGrading> {
+        return conflictsAsErrors(`cannot store the grading of exercise ${exerciseId}`, () =>
+            upsertExerciseGrading(this.db, exerciseId, grading),
+        );
+    }
+
+    exerciseGrading(exerciseId: number): Promise<ExerciseGrading | undefined> {
+        return selectExerciseGrading(this.db, exerciseId);
+    }
+
+    deleteExerciseGrading(exerciseId: number): Promise<void> {
+        return removeExerciseGrading(this.db, exerciseId);
+    }
+
+    createGradingRun(run: { exerciseId: number; kind: GradingRunKind; requestedBy: number; total?: number }): Promise<GradingRun> {
+        return conflictsAsErrors('cannot create the grading run', () => insertRun(this.db, run));
+    }
+
+    updateGradingRun(id: number, update: GradingRunUpdate): Promise<GradingRun> {
+        return updateRun(this.db, id, update);
+    }
+
+    findGradingRun(id: number): Promise<GradingRun | undefined> {
+        return selectRun(this.db, id);
+    }
+
+    listGradingRuns(exerciseId: number, limit?: number): Promise<GradingRun[]> {
+        return selectRuns(this.db, exerciseId, limit);
+    }
+
+    failUnfinishedGradingRuns(error: string): Promise<number> {
+        return failUnfinished(this.db, error);
+    }
+
+    recordGradingResult(result: Omit<GradingResult, 'id' | 'createdAt'>): Promise<GradingResult> {
+        return conflictsAsErrors('cannot record the grading result', () => insertResult(this.db, result));
+    }
+
+    setGradingRecordings(resultId: number, recordings: GradingRecording[]): Promise<void> {
+        return updateRecordings(this.db, resultId, recordings);
+    }
+
+    findGradingResult(id: number): Promise<GradingResult | undefined> {
+        return selectResult(this.db, id);
+    }
+
+    runResults(runId: number): Promise<GradingResult[]> {
+        return selectRunResults(this.db, runId);
+    }
+
+    latestGradingResults(exerciseId: number, userId?: number): Promise<GradingResult[]> {
+        return selectLatestResults(this.db, exerciseId, userId);
     }
 
     // --- sessions

@@ -1,8 +1,8 @@
 // The records and the typed API of the lab's storage (LabStore). The rest of the lab server uses
 // only this; the SQL is in store.ts and the schema in ./migrations.
-import type { Role } from './schema.js';
+import type { GradingRunKind, GradingRunStatus, Role } from './schema.js';
 
-export type { Role };
+export type { GradingRunKind, GradingRunStatus, Role };
 
 export interface User {
     id: number;
@@ -165,6 +165,66 @@ export interface ImportedUser {
     invitation?: { id: string; expiresAt: Date };
 }
 
+/** An exercise's grading: grading.json and the hidden files it names, as released (never served to students). */
+export interface ExerciseGrading {
+    exerciseId: number;
+    /** grading.json (format maa-grading/1) */
+    spec: Record<string, unknown>;
+    /** path (relative to the grading folder) → content */
+    files: Record<string, string>;
+    updatedAt: Date;
+}
+
+export interface GradingRun {
+    id: number;
+    exerciseId: number;
+    kind: GradingRunKind;
+    requestedBy: number;
+    status: GradingRunStatus;
+    /** progress: the tasks (or submissions) finished of `total` */
+    done: number;
+    total: number;
+    /** why a failed run failed */
+    error: string | null;
+    createdAt: Date;
+    startedAt: Date | null;
+    finishedAt: Date | null;
+}
+
+/** What a run's progress or end changes (undefined: unchanged). */
+export interface GradingRunUpdate {
+    status?: GradingRunStatus;
+    done?: number;
+    total?: number;
+    error?: string | null;
+    startedAt?: Date | null;
+    finishedAt?: Date | null;
+}
+
+/** A recording of one scenario run of a graded submission: its path relative to the data directory. */
+export interface GradingRecording {
+    scenario: string;
+    path: string;
+}
+
+export interface GradingResult {
+    id: number;
+    runId: number;
+    submissionId: number;
+    userId: number;
+    score: number;
+    maxScore: number;
+    /** the SubmissionGrade (@maa/protocol/grading) */
+    grade: Record<string, unknown>;
+    recordings: GradingRecording[];
+    createdAt: Date;
+}
+
+/** A submission with its workspace's owner (the student it is graded for). */
+export interface OwnedSubmission extends Submission {
+    ownerId: number;
+}
+
 export interface SaveFile {
     workspaceId: number;
     path: string;
@@ -233,6 +293,36 @@ export interface LabStore {
     recordSimulationResult(result: Omit<SimulationResult, 'id' | 'createdAt'>): Promise<SimulationResult>;
     latestTestResult(workspaceId: number): Promise<TestResult | undefined>;
     latestSimulationResult(workspaceId: number): Promise<SimulationResult | undefined>;
+
+    /** The submission, with its workspace's owner. */
+    findSubmission(id: number): Promise<OwnedSubmission | undefined>;
+    /** The newest submission of every workspace of the exercise, by owner. */
+    latestSubmissions(exerciseId: number): Promise<OwnedSubmission[]>;
+
+    /** Stores (or replaces) the exercise's grading specification and hidden files. */
+    setExerciseGrading(
+        exerciseId: number,
+        grading: { spec: Record<string, unknown>; files: Record<string, string> },
+    ): Promise<ExerciseGrading>;
+    /** The exercise's grading, or undefined when it has none. */
+    exerciseGrading(exerciseId: number): Promise<ExerciseGrading | undefined>;
+    /** Removes the exercise's grading (an update whose folder has no grading/ any more). */
+    deleteExerciseGrading(exerciseId: number): Promise<void>;
+    /** A new run, queued. */
+    createGradingRun(run: { exerciseId: number; kind: GradingRunKind; requestedBy: number; total?: number }): Promise<GradingRun>;
+    updateGradingRun(id: number, update: GradingRunUpdate): Promise<GradingRun>;
+    findGradingRun(id: number): Promise<GradingRun | undefined>;
+    /** The exercise's runs, newest first (at most `limit`, default 20). */
+    listGradingRuns(exerciseId: number, limit?: number): Promise<GradingRun[]>;
+    /** Marks every queued or running run failed with `error` (a server that stopped during them); returns how many. */
+    failUnfinishedGradingRuns(error: string): Promise<number>;
+    recordGradingResult(result: Omit<GradingResult, 'id' | 'createdAt'>): Promise<GradingResult>;
+    setGradingRecordings(resultId: number, recordings: GradingRecording[]): Promise<void>;
+    findGradingResult(id: number): Promise<GradingResult | undefined>;
+    /** The results of a run, by user. */
+    runResults(runId: number): Promise<GradingResult[]>;
+    /** The newest result of every student of the exercise (or of one student), by user id. */
+    latestGradingResults(exerciseId: number, userId?: number): Promise<GradingResult[]>;
 
     createSession(session: Omit<Session, 'createdAt'>): Promise<Session>;
     /** The session if it exists and has not expired at `now`. */
