@@ -24,6 +24,12 @@ export const SCHEMA_FILES = {
     'simulator-status': protocol.SimulatorStatus,
     'simulator-progress': protocol.SimulatorProgress,
     'simulator-finished': protocol.SimulatorFinished,
+    grading: protocol.GradingSpec,
+    'submission-grade': protocol.SubmissionGrade,
+    'grade-job': protocol.GradeJob,
+    'grade-driver-line': protocol.DriverLine,
+    'scenario-report': protocol.ScenarioReport,
+    'stream-states': protocol.StreamStates,
 };
 
 /** The contracts maa-sim reads, by Python constant prefix. */
@@ -34,6 +40,12 @@ const PYTHON_SCHEMAS = {
     SIMULATOR_STATUS: protocol.SimulatorStatus,
     SIMULATOR_PROGRESS: protocol.SimulatorProgress,
     SIMULATOR_FINISHED: protocol.SimulatorFinished,
+    GRADING_SPEC: protocol.GradingSpec,
+    SUBMISSION_GRADE: protocol.SubmissionGrade,
+    GRADE_JOB: protocol.GradeJob,
+    GRADE_DRIVER_LINE: protocol.DriverLine,
+    SCENARIO_REPORT: protocol.ScenarioReport,
+    STREAM_STATES: protocol.StreamStates,
 };
 
 /** A schema as plain JSON (TypeBox's symbol keys dropped). */
@@ -79,12 +91,21 @@ class PythonTypes {
         for (const [key, value] of Object.entries(s.properties ?? {})) {
             if (isNever(value)) continue;
             const t = this.type(value, `${name}${pascal(key)}`);
-            fields.push(`    ${key}: ${required.has(key) ? t : `NotRequired[${t}]`}`);
+            fields.push(field(key, required.has(key) ? t : `NotRequired[${t}]`));
         }
         const doc = s.description ? `    """${s.description}"""\n\n` : '';
         this.classes.push(`class ${name}(TypedDict):\n${doc}${fields.join('\n') || '    pass'}\n`);
         return name;
     }
+}
+
+/** A TypedDict field, wrapped the way `ruff format` wraps it when longer than sim-server's 120 columns. */
+function field(key, t) {
+    const line = `    ${key}: ${t}`;
+    if (line.length <= 120) return line;
+    const list = /^list\[(.*)\]$/.exec(t);
+    if (list && 8 + list[1].length <= 120) return `    ${key}: list[\n        ${list[1]}\n    ]`;
+    return `    ${key}: (\n        ${t.split(' | ').join('\n        | ')}\n    )`;
 }
 
 const isNever = (s) => s && typeof s === 'object' && s.not && Object.keys(s.not).length === 0;

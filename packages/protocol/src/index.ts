@@ -13,3 +13,4 @@ export * from './topics/index.js';
 export * from './lockstep/index.js';
 export * from './simulator/index.js';
 export * from './exercise/index.js';
+export * from './grading/index.js';

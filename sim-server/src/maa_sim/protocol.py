@@ -652,6 +652,1323 @@ SIMULATOR_FINISHED_SCHEMA: Final[dict[str, Any]] = json.loads(
 """
 )
 
+GRADING_SPEC_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "$id": "urn:maa:protocol:grading",
+ "title": "GradingSpec",
+ "description": "grading.json: the grading criteria of a lab exercise (docs/lab.md \"Grading\")",
+ "additionalProperties": false,
+ "errorMessage": "expected an object with format and criteria",
+ "type": "object",
+ "required": [
+  "format",
+  "criteria"
+ ],
+ "properties": {
+  "format": {
+   "errorMessage": "format must be 'maa-grading/1'",
+   "const": "maa-grading/1",
+   "type": "string"
+  },
+  "criteria": {
+   "minItems": 1,
+   "errorMessage": "criteria must be a non-empty list",
+   "type": "array",
+   "items": {
+    "errorMessage": "kind must be one of structure, diagnostics, tests, scenarios, coverage",
+    "anyOf": [
+     {
+      "title": "StructureCriterion",
+      "additionalProperties": false,
+      "errorMessage": "a structure criterion has id, title, kind, weight, require",
+      "type": "object",
+      "required": [
+       "id",
+       "title",
+       "weight",
+       "kind",
+       "require"
+      ],
+      "properties": {
+       "id": {
+        "pattern": "^[a-z0-9][a-z0-9-]*$",
+        "errorMessage": "id must be lower case letters, digits and -",
+        "type": "string"
+       },
+       "title": {
+        "minLength": 1,
+        "maxLength": 200,
+        "errorMessage": "title must be a non-empty string (at most 200 characters)",
+        "type": "string"
+       },
+       "weight": {
+        "minimum": 0,
+        "errorMessage": "weight must be a number from 0",
+        "type": "number"
+       },
+       "kind": {
+        "const": "structure",
+        "type": "string"
+       },
+       "require": {
+        "minItems": 1,
+        "errorMessage": "require must be a non-empty list of requirements",
+        "type": "array",
+        "items": {
+         "title": "StructureRequirement",
+         "additionalProperties": false,
+         "errorMessage": "a requirement has component, ports?, subcomponents?, behavior?",
+         "type": "object",
+         "required": [
+          "component"
+         ],
+         "properties": {
+          "component": {
+           "pattern": "^[A-Za-z_][A-Za-z0-9_]*(\\.[A-Za-z_][A-Za-z0-9_]*)*$",
+           "errorMessage": "component must be a qualified name like toast.Controller",
+           "type": "string"
+          },
+          "ports": {
+           "type": "array",
+           "items": {
+            "title": "PortRequirement",
+            "additionalProperties": false,
+            "errorMessage": "a port requirement has name, direction?, type?",
+            "type": "object",
+            "required": [
+             "name"
+            ],
+            "properties": {
+             "name": {
+              "pattern": "^[A-Za-z_][A-Za-z0-9_]*$",
+              "errorMessage": "port name must be a name (letters, digits, _)",
+              "type": "string"
+             },
+             "direction": {
+              "errorMessage": "direction must be in or out",
+              "anyOf": [
+               {
+                "const": "in",
+                "type": "string"
+               },
+               {
+                "const": "out",
+                "type": "string"
+               }
+              ]
+             },
+             "type": {
+              "minLength": 1,
+              "errorMessage": "type must be a type name",
+              "type": "string"
+             }
+            }
+           }
+          },
+          "subcomponents": {
+           "type": "array",
+           "items": {
+            "title": "SubcomponentRequirement",
+            "additionalProperties": false,
+            "errorMessage": "a subcomponent requirement has name? and type?",
+            "type": "object",
+            "properties": {
+             "name": {
+              "pattern": "^[A-Za-z_][A-Za-z0-9_]*$",
+              "errorMessage": "subcomponent name must be a name (letters, digits, _)",
+              "type": "string"
+             },
+             "type": {
+              "pattern": "^[A-Za-z_][A-Za-z0-9_]*(\\.[A-Za-z_][A-Za-z0-9_]*)*$",
+              "errorMessage": "subcomponent type must be a qualified name like toast.Controller",
+              "type": "string"
+             }
+            }
+           }
+          },
+          "behavior": {
+           "title": "BehaviorRequirement",
+           "additionalProperties": false,
+           "errorMessage": "behavior has kind, minStates?, minTransitions?, states?",
+           "type": "object",
+           "required": [
+            "kind"
+           ],
+           "properties": {
+            "kind": {
+             "errorMessage": "behavior kind must be one of automaton, robotarm, compute, handwritten, composed, none",
+             "anyOf": [
+              {
+               "const": "automaton",
+               "type": "string"
+              },
+              {
+               "const": "robotarm",
+               "type": "string"
+              },
+              {
+               "const": "compute",
+               "type": "string"
+              },
+              {
+               "const": "handwritten",
+               "type": "string"
+              },
+              {
+               "const": "composed",
+               "type": "string"
+              },
+              {
+               "const": "none",
+               "type": "string"
+              }
+             ]
+            },
+            "minStates": {
+             "minimum": 0,
+             "errorMessage": "minStates must be an integer from 0",
+             "type": "integer"
+            },
+            "minTransitions": {
+             "minimum": 0,
+             "errorMessage": "minTransitions must be an integer from 0",
+             "type": "integer"
+            },
+            "states": {
+             "uniqueItems": true,
+             "type": "array",
+             "items": {
+              "pattern": "^[A-Za-z_][A-Za-z0-9_]*$",
+              "errorMessage": "state name must be a name (letters, digits, _)",
+              "type": "string"
+             }
+            }
+           }
+          }
+         }
+        }
+       }
+      }
+     },
+     {
+      "title": "DiagnosticsCriterion",
+      "additionalProperties": false,
+      "errorMessage": "a diagnostics criterion has id, title, kind, weight",
+      "type": "object",
+      "required": [
+       "id",
+       "title",
+       "weight",
+       "kind"
+      ],
+      "properties": {
+       "id": {
+        "pattern": "^[a-z0-9][a-z0-9-]*$",
+        "errorMessage": "id must be lower case letters, digits and -",
+        "type": "string"
+       },
+       "title": {
+        "minLength": 1,
+        "maxLength": 200,
+        "errorMessage": "title must be a non-empty string (at most 200 characters)",
+        "type": "string"
+       },
+       "weight": {
+        "minimum": 0,
+        "errorMessage": "weight must be a number from 0",
+        "type": "number"
+       },
+       "kind": {
+        "const": "diagnostics",
+        "type": "string"
+       }
+      }
+     },
+     {
+      "title": "HiddenTestsCriterion",
+      "additionalProperties": false,
+      "errorMessage": "a tests criterion has id, title, kind, weight, files",
+      "type": "object",
+      "required": [
+       "id",
+       "title",
+       "weight",
+       "kind",
+       "files"
+      ],
+      "properties": {
+       "id": {
+        "pattern": "^[a-z0-9][a-z0-9-]*$",
+        "errorMessage": "id must be lower case letters, digits and -",
+        "type": "string"
+       },
+       "title": {
+        "minLength": 1,
+        "maxLength": 200,
+        "errorMessage": "title must be a non-empty string (at most 200 characters)",
+        "type": "string"
+       },
+       "weight": {
+        "minimum": 0,
+        "errorMessage": "weight must be a number from 0",
+        "type": "number"
+       },
+       "kind": {
+        "const": "tests",
+        "type": "string"
+       },
+       "files": {
+        "minItems": 1,
+        "uniqueItems": true,
+        "errorMessage": "files must be a non-empty list of distinct .stream files",
+        "type": "array",
+        "items": {
+         "pattern": "^(?!/)(?!.*\\\\)(?!.*//)(?!(.*/)?\\.\\.?(/|$))[^\\u0000-\\u001f]{1,512}\\.stream$",
+         "errorMessage": "a file of the grading folder: a relative path with / (no .. or leading /) ending in .stream",
+         "type": "string"
+        }
+       },
+       "limits": {
+        "title": "PartialTaskLimits",
+        "additionalProperties": false,
+        "errorMessage": "limits must be an object of wallSeconds, cpuSeconds, memoryMB, processes, fileSizeMB",
+        "type": "object",
+        "properties": {
+         "wallSeconds": {
+          "exclusiveMinimum": 0,
+          "maximum": 86400,
+          "errorMessage": "wallSeconds must be a positive number of seconds",
+          "type": "number"
+         },
+         "cpuSeconds": {
+          "minimum": 1,
+          "errorMessage": "cpuSeconds must be a positive integer",
+          "type": "integer"
+         },
+         "memoryMB": {
+          "minimum": 16,
+          "errorMessage": "memoryMB must be an integer from 16",
+          "type": "integer"
+         },
+         "processes": {
+          "minimum": 1,
+          "errorMessage": "processes must be a positive integer",
+          "type": "integer"
+         },
+         "fileSizeMB": {
+          "minimum": 1,
+          "errorMessage": "fileSizeMB must be a positive integer",
+          "type": "integer"
+         }
+        }
+       }
+      }
+     },
+     {
+      "title": "ScenariosCriterion",
+      "additionalProperties": false,
+      "errorMessage": "a scenarios criterion has id, title, kind, weight, scenarios",
+      "type": "object",
+      "required": [
+       "id",
+       "title",
+       "weight",
+       "kind",
+       "scenarios"
+      ],
+      "properties": {
+       "id": {
+        "pattern": "^[a-z0-9][a-z0-9-]*$",
+        "errorMessage": "id must be lower case letters, digits and -",
+        "type": "string"
+       },
+       "title": {
+        "minLength": 1,
+        "maxLength": 200,
+        "errorMessage": "title must be a non-empty string (at most 200 characters)",
+        "type": "string"
+       },
+       "weight": {
+        "minimum": 0,
+        "errorMessage": "weight must be a number from 0",
+        "type": "number"
+       },
+       "kind": {
+        "const": "scenarios",
+        "type": "string"
+       },
+       "scenarios": {
+        "minItems": 1,
+        "errorMessage": "scenarios must be a non-empty list",
+        "type": "array",
+        "items": {
+         "title": "Scenario",
+         "additionalProperties": false,
+         "errorMessage": "a scenario has id, title, world, goal, timeLimit",
+         "type": "object",
+         "required": [
+          "id",
+          "title",
+          "world",
+          "goal",
+          "timeLimit"
+         ],
+         "properties": {
+          "id": {
+           "pattern": "^[a-z0-9][a-z0-9-]*$",
+           "errorMessage": "scenario id must be lower case letters, digits and -",
+           "type": "string"
+          },
+          "title": {
+           "minLength": 1,
+           "maxLength": 200,
+           "errorMessage": "scenario title must be a non-empty string",
+           "type": "string"
+          },
+          "world": {
+           "title": "ScenarioWorld",
+           "additionalProperties": false,
+           "errorMessage": "world has goldenSeconds?, breadJitter?, seed?",
+           "type": "object",
+           "properties": {
+            "goldenSeconds": {
+             "exclusiveMinimum": 0,
+             "errorMessage": "goldenSeconds must be a positive number",
+             "type": "number"
+            },
+            "breadJitter": {
+             "minimum": 0,
+             "errorMessage": "breadJitter must be a number from 0",
+             "type": "number"
+            },
+            "seed": {
+             "errorMessage": "seed must be an integer",
+             "type": "integer"
+            }
+           }
+          },
+          "goal": {
+           "errorMessage": "goal must be toastOnPlate",
+           "const": "toastOnPlate",
+           "type": "string"
+          },
+          "timeLimit": {
+           "exclusiveMinimum": 0,
+           "maximum": 3600,
+           "errorMessage": "timeLimit must be a positive number of simulated seconds (at most 3600)",
+           "type": "number"
+          }
+         }
+        }
+       },
+       "limits": {
+        "title": "PartialTaskLimits",
+        "additionalProperties": false,
+        "errorMessage": "limits must be an object of wallSeconds, cpuSeconds, memoryMB, processes, fileSizeMB",
+        "type": "object",
+        "properties": {
+         "wallSeconds": {
+          "exclusiveMinimum": 0,
+          "maximum": 86400,
+          "errorMessage": "wallSeconds must be a positive number of seconds",
+          "type": "number"
+         },
+         "cpuSeconds": {
+          "minimum": 1,
+          "errorMessage": "cpuSeconds must be a positive integer",
+          "type": "integer"
+         },
+         "memoryMB": {
+          "minimum": 16,
+          "errorMessage": "memoryMB must be an integer from 16",
+          "type": "integer"
+         },
+         "processes": {
+          "minimum": 1,
+          "errorMessage": "processes must be a positive integer",
+          "type": "integer"
+         },
+         "fileSizeMB": {
+          "minimum": 1,
+          "errorMessage": "fileSizeMB must be a positive integer",
+          "type": "integer"
+         }
+        }
+       }
+      }
+     },
+     {
+      "title": "CoverageCriterion",
+      "additionalProperties": false,
+      "errorMessage": "a coverage criterion has id, title, kind, weight, component, states, transitions",
+      "type": "object",
+      "required": [
+       "id",
+       "title",
+       "weight",
+       "kind",
+       "component",
+       "states",
+       "transitions"
+      ],
+      "properties": {
+       "id": {
+        "pattern": "^[a-z0-9][a-z0-9-]*$",
+        "errorMessage": "id must be lower case letters, digits and -",
+        "type": "string"
+       },
+       "title": {
+        "minLength": 1,
+        "maxLength": 200,
+        "errorMessage": "title must be a non-empty string (at most 200 characters)",
+        "type": "string"
+       },
+       "weight": {
+        "minimum": 0,
+        "errorMessage": "weight must be a number from 0",
+        "type": "number"
+       },
+       "kind": {
+        "const": "coverage",
+        "type": "string"
+       },
+       "component": {
+        "pattern": "^[A-Za-z_][A-Za-z0-9_]*(\\.[A-Za-z_][A-Za-z0-9_]*)*$",
+        "errorMessage": "component must be a qualified name like toast.Controller",
+        "type": "string"
+       },
+       "states": {
+        "minimum": 0,
+        "maximum": 1,
+        "errorMessage": "states must be a share from 0 to 1",
+        "type": "number"
+       },
+       "transitions": {
+        "minimum": 0,
+        "maximum": 1,
+        "errorMessage": "transitions must be a share from 0 to 1",
+        "type": "number"
+       }
+      }
+     }
+    ]
+   }
+  },
+  "limits": {
+   "title": "PartialTaskLimits",
+   "additionalProperties": false,
+   "errorMessage": "limits must be an object of wallSeconds, cpuSeconds, memoryMB, processes, fileSizeMB",
+   "type": "object",
+   "properties": {
+    "wallSeconds": {
+     "exclusiveMinimum": 0,
+     "maximum": 86400,
+     "errorMessage": "wallSeconds must be a positive number of seconds",
+     "type": "number"
+    },
+    "cpuSeconds": {
+     "minimum": 1,
+     "errorMessage": "cpuSeconds must be a positive integer",
+     "type": "integer"
+    },
+    "memoryMB": {
+     "minimum": 16,
+     "errorMessage": "memoryMB must be an integer from 16",
+     "type": "integer"
+    },
+    "processes": {
+     "minimum": 1,
+     "errorMessage": "processes must be a positive integer",
+     "type": "integer"
+    },
+    "fileSizeMB": {
+     "minimum": 1,
+     "errorMessage": "fileSizeMB must be a positive integer",
+     "type": "integer"
+    }
+   }
+  }
+ }
+}
+"""
+)
+
+SUBMISSION_GRADE_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "$id": "urn:maa:protocol:submission-grade",
+ "title": "SubmissionGrade",
+ "description": "the grade of one submission: score, per-criterion scores and feedback, recordings, tasks",
+ "additionalProperties": false,
+ "type": "object",
+ "required": [
+  "submission",
+  "score",
+  "maxScore",
+  "criteria",
+  "recordings",
+  "tasks"
+ ],
+ "properties": {
+  "submission": {
+   "type": "string"
+  },
+  "score": {
+   "minimum": 0,
+   "type": "number"
+  },
+  "maxScore": {
+   "minimum": 0,
+   "type": "number"
+  },
+  "criteria": {
+   "type": "array",
+   "items": {
+    "title": "CriterionGrade",
+    "additionalProperties": false,
+    "type": "object",
+    "required": [
+     "id",
+     "title",
+     "kind",
+     "score",
+     "max",
+     "feedback"
+    ],
+    "properties": {
+     "id": {
+      "type": "string"
+     },
+     "title": {
+      "type": "string"
+     },
+     "kind": {
+      "anyOf": [
+       {
+        "const": "structure",
+        "type": "string"
+       },
+       {
+        "const": "diagnostics",
+        "type": "string"
+       },
+       {
+        "const": "tests",
+        "type": "string"
+       },
+       {
+        "const": "scenarios",
+        "type": "string"
+       },
+       {
+        "const": "coverage",
+        "type": "string"
+       }
+      ]
+     },
+     "score": {
+      "minimum": 0,
+      "type": "number"
+     },
+     "max": {
+      "minimum": 0,
+      "type": "number"
+     },
+     "feedback": {
+      "type": "array",
+      "items": {
+       "title": "Feedback",
+       "additionalProperties": false,
+       "type": "object",
+       "required": [
+        "severity",
+        "text"
+       ],
+       "properties": {
+        "severity": {
+         "anyOf": [
+          {
+           "const": "error",
+           "type": "string"
+          },
+          {
+           "const": "warning",
+           "type": "string"
+          },
+          {
+           "const": "info",
+           "type": "string"
+          }
+         ]
+        },
+        "text": {
+         "type": "string"
+        },
+        "element": {
+         "title": "FeedbackElement",
+         "additionalProperties": false,
+         "type": "object",
+         "required": [
+          "qualifiedName",
+          "file",
+          "line"
+         ],
+         "properties": {
+          "qualifiedName": {
+           "type": "string"
+          },
+          "file": {
+           "type": "string"
+          },
+          "line": {
+           "minimum": 1,
+           "type": "integer"
+          }
+         }
+        },
+        "scenario": {
+         "type": "string"
+        },
+        "simTime": {
+         "type": "number"
+        },
+        "state": {
+         "type": "string"
+        }
+       }
+      }
+     }
+    }
+   }
+  },
+  "recordings": {
+   "type": "array",
+   "items": {
+    "title": "GradeRecording",
+    "additionalProperties": false,
+    "type": "object",
+    "required": [
+     "scenario",
+     "file"
+    ],
+    "properties": {
+     "scenario": {
+      "type": "string"
+     },
+     "file": {
+      "type": "string"
+     }
+    }
+   }
+  },
+  "tasks": {
+   "type": "array",
+   "items": {
+    "title": "GradeTask",
+    "additionalProperties": false,
+    "type": "object",
+    "required": [
+     "id",
+     "status",
+     "seconds"
+    ],
+    "properties": {
+     "id": {
+      "type": "string"
+     },
+     "status": {
+      "anyOf": [
+       {
+        "const": "ok",
+        "type": "string"
+       },
+       {
+        "const": "failed",
+        "type": "string"
+       },
+       {
+        "const": "timeout",
+        "type": "string"
+       },
+       {
+        "const": "killed",
+        "type": "string"
+       },
+       {
+        "const": "error",
+        "type": "string"
+       }
+      ]
+     },
+     "seconds": {
+      "minimum": 0,
+      "type": "number"
+     },
+     "message": {
+      "type": "string"
+     }
+    }
+   }
+  }
+ }
+}
+"""
+)
+
+GRADE_JOB_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "$id": "urn:maa:protocol:grade-job",
+ "title": "GradeJob",
+ "description": "a grade job: the tasks the grading driver runs (docs/lab.md \"Grading\")",
+ "additionalProperties": false,
+ "errorMessage": "expected an object with format and tasks",
+ "type": "object",
+ "required": [
+  "format",
+  "tasks"
+ ],
+ "properties": {
+  "format": {
+   "errorMessage": "format must be 'maa-grade-job/1'",
+   "const": "maa-grade-job/1",
+   "type": "string"
+  },
+  "tasks": {
+   "errorMessage": "tasks must be a list of tasks",
+   "type": "array",
+   "items": {
+    "title": "GradeJobTask",
+    "additionalProperties": false,
+    "errorMessage": "a task has id, input, argv, limits, env",
+    "type": "object",
+    "required": [
+     "id",
+     "input",
+     "argv",
+     "limits",
+     "env"
+    ],
+    "properties": {
+     "id": {
+      "pattern": "^[A-Za-z0-9][A-Za-z0-9._-]*$",
+      "errorMessage": "a task id is letters, digits, ., _ and -",
+      "type": "string"
+     },
+     "input": {
+      "pattern": "^/",
+      "errorMessage": "input must be an absolute directory",
+      "type": "string"
+     },
+     "argv": {
+      "minItems": 1,
+      "errorMessage": "argv must be a non-empty list of strings",
+      "type": "array",
+      "items": {
+       "type": "string"
+      }
+     },
+     "limits": {
+      "title": "TaskLimits",
+      "additionalProperties": false,
+      "errorMessage": "limits must be an object of wallSeconds, cpuSeconds, memoryMB, processes, fileSizeMB",
+      "type": "object",
+      "required": [
+       "wallSeconds",
+       "cpuSeconds",
+       "memoryMB",
+       "processes",
+       "fileSizeMB"
+      ],
+      "properties": {
+       "wallSeconds": {
+        "exclusiveMinimum": 0,
+        "maximum": 86400,
+        "errorMessage": "wallSeconds must be a positive number of seconds",
+        "type": "number"
+       },
+       "cpuSeconds": {
+        "minimum": 1,
+        "errorMessage": "cpuSeconds must be a positive integer",
+        "type": "integer"
+       },
+       "memoryMB": {
+        "minimum": 16,
+        "errorMessage": "memoryMB must be an integer from 16",
+        "type": "integer"
+       },
+       "processes": {
+        "minimum": 1,
+        "errorMessage": "processes must be a positive integer",
+        "type": "integer"
+       },
+       "fileSizeMB": {
+        "minimum": 1,
+        "errorMessage": "fileSizeMB must be a positive integer",
+        "type": "integer"
+       }
+      }
+     },
+     "env": {
+      "errorMessage": "env must map names to strings",
+      "type": "object",
+      "patternProperties": {
+       "^(.*)$": {
+        "type": "string"
+       }
+      }
+     }
+    }
+   }
+  }
+ }
+}
+"""
+)
+
+GRADE_DRIVER_LINE_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "$id": "urn:maa:protocol:grade-driver-line",
+ "title": "DriverLine",
+ "description": "one JSON line the grading driver prints on stdout",
+ "anyOf": [
+  {
+   "title": "DriverStarted",
+   "additionalProperties": false,
+   "type": "object",
+   "required": [
+    "event",
+    "tasks",
+    "mode",
+    "address",
+    "nodes",
+    "cpus"
+   ],
+   "properties": {
+    "event": {
+     "const": "started",
+     "type": "string"
+    },
+    "tasks": {
+     "minimum": 0,
+     "type": "integer"
+    },
+    "mode": {
+     "anyOf": [
+      {
+       "const": "local",
+       "type": "string"
+      },
+      {
+       "const": "cluster",
+       "type": "string"
+      }
+     ]
+    },
+    "address": {
+     "anyOf": [
+      {
+       "type": "string"
+      },
+      {
+       "type": "null"
+      }
+     ]
+    },
+    "nodes": {
+     "minimum": 0,
+     "type": "integer"
+    },
+    "cpus": {
+     "minimum": 0,
+     "type": "number"
+    }
+   }
+  },
+  {
+   "title": "DriverTask",
+   "additionalProperties": false,
+   "type": "object",
+   "required": [
+    "event",
+    "id",
+    "status",
+    "exitCode",
+    "signal",
+    "seconds",
+    "node",
+    "message"
+   ],
+   "properties": {
+    "event": {
+     "const": "task",
+     "type": "string"
+    },
+    "id": {
+     "type": "string"
+    },
+    "status": {
+     "anyOf": [
+      {
+       "const": "ok",
+       "type": "string"
+      },
+      {
+       "const": "failed",
+       "type": "string"
+      },
+      {
+       "const": "timeout",
+       "type": "string"
+      },
+      {
+       "const": "killed",
+       "type": "string"
+      },
+      {
+       "const": "error",
+       "type": "string"
+      }
+     ]
+    },
+    "exitCode": {
+     "anyOf": [
+      {
+       "type": "integer"
+      },
+      {
+       "type": "null"
+      }
+     ]
+    },
+    "signal": {
+     "anyOf": [
+      {
+       "type": "integer"
+      },
+      {
+       "type": "null"
+      }
+     ]
+    },
+    "seconds": {
+     "minimum": 0,
+     "type": "number"
+    },
+    "node": {
+     "type": "string"
+    },
+    "message": {
+     "type": "string"
+    }
+   }
+  },
+  {
+   "title": "DriverFinished",
+   "additionalProperties": false,
+   "type": "object",
+   "required": [
+    "event",
+    "wallSeconds",
+    "counts"
+   ],
+   "properties": {
+    "event": {
+     "const": "finished",
+     "type": "string"
+    },
+    "wallSeconds": {
+     "minimum": 0,
+     "type": "number"
+    },
+    "counts": {
+     "type": "object",
+     "patternProperties": {
+      "^(.*)$": {
+       "minimum": 0,
+       "type": "integer"
+      }
+     }
+    }
+   }
+  }
+ ]
+}
+"""
+)
+
+SCENARIO_REPORT_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "$id": "urn:maa:protocol:scenario-report",
+ "title": "ScenarioReport",
+ "description": "the report of a scenario run (maa-sim run --report FILE)",
+ "type": "object",
+ "required": [
+  "format",
+  "goal",
+  "goalReached",
+  "goalTime",
+  "endReason",
+  "simTime",
+  "world",
+  "events",
+  "states",
+  "finalStates",
+  "toast",
+  "error"
+ ],
+ "properties": {
+  "format": {
+   "const": "maa-scenario-report/1",
+   "type": "string"
+  },
+  "goal": {
+   "anyOf": [
+    {
+     "type": "string"
+    },
+    {
+     "type": "null"
+    }
+   ]
+  },
+  "goalReached": {
+   "type": "boolean"
+  },
+  "goalTime": {
+   "anyOf": [
+    {
+     "type": "number"
+    },
+    {
+     "type": "null"
+    }
+   ]
+  },
+  "endReason": {
+   "type": "string"
+  },
+  "simTime": {
+   "type": "number"
+  },
+  "world": {
+   "title": "ScenarioWorld",
+   "additionalProperties": false,
+   "errorMessage": "world has goldenSeconds?, breadJitter?, seed?",
+   "type": "object",
+   "properties": {
+    "goldenSeconds": {
+     "exclusiveMinimum": 0,
+     "errorMessage": "goldenSeconds must be a positive number",
+     "type": "number"
+    },
+    "breadJitter": {
+     "minimum": 0,
+     "errorMessage": "breadJitter must be a number from 0",
+     "type": "number"
+    },
+    "seed": {
+     "errorMessage": "seed must be an integer",
+     "type": "integer"
+    }
+   }
+  },
+  "events": {
+   "type": "array",
+   "items": {
+    "title": "ScenarioEvent",
+    "additionalProperties": false,
+    "type": "object",
+    "required": [
+     "time",
+     "kind",
+     "text"
+    ],
+    "properties": {
+     "time": {
+      "type": "number"
+     },
+     "kind": {
+      "anyOf": [
+       {
+        "const": "bread-loaded",
+        "type": "string"
+       },
+       {
+        "const": "toaster-on",
+        "type": "string"
+       },
+       {
+        "const": "toaster-off",
+        "type": "string"
+       },
+       {
+        "const": "toast-golden",
+        "type": "string"
+       },
+       {
+        "const": "toast-burnt",
+        "type": "string"
+       },
+       {
+        "const": "toast-dropped",
+        "type": "string"
+       },
+       {
+        "const": "toast-on-plate",
+        "type": "string"
+       },
+       {
+        "const": "error",
+        "type": "string"
+       }
+      ]
+     },
+     "text": {
+      "type": "string"
+     }
+    }
+   }
+  },
+  "states": {
+   "type": "array",
+   "items": {
+    "title": "ScenarioStateChange",
+    "additionalProperties": false,
+    "type": "object",
+    "required": [
+     "time",
+     "node",
+     "state"
+    ],
+    "properties": {
+     "time": {
+      "type": "number"
+     },
+     "node": {
+      "type": "string"
+     },
+     "state": {
+      "type": "string"
+     }
+    }
+   }
+  },
+  "finalStates": {
+   "type": "object",
+   "patternProperties": {
+    "^(.*)$": {
+     "type": "string"
+    }
+   }
+  },
+  "toast": {
+   "anyOf": [
+    {
+     "title": "ScenarioToast",
+     "additionalProperties": false,
+     "type": "object",
+     "required": [
+      "level",
+      "color",
+      "onPlate",
+      "dropped"
+     ],
+     "properties": {
+      "level": {
+       "type": "number"
+      },
+      "color": {
+       "type": "string"
+      },
+      "onPlate": {
+       "type": "boolean"
+      },
+      "dropped": {
+       "type": "boolean"
+      }
+     }
+    },
+    {
+     "type": "null"
+    }
+   ]
+  },
+  "error": {
+   "anyOf": [
+    {
+     "type": "string"
+    },
+    {
+     "type": "null"
+    }
+   ]
+  }
+ }
+}
+"""
+)
+
+STREAM_STATES_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "$id": "urn:maa:protocol:stream-states",
+ "title": "StreamStates",
+ "description": "the automaton state traces of stream tests (python -m maa_timesync.streamtest --states FILE)",
+ "additionalProperties": false,
+ "type": "object",
+ "required": [
+  "format",
+  "tests"
+ ],
+ "properties": {
+  "format": {
+   "const": "maa-stream-states/1",
+   "type": "string"
+  },
+  "tests": {
+   "type": "array",
+   "items": {
+    "title": "StreamStatesTest",
+    "additionalProperties": false,
+    "type": "object",
+    "required": [
+     "file",
+     "line",
+     "test",
+     "component",
+     "states"
+    ],
+    "properties": {
+     "file": {
+      "type": "string"
+     },
+     "line": {
+      "type": "integer"
+     },
+     "test": {
+      "type": "string"
+     },
+     "component": {
+      "type": "string"
+     },
+     "states": {
+      "type": "array",
+      "items": {
+       "type": "string"
+      }
+     }
+    }
+   }
+  }
+ }
+}
+"""
+)
+
 #: The simulator's platform topics (@maa/protocol SIMULATOR_TOPICS): name, type, publisher, description.
 SIMULATOR_TOPICS: Final[list[dict[str, str]]] = json.loads(
     r"""
@@ -802,3 +2119,266 @@ class SimulatorFinished(TypedDict):
     wall_seconds: float
     real_time_factor: float
     record: SimulatorRecording | None
+
+
+class PortRequirement(TypedDict):
+    name: str
+    direction: NotRequired[Literal["in"] | Literal["out"]]
+    type: NotRequired[str]
+
+
+class SubcomponentRequirement(TypedDict):
+    name: NotRequired[str]
+    type: NotRequired[str]
+
+
+class BehaviorRequirement(TypedDict):
+    kind: (
+        Literal["automaton"]
+        | Literal["robotarm"]
+        | Literal["compute"]
+        | Literal["handwritten"]
+        | Literal["composed"]
+        | Literal["none"]
+    )
+    minStates: NotRequired[int]
+    minTransitions: NotRequired[int]
+    states: NotRequired[list[str]]
+
+
+class StructureRequirement(TypedDict):
+    component: str
+    ports: NotRequired[list[PortRequirement]]
+    subcomponents: NotRequired[list[SubcomponentRequirement]]
+    behavior: NotRequired[BehaviorRequirement]
+
+
+class StructureCriterion(TypedDict):
+    id: str
+    title: str
+    weight: float
+    kind: Literal["structure"]
+    require: list[StructureRequirement]
+
+
+class DiagnosticsCriterion(TypedDict):
+    id: str
+    title: str
+    weight: float
+    kind: Literal["diagnostics"]
+
+
+class PartialTaskLimits(TypedDict):
+    wallSeconds: NotRequired[float]
+    cpuSeconds: NotRequired[int]
+    memoryMB: NotRequired[int]
+    processes: NotRequired[int]
+    fileSizeMB: NotRequired[int]
+
+
+class HiddenTestsCriterion(TypedDict):
+    id: str
+    title: str
+    weight: float
+    kind: Literal["tests"]
+    files: list[str]
+    limits: NotRequired[PartialTaskLimits]
+
+
+class ScenarioWorld(TypedDict):
+    goldenSeconds: NotRequired[float]
+    breadJitter: NotRequired[float]
+    seed: NotRequired[int]
+
+
+class Scenario(TypedDict):
+    id: str
+    title: str
+    world: ScenarioWorld
+    goal: Literal["toastOnPlate"]
+    timeLimit: float
+
+
+class ScenariosCriterion(TypedDict):
+    id: str
+    title: str
+    weight: float
+    kind: Literal["scenarios"]
+    scenarios: list[Scenario]
+    limits: NotRequired[PartialTaskLimits]
+
+
+class CoverageCriterion(TypedDict):
+    id: str
+    title: str
+    weight: float
+    kind: Literal["coverage"]
+    component: str
+    states: float
+    transitions: float
+
+
+class GradingSpec(TypedDict):
+    """grading.json: the grading criteria of a lab exercise (docs/lab.md "Grading")"""
+
+    format: Literal["maa-grading/1"]
+    criteria: list[
+        StructureCriterion | DiagnosticsCriterion | HiddenTestsCriterion | ScenariosCriterion | CoverageCriterion
+    ]
+    limits: NotRequired[PartialTaskLimits]
+
+
+class FeedbackElement(TypedDict):
+    qualifiedName: str
+    file: str
+    line: int
+
+
+class Feedback(TypedDict):
+    severity: Literal["error"] | Literal["warning"] | Literal["info"]
+    text: str
+    element: NotRequired[FeedbackElement]
+    scenario: NotRequired[str]
+    simTime: NotRequired[float]
+    state: NotRequired[str]
+
+
+class CriterionGrade(TypedDict):
+    id: str
+    title: str
+    kind: Literal["structure"] | Literal["diagnostics"] | Literal["tests"] | Literal["scenarios"] | Literal["coverage"]
+    score: float
+    max: float
+    feedback: list[Feedback]
+
+
+class GradeRecording(TypedDict):
+    scenario: str
+    file: str
+
+
+class GradeTask(TypedDict):
+    id: str
+    status: Literal["ok"] | Literal["failed"] | Literal["timeout"] | Literal["killed"] | Literal["error"]
+    seconds: float
+    message: NotRequired[str]
+
+
+class SubmissionGrade(TypedDict):
+    """the grade of one submission: score, per-criterion scores and feedback, recordings, tasks"""
+
+    submission: str
+    score: float
+    maxScore: float
+    criteria: list[CriterionGrade]
+    recordings: list[GradeRecording]
+    tasks: list[GradeTask]
+
+
+class TaskLimits(TypedDict):
+    wallSeconds: float
+    cpuSeconds: int
+    memoryMB: int
+    processes: int
+    fileSizeMB: int
+
+
+class GradeJobTask(TypedDict):
+    id: str
+    input: str
+    argv: list[str]
+    limits: TaskLimits
+    env: dict[str, str]
+
+
+class GradeJob(TypedDict):
+    """a grade job: the tasks the grading driver runs (docs/lab.md "Grading")"""
+
+    format: Literal["maa-grade-job/1"]
+    tasks: list[GradeJobTask]
+
+
+class DriverStarted(TypedDict):
+    event: Literal["started"]
+    tasks: int
+    mode: Literal["local"] | Literal["cluster"]
+    address: str | None
+    nodes: int
+    cpus: float
+
+
+class DriverTask(TypedDict):
+    event: Literal["task"]
+    id: str
+    status: Literal["ok"] | Literal["failed"] | Literal["timeout"] | Literal["killed"] | Literal["error"]
+    exitCode: int | None
+    signal: int | None
+    seconds: float
+    node: str
+    message: str
+
+
+class DriverFinished(TypedDict):
+    event: Literal["finished"]
+    wallSeconds: float
+    counts: dict[str, int]
+
+
+class ScenarioEvent(TypedDict):
+    time: float
+    kind: (
+        Literal["bread-loaded"]
+        | Literal["toaster-on"]
+        | Literal["toaster-off"]
+        | Literal["toast-golden"]
+        | Literal["toast-burnt"]
+        | Literal["toast-dropped"]
+        | Literal["toast-on-plate"]
+        | Literal["error"]
+    )
+    text: str
+
+
+class ScenarioStateChange(TypedDict):
+    time: float
+    node: str
+    state: str
+
+
+class ScenarioToast(TypedDict):
+    level: float
+    color: str
+    onPlate: bool
+    dropped: bool
+
+
+class ScenarioReport(TypedDict):
+    """the report of a scenario run (maa-sim run --report FILE)"""
+
+    format: Literal["maa-scenario-report/1"]
+    goal: str | None
+    goalReached: bool
+    goalTime: float | None
+    endReason: str
+    simTime: float
+    world: ScenarioWorld
+    events: list[ScenarioEvent]
+    states: list[ScenarioStateChange]
+    finalStates: dict[str, str]
+    toast: ScenarioToast | None
+    error: str | None
+
+
+class StreamStatesTest(TypedDict):
+    file: str
+    line: int
+    test: str
+    component: str
+    states: list[str]
+
+
+class StreamStates(TypedDict):
+    """the automaton state traces of stream tests (python -m maa_timesync.streamtest --states FILE)"""
+
+    format: Literal["maa-stream-states/1"]
+    tests: list[StreamStatesTest]
