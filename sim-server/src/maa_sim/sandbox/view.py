@@ -184,8 +184,8 @@ def _binds(readonly: list[Path], writable: list[Path]) -> list[str]:
         for parent in reversed(t.parents):
             if parent in made or any(parent == d or d in parent.parents for d in targets):
                 continue
-            if parent.parts[1:2] and f"/{parent.parts[1]}" in RESERVED:
-                continue
+            if parent.parts[1:2] and f"/{parent.parts[1]}" in (*SYSTEM_DIRS, "/proc", "/dev", "/etc"):
+                continue  # these exist (read-only) in the view
             made.add(parent)
             args += ["--perms", "0755", "--dir", str(parent)]
     both = [(p, "--ro-bind") for p in readonly] + [(p, "--bind") for p in writable]
