@@ -88,6 +88,11 @@ if (process.env.MAA_TEST_LINT !== '0') {
 const postgres = step('lab storage: postgresql', process.execPath, [path.join(repo, 'scripts', 'ensure-postgresql.mjs')]);
 if (postgres !== 0) tally.fail('setups that failed', 'PostgreSQL for the lab storage tests is missing and could not be installed');
 
+// maa_sim.sandbox (grading runs, the lab's live simulations; sim-server/tests/test_sandbox.py) runs
+// students' code in bubblewrap: Debian's bubblewrap is installed when missing.
+const bubblewrap = step('sandbox: bubblewrap', process.execPath, [path.join(repo, 'scripts', 'ensure-bubblewrap.mjs')]);
+if (bubblewrap !== 0) tally.fail('setups that failed', 'bubblewrap for the sandbox is missing and could not be installed');
+
 vitestSuite(process.argv.slice(2));
 
 // The browser end-to-end suite (e2e/run.mjs): maa-ide with the built app on a fresh copy of

@@ -18,6 +18,12 @@ if ! "$python" -c 'import sys; sys.exit(0 if sys.version_info >= (3, 11) else 1)
   exit 1
 fi
 
+# maa_sim.sandbox runs students' code in bubblewrap (grading runs, the lab's live simulations); the
+# test command installs Debian's bubblewrap when missing (scripts/ensure-bubblewrap.mjs).
+if ! command -v bwrap >/dev/null 2>&1 && [[ ! -x "${MAA_BWRAP:-/usr/bin/bwrap}" ]]; then
+  echo "setup_env: bubblewrap (bwrap) is missing; maa_sim.sandbox needs it: apt-get install -y bubblewrap" >&2
+fi
+
 want="$(cat "$here/pyproject.toml" "$0" | sha256sum | cut -d' ' -f1) $("$python" -c 'import sys; print(sys.version)' | head -1)"
 if [[ "${MAA_SIM_FORCE_SETUP:-0}" != 1 && -f "$stamp" && -x "$venv/bin/python" ]] && [[ "$(cat "$stamp")" == "$want" ]]; then
   echo "setup_env: $venv is up to date"
