@@ -2,6 +2,7 @@
 // accounts and sessions, and the `maa-lab` command.
 export * from './storage/index.js';
 export * from './exercises/index.js';
+export * from './grading/index.js';
 export { type LabServer, type LabServerOptions, startLabServer, DEFAULT_PORT } from './http/server.js';
 export {
     type Access,

@@ -2,6 +2,7 @@
 // commands other parts of the lab register (registerLabCommand).
 import { Command, CommanderError } from 'commander';
 import { exerciseCommand } from '../exercises/command.js';
+import { gradeCommand } from '../grading/command.js';
 import { courseCommand } from './course.js';
 import { type LabIo, processLabIo } from './io.js';
 import { serveCommand } from './serve.js';
@@ -36,6 +37,7 @@ export function createLabProgram(io: LabIo, hooks: ProgramHooks = {}): Command {
     program.addCommand(usersCommand(io));
     program.addCommand(courseCommand(io));
     program.addCommand(exerciseCommand(io));
+    program.addCommand(gradeCommand(io));
     for (const factory of registered) program.addCommand(factory(io));
     const configure = (command: Command, name: string): void => {
         for (const sub of command.commands) {

@@ -89,6 +89,9 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
                 await store.close();
                 throw new LabCliError(`cannot start the server: ${(e as Error).message}`);
             }
+            // Runs a stopped server left queued or running end as failed (never stuck).
+            const failed = await server.grading.recover();
+            if (failed > 0) io.err(`maa-lab: ${failed} grading runs left unfinished by the last server are marked failed\n`);
             io.out(
                 `maa-lab serves ${server.publicUrl} (${store.backend === 'pglite' ? 'embedded database' : 'PostgreSQL'}); log in at ${server.publicUrl}/login\n`,
             );

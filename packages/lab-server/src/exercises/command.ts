@@ -5,6 +5,7 @@ import { Command } from 'commander';
 import { type LabStore, openLabStore, storageFromEnvironment, type User } from '../storage/index.js';
 import { courseNamed } from './course.js';
 import { ExerciseError } from './errors.js';
+import type { LoadedGrading } from './grading-folder.js';
 import { loadExercise } from './load.js';
 import { releaseExercise } from './release.js';
 import type { FileUpdate } from './update-workspace.js';
@@ -35,7 +36,7 @@ async function withStore<T>(io: ExerciseIo, dataDir: string | undefined, work: (
 }
 
 /** The instructor a release is recorded for: --as, else the course's only instructor, else the lab's only one. */
-async function instructor(store: LabStore, courseName: string, login: string | undefined): Promise<User> {
+export async function instructor(store: LabStore, courseName: string, login: string | undefined): Promise<User> {
     if (login) {
         const user = await store.findUserByLogin(login);
         if (!user) throw new ExerciseError(`there is no user ${JSON.stringify(login)}`);
@@ -51,6 +52,12 @@ async function instructor(store: LabStore, courseName: string, login: string | u
             ? 'the lab has no instructor: add one first (maa-lab users)'
             : 'name the instructor releasing it: --as LOGIN',
     );
+}
+
+function describeGrading(grading: LoadedGrading): string {
+    const criteria = Array.isArray(grading.spec['criteria']) ? grading.spec['criteria'].length : 0;
+    const hidden = Object.keys(grading.files).length;
+    return `graded by grading/grading.json: ${criteria} criteria, ${hidden} hidden test file${hidden === 1 ? '' : 's'} (never shown to students)\n`;
 }
 
 function describeUpdates(login: string, files: readonly FileUpdate[]): string[] {
@@ -86,6 +93,7 @@ export function exerciseCommand(io: ExerciseIo): Command {
                     `released ${loaded.name} to ${options.course}: ${Object.keys(loaded.files).length} starter files, ` +
                         `${released.workspaces.length} workspaces${who}; students enrolled later get it when they open it\n`,
                 );
+                if (loaded.grading) io.out(describeGrading(loaded.grading));
             }),
     );
     withFolder(
@@ -102,6 +110,7 @@ export function exerciseCommand(io: ExerciseIo): Command {
             if (lines.length > 0) io.out(`${lines.join('\n')}\n`);
             const conflicts = updated.workspaces.filter((w) => w.files.some((f) => f.outcome === 'conflict')).length;
             if (updated.workspaces.length > 0) io.out(`${updated.workspaces.length} workspaces, ${conflicts} with conflicts\n`);
+            io.out(loaded.grading ? describeGrading(loaded.grading) : 'no grading/ folder: the exercise is not graded\n');
         }),
     );
     return exercise;

@@ -13,6 +13,7 @@ import {
     type StarterSource,
 } from '@maa/protocol/exercise';
 import { ExerciseError } from './errors.js';
+import { type LoadedGrading, loadGrading } from './grading-folder.js';
 
 /** An exercise folder, read and valid. */
 export interface LoadedExercise {
@@ -24,6 +25,8 @@ export interface LoadedExercise {
     description: string;
     /** the starter: path (relative, `/`) → content */
     files: Record<string, string>;
+    /** the grading folder (`grading/`: grading.json and its hidden files), when the exercise has one; never released to students */
+    grading?: LoadedGrading;
 }
 
 const EXERCISE_NAME = /^[a-z0-9][a-z0-9-]*$/;
@@ -164,7 +167,8 @@ async function readExercise(
         const file = path.join(from === 'base' && base ? base : starter, ...rel.split('/'));
         files[rel] = await readText(file, file, from === 'base' ? 'the base file' : 'the starter file');
     }
-    return { name, folder, manifest, description, files };
+    const grading = await loadGrading(folder);
+    return { name, folder, manifest, description, files, ...(grading ? { grading } : {}) };
 }
 
 /** The exercise as stored and served once released, with the starter version its files are. */

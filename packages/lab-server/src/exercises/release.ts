@@ -34,6 +34,7 @@ export async function releaseExercise(store: LabStore, exercise: LoadedExercise,
     const spec = releasedSpec(exercise, 1);
     const created = await store.createExercise({ courseId: course.id, name: exercise.name, spec: { ...spec } });
     await store.addStarterVersion(created.id, exercise.files);
+    if (exercise.grading) await store.setExerciseGrading(created.id, exercise.grading);
     const released = await store.releaseExercise(created.id);
     const workspaces: string[] = [];
     for (const user of await store.listEnrolled(course.id)) {

@@ -41,6 +41,9 @@ export async function updateExercise(store: LabStore, exercise: LoadedExercise, 
     const next = newest && !newStarter ? newest : await store.addStarterVersion(found.id, exercise.files);
     const spec = releasedSpec(exercise, next.version);
     const updated = await store.updateExerciseSpec(found.id, { ...spec });
+    // The grading follows the folder: replaced, or removed when the folder has none any more.
+    if (exercise.grading) await store.setExerciseGrading(found.id, exercise.grading);
+    else await store.deleteExerciseGrading(found.id);
     const workspaces: Updated['workspaces'] = [];
     const readOnlyChanged = previous.readOnly.join('\n') !== spec.readOnly.join('\n');
     if (newStarter || readOnlyChanged) {

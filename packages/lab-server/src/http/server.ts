@@ -9,6 +9,7 @@ import { type OidcSettings, OidcSignOn } from '../auth/oidc.js';
 import { DEFAULT_RATE_LIMITS, LoginRateLimiter, type RateLimitOptions } from '../auth/rate-limit.js';
 import { DEFAULT_SESSION_HOURS, SessionService } from '../auth/sessions.js';
 import { addDashboardRoutes, type DashboardHandle } from '../dashboard/index.js';
+import { addGradingRoutes, GradingService, type GradingServiceOptions } from '../grading/index.js';
 import { addHomePage, addIdePage, rewriteIdePath } from '../ide/index.js';
 import type { LabStore } from '../storage/index.js';
 import { type LabWorkspaceOptions, LabWorkspaces } from '../workspaces/index.js';
@@ -38,6 +39,8 @@ export interface LabServerOptions {
     log?: (line: string) => void;
     /** students' workspaces: where their folders go, the quotas, the simulator (docs/lab.md "Workspaces") */
     workspaces?: LabWorkspaceOptions;
+    /** autograding (docs/lab.md "Grading"): the engine, the Python, the Ray address; recordings go to `workspaces.dataDir` */
+    grading?: Omit<GradingServiceOptions, 'dataDir'>;
 }
 
 export interface LabServer {
@@ -53,6 +56,8 @@ export interface LabServer {
     workspaces: LabWorkspaces;
     /** the instructor's dashboard's checker thread */
     dashboard: DashboardHandle;
+    /** the grading runs (docs/lab.md "Grading") */
+    grading: GradingService;
     close(): Promise<void>;
 }
 
@@ -93,6 +98,8 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
         { routes, store: options.store, sessions, originRefusal: (req) => context.origin.refusal(req), log },
         options.workspaces,
     );
+    const grading = new GradingService(options.store, { log, ...options.grading, dataDir: workspaces.dataDir });
+    addGradingRoutes(routes, grading, workspaces.dataDir);
     server.on('request', (req: IncomingMessage, res: ServerResponse) => {
         res.on('finish', () => log(`${req.method} ${(req.url ?? '/').split('?')[0]} ${res.statusCode}`));
         void handle(context, req, res);
@@ -115,8 +122,10 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
         sessions,
         workspaces,
         dashboard,
+        grading,
         close: async () => {
             clearInterval(cleanup);
+            await grading.close();
             await workspaces.close();
             await dashboard.close();
             return new Promise<void>((resolve) => {

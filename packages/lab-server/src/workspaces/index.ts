@@ -70,11 +70,14 @@ export class LabWorkspaces {
     private closing: Promise<void> | undefined;
     /** the folder made for the workspaces when no data directory was given (removed at the stop) */
     private readonly temporary: string | undefined;
+    /** the lab's data directory (or the temporary folder standing for it) */
+    readonly dataDir: string;
 
     constructor(deps: LabWorkspacesDeps, options: LabWorkspaceOptions = {}) {
         this.quotas = quotaOptions(options.quotas);
         const base = options.dataDir ?? mkdtempSync(path.join(tmpdir(), 'maa-lab-'));
         if (options.dataDir === undefined) this.temporary = base;
+        this.dataDir = path.resolve(base);
         const root = path.resolve(base, 'workspaces');
         mkdirSync(root, { recursive: true, mode: 0o700 });
         this.generators = new GeneratePool(options.generateThreads, options.generateThread);
