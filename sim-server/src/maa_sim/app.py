@@ -25,13 +25,12 @@ from .lockstep import LockstepPackage
 from .messages import JsonMessage, MessageError
 from .rosbridge import BlockingService, RosbridgeServer, ServiceError, ServiceHandler
 from .runs import lockstep_session
+from .scenario import STATES_TOPIC, ScenarioObserver
 from .session import DEFAULT_PERIOD, Runner, SimEvent, SimSession
 from .transport import LocalBus
 from .world import ToastKitchen, WorldConfig
 
 Mode = Literal["ros2", "lockstep"]
-#: The automaton states of the application (docs/ide.md, "Live values").
-STATES_TOPIC = "/maa/automaton_states"
 
 
 @dataclass
@@ -53,6 +52,10 @@ class RunOptions:
     hang_timeout: float = 5.0
     log_dir: Path | None = None
     golden_seconds: float = WorldConfig.golden_seconds
+    #: standard deviation of the bread's start position (m), drawn from the seed (maa_sim.scenario)
+    bread_jitter: float = WorldConfig.bread_jitter
+    #: observe the run for a scenario report (maa_sim.scenario.ScenarioObserver, `maa-sim run --report`)
+    scenario: bool = False
     #: the secret of the rosbridge and viser endpoints (None: MAA_SIM_TOKEN, else a random one)
     token: str | None = None
     #: an MCAP file of every topic and the scene state (maa_sim.recorder), None: no recording
@@ -71,6 +74,9 @@ class SimApp:
         self.lease: Any = None
         self.deployment: Deployment | None = None
         self.recorder: Any = None  # a maa_sim.recorder.McapRecorder with --record
+        #: the events and state changes of the run, with RunOptions.scenario
+        self.scenario: ScenarioObserver | None = None
+        self._controller: Any = None
         self.domain_id: int | None = None
         self.log_dir: Path | None = None
         self._own_log_dir = False
@@ -95,6 +101,8 @@ class SimApp:
             assert self.session is not None and self.runner is not None
             self.session.event_listeners.append(self._on_event)
             self._watch_states()
+            if self.options.scenario:
+                self._observe_scenario()
             if self.options.record is not None:
                 self._start_recording(self.options.record)
             if self.options.rosbridge_port is not None:
@@ -127,21 +135,31 @@ class SimApp:
         """One policy per endpoint (each knows its own port, for its cookie), one token for both."""
         return AccessPolicy(self.token, bind_host=self.options.host)
 
+    def world_config(self) -> WorldConfig:
+        """The initial world of the run (seed, toasting speed, bread jitter)."""
+        options = self.options
+        return WorldConfig(golden_seconds=options.golden_seconds, bread_jitter=options.bread_jitter, seed=options.seed)
+
     def _world(self) -> ToastKitchen:
-        return ToastKitchen(
-            self.options.scene, WorldConfig(seed=self.options.seed, golden_seconds=self.options.golden_seconds)
-        )
+        return ToastKitchen(self.options.scene, self.world_config())
+
+    def _observe_scenario(self) -> None:
+        """Watches the run for `maa-sim run --report`; a lock-step controller tells its initial states."""
+        assert self.session is not None
+        self.scenario = ScenarioObserver()
+        states = getattr(self._controller, "states", None)
+        initial = states() if callable(states) else None
+        self.scenario.attach(self.session, initial if isinstance(initial, dict) else None)
 
     def _start_lockstep(self) -> None:
         package = LockstepPackage.load(self.options.package)
-        controller = package.create()
+        controller = self._controller = package.create()
         topics = getattr(controller, "topics", None)
         if callable(topics) and callable(getattr(controller, "validate_input", None)):
             # a generated timesync build: it shows the inputs it is fed in the slice that reads them
             self._port_topics = set(dict(topics()).keys())
         period = self.options.period or package.period or DEFAULT_PERIOD
-        session, _ = lockstep_session(controller, seed=self.options.seed, period=period, scene=self.options.scene)
-        session.world.config.golden_seconds = self.options.golden_seconds
+        session, _ = lockstep_session(controller, period=period, scene=self.options.scene, config=self.world_config())
         self.session = session
         self.transport = session.transport
         speed = 0.0 if self.options.speed is None else self.options.speed

@@ -8,7 +8,7 @@ import signal
 import sys
 import threading
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from types import FrameType
 
@@ -17,6 +17,17 @@ from .app import RunOptions, SimApp
 from .deployment import DeploymentError
 from .messages import MessageError
 from .protocol import SimulatorFinished, SimulatorProgress
+from .scenario import (
+    Report,
+    WorldFile,
+    WorldFileError,
+    failed_report,
+    load_world,
+    world_config,
+    world_summary,
+    write_report,
+)
+from .world import WorldConfig
 
 
 def _positive_float(text: str) -> float:
@@ -51,6 +62,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"maa-sim {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     _add_run_options(commands)
+    _add_world_options(commands.choices["run"])
     _add_output_options(commands.choices["run"])
     _add_inspect_command(commands)
     return parser
@@ -78,7 +90,6 @@ def _add_run_options(commands: argparse._SubParsersAction[argparse.ArgumentParse
         help="simulated seconds per wall second; 0 = as fast as possible (default: 1 in ros2 mode, 0 in lockstep)",
     )
     run.add_argument("--period", type=_positive_float, default=None, help="control period in seconds (default: 0.02)")
-    run.add_argument("--seed", type=int, default=0, help="random seed of the scene (default: %(default)s)")
     run.add_argument("--host", default="127.0.0.1", help="address to serve on (default: %(default)s)")
     run.add_argument(
         "--rosbridge-port",
@@ -114,10 +125,28 @@ def _add_run_options(commands: argparse._SubParsersAction[argparse.ArgumentParse
         default=5.0,
         help="seconds without an answer before a node counts as hung",
     )
-    run.add_argument(
-        "--golden-seconds", type=_positive_float, default=6.0, help="seconds of toasting to reach golden toast"
-    )
     run.add_argument("--log-dir", type=Path, default=None, help="where node logs go (default: a temporary directory)")
+
+
+def _add_world_options(run: argparse.ArgumentParser) -> None:
+    """`maa-sim run`: the initial world (a scenario's world file, or single values)."""
+    run.add_argument(
+        "--seed", type=int, default=None, help="random seed of the scene (default: the world file's, else 0)"
+    )
+    run.add_argument(
+        "--world",
+        type=Path,
+        default=None,
+        metavar="FILE.json",
+        help='the initial world of a scenario: {"goldenSeconds": 6, "breadJitter": 0, "seed": 0}, every field '
+        "optional (--seed and --golden-seconds win over the file)",
+    )
+    run.add_argument(
+        "--golden-seconds",
+        type=_positive_float,
+        default=None,
+        help="seconds of toasting to reach golden toast (default: the world file's, else 6)",
+    )
 
 
 def _add_output_options(run: argparse.ArgumentParser) -> None:
@@ -138,6 +167,14 @@ def _add_output_options(run: argparse.ArgumentParser) -> None:
         default=None,
         metavar="FILE.mcap",
         help="record every topic and the scene state into an MCAP file (ROS 2 schemas, CDR)",
+    )
+    run.add_argument(
+        "--report",
+        type=Path,
+        default=None,
+        metavar="FILE.json",
+        help="write the scenario report (goal, events, automaton states; maa-scenario-report/1) at the end of the "
+        "run, also when it fails or is interrupted",
     )
 
 
@@ -165,14 +202,14 @@ def _inspect(path: Path) -> int:
     return 0
 
 
-def _options(args: argparse.Namespace) -> RunOptions:
+def _options(args: argparse.Namespace, config: WorldConfig) -> RunOptions:
     return RunOptions(
         package=args.package.resolve(),
         mode=args.mode,
         scene=args.scene,
         speed=args.speed,
         period=args.period,
-        seed=args.seed,
+        seed=config.seed,
         host=args.host,
         rosbridge_port=args.rosbridge_port,
         viser_port=args.viser_port,
@@ -183,8 +220,10 @@ def _options(args: argparse.Namespace) -> RunOptions:
         startup_timeout=args.startup_timeout,
         hang_timeout=args.hang_timeout,
         log_dir=args.log_dir,
-        golden_seconds=args.golden_seconds,
+        golden_seconds=config.golden_seconds,
+        bread_jitter=config.bread_jitter,
         record=args.record.resolve() if args.record is not None else None,
+        scenario=args.report is not None,
     )
 
 
@@ -270,25 +309,59 @@ def _install_signal_handlers(interrupted: threading.Event, received: list[str]) 
     signal.signal(signal.SIGTERM, on_signal)
 
 
+def _write_report(path: Path | None, make: Callable[[], Report]) -> None:
+    """Writes the scenario report of `--report`; a report that cannot be written is said on stderr."""
+    if path is None:
+        return
+    try:
+        write_report(path, make())
+    except OSError as exc:
+        print(f"maa-sim: cannot write the report {path}: {exc}", file=sys.stderr)
+
+
+def _scenario_report(app: SimApp, reason: str, sim_time: float) -> Report:
+    assert app.scenario is not None and app.session is not None
+    error = reason if reason.startswith("error") else None
+    return app.scenario.report(app.session.world, app.world_config(), reason, sim_time, error)
+
+
+def _start(args: argparse.Namespace) -> SimApp | int:
+    """The app, started; an exit code (2) when the world file, the package or the options are bad."""
+    world: WorldFile = {}
+    try:
+        if args.world is not None:
+            world = load_world(args.world)
+    except WorldFileError as exc:
+        problem = str(exc)
+        print(f"maa-sim: {problem}", file=sys.stderr)
+        _write_report(args.report, lambda: failed_report(world, "error: bad world file", problem))
+        return 2
+    config = world_config(world, args.seed, args.golden_seconds)
+    try:
+        app = SimApp(_options(args, config))
+        app.start()
+    except (DeploymentError, MessageError, ValueError, FileNotFoundError, ImportError, TypeError, OSError) as exc:
+        # ValueError: e.g. an MAA_SIM_TOKEN a URL cannot carry, a bad lockstep.json
+        problem = str(exc)
+        print(f"maa-sim: {problem}", file=sys.stderr)
+        _write_report(args.report, lambda: failed_report(world_summary(config), "error: did not start", problem))
+        return 2
+    return app
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     if args.command == "inspect":
         return _inspect(args.file)
-    options = _options(args)
-    try:
-        app = SimApp(options)
-    except ValueError as exc:  # e.g. an MAA_SIM_TOKEN a URL cannot carry
-        print(f"maa-sim: {exc}", file=sys.stderr)
-        return 2
     interrupted = threading.Event()
     received: list[str] = []
     _install_signal_handlers(interrupted, received)
-    try:
-        app.start()
-    except (DeploymentError, MessageError, ValueError, FileNotFoundError, ImportError, TypeError, OSError) as exc:
-        print(f"maa-sim: {exc}", file=sys.stderr)
-        return 2
+    app = _start(args)
+    if isinstance(app, int):
+        return app
+    options = app.options
     start = time.monotonic()
+    reason, sim_time = "error: the run did not finish", 0.0
     try:
         _print_ready(app, args.status_json)
         _wait(app, interrupted, args.progress_json)
@@ -301,6 +374,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         wall = time.monotonic() - start
     finally:
         app.stop()  # completes the recording
+        _write_report(args.report, lambda: _scenario_report(app, reason, sim_time))
     _print_finished(app, _finished_line(app, reason, reached, sim_time, wall), args.status_json)
     if args.until_goal:
         return 0 if reached else 1

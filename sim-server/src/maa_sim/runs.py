@@ -31,14 +31,16 @@ def lockstep_session(
     period: float = DEFAULT_PERIOD,
     scene: str = "toast_kitchen",
     bus: LocalBus | None = None,
+    config: WorldConfig | None = None,
 ) -> tuple[SimSession, Runner]:
-    """A session on a local bus with the controller's port topics declared, and its runner."""
+    """A session on a local bus with the controller's port topics declared, and its runner.
+    `config`: the initial world (its seed wins over `seed`)."""
     bus = bus or LocalBus()
     topics = getattr(controller, "topics", None)
     if callable(topics):
         for name, type_name in dict(topics()).items():
             bus.declare(name, type_name)
-    world = ToastKitchen(scene, WorldConfig(seed=seed))
+    world = ToastKitchen(scene, config if config is not None else WorldConfig(seed=seed))
     session = SimSession(world, bus, period)
     return session, Runner(session, speed=0.0, controller=controller)
 
