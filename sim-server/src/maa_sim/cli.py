@@ -16,10 +16,8 @@ from . import __version__
 from .app import RunOptions, SimApp
 from .deployment import DeploymentError
 from .messages import MessageError
-from .protocol import SimulatorFinished, SimulatorProgress
+from .protocol import ScenarioReport, ScenarioWorld, SimulatorFinished, SimulatorProgress
 from .scenario import (
-    Report,
-    WorldFile,
     WorldFileError,
     failed_report,
     load_world,
@@ -309,7 +307,7 @@ def _install_signal_handlers(interrupted: threading.Event, received: list[str]) 
     signal.signal(signal.SIGTERM, on_signal)
 
 
-def _write_report(path: Path | None, make: Callable[[], Report]) -> None:
+def _write_report(path: Path | None, make: Callable[[], ScenarioReport]) -> None:
     """Writes the scenario report of `--report`; a report that cannot be written is said on stderr."""
     if path is None:
         return
@@ -319,7 +317,7 @@ def _write_report(path: Path | None, make: Callable[[], Report]) -> None:
         print(f"maa-sim: cannot write the report {path}: {exc}", file=sys.stderr)
 
 
-def _scenario_report(app: SimApp, reason: str, sim_time: float) -> Report:
+def _scenario_report(app: SimApp, reason: str, sim_time: float) -> ScenarioReport:
     assert app.scenario is not None and app.session is not None
     error = reason if reason.startswith("error") else None
     return app.scenario.report(app.session.world, app.world_config(), reason, sim_time, error)
@@ -327,7 +325,7 @@ def _scenario_report(app: SimApp, reason: str, sim_time: float) -> Report:
 
 def _start(args: argparse.Namespace) -> SimApp | int:
     """The app, started; an exit code (2) when the world file, the package or the options are bad."""
-    world: WorldFile = {}
+    world: ScenarioWorld = {}
     try:
         if args.world is not None:
             world = load_world(args.world)

@@ -22,11 +22,12 @@ import tempfile
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Final, Literal, TypedDict
+from typing import Any, Final, Literal
 
 import mujoco
 
 from .messages import JsonMessage
+from .protocol import AUTOMATON_STATES_TOPIC, ScenarioEvent, ScenarioReport, ScenarioStateChange, ScenarioWorld
 from .session import SimEvent, SimSession
 from .transport import LocalBus
 from .world import BURNT_LEVEL, GOLDEN_LEVEL, PLATE_CENTER, PLATE_RADIUS, ToastKitchen, WorldConfig, classify_toast
@@ -35,7 +36,7 @@ REPORT_FORMAT: Final = "maa-scenario-report/1"
 #: The only goal of the toast kitchen: the toasted bread rests on the plate (`ToastKitchen.toast_on_plate`).
 GOAL = "toastOnPlate"
 #: The automaton states of the application (docs/ide.md, "Live values").
-STATES_TOPIC = "/maa/automaton_states"
+STATES_TOPIC = AUTOMATON_STATES_TOPIC
 #: Largest standard deviation of the bread's start position (m): the holder leaves it a few millimetres.
 MAX_BREAD_JITTER = 0.005
 #: Periods the bread must lie on the table before it counts as dropped (not a graze while carried).
@@ -56,46 +57,8 @@ EventKind = Literal[
     "toast-on-plate",
     "error",
 ]
-
-
-class WorldFile(TypedDict, total=False):
-    goldenSeconds: float
-    breadJitter: float
-    seed: int
-
-
-class ReportEvent(TypedDict):
-    time: float
-    kind: EventKind
-    text: str
-
-
-class StateChange(TypedDict):
-    time: float
-    node: str
-    state: str
-
-
-class ToastSummary(TypedDict):
-    level: float
-    color: str
-    onPlate: bool
-    dropped: bool
-
-
-class Report(TypedDict):
-    format: Literal["maa-scenario-report/1"]
-    goal: str | None
-    goalReached: bool
-    goalTime: float | None
-    endReason: str
-    simTime: float
-    world: WorldFile
-    events: list[ReportEvent]
-    states: list[StateChange]
-    finalStates: dict[str, str]
-    toast: ToastSummary | None
-    error: str | None
+#: The fields of a world file (@maa/protocol's ScenarioWorld).
+WORLD_FIELDS = ("goldenSeconds", "breadJitter", "seed")
 
 
 class WorldFileError(ValueError):
@@ -111,14 +74,14 @@ def _number(where: str, data: Mapping[str, Any], key: str) -> float | None:
     return float(value)
 
 
-def check_world(data: Any, where: str) -> WorldFile:
+def check_world(data: Any, where: str) -> ScenarioWorld:
     """Checks a parsed world file; the error names the file (`where`) and the field."""
     if not isinstance(data, dict):
         raise WorldFileError(f'{where}: a world file holds a JSON object, e.g. {{"goldenSeconds": 6}}')
-    unknown = sorted(set(data) - set(WorldFile.__annotations__))
+    unknown = sorted(set(data) - set(WORLD_FIELDS))
     if unknown:
         raise WorldFileError(f"{where}: /{unknown[0]}: unknown field (a world has goldenSeconds, breadJitter and seed)")
-    world: WorldFile = {}
+    world: ScenarioWorld = {}
     golden = _number(where, data, "goldenSeconds")
     if golden is not None:
         if not 0 < golden <= 3600:
@@ -141,7 +104,7 @@ def check_world(data: Any, where: str) -> WorldFile:
     return world
 
 
-def load_world(path: Path) -> WorldFile:
+def load_world(path: Path) -> ScenarioWorld:
     """Reads and checks a world file."""
     try:
         text = path.read_text(encoding="utf-8")
@@ -154,7 +117,7 @@ def load_world(path: Path) -> WorldFile:
     return check_world(data, str(path))
 
 
-def world_config(world: WorldFile, seed: int | None = None, golden_seconds: float | None = None) -> WorldConfig:
+def world_config(world: ScenarioWorld, seed: int | None = None, golden_seconds: float | None = None) -> WorldConfig:
     """The world's configuration: the file's fields, where the command line gave none."""
     defaults = WorldConfig()
     return WorldConfig(
@@ -166,7 +129,7 @@ def world_config(world: WorldFile, seed: int | None = None, golden_seconds: floa
     )
 
 
-def world_summary(config: WorldConfig) -> WorldFile:
+def world_summary(config: WorldConfig) -> ScenarioWorld:
     """The world of a run as the report shows it."""
     return {"goldenSeconds": config.golden_seconds, "breadJitter": config.bread_jitter, "seed": config.seed}
 
@@ -190,8 +153,8 @@ class ScenarioObserver:
     """Collects the events and state changes of a run (attach it before the first period)."""
 
     goal: str = GOAL
-    events: list[ReportEvent] = field(default_factory=list)
-    states: list[StateChange] = field(default_factory=list)
+    events: list[ScenarioEvent] = field(default_factory=list)
+    states: list[ScenarioStateChange] = field(default_factory=list)
     final_states: dict[str, str] = field(default_factory=dict)
     goal_time: float | None = None
     dropped: bool = False
@@ -302,7 +265,7 @@ class ScenarioObserver:
 
     def report(
         self, world: ToastKitchen, config: WorldConfig, end_reason: str, sim_time: float, error: str | None
-    ) -> Report:
+    ) -> ScenarioReport:
         level = float(world.toast_level)
         return {
             "format": REPORT_FORMAT,
@@ -325,7 +288,7 @@ class ScenarioObserver:
         }
 
 
-def failed_report(world: WorldFile, end_reason: str, error: str) -> Report:
+def failed_report(world: ScenarioWorld, end_reason: str, error: str) -> ScenarioReport:
     """The report of a run that could not start (a bad world file, a package that does not load)."""
     return {
         "format": REPORT_FORMAT,
@@ -343,7 +306,7 @@ def failed_report(world: WorldFile, end_reason: str, error: str) -> Report:
     }
 
 
-def write_report(path: Path, report: Report) -> None:
+def write_report(path: Path, report: ScenarioReport) -> None:
     """Writes the report atomically: a temporary file next to it, renamed into place."""
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=path.parent)
