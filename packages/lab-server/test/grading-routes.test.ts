@@ -4,12 +4,9 @@
 // (another student's results, run and recording, a student starting a course grading, a
 // recording name that walks out of its folder, no session, no CSRF token, a foreign Origin).
 // The real engine runs in grading-run.test.ts.
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
-import path from 'node:path';
-import type { SubmissionGrade } from '@maa/protocol/grading';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import type { EngineOptions } from '../src/grading/index.js';
 import { BACKENDS, type Backend, startBackend } from './backends.js';
+import { engine } from './grading-engine.js';
 import type { Client } from './http-client.js';
 import { COURSE, EXERCISE, type Lab, put, startLab, until } from './workspace-setup.js';
 
@@ -20,49 +17,6 @@ const SPEC = {
         { id: 'hidden-tests', title: 'Hidden stream tests', kind: 'tests', weight: 30, files: ['Controller.hidden.stream'] },
     ],
 };
-
-/** Grades by the files: 10 points when Controller.arc says `// correct`, the hidden tests when it says `// tested`. */
-async function engine(options: EngineOptions): Promise<SubmissionGrade[]> {
-    if (!readFileSync(path.join(options.gradingDir, 'Controller.hidden.stream'), 'utf8').includes('hidden'))
-        throw new Error('the hidden file did not reach the engine');
-    options.onProgress?.({ event: 'started', tasks: options.submissions.length, mode: 'local', nodes: 1, cpus: 1 });
-    return options.submissions.map((s) => {
-        const controller = readFileSync(path.join(s.root, 'toast', 'Controller.arc'), 'utf8');
-        if (controller.includes('// explode')) throw new Error('the engine failed on purpose');
-        const recording = path.join(options.workDir, s.id, 'standard.mcap');
-        mkdirSync(path.dirname(recording), { recursive: true });
-        writeFileSync(recording, `mcap of ${s.id}`);
-        options.onProgress?.({ event: 'task', id: `${s.id}.tests`, status: 'ok' });
-        const correct = controller.includes('// correct') ? 10 : 0;
-        const tested = controller.includes('// tested') ? 30 : 0;
-        return {
-            submission: s.id,
-            score: correct + tested,
-            maxScore: 40,
-            criteria: [
-                { id: 'no-errors', title: 'The model has no errors', kind: 'diagnostics', score: correct, max: 10, feedback: [] },
-                {
-                    id: 'hidden-tests',
-                    title: 'Hidden stream tests',
-                    kind: 'tests',
-                    score: tested,
-                    max: 30,
-                    feedback: tested
-                        ? []
-                        : [
-                              {
-                                  severity: 'error',
-                                  text: "Hidden test 'serves' failed",
-                                  element: { qualifiedName: 'toast.Controller', file: 'toast/Controller.arc', line: 3 },
-                              },
-                          ],
-                },
-            ],
-            recordings: [{ scenario: 'standard', file: recording }],
-            tasks: [{ id: `${s.id}.tests`, status: 'ok', seconds: 0.1 }],
-        } satisfies SubmissionGrade;
-    });
-}
 
 describe.each(BACKENDS)('grading routes on %s', (backendName) => {
     let backend: Backend;

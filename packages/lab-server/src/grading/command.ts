@@ -8,6 +8,7 @@ import { courseNamed } from '../exercises/course.js';
 import { instructor } from '../exercises/command.js';
 import path from 'node:path';
 import type { LabStore } from '../storage/index.js';
+import type { GradeEngine } from './engine.js';
 import { GradingService, GradingUnavailable } from './service.js';
 import { resultView, type ResultView } from './views.js';
 
@@ -46,13 +47,14 @@ function round(n: number): string {
     return String(Math.round(n * 100) / 100);
 }
 
-async function gradeExercise(io: LabIo, store: LabStore, options: GradeOptions): Promise<void> {
+async function gradeExercise(io: LabIo, store: LabStore, options: GradeOptions, engine: GradeEngine | undefined): Promise<void> {
     const course = await courseNamed(store, options.course);
     const exercise = await store.findExercise(course.id, options.exercise);
     if (!exercise?.releasedAt)
         throw new LabCliError(`the course ${course.name} has no released exercise ${JSON.stringify(options.exercise)}`);
     const by = await instructor(store, course.name, options.as);
     const service = new GradingService(store, {
+        ...(engine ? { engine } : {}),
         dataDir: path.resolve(io.cwd, options.dataDir ?? DEFAULT_DATA_DIR),
         ...(options.rayAddress ? { rayAddress: options.rayAddress } : {}),
         ...(options.python ? { python: path.resolve(io.cwd, options.python) } : {}),
@@ -76,7 +78,8 @@ async function gradeExercise(io: LabIo, store: LabStore, options: GradeOptions):
     io.out(`graded ${results.length} submissions of ${exercise.name} in ${course.name} (run ${run.id})\n`);
 }
 
-export function gradeCommand(io: LabIo): Command {
+/** The `grade` command; `engine` replaces @maa/grading (tests). */
+export function gradeCommand(io: LabIo, engine?: GradeEngine): Command {
     return new Command('grade')
         .description("grade every student's latest submission of an exercise (the exercise's grading/ folder says how)")
         .requiredOption('--course <name>', 'the course')
@@ -87,7 +90,7 @@ export function gradeCommand(io: LabIo): Command {
         .option('--data-dir <dir>', `${DATA_DIR_HELP}; recordings go to its recordings/`)
         .action((options: GradeOptions) =>
             withStore(io, options.dataDir, (store) =>
-                gradeExercise(io, store, options).catch((e: unknown) => {
+                gradeExercise(io, store, options, engine).catch((e: unknown) => {
                     if (e instanceof ExerciseError) throw new LabCliError(e.message);
                     throw e;
                 }),
