@@ -33,7 +33,10 @@ Values are integers (``5L`` a long), floats (``1.5f`` a float), ``'c'`` characte
 by the port's type). Out ports the test does not mention are not compared. The lambdas of
 ``transform`` are the Java subset of :mod:`maa_timesync.javalambda`; a lambda outside it is an
 error of the file. ``python -m maa_timesync.streamtest BUILD_DIR FILE...`` prints one line per
-test and a JSON summary with ``--json``; the exit code is 1 when a test fails.
+test and a JSON summary with ``--json``; the exit code is 1 when a test fails. ``--states OUT.json``
+also writes the state traces of the tests (format ``maa-stream-states/1``, for automaton coverage):
+per test of a component with an automaton (or a mode automaton) its state path before the first
+tick and after every tick (an event-driven component's also after each message that changed it).
 """
 
 from __future__ import annotations
@@ -341,14 +344,50 @@ def _same_items(want: Sequence[Mapping[str, Any]], got: Sequence[Mapping[str, An
     )
 
 
+STATES_FORMAT = "maa-stream-states/1"
+
+
+def state_path(system: System) -> str | None:
+    """The state of the component under test as the live values show it: its automaton's state path
+    (``Outer.Inner``) or the mode of a mode automaton; None for a component without an automaton."""
+    behavior = system.top.behavior
+    if behavior is not None:
+        return behavior.state_path()
+    mode = getattr(system.top, "mode", None)  # maa_timesync.modes.ModeInstance
+    return mode if isinstance(mode, str) else None
+
+
+def _trace_states(system: System, trace: list[str]) -> None:
+    """Records the state path of the component under test into ``trace``: now (before the first tick),
+    then after every step of it that took a tick (one slice) or changed its state."""
+    first = state_path(system)
+    if first is None:
+        return
+    trace.append(first)
+    top = system.top
+    ticks = top.buffers[""]  # the hidden tick port: every slice of the component takes one tick off it
+    execute = top.execute
+
+    def traced() -> None:
+        before = len(ticks)
+        execute()
+        state = state_path(system) or ""
+        if len(ticks) < before or state != trace[-1]:
+            trace.append(state)
+
+    top.execute = traced  # type: ignore[method-assign]
+
+
 def run_test(
     ctype: type[ComponentType],
     params: Mapping[str, object],
     test: StreamTest,
     enums: Mapping[str, type[enum.Enum]],
     port_types: Mapping[str, object] | None = None,
+    trace: list[str] | None = None,
 ) -> list[str]:
-    """Runs one test; returns the differences (empty when it passes)."""
+    """Runs one test; returns the differences (empty when it passes). With ``trace`` the state path of
+    the component is appended to it before the first tick and after every tick (nothing without an automaton)."""
     types = dict(ctype.PORT_TYPES) if port_types is None else dict(port_types)
     problems: list[str] = []
     for port in test.inputs:
@@ -364,6 +403,8 @@ def run_test(
         return problems
     system = System(ctype, params)
     system.init()
+    if trace is not None:
+        _trace_states(system, trace)
 
     def feed(port: str, items: Sequence[object]) -> None:
         for item in items:
@@ -453,8 +494,9 @@ def _in_configuration(
     raise StreamTestError(f"{file}: the build of {ctype.NAME} has another feature configuration than {own} (it has {built})")
 
 
-def run_files(build: Path, files: Sequence[Path]) -> list[dict[str, Any]]:
-    """Runs the stream test files against a generated build; one result per test."""
+def run_files(build: Path, files: Sequence[Path], traces: list[dict[str, Any]] | None = None) -> list[dict[str, Any]]:
+    """Runs the stream test files against a generated build; one result per test. With ``traces`` the
+    state trace of every test of a component with an automaton is appended to it (``maa-stream-states/1``)."""
     if str(build) not in sys.path:
         sys.path.insert(0, str(build))
     app = importlib.import_module("maa_app")
@@ -480,22 +522,54 @@ def run_files(build: Path, files: Sequence[Path]) -> list[dict[str, Any]]:
             results.append({"file": str(file), "test": None, "line": 0, "passed": False, "problems": [str(exc)]})
             continue
         for test in parsed.tests:
+            trace: list[str] = []
             try:
-                problems = run_test(ctype, params, test, enums, port_types)
+                problems = run_test(ctype, params, test, enums, port_types, trace)
             except Exception as exc:  # the component crashed
                 problems = [f"{type(exc).__name__}: {exc}"]
+            if traces is not None and trace:
+                traces.append({"file": str(file), "line": test.line, "test": test.name, "component": parsed.component, "states": trace})
             results.append({"file": str(file), "test": test.name, "line": test.line, "passed": not problems, "problems": problems})
     return results
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    args = list(sys.argv[1:] if argv is None else argv)
+def _write_states(path: Path, traces: list[dict[str, Any]]) -> None:
+    """Writes the state traces atomically (a temporary file renamed into place)."""
+    part = path.with_name(f".{path.name}.part")
+    part.write_text(json.dumps({"format": STATES_FORMAT, "tests": traces}, indent=1) + "\n", encoding="utf-8")
+    part.replace(path)
+
+
+def _options(args: list[str]) -> tuple[bool, Path | None, list[str]] | str:
+    """``--json`` and ``--states FILE`` taken out of the arguments; a message when they are bad."""
     as_json = "--json" in args
     args = [a for a in args if a != "--json"]
+    states: Path | None = None
+    if "--states" in args:
+        at = args.index("--states")
+        if at + 1 >= len(args) or args[at + 1].startswith("--"):
+            return "--states needs a file name"
+        states = Path(args[at + 1])
+        del args[at : at + 2]
     if len(args) < 1:
-        print("usage: python -m maa_timesync.streamtest BUILD_DIR [--json] FILE...", file=sys.stderr)
+        return "usage: python -m maa_timesync.streamtest BUILD_DIR [--json] [--states OUT.json] FILE..."
+    return as_json, states, args
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    options = _options(list(sys.argv[1:] if argv is None else argv))
+    if isinstance(options, str):
+        print(options, file=sys.stderr)
         return 2
-    results = run_files(Path(args[0]), [Path(a) for a in args[1:]])
+    as_json, states, args = options
+    traces: list[dict[str, Any]] | None = [] if states is not None else None
+    results = run_files(Path(args[0]), [Path(a) for a in args[1:]], traces)
+    if states is not None and traces is not None:
+        try:
+            _write_states(states, traces)
+        except OSError as exc:
+            print(f"cannot write the state traces {states}: {exc}", file=sys.stderr)
+            return 2
     if as_json:
         print(json.dumps(results, indent=1))
     else:
