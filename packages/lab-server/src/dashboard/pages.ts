@@ -21,6 +21,8 @@ td.bad { background: #fde2e1; } td.warn { background: #fff3cd; } td.good { backg
 pre { background: #f6f6f6; padding: 0.5em; overflow: auto; }
 .diag-error { color: #a00000; } .diag-warning { color: #7a5200; }
 #status { min-height: 1.2em; }
+section.grading { margin-top: 1.5em; } tr.feedback td { background: #fafafa; } tr.feedback ul { margin: 0.2em 0 0.6em; }
+table.grades th button { font-weight: normal; text-decoration: underline; }
 `;
 
 export const DASHBOARD_HTML = `<!doctype html>

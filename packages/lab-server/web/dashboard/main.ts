@@ -2,6 +2,8 @@
 // into dist/web/dashboard.js and served as /lab-assets/dashboard.js under a strict CSP (no inline
 // script). Everything the server sends is put into the page as text (never as HTML).
 import type { Dashboard, DashboardCell } from '../../src/dashboard/data.js';
+import { el } from './dom.js';
+import { GradingSection } from './grading.js';
 import { cellSummary, cellTone, type SortKey, sortStudents } from './table.js';
 
 /** How often the table asks for changes (an unchanged dashboard answers 304 without a body). */
@@ -9,18 +11,6 @@ const POLL_MS = 5000;
 
 const app = document.getElementById('app') as HTMLElement;
 const status = document.getElementById('status') as HTMLElement;
-
-/** An element with properties (className, href, type, ...) and children (text is text, never HTML). */
-function el<K extends keyof HTMLElementTagNameMap>(
-    tag: K,
-    props: Record<string, string | boolean> = {},
-    ...children: (Node | string)[]
-): HTMLElementTagNameMap[K] {
-    const node: HTMLElementTagNameMap[K] = document.createElement(tag);
-    Object.assign(node, props);
-    node.append(...children);
-    return node;
-}
 
 async function getJson<T>(path: string): Promise<T> {
     const answer = await fetch(path, { headers: { Accept: 'application/json' }, cache: 'no-store' });
@@ -46,6 +36,9 @@ class CourseTable {
     private filter = '';
     private csrf: string | undefined;
     private readonly tableHolder = el('div');
+    /** one grading section per exercise (docs/lab.md "Grading") */
+    private readonly gradingHolder = el('div', { id: 'grading' });
+    private gradedExercises = '';
 
     constructor(private readonly course: string) {}
 
@@ -60,6 +53,7 @@ class CourseTable {
             el('h1', { id: 'title' }, `Dashboard: ${this.course}`),
             el('p', {}, el('label', { htmlFor: 'filter' }, 'Filter by name '), filter, ' ', csv),
             this.tableHolder,
+            this.gradingHolder,
         );
         this.csrf = (await getJson<{ csrfToken: string }>('/api/me')).csrfToken;
         await this.poll();
@@ -74,6 +68,7 @@ class CourseTable {
                 this.etag = answer.headers.get('ETag') ?? undefined;
                 (document.getElementById('title') as HTMLElement).textContent = `Dashboard: ${this.dashboard.course.title}`;
                 this.render();
+                this.renderGrading();
                 status.textContent = `Updated ${new Date().toLocaleTimeString()}`;
             } else if (answer.status !== 304) {
                 const json = await answer.json().catch(() => ({}));
@@ -113,6 +108,17 @@ class CourseTable {
             el('tbody', {}, ...rows),
         );
         this.tableHolder.replaceChildren(table);
+    }
+
+    /** The grading sections, made again only when the course's exercises change. */
+    private renderGrading(): void {
+        const d = this.dashboard;
+        const names = d ? d.exercises.map((e) => e.name).join('\n') : '';
+        if (!d || names === this.gradedExercises) return;
+        this.gradedExercises = names;
+        const sections = d.exercises.map((e) => new GradingSection(this.course, e.name, e.title, () => this.csrf ?? ''));
+        this.gradingHolder.replaceChildren(el('h2', {}, 'Grading'), ...sections.map((s) => s.element));
+        for (const section of sections) void section.load();
     }
 
     private header(column: string, label: string): HTMLTableCellElement {
