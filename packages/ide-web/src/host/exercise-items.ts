@@ -8,6 +8,14 @@ export interface ExerciseItem {
     readonly tooltip?: string;
     /** a workspace path the row opens */
     readonly file?: string;
+    /** the line (1-based) the file opens at */
+    readonly line?: number;
+    /** a command the row runs (when it opens no file) */
+    readonly command?: string;
+    /** a download the row starts (a path on the lab) */
+    readonly url?: string;
+    /** open from the start (a row with children) */
+    readonly expanded?: boolean;
     readonly icon: string;
     readonly children?: readonly ExerciseItem[];
     /** Markdown the row shows in its tooltip and opens as a read-only document */
