@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
@@ -28,6 +29,13 @@ def parser() -> argparse.ArgumentParser:
     )
     p.add_argument("--ros-domain", type=int, metavar="N", help="ROS_DOMAIN_ID of the run (0..232)")
     p.add_argument("--env", action="append", default=[], metavar="NAME=VALUE", help="an environment variable")
+    p.add_argument(
+        "--pass-env",
+        action="append",
+        default=[],
+        metavar="NAME",
+        help="pass this variable of our own environment on (for secrets: a command line is visible to every user)",
+    )
     p.add_argument("--wall-seconds", type=float, default=0, help="wall-clock limit (default 0: none)")
     p.add_argument("--cpu-seconds", type=int, default=3600, help="CPU time limit per process (default 3600)")
     p.add_argument("--memory-mb", type=int, default=4096, help="address space per process (default 4096)")
@@ -45,6 +53,9 @@ def spec_of(args: argparse.Namespace) -> SandboxSpec:
         if not eq or not name:
             raise SandboxError(f"--env needs NAME=VALUE, not {item!r}")
         env[name] = value
+    for name in args.pass_env:
+        if name in os.environ:
+            env[name] = os.environ[name]
     limits = Limits(
         args.wall_seconds, args.cpu_seconds, args.memory_mb, args.processes, args.file_size_mb, args.open_files
     )

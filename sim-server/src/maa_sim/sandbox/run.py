@@ -4,6 +4,7 @@ kill of the whole sandbox (its pid namespace), output tails and the reason it en
 from __future__ import annotations
 
 import contextlib
+import ctypes
 import fcntl
 import os
 import random
@@ -38,16 +39,6 @@ def uid_range() -> tuple[int, int]:
     return first, last
 
 
-def _uid_busy(uid: int) -> bool:
-    """A process of this uid is alive (left over from an earlier run): the uid is not reused."""
-    for entry in os.scandir("/proc"):
-        if entry.name.isdigit():
-            with contextlib.suppress(OSError):
-                if entry.stat().st_uid == uid:
-                    return True
-    return False
-
-
 @contextlib.contextmanager
 def run_user() -> Iterator[int | None]:
     """A uid of its own for one run (held by a lock file until the run ends); None when not root."""
@@ -67,8 +58,8 @@ def run_user() -> Iterator[int | None]:
             os.close(fd)
             continue
         try:
-            if _uid_busy(uid):
-                continue
+            if _pids_of(uid):
+                continue  # a process of this uid is alive (left over from an earlier run)
             yield uid
             return
         finally:
@@ -135,16 +126,6 @@ class _Tail:
         return bytes(self.data[-TAIL_BYTES:]).decode(errors="replace")
 
 
-def _processes_of(uid: int) -> int:
-    count = 0
-    for entry in os.scandir("/proc"):
-        if entry.name.isdigit():
-            with contextlib.suppress(OSError):
-                if entry.stat().st_uid == uid:
-                    count += 1
-    return count
-
-
 def _extra_readonly(argv: Sequence[str]) -> list[Path]:
     python = interpreter_of(argv[0])
     return list(python_view(python)) if python else []
@@ -158,9 +139,48 @@ class _Ended:
     cpu: float
 
 
-def _wait(proc: subprocess.Popen[bytes], wall_seconds: float) -> _Ended:
+def _pids_of(uid: int) -> list[int]:
+    pids = []
+    for entry in os.scandir("/proc"):
+        if entry.name.isdigit():
+            with contextlib.suppress(OSError):
+                if entry.stat().st_uid == uid:
+                    pids.append(int(entry.name))
+    return pids
+
+
+def _living_members(group: int, uid: int | None) -> list[int]:
+    """Processes (not zombies) of the process group or of the uid."""
+    found = []
+    for entry in os.scandir("/proc"):
+        if not entry.name.isdigit():
+            continue
+        try:
+            fields = Path(entry.path, "stat").read_text().rpartition(")")[2].split()
+            owner = entry.stat().st_uid
+        except OSError:
+            continue
+        state, pgrp = fields[0], int(fields[2])
+        if state not in ("Z", "X") and (pgrp == group or (uid is not None and owner == uid)):
+            found.append(int(entry.name))
+    return found
+
+
+def _end_leftovers(group: int, uid: int | None, patience: float = 30.0) -> None:
+    """Kills what is left of a sandbox and waits until it is gone. bwrap returns as soon as the
+    command ended, while the pid namespace (the command's children) is torn down after it; the
+    run's processes are its process group and, as root, every process of the run's uid."""
+    deadline = time.monotonic() + patience
+    while (alive := _living_members(group, uid)) and time.monotonic() < deadline:
+        for pid in alive:
+            with contextlib.suppress(ProcessLookupError):
+                os.kill(pid, signal.SIGKILL)
+        time.sleep(0.01)
+
+
+def _wait(proc: subprocess.Popen[bytes], wall_seconds: float, uid: int | None) -> _Ended:
     """Waits for the sandbox (killing its whole process group and pid namespace at the wall limit);
-    reaps it with wait4 for the CPU time of everything that ran in it."""
+    reaps it with wait4 for the CPU time of everything that ran in it; ends what is left of it."""
     started = time.monotonic()
     done = threading.Event()
     box: list[tuple[int, float]] = []
@@ -181,6 +201,7 @@ def _wait(proc: subprocess.Popen[bytes], wall_seconds: float) -> _Ended:
         done.wait()
     returncode, cpu = box[0]
     proc.returncode = returncode
+    _end_leftovers(proc.pid, uid)
     return _Ended(returncode, timed_out, time.monotonic() - started, cpu)
 
 
@@ -199,7 +220,7 @@ def run_sandboxed(argv: Sequence[str], spec: SandboxSpec) -> SandboxResult:
             raise SandboxError(f"cannot start bubblewrap: {e}") from e
         assert proc.stdout is not None and proc.stderr is not None
         out, err = _Tail(proc.stdout), _Tail(proc.stderr)
-        ended = _wait(proc, spec.limits.wall_seconds)
+        ended = _wait(proc, spec.limits.wall_seconds, uid)
         stdout, stderr = out.text(), err.text()
     code, sig = split_status(ended.returncode, ended.timed_out)
     reason = describe(code, sig, ended.timed_out, ended.cpu, spec, stderr)
@@ -207,7 +228,7 @@ def run_sandboxed(argv: Sequence[str], spec: SandboxSpec) -> SandboxResult:
 
 
 def _nproc_base(uid: int | None) -> int:
-    return _processes_of(os.getuid()) if uid is None else 0
+    return len(_pids_of(os.getuid())) if uid is None else 0
 
 
 def split_status(returncode: int, timed_out: bool) -> tuple[int | None, int | None]:
@@ -292,6 +313,7 @@ def run_attached(argv: Sequence[str], spec: SandboxSpec) -> SandboxResult:
     SIGTERM, SIGINT and SIGHUP to this process reach the command (so it can stop gracefully): the
     form `python -m maa_sim.sandbox` runs, e.g. under the lab's simulation sessions."""
     spec.limits.check()
+    _become_subreaper()
     with run_user() as uid, handed_over(spec.writable, uid):
         cmd = build_command(argv, spec, _extra_readonly(argv), uid, None, _nproc_base(uid))
         try:
@@ -309,10 +331,27 @@ def run_attached(argv: Sequence[str], spec: SandboxSpec) -> SandboxResult:
 
         previous = {s: signal.signal(s, forward) for s in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP)}
         try:
-            ended = _wait(proc, spec.limits.wall_seconds)
+            ended = _wait(proc, spec.limits.wall_seconds, uid)
+            _reap_adopted()
         finally:
             for s, handler in previous.items():
                 signal.signal(s, handler)
     code, sig = split_status(ended.returncode, ended.timed_out)
     reason = describe(code, sig, ended.timed_out, ended.cpu, spec)
     return SandboxResult(code, sig, ended.timed_out, ended.wall, "", "", reason, ended.cpu)
+
+
+def _become_subreaper() -> None:
+    """Orphans of our children become ours (PR_SET_CHILD_SUBREAPER): the sandbox's pid 1, which
+    outlives bwrap for a moment, is then reaped here and no zombie of the run is left behind."""
+    libc = ctypes.CDLL(None, use_errno=True)
+    libc.prctl(36, 1, 0, 0, 0)  # PR_SET_CHILD_SUBREAPER
+
+
+def _reap_adopted() -> None:
+    """Waits for every child left (the sandbox's pid 1 and whatever it adopted) and reaps it."""
+    while True:
+        try:
+            os.waitpid(-1, 0)
+        except ChildProcessError:
+            return
