@@ -29,18 +29,10 @@ export interface EngineOptions {
 
 export type GradeEngine = (options: EngineOptions) => Promise<SubmissionGrade[]>;
 
-/** @maa/grading's gradeSubmissions, loaded on first use (the lab runs without it until a grading starts). */
+/** @maa/grading's gradeSubmissions, loaded on first use (the language services load with it, so not at the lab's start). */
 export const defaultEngine: GradeEngine = async (options) => {
-    // A variable specifier: the lab builds without the engine; a grading without it fails by name.
-    const specifier = '@maa/grading';
-    let engine: { gradeSubmissions?: GradeEngine };
-    try {
-        engine = (await import(specifier)) as { gradeSubmissions?: GradeEngine };
-    } catch (e) {
-        throw new Error(`the grading engine @maa/grading cannot be loaded: ${(e as Error).message}`);
-    }
-    if (typeof engine.gradeSubmissions !== 'function') throw new Error('@maa/grading has no gradeSubmissions');
-    return engine.gradeSubmissions(options);
+    const { gradeSubmissions } = await import('@maa/grading');
+    return gradeSubmissions(options);
 };
 
 /** Progress as the run stores it. */
@@ -51,12 +43,13 @@ export interface Progress {
 
 /**
  * The run's progress after an engine event: an event with numeric `done` and `total` says it;
- * the driver's `started` line gives the task count, each `task` line one more done. Anything
- * else leaves the progress as it was.
+ * the driver's `started` line gives the task count, each `task` line one more done (@maa/grading
+ * forwards them as `{kind: 'driver', line}`). Anything else leaves the progress as it was.
  */
 export function progressOf(event: unknown, before: Progress): Progress {
     if (typeof event !== 'object' || event === null) return before;
     const e = event as Record<string, unknown>;
+    if (e['kind'] === 'driver') return progressOf(e['line'], before);
     if (typeof e['done'] === 'number' && typeof e['total'] === 'number') return { done: e['done'], total: e['total'] };
     if (e['event'] === 'started' && typeof e['tasks'] === 'number') return { done: 0, total: e['tasks'] };
     if (e['event'] === 'task') {
