@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Creates sim-server/.venv with the machine's python3 and installs maa-sim with its test extras
+# Creates sim-server/.venv with the machine's python3 and installs maa-sim with its test and grade extras
 # (pinned versions, see pyproject.toml). Idempotent: when the venv is up to date (same
 # pyproject.toml, same interpreter) it returns at once. Set MAA_SIM_FORCE_SETUP=1 to reinstall.
 set -euo pipefail
@@ -36,7 +36,7 @@ if [[ ! -x "$venv/bin/python" ]]; then
 fi
 export PIP_DISABLE_PIP_VERSION_CHECK=1
 "$venv/bin/python" -m pip install --quiet --upgrade "pip>=24"
-"$venv/bin/python" -m pip install --quiet -e "$here[test]"
+"$venv/bin/python" -m pip install --quiet -e "$here[test,grade]"
 # a quick check that the pieces load (rclpy needs its libraries, MuJoCo its model compiler)
 "$venv/bin/python" -c 'import rclpy, mujoco, viser, websockets, std_msgs.msg, sensor_msgs.msg, rosgraph_msgs.msg, rcl_interfaces.srv; import maa_sim.world as w; w.ToastKitchen()'
 echo "$want" > "$stamp"
