@@ -34,8 +34,9 @@ HEADLESS = ["--mode", "lockstep", "--rosbridge-port", "off", "--viser-port", "of
 
 
 def run_cli(args: list[str], timeout: float = 240) -> subprocess.CompletedProcess[str]:
+    """`python -m maa_sim run ...`, as a grading task runs it (grading-design.md)."""
     return subprocess.run(
-        [sys.executable, "-m", "maa_sim.cli", "run", *HEADLESS, *args],
+        [sys.executable, "-m", "maa_sim", "run", *HEADLESS, *args],
         capture_output=True,
         text=True,
         check=False,
