@@ -153,6 +153,9 @@ def test_the_report_is_written_atomically(tmp_path: Path) -> None:
         write_report(target, {"format": "maa-scenario-report/1", "error": Unserializable()})  # type: ignore[typeddict-item]
     assert target.read_text(encoding="utf-8") == "old"  # the old report stays whole
     assert [p.name for p in tmp_path.iterdir()] == ["report.json"]  # no temporary file left
+    write_report(target, {"format": "maa-scenario-report/1"})  # type: ignore[typeddict-item]
+    assert json.loads(target.read_text(encoding="utf-8")) == {"format": "maa-scenario-report/1"}
+    assert target.stat().st_mode & 0o777 == 0o644  # readable by the grader, whoever ran the task
 
 
 # ------------------------------------------------------------------------------------------ fixture runs

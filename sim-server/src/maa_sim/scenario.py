@@ -314,6 +314,7 @@ def write_report(path: Path, report: ScenarioReport) -> None:
         with os.fdopen(fd, "w", encoding="utf-8") as out:
             json.dump(report, out, indent=1)
             out.write("\n")
+        os.chmod(tmp, 0o644)  # as an ordinary file (mkstemp's is private to the run's user)
         os.replace(tmp, path)
     except BaseException:
         with contextlib.suppress(OSError):
