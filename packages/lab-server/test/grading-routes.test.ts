@@ -6,7 +6,7 @@
 // The real engine runs in grading-run.test.ts.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { BACKENDS, type Backend, startBackend } from './backends.js';
-import { engine } from './grading-engine.js';
+import { engine, releaseHeld } from './grading-engine.js';
 import type { Client } from './http-client.js';
 import { COURSE, EXERCISE, type Lab, put, startLab, until } from './workspace-setup.js';
 
@@ -161,6 +161,30 @@ describe.each(BACKENDS)('grading routes on %s', (backendName) => {
         const next = await ada.post(`${lab.ws('ada')}/grading/submit`);
         expect(await finished(ada, next.json.run.url)).toMatchObject({ status: 'done' });
         expect((await ada.send(`${lab.ws('ada')}/grading`)).json.latest.score).toBe(40);
+    });
+
+    it('takes one grading at a time per student and one course grading at a time: 409 while one waits or runs', async () => {
+        await controller(bob, 'bob', '// hold');
+        const first = await bob.post(`${lab.ws('bob')}/grading/submit`);
+        expect(first.status).toBe(202);
+        const again = await bob.post(`${lab.ws('bob')}/grading/submit`);
+        expect(again.status).toBe(409);
+        expect(again.json.error).toMatch(/your last submission is still being graded/);
+        // ada's submission waits behind bob's (one run at a time per exercise), then runs.
+        const ada1 = await ada.post(`${lab.ws('ada')}/grading/submit`);
+        expect(ada1.status).toBe(202);
+        const course = await teacher.post(`${base}/runs`);
+        expect(course.status).toBe(202);
+        expect((await teacher.post(`${base}/runs`)).status).toBe(409);
+        expect((await ada.send(ada1.json.run.url)).json.run.status).toBe('queued');
+        await until(() => releaseHeld() > 0, "bob's grading to wait");
+        await finished(bob, first.json.run.url);
+        // The course run grades bob's held submission again: let it go too.
+        await until(async () => {
+            releaseHeld();
+            return (await teacher.send(course.json.run.url)).json.run.status === 'done';
+        }, 'the course run');
+        expect((await ada.send(ada1.json.run.url)).json.run.status).toBe('done');
     });
 
     it('says 409 for an exercise without grading', async () => {

@@ -24,6 +24,7 @@ interface ServeOptions {
     maxWorkspaceBytes: string;
     maxWorkspaceFiles: string;
     generateThreads?: string;
+    rayAddress?: string;
 }
 
 /** The environment variable that holds the OpenID Connect client secret (never a command-line argument). */
@@ -61,6 +62,10 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
             '--generate-threads <n>',
             `the worker threads that run the students' generators (default: the cores but one, 1 to 4; here ${defaultGenerateThreads()})`,
         )
+        .option(
+            '--ray-address <address>',
+            'grading: run the grading tasks on this Ray cluster (default: RAY_ADDRESS, else Ray on this machine)',
+        )
         .action(async (options: ServeOptions) => {
             const port = Number(options.port);
             if (!Number.isInteger(port) || port < 0 || port > 65535)
@@ -84,6 +89,7 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
                     ...(oidc ? { oidc } : {}),
                     log: (line) => io.err(`maa-lab: ${line}\n`),
                     workspaces: { dataDir, quotas, ...(generateThreads ? { generateThreads } : {}) },
+                    ...(options.rayAddress ? { grading: { rayAddress: options.rayAddress } } : {}),
                 });
             } catch (e) {
                 await store.close();

@@ -9,7 +9,7 @@ import { instructor } from '../exercises/command.js';
 import path from 'node:path';
 import type { LabStore } from '../storage/index.js';
 import type { GradeEngine } from './engine.js';
-import { GradingService, GradingUnavailable } from './service.js';
+import { GradingBusy, GradingService, GradingUnavailable } from './service.js';
 import { resultView, type ResultView } from './views.js';
 
 interface GradeOptions {
@@ -61,7 +61,7 @@ async function gradeExercise(io: LabIo, store: LabStore, options: GradeOptions, 
         onProgress: (_run, p) => io.err(`maa-lab: grading ${exercise.name}: ${p.done}/${p.total} tasks done\n`),
     });
     let run = await service.gradeCourse(exercise, by).catch((e: unknown) => {
-        if (e instanceof GradingUnavailable) throw new LabCliError(e.message);
+        if (e instanceof GradingUnavailable || e instanceof GradingBusy) throw new LabCliError(e.message);
         throw e;
     });
     io.err(`maa-lab: grading ${run.total} submissions of ${exercise.name} (run ${run.id})\n`);

@@ -2,5 +2,5 @@
 export { defaultEngine, type EngineOptions, type EngineSubmission, type GradeEngine, progressOf } from './engine.js';
 export { keepRecordings, recordingFile, recordingName } from './files.js';
 export { addGradingRoutes } from './routes.js';
-export { GradingService, type GradingServiceOptions, GradingUnavailable } from './service.js';
+export { GradingBusy, GradingService, type GradingServiceOptions, GradingUnavailable } from './service.js';
 export { gradingBase, type ResultView, type RunView, recordingUrl, resultView, runView } from './views.js';

@@ -10,7 +10,7 @@ import type { AuthedRequest, LabRoutes } from '../http/routes.js';
 import type { Course, Exercise, GradingResult, LabStore, User } from '../storage/index.js';
 import { openWorkspaceFor, requireOwner, WS_PREFIX } from '../workspaces/resolve.js';
 import { recordingFile } from './files.js';
-import { GradingUnavailable, type GradingService } from './service.js';
+import { GradingBusy, type GradingService, GradingUnavailable } from './service.js';
 import { gradingBase, resultView, runView } from './views.js';
 
 const EXERCISE_PREFIX = '/api/courses/:course/exercises/:exercise/grading';
@@ -54,7 +54,7 @@ async function resultViews(store: LabStore, results: GradingResult[]) {
 
 function asStarted<T>(work: () => Promise<T>): Promise<T> {
     return work().catch((e: unknown) => {
-        if (e instanceof GradingUnavailable) throw new HttpError(409, e.message);
+        if (e instanceof GradingUnavailable || e instanceof GradingBusy) throw new HttpError(409, e.message);
         throw e;
     });
 }

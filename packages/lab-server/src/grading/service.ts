@@ -52,6 +52,8 @@ export class GradingService {
     /** Submits the workspace as it is now and queues its grading; returns the run (queued). */
     async submit(exercise: Exercise, workspace: Workspace, by: User): Promise<{ run: GradingRun; submission: OwnedSubmission }> {
         await this.requireGrading(exercise);
+        if (await this.unfinished(exercise, (r) => r.kind === 'submission' && r.requestedBy === by.id))
+            throw new GradingBusy('your last submission is still being graded: wait for its grade, then submit again');
         const submitted = await this.store.submit(workspace.id, by.id);
         const submission: OwnedSubmission = { ...submitted, ownerId: workspace.ownerId };
         const run = await this.store.createGradingRun({ exerciseId: exercise.id, kind: 'submission', requestedBy: by.id, total: 1 });
@@ -62,6 +64,8 @@ export class GradingService {
     /** Queues the grading of every student's latest submission of the exercise; returns the run (queued). */
     async gradeCourse(exercise: Exercise, by: User): Promise<GradingRun> {
         await this.requireGrading(exercise);
+        if (await this.unfinished(exercise, (r) => r.kind === 'course'))
+            throw new GradingBusy(`a grading of every submission of ${exercise.name} is queued or running already: follow that one`);
         const submissions = await this.store.latestSubmissions(exercise.id);
         const run = await this.store.createGradingRun({
             exerciseId: exercise.id,
@@ -82,6 +86,12 @@ export class GradingService {
     async close(): Promise<void> {
         this.abort.abort(new Error(CLOSED));
         await this.settled();
+    }
+
+    /** Whether a run of the exercise that `which` picks is queued or running (in this process: others' runs end as failed at a restart). */
+    private async unfinished(exercise: Exercise, which: (run: GradingRun) => boolean): Promise<boolean> {
+        const runs = await this.store.listGradingRuns(exercise.id, 100);
+        return runs.some((r) => (r.status === 'queued' || r.status === 'running') && which(r));
     }
 
     private async requireGrading(exercise: Exercise): Promise<void> {
@@ -209,3 +219,6 @@ export class GradingService {
 
 /** The exercise cannot be graded: it has no grading folder. */
 export class GradingUnavailable extends Error {}
+
+/** A run of the same kind (the student's submission, the course's grading) is queued or running already. */
+export class GradingBusy extends Error {}
