@@ -13,6 +13,7 @@ import signal
 import socket
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 import uuid
@@ -22,6 +23,7 @@ import pytest
 
 from maa_sim.sandbox import Limits, SandboxError, SandboxResult, SandboxSpec, run_sandboxed
 from maa_sim.sandbox.run import DEFAULT_UIDS
+from maa_sim.sandbox.view import build_command
 
 pytestmark = pytest.mark.skipif(
     not (shutil.which("bwrap") or os.path.exists("/usr/bin/bwrap")),
@@ -337,3 +339,42 @@ while True:
     os.killpg(proc.pid, signal.SIGTERM)  # as the lab's simulation sessions stop a simulation
     assert proc.stdout.read() == "stopping\n"
     assert proc.wait(timeout=120) == 0
+
+
+@pytest.mark.skipif(not ROOT, reason="becomes another user with setpriv to play a service that is not root")
+def test_a_service_that_is_not_root_gets_a_user_namespace_instead() -> None:
+    # The interpreter lies under /root here, so the sandbox's command line (as built for a caller
+    # that is not root) is run by `nobody` with a shell program instead of run_sandboxed itself.
+    base = Path(tempfile.mkdtemp(prefix="maa-sandbox-nobody-"))  # pytest's tmp_path is root's own
+    try:
+        check_as_nobody(base)
+    finally:
+        shutil.rmtree(base)
+
+
+def check_as_nobody(base: Path) -> None:
+    out = base / "out"
+    out.mkdir()
+    os.chown(base, 65534, 65534)
+    os.chown(out, 65534, 65534)
+    secret = base / "secret.txt"
+    secret.write_text("other student's work")
+    secret.chmod(0o644)
+    limits = Limits(wall_seconds=60, cpu_seconds=10, memory_mb=512, processes=16, file_size_mb=16)
+    sandbox = SandboxSpec(readonly=[], writable=[out], cwd=out, limits=limits)
+    program = f"id -u; echo written > out.txt; cat {secret} || echo unreadable; grep CapEff /proc/self/status"
+    command = build_command(["/bin/sh", "-c", program], sandbox, [], None, None, nproc_base=8)
+    assert "--unshare-user" in command and "setpriv" not in command
+    done = subprocess.run(
+        ["setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", *command],
+        capture_output=True,
+        text=True,
+        check=False,
+        timeout=120,
+    )
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.split("\n")
+    assert lines[0] == "65534"
+    assert lines[1] == "unreadable"
+    assert lines[2].split() == ["CapEff:", "0000000000000000"]
+    assert (out / "out.txt").read_text() == "written\n"
