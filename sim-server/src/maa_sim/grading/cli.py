@@ -59,8 +59,12 @@ def _stop(signum: int, frame: FrameType | None) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from maa_sim.grading.driver import Lines, Options, run_job
-
+    try:
+        from maa_sim.grading.driver import Lines, Options, run_job
+    except ImportError as error:
+        hint = "install maa-sim with its grade extra (pip install 'maa-sim[grade]')"
+        print(f"maa_sim.grading: {error}: {hint}", file=sys.stderr)
+        return 1
     if args.workers is not None and args.workers < 1:
         print("maa_sim.grading: --workers must be at least 1", file=sys.stderr)
         return 2
