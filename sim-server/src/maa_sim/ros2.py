@@ -46,12 +46,22 @@ _LAUNCHER = (
 #: Domain ids handed out (0 is left to whatever else runs on the machine).
 DOMAIN_RANGE = range(1, 101)
 _LOCK_DIR = Path(tempfile.gettempdir()) / "maa-sim-domains"
+#: A domain id given from outside, used as it is: the lab's sandbox (maa_sim.sandbox, ros_domain)
+#: gives each workspace its own; a sandbox's /tmp is private, so the lock files would not see others.
+DOMAIN_ENV = "MAA_SIM_ROS_DOMAIN"
 
 
 class DomainLease:
     """A ROS domain id reserved for this process until `release()` (or its exit)."""
 
     def __init__(self) -> None:
+        given = os.environ.get(DOMAIN_ENV, "")
+        if given:
+            if not given.isdigit() or not 0 <= int(given) <= 232:
+                raise RuntimeError(f"{DOMAIN_ENV}={given!r} is not a ROS domain id (0..232)")
+            self.domain_id = int(given)
+            self._handle: IO[str] | None = None
+            return
         _LOCK_DIR.mkdir(parents=True, exist_ok=True)
         start = (os.getpid() * 7919 + time.monotonic_ns()) % len(DOMAIN_RANGE)
         for i in range(len(DOMAIN_RANGE)):
@@ -63,7 +73,7 @@ class DomainLease:
                 handle.close()
                 continue
             self.domain_id = domain
-            self._handle: IO[str] | None = handle
+            self._handle = handle
             return
         raise RuntimeError("no free ROS domain id (every one of 1..100 is in use on this machine)")
 

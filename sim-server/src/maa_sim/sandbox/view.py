@@ -203,6 +203,7 @@ def environment(spec: SandboxSpec) -> dict[str, str]:
         if not 0 <= spec.ros_domain <= 232:
             raise SandboxError(f"the ROS 2 domain must be 0..232, not {spec.ros_domain}")
         env["ROS_DOMAIN_ID"] = str(spec.ros_domain)
+        env["MAA_SIM_ROS_DOMAIN"] = str(spec.ros_domain)  # maa-sim's own nodes use it (maa_sim.ros2.DomainLease)
     env.update(spec.env)
     return env
 
