@@ -249,6 +249,20 @@ function table(rows, base) {
     return lines.join('\n');
 }
 
+/** What a course of 300 would need, from the measured time per task and the measured efficiency of 2 workers. */
+function projection(rows, base, scenarios) {
+    const perTask = base.wall / base.tasks;
+    const two = rows.filter((r) => r.workers === 2);
+    const efficiency = two.length > 0 ? Math.max(...two.map((r) => base.wall / r.wall)) / 2 : 1;
+    const tasks = 300 * (scenarios + 1); // the scenarios and one hidden-tests task per submission
+    const minutes = (workers) => ((tasks * perTask) / (workers === 1 ? 1 : workers * efficiency) / 60).toFixed(1);
+    return [
+        `One worker: ${perTask.toFixed(2)} s per task (wall time / tasks). Efficiency of 2 workers: ${(efficiency * 100).toFixed(0)} %.`,
+        `A course of 300 submissions x (${scenarios} scenarios + 1 hidden-tests task) = ${tasks} tasks at that efficiency:`,
+        `${minutes(1)} min on 1 worker, ${minutes(2)} min on 2, ${minutes(8)} min on 8, ${minutes(32)} min on 32 (e.g. 4 nodes of 8 cores).`,
+    ].join('\n');
+}
+
 async function main() {
     const options = parseArgs(process.argv.slice(2));
     if (!existsSync(python)) throw new Error(`${python} is missing: run bash sim-server/scripts/setup_env.sh`);
@@ -277,12 +291,7 @@ async function main() {
                 `\n@maa/grading end to end (check, generate, plan, driver on local Ray, scores): ${engine.tasks} tasks of 3 submissions in ${engine.seconds.toFixed(1)} s: ${engine.scores.join('; ')}`,
             );
         }
-        if (base) {
-            const perTask = base.wall / base.tasks;
-            console.log(
-                `\nOne worker: ${perTask.toFixed(1)} s per task. A course of 300 students x ${scenarios} scenarios = ${300 * scenarios} tasks: about ${((300 * scenarios * perTask) / 3600).toFixed(1)} h on one worker, ${((300 * scenarios * perTask) / 3600 / 32).toFixed(2)} h on 32 (if the speed-up stays linear).`,
-            );
-        }
+        if (base) console.log(`\n${projection(rows, base, scenarios)}`);
     } finally {
         if (!options.keep) await rm(work, { recursive: true, force: true });
         else console.log(`kept ${work}`);
