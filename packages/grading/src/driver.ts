@@ -1,9 +1,9 @@
 /**
  * Running a grade job on the Python grading driver (`python -m maa_sim.grading run --job JOB.json
  * --out OUTDIR`, Ray): its JSON lines are read as they come and forwarded; an AbortSignal stops it
- * (SIGTERM, then SIGKILL after a grace period).
+ * (SIGTERM, then SIGKILL to its process group after a grace period).
  */
-import { spawn } from 'node:child_process';
+import { type ChildProcess, spawn } from 'node:child_process';
 import { writeFile } from 'node:fs/promises';
 import { createInterface } from 'node:readline';
 import { type DriverLine, type DriverTask, driverLineContract, GRADE_JOB_FORMAT, type GradeJobTask } from '@maa/protocol/grading';
@@ -63,13 +63,18 @@ export async function runDriver(options: DriverOptions): Promise<DriverRun> {
         if (line.event === 'task') tasks.set(line.id, line);
         options.onLine?.(line);
     });
-    const stop = stopper(child.pid);
+    const stop = stopper(child);
     options.signal?.addEventListener('abort', stop, { once: true });
     try {
+        // 'exit', not 'close': processes Ray started may keep stderr open after the driver ended;
+        // stdout (the JSON lines) is the driver's own and ends with it.
+        const stdoutDone = new Promise<void>((resolve) => lines.once('close', resolve));
         const exitCode = await new Promise<number | null>((resolve, reject) => {
             child.on('error', (e) => reject(new DriverError(`could not start the grading driver ${options.python}: ${e.message}`)));
-            child.on('close', (code) => resolve(code));
+            child.on('exit', (code) => resolve(code));
         });
+        await stdoutDone;
+        child.stderr.destroy();
         options.signal?.throwIfAborted();
         if (exitCode !== 0)
             throw new DriverError(`the grading driver exited with ${exitCode}: ${stderr.trim().split('\n').slice(-10).join('\n')}`);
@@ -91,18 +96,22 @@ function parseLine(text: string): DriverLine | undefined {
     }
 }
 
-/** Stops the driver's process group (the driver and what it started): SIGTERM, SIGKILL after a grace period. */
-function stopper(pid: number | undefined): () => void {
+/**
+ * Stops the driver: SIGTERM to it (it cancels its tasks and shuts Ray down), then, if it has not
+ * ended after a grace period, SIGKILL to its whole process group (the driver and what it started).
+ */
+function stopper(child: ChildProcess): () => void {
     return () => {
-        if (pid === undefined) return;
-        const kill = (signal: NodeJS.Signals) => {
+        const pid = child.pid;
+        if (pid === undefined || child.exitCode !== null || child.signalCode !== null) return;
+        child.kill('SIGTERM');
+        const timer = setTimeout(() => {
             try {
-                process.kill(-pid, signal);
+                process.kill(-pid, 'SIGKILL');
             } catch {
                 // already gone
             }
-        };
-        kill('SIGTERM');
-        setTimeout(() => kill('SIGKILL'), KILL_GRACE_MS).unref();
+        }, KILL_GRACE_MS);
+        child.once('exit', () => clearTimeout(timer));
     };
 }

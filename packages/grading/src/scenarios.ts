@@ -46,11 +46,12 @@ export function gradeScenarios(
         }
         if (report.goalReached && report.goalTime !== null && report.goalTime <= scenario.timeLimit) {
             reached++;
+            const burnt = report.toast?.color === 'BURNT';
             feedback.push({
                 ...base,
-                severity: 'info',
+                severity: burnt ? 'warning' : 'info',
                 simTime: report.goalTime,
-                text: `Scenario '${scenario.title}': ${goal} after ${seconds(report.goalTime)} of simulated time.`,
+                text: `Scenario '${scenario.title}': ${goal} after ${seconds(report.goalTime)} of simulated time${burnt ? ', but the toast is burnt' : ''}.`,
             });
             continue;
         }

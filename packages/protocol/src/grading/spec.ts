@@ -162,10 +162,11 @@ export type TestsCriterion = Static<typeof TestsCriterion>;
 /** A scenario's initial world (`maa-sim run --world FILE`). */
 export const ScenarioWorld = Type.Object(
     {
-        /** Simulated seconds until the bread is golden (the bread colour threshold). */
+        /** Simulated seconds of toasting to toast level 1 (golden at 0.8 of it): the bread colour threshold. */
         goldenSeconds: Type.Optional(Type.Number({ exclusiveMinimum: 0, errorMessage: 'goldenSeconds must be a positive number' })),
-        /** Random variation of the toasting speed (0: none). */
+        /** Standard deviation in metres of the bread's start position in its holder (0: none; maa-sim allows up to 0.005). */
         breadJitter: Type.Optional(Type.Number({ minimum: 0, errorMessage: 'breadJitter must be a number from 0' })),
+        /** The scene's random seed. */
         seed: Type.Optional(Type.Integer({ errorMessage: 'seed must be an integer' })),
     },
     { title: 'ScenarioWorld', additionalProperties: false, errorMessage: 'world has goldenSeconds?, breadJitter?, seed?' },
