@@ -15,6 +15,6 @@ export { ROSBRIDGE_PATH, rejectUpgrade, SimProxy, VISER_PATH } from './proxy.js'
 export { PathRedactor } from './redact.js';
 export type { Router } from './router.js';
 export { packageDir, ros2Environment } from './server.js';
-export { SimSessions, type SimSessionOptions } from './sim-session.js';
+export { type SimCommandWrapper, type SimLaunch, SimSessions, type SimSessionOptions } from './sim-session.js';
 export { type StreamTestAnswer, StreamTestService, streamTestRequest } from './stream-tests.js';
 export { Workspace } from './workspace.js';

@@ -49,7 +49,24 @@ export interface SimSessionOptions {
     idleMs?: number;
     /** How long a stop waits after SIGTERM before SIGKILL (default 8 s). */
     stopGraceMs?: number;
+    /**
+     * Wraps maa-sim's command line, e.g. in a sandbox (the lab: `python -m maa_sim.sandbox ... --
+     * maa-sim run ...`). Default none: maa-sim runs as it is (maa-ide). The wrapper gets the
+     * session's signals (SIGTERM to its group on a stop) and must pass them on.
+     */
+    wrap?: SimCommandWrapper;
 }
+
+/** What a session would run: maa-sim, its arguments, its working folder (the package folder). */
+export interface SimLaunch {
+    command: string;
+    args: string[];
+    cwd: string;
+    request: SimStartRequest;
+}
+
+/** The command line that runs a launch instead (its first word is the program). */
+export type SimCommandWrapper = (launch: SimLaunch) => { command: string; args: string[] };
 
 interface Session {
     id: string;
@@ -85,6 +102,7 @@ export class SimSessions {
     private readonly readyTimeoutMs: number;
     private readonly idleMs: number;
     private readonly stopGraceMs: number;
+    private readonly wrap: SimCommandWrapper | undefined;
     /** Kills the running session's processes when the backend exits, however it exits. */
     private readonly onExit = (): void => this.killNow();
 
@@ -100,6 +118,7 @@ export class SimSessions {
         this.readyTimeoutMs = options.readyTimeoutMs ?? 90_000;
         this.idleMs = options.idleMs ?? 60_000;
         this.stopGraceMs = options.stopGraceMs ?? 8_000;
+        this.wrap = options.wrap;
         process.on('exit', this.onExit);
     }
 
@@ -205,7 +224,9 @@ export class SimSessions {
         const maaSim = ros2 ? await this.prepareRos2(ros2, request, log, push) : this.maaSim;
         if (request.mode === 'ros2') push(`maa-ide: starting ${maaSim} (ros2 mode)`);
         const token = randomBytes(32).toString('base64url');
-        const child = spawnMaaSim(maaSim, maaSimArgs(request, packageDir), packageDir, token);
+        const args = maaSimArgs(request, packageDir);
+        const launch = this.wrap ? this.wrap({ command: maaSim, args, cwd: packageDir, request }) : { command: maaSim, args };
+        const child = spawnMaaSim(launch.command, launch.args, packageDir, token);
         let markExited!: () => void;
         const session: Session = {
             // A ros2 session keeps the id it was shown with while preparing.

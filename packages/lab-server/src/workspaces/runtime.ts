@@ -18,6 +18,7 @@ import {
 } from '@maa/ide-server';
 import type { LabStore } from '../storage/index.js';
 import { MaterializedFolder } from './materialize.js';
+import { releaseRosDomain, sandboxPython, simSandbox } from './sim-sandbox.js';
 
 /** A largest accepted file body of the IDE router (files are saved by the lab's own routes). */
 const ROUTER_FILE_LIMIT = 1;
@@ -74,7 +75,18 @@ export class WorkspaceRuntime {
         this.tests = new StreamTestService(this.ide, this.generation);
         this.sims = new SimSessions(
             settings.maaSim,
-            { idleMs: settings.simIdleMs, readyTimeoutMs: settings.simReadyTimeoutMs, stopGraceMs: settings.simStopGraceMs },
+            {
+                idleMs: settings.simIdleMs,
+                readyTimeoutMs: settings.simReadyTimeoutMs,
+                stopGraceMs: settings.simStopGraceMs,
+                // maa-sim and the student's components run sandboxed (sim-sandbox.ts)
+                wrap: simSandbox({
+                    python: sandboxPython(settings.maaSim),
+                    workspaceId,
+                    generated: outDir,
+                    runDir: path.join(base, 'sim'),
+                }),
+            },
             ros2Environment(settings.ros2Venv),
         );
         this.proxy = new SimProxy(this.sims);
@@ -110,6 +122,7 @@ export class WorkspaceRuntime {
     async dispose(): Promise<void> {
         await this.sims.stop().catch(() => undefined);
         this.sims.dispose();
+        releaseRosDomain(this.workspaceId);
         this.proxy.close();
         await this.folder.remove();
     }
