@@ -378,3 +378,15 @@ def check_as_nobody(base: Path) -> None:
     assert lines[1] == "unreadable"
     assert lines[2].split() == ["CapEff:", "0000000000000000"]
     assert (out / "out.txt").read_text() == "written\n"
+
+
+def test_an_interpreter_with_a_repository_root_on_its_path_is_refused(tmp_path: Path) -> None:
+    # A stand-in interpreter that answers what python_view asks: its prefixes and sys.path.
+    venv = tmp_path / "repo" / ".venv"
+    (venv / "bin").mkdir(parents=True)
+    fake = venv / "bin" / "python"
+    answer = json.dumps(["/usr", "/usr", str(venv), "/usr/lib/python3", str(tmp_path / "repo")])
+    fake.write_text(f"#!/bin/sh\necho '{answer}'\n")
+    fake.chmod(0o755)
+    with pytest.raises(SandboxError, match="which holds its whole venv"):
+        run_sandboxed([str(fake), "-c", "pass"], spec(tmp_path))

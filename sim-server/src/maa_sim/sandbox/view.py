@@ -56,7 +56,12 @@ def python_view(python: str) -> tuple[Path, ...]:
         ).stdout
     except (OSError, subprocess.SubprocessError) as e:
         raise SandboxError(f"cannot ask the interpreter {python} for its folders: {e}") from e
-    dirs = [Path(p) for p in json.loads(out) if p and Path(p).is_dir()]
+    base_prefix, _, prefix, *_ = found = json.loads(out)
+    dirs = [Path(p) for p in found if p and Path(p).is_dir()]
+    for d in dirs:
+        # a sys.path entry above the venv (a repository root) would show the whole repository
+        if d != Path(prefix) and d in Path(prefix).parents and d != Path(base_prefix):
+            raise SandboxError(f"{python} has {d} on sys.path, which holds its whole venv {prefix}; not bound")
     return tuple(outermost(dirs))
 
 
