@@ -7,10 +7,11 @@
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
+import { gradeSubmissions } from '@maa/grading';
 import type { GradingSpec, SubmissionGrade } from '@maa/protocol/grading';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { loadExercise } from '../src/exercises/index.js';
-import { feedbackText, gradingUnavailable, loadGradeSubmissions, materialize, repo, simPython } from './grading-helpers.js';
+import { feedbackText, gradingUnavailable, materialize, repo, simPython } from './grading-helpers.js';
 
 const FIXTURES = path.join(repo, 'packages/lab-server/test/fixtures/grading');
 
@@ -48,7 +49,6 @@ async function gradeExercise(name: string): Promise<{ spec: GradingSpec; grades:
     });
     const gradingDir = path.join(folder, 'grading');
     const spec = JSON.parse(readFileSync(path.join(gradingDir, 'grading.json'), 'utf8')) as GradingSpec;
-    const gradeSubmissions = await loadGradeSubmissions();
     const grades = await gradeSubmissions({ spec, gradingDir, submissions, workDir: path.join(work, name, 'work'), python: simPython });
     return { spec, grades: new Map(grades.map((g) => [g.submission, g])) };
 }

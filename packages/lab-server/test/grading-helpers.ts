@@ -1,24 +1,13 @@
 // Shared by grading-examples.test.ts and grading-malicious.test.ts: why a grading test cannot run
-// here (no sim-server venv, no bubblewrap), @maa/grading's gradeSubmissions loaded by name (the
-// lab loads it so too: src/grading/engine.ts), and a submission written out as a model root.
+// here (no sim-server venv, no bubblewrap), a submission written out as a model root, and the
+// words of a criterion's feedback.
 import { accessSync, constants, cpSync, existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { fileURLToPath, pathToFileURL } from 'node:url';
-import type { GradingSpec, SubmissionGrade } from '@maa/protocol/grading';
+import { fileURLToPath } from 'node:url';
+import type { SubmissionGrade } from '@maa/protocol/grading';
 
 export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../..');
 export const simPython = path.join(repo, 'sim-server/.venv/bin/python');
-
-/** The options of @maa/grading's gradeSubmissions that these tests use. */
-export interface GradeCall {
-    spec?: GradingSpec;
-    gradingDir: string;
-    submissions: { id: string; root: string; appFile: string }[];
-    workDir: string;
-    python?: string;
-    onProgress?: (event: unknown) => void;
-}
-export type GradeSubmissions = (options: GradeCall) => Promise<SubmissionGrade[]>;
 
 function onPath(name: string): string | undefined {
     for (const dir of (process.env['PATH'] ?? '').split(path.delimiter).concat(['/usr/bin', '/bin'])) {
@@ -38,18 +27,6 @@ export function gradingUnavailable(): string | undefined {
     if (!existsSync(simPython)) return `the sim-server venv is missing (${simPython}; bash sim-server/scripts/setup_env.sh creates it)`;
     if (onPath('bwrap') === undefined) return 'bubblewrap (bwrap) is not installed (node scripts/ensure-bubblewrap.mjs installs it)';
     return undefined;
-}
-
-/**
- * @maa/grading's gradeSubmissions, from the workspace's built package (lab-server does not depend
- * on it: the lab loads it by name on first use, src/grading/engine.ts).
- */
-export async function loadGradeSubmissions(): Promise<GradeSubmissions> {
-    const engine = (await import(pathToFileURL(path.join(repo, 'packages/grading/dist/index.js')).href)) as {
-        gradeSubmissions?: GradeSubmissions;
-    };
-    if (typeof engine.gradeSubmissions !== 'function') throw new Error('@maa/grading exports no gradeSubmissions');
-    return engine.gradeSubmissions;
 }
 
 /** Writes `files` (relative path → content) into `dir`, then copies each overlay folder over it. */

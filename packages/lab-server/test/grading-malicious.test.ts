@@ -12,9 +12,10 @@ import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, 
 import { createServer, type Server } from 'node:net';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
+import { gradeSubmissions } from '@maa/grading';
 import type { GradingSpec, SubmissionGrade } from '@maa/protocol/grading';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { feedbackText, gradingUnavailable, loadGradeSubmissions, materialize, repo, simPython } from './grading-helpers.js';
+import { feedbackText, gradingUnavailable, materialize, repo, simPython } from './grading-helpers.js';
 
 const FIXTURE = path.join(repo, 'packages/lab-server/test/fixtures/grading/malicious');
 const unavailable = gradingUnavailable();
@@ -104,7 +105,6 @@ describe.skipIf(unavailable !== undefined)('grading a batch with malicious handw
 
         const gradingDir = path.join(FIXTURE, 'grading');
         spec = JSON.parse(readFileSync(path.join(gradingDir, 'grading.json'), 'utf8')) as GradingSpec;
-        const gradeSubmissions = await loadGradeSubmissions();
         const result = await gradeSubmissions({ spec, gradingDir, submissions, workDir: path.join(work, 'grading'), python: simPython });
         grades = new Map(result.map((g) => [g.submission, g]));
     }, 900_000);
