@@ -12,6 +12,7 @@ import json
 import os
 import shutil
 import signal
+import socket
 import subprocess
 import sys
 import tempfile
@@ -416,3 +417,16 @@ def test_job_tasks_travel_as_plain_data(tmp_path: Path) -> None:
     )
     assert isinstance(parsed, JobTask)
     assert parsed.wire() == {"id": "t", "argv": ["{python}", "x"], "env": {"A": "{input}/b"}, "limits": LIMITS}
+
+
+def test_an_unreachable_cluster_fails_fast_with_exit_1(tmp_path: Path) -> None:
+    data = tmp_path / "data"
+    data.mkdir()
+    job = write_job(tmp_path / "job.json", [task("a", data, ["true"])])
+    with socket.socket() as probe:  # a port nobody listens on
+        probe.bind(("127.0.0.1", 0))
+        address = f"127.0.0.1:{probe.getsockname()[1]}"
+    result = driver(job, tmp_path / "out", {**os.environ, "RAY_ADDRESS": address})
+    assert result.returncode == 1
+    assert f"cannot reach the Ray cluster at RAY_ADDRESS={address}" in result.stderr
+    assert result.stdout == ""

@@ -83,7 +83,7 @@ def _run(args: argparse.Namespace) -> int:
     signal.signal(signal.SIGTERM, _stop)
     try:
         run_job(tasks, args.out, lines, Options(workers=args.workers, grace=args.grace))
-    except (ConnectionError, RuntimeError) as error:
+    except (ConnectionError, RuntimeError, ValueError) as error:  # Ray cannot start or reach the cluster
         print(f"maa_sim.grading: Ray failed: {error}", file=sys.stderr)
         return 1
     return 0

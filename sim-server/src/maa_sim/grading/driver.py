@@ -16,6 +16,7 @@ import os
 import re
 import secrets
 import shutil
+import socket
 import tempfile
 import time
 from collections import Counter
@@ -66,6 +67,18 @@ class Connection:
     temp_dir: Path | None
 
 
+def _reachable(address: str, timeout: float = 10.0) -> None:
+    """Fails fast (ConnectionError) when the head of `host:port` does not accept connections: Ray
+    itself keeps retrying for minutes."""
+    host, _, port = address.rpartition(":")
+    if not host or not port.isdigit() or "://" in address:
+        return
+    try:
+        socket.create_connection((host, int(port)), timeout=timeout).close()
+    except OSError as error:
+        raise ConnectionError(f"cannot reach the Ray cluster at RAY_ADDRESS={address}: {error}") from error
+
+
 def connect(options: Options) -> Connection:
     """Joins the cluster of RAY_ADDRESS, else starts a local Ray instance (quiet, no dashboard).
 
@@ -82,6 +95,7 @@ def connect(options: Options) -> Connection:
     # read it again, as Ray's own token set-up does.
     importlib.import_module("ray._raylet").Config.initialize("")
     if address:
+        _reachable(address)
         ray.init(address=address, logging_level=logging.ERROR, log_to_driver=False)
         return Connection("cluster", address, None)
     # Ray's socket paths must stay short (< 108 bytes): its directory goes under /tmp, not $TMPDIR
