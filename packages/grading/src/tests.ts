@@ -59,13 +59,7 @@ export async function gradeTests(
             feedback.push({ severity: 'error', text: `The hidden tests of ${file} did not run: ${r.problems.join('; ')}` });
             continue;
         }
-        const state = endState(output, r);
-        const problems = r.problems.join('; ');
-        feedback.push({
-            severity: 'error',
-            text: `Hidden test '${r.test}' failed: ${problems}${state ? `; the automaton ended in state ${state}` : ''}`,
-            ...(state ? { state } : {}),
-        });
+        feedback.push(failedTest(r, output));
     }
     feedback.unshift({ severity: passed === total ? 'info' : 'error', text: `${passed} of ${plural(total, 'hidden test')} passed.` });
     return criterionGrade(criterion, total === 0 ? 0 : passed / total, feedback);
@@ -78,8 +72,54 @@ export function taskFailure(output: TaskOutput | undefined): string {
     return `${output.result.message}${tail ? ` (${tail})` : ''}`;
 }
 
-/** The last state of the automaton under a test, from the state traces. */
-function endState(output: TaskOutput | undefined, r: StreamTestResult): string | undefined {
-    const trace = output?.states?.tests.find((t) => t.test === r.test && t.line === r.line);
-    return trace?.states.at(-1);
+/** The sentence of a failed test: at which tick it first went wrong, the problems in words, and the automaton's state then. */
+function failedTest(r: StreamTestResult, output: TaskOutput | undefined): Feedback {
+    const all = r.problems.map(explainProblem);
+    // the first failed state check stands for the others (each later one usually follows from it)
+    const stateChecks = all.filter((e) => e.state);
+    const explained = [...stateChecks.slice(0, 1), ...all.filter((e) => !e.state)];
+    if (stateChecks.length > 1)
+        explained[0] = { ...explained[0]!, text: `${explained[0]!.text} (and ${plural(stateChecks.length - 1, 'later state check')})` };
+    const ticks = explained.flatMap((e) => (e.tick === undefined ? [] : [e.tick]));
+    const tick = ticks.length > 0 ? Math.min(...ticks) : undefined;
+    const trace = output?.states?.tests.find((t) => t.test === r.test && t.line === r.line)?.states;
+    // the trace holds the state before the first tick and after every tick: at tick k the automaton started in trace[k - 1]
+    const state = tick !== undefined ? trace?.[tick - 1] : trace?.at(-1);
+    const where = tick !== undefined ? ` at tick ${tick}` : '';
+    const then = state
+        ? tick !== undefined
+            ? `; the automaton was in state ${state} then`
+            : `; the automaton ended in state ${state}`
+        : '';
+    return {
+        severity: 'error',
+        text: `Hidden test '${r.test}' failed${where}: ${explained.map((e) => e.text).join('; ')}${then}`,
+        ...(state ? { state } : {}),
+    };
+}
+
+/**
+ * A problem of the runner in words: `arm: expected NONE Tk LOAD_BREAD Tk; got NONE Tk NONE Tk`
+ * becomes `port arm expected LOAD_BREAD, got NONE` at tick 2 (1-based: the time slice of the first
+ * item that differs; none when the streams have no ticks); a failed state check becomes
+ * `expected state Serving, got Toasting (line 66)`; other problems stay as they are.
+ */
+export function explainProblem(problem: string): { text: string; tick?: number; state?: true } {
+    const state = /^state \(line (\d+)\): expected (.*); got (.*)$/.exec(problem);
+    if (state) return { text: `expected state ${state[2]}, got ${state[3]} (line ${state[1]})`, state: true };
+    const m = /^([A-Za-z_][A-Za-z0-9_]*): expected (.*); got (.*)$/.exec(problem);
+    if (!m) return { text: problem };
+    const [, port, expected, got] = m as unknown as [string, string, string, string];
+    const want = expected === '(empty)' ? [] : expected.split(' ');
+    const have = got === '(empty)' ? [] : got.split(' ');
+    let i = 0;
+    while (i < want.length && i < have.length && want[i] === have[i]) i++;
+    const item = (items: string[]) => {
+        const x = items[i];
+        return x === undefined ? 'nothing (the stream ended)' : x === 'Tk' ? 'no message' : x;
+    };
+    const text = `port ${port} expected ${item(want)}, got ${item(have)}`;
+    // without ticks (`~=` compares the messages only) there is no time slice to name
+    if (!want.includes('Tk') && !have.includes('Tk')) return { text };
+    return { text, tick: want.slice(0, i).filter((x) => x === 'Tk').length + 1 };
 }

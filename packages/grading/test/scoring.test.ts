@@ -7,7 +7,7 @@ import { loadSubmissionModel, type SubmissionModel } from '../src/model.js';
 import type { TaskOutput } from '../src/outputs.js';
 import { type PlannedTask, scenarioArgv } from '../src/plan.js';
 import { gradeScenarios } from '../src/scenarios.js';
-import { gradeTests } from '../src/tests.js';
+import { explainProblem, gradeTests } from '../src/tests.js';
 import { fixtures, tempDir, toastController } from './exercise.js';
 
 const gradingDir = path.join(fixtures, 'toast-controller');
@@ -142,13 +142,24 @@ describe('scoring and feedback (the toast-controller solution model, synthetic t
                 test: 'serves when golden',
                 line: 4,
                 passed: false,
-                problems: ['arm: expected NONE LOAD_BREAD PICKUP_AND_DEPLOY; got NONE LOAD_BREAD'],
+                problems: [
+                    'arm: expected NONE Tk LOAD_BREAD Tk Tk PICKUP_AND_DEPLOY Tk Tk; got NONE Tk LOAD_BREAD Tk Tk Tk Tk',
+                    'state (line 9): expected Serving; got Toasting',
+                ],
             },
             { file, test: 'a far plate starts nothing', line: 13, passed: true, problems: [] },
         ]);
         const states = {
             format: 'maa-stream-states/1' as const,
-            tests: [{ file, line: 4, test: 'serves when golden', component: 'toast.Controller', states: ['Idle', 'Loading', 'Toasting'] }],
+            tests: [
+                {
+                    file,
+                    line: 4,
+                    test: 'serves when golden',
+                    component: 'toast.Controller',
+                    states: ['Idle', 'Loading', 'Toasting', 'Toasting', 'Toasting'],
+                },
+            ],
         };
         const grade = await gradeTests(tests, gradingDir, output({ stdout, states }));
         expect(grade.score).toBe(15);
@@ -157,9 +168,31 @@ describe('scoring and feedback (the toast-controller solution model, synthetic t
             {
                 severity: 'error',
                 state: 'Toasting',
-                text: "Hidden test 'serves when golden' failed: arm: expected NONE LOAD_BREAD PICKUP_AND_DEPLOY; got NONE LOAD_BREAD; the automaton ended in state Toasting",
+                text: "Hidden test 'serves when golden' failed at tick 4: expected state Serving, got Toasting (line 9); port arm expected PICKUP_AND_DEPLOY, got no message; the automaton was in state Toasting then",
             },
         ]);
+    });
+
+    test.each([
+        ['arm: expected NONE Tk LOAD_BREAD Tk; got NONE Tk NONE Tk', 'port arm expected LOAD_BREAD, got NONE', 2],
+        ['arm: expected A Tk B Tk; got A Tk', 'port arm expected B, got nothing (the stream ended)', 2],
+        ['toaster: expected Tk; got STOP Tk', 'port toaster expected no message, got STOP', 1],
+        ['arm: expected (empty); got NONE', 'port arm expected nothing (the stream ended), got NONE', undefined],
+        [
+            'arm: expected NONE LOAD_BREAD PICKUP_AND_DEPLOY; got NONE LOAD_BREAD',
+            'port arm expected PICKUP_AND_DEPLOY, got nothing (the stream ended)',
+            undefined,
+        ],
+        ['empty distance: 1 item(s) left buffered: 20', 'empty distance: 1 item(s) left buffered: 20', undefined],
+    ])('the runner problem %j in words: %j at tick %j', (problem, text, tick) => {
+        expect(explainProblem(problem)).toEqual(tick === undefined ? { text } : { text, tick });
+    });
+
+    test('a failed state check in words; the later ones are counted', () => {
+        expect(explainProblem('state (line 3): expected Idle; got Loading')).toEqual({
+            text: 'expected state Idle, got Loading (line 3)',
+            state: true,
+        });
     });
 
     test('tests: a file whose tests did not run counts all its declared tests as failed', async () => {
