@@ -38,7 +38,8 @@ export class DriverError extends Error {
 }
 
 const STDERR_TAIL = 8192;
-const KILL_GRACE_MS = 5000;
+/** How long the driver may take to cancel its tasks and shut Ray down (a SIGKILL leaves Ray's processes behind). */
+const KILL_GRACE_MS = 30_000;
 
 export async function runDriver(options: DriverOptions): Promise<DriverRun> {
     await writeFile(options.jobFile, `${JSON.stringify({ format: GRADE_JOB_FORMAT, tasks: options.tasks }, null, 2)}\n`);

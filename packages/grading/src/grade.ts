@@ -116,6 +116,7 @@ async function runTasks(
             outDir,
             tasks: prepared.flatMap((p) => p.planned.map((t) => t.task)),
             ...(options.rayAddress ? { rayAddress: options.rayAddress } : {}),
+            ...(options.env ? { env: { ...process.env, ...options.env } } : {}),
             ...(options.signal ? { signal: options.signal } : {}),
             onLine: (line) => {
                 const submission = line.event === 'task' ? owner.get(line.id) : undefined;

@@ -1,21 +1,18 @@
-/** The Python that runs the grading driver: the sim-server venv's, found the way the lab finds maa-sim. */
+/** The Python that runs the grading driver: the sim-server venv's, found the way maa-sim is found. */
 import { existsSync } from 'node:fs';
-import { createRequire } from 'node:module';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { cachedVenv, packageDir } from '@maa/sim-server';
 
-/** sim-server's folder: the installed @maa/sim-server, else the clone's `sim-server/`. */
-function simServerDir(): string {
-    try {
-        return path.dirname(createRequire(import.meta.url).resolve('@maa/sim-server/package.json'));
-    } catch {
-        return path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..', '..', 'sim-server');
-    }
-}
-
-/** `$MAA_GRADING_PYTHON`, else sim-server's development venv (`sim-server/.venv/bin/python`, scripts/setup_env.sh creates it). */
+/**
+ * `$MAA_GRADING_PYTHON`; else the development venv of a clone (`sim-server/.venv`, created by
+ * `sim-server/scripts/setup_env.sh`, which installs Ray); else the cached venv @maa/sim-server's
+ * launcher installs maa-sim into.
+ */
 export function defaultPython(env: NodeJS.ProcessEnv = process.env): string {
-    return env['MAA_GRADING_PYTHON'] ?? path.join(simServerDir(), '.venv', 'bin', 'python');
+    const own = env['MAA_GRADING_PYTHON'];
+    if (own) return own;
+    const development = path.join(packageDir, '.venv', 'bin', 'python');
+    return existsSync(development) ? development : path.join(cachedVenv(env), 'bin', 'python');
 }
 
 /** Whether the default Python exists (tests skip without it). */

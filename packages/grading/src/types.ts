@@ -22,6 +22,8 @@ export interface GradeOptions {
     readonly python?: string;
     /** A Ray cluster (RAY_ADDRESS); local Ray when absent. */
     readonly rayAddress?: string;
+    /** More environment of the driver (a cluster's RAY_AUTH_MODE and RAY_AUTH_TOKEN), over this process's. */
+    readonly env?: Readonly<Record<string, string>>;
     readonly onProgress?: (event: GradeProgress) => void;
     /** Stops grading: the driver and its tasks are killed and the call rejects with the signal's reason. */
     readonly signal?: AbortSignal;
