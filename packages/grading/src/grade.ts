@@ -4,7 +4,17 @@
  */
 import { mkdir, rm } from 'node:fs/promises';
 import path from 'node:path';
-import type { Criterion, CriterionGrade, DriverTask, GradeTask, GradingSpec, SubmissionGrade } from '@maa/protocol/grading';
+import { formatIssues } from '@maa/protocol';
+import {
+    type Criterion,
+    type CriterionGrade,
+    type DriverTask,
+    GRADING_FILE_NAME,
+    type GradeTask,
+    type GradingSpec,
+    gradingSpecIssues,
+    type SubmissionGrade,
+} from '@maa/protocol/grading';
 import { gradeCoverage } from './coverage.js';
 import { gradeDiagnostics } from './diagnostics.js';
 import { DriverError, runDriver } from './driver.js';
@@ -15,7 +25,7 @@ import { readTaskOutput, type TaskOutput } from './outputs.js';
 import { type PlannedTask, planTasks, taskKey } from './plan.js';
 import { defaultPython } from './python.js';
 import { gradeScenarios } from './scenarios.js';
-import { loadGradingSpec } from './spec.js';
+import { GradingSpecError, loadGradingSpec } from './spec.js';
 import { gradeStructure } from './structure.js';
 import { gradeTests } from './tests.js';
 import type { GradeOptions, Submission } from './types.js';
@@ -31,7 +41,8 @@ interface Prepared {
 }
 
 export async function gradeSubmissions(options: GradeOptions): Promise<SubmissionGrade[]> {
-    const spec = options.spec ?? (await loadGradingSpec(options.gradingDir));
+    const gradingDir = path.resolve(options.gradingDir);
+    const spec = options.spec ? checkedSpec(options.spec, gradingDir) : await loadGradingSpec(gradingDir);
     const workDir = path.resolve(options.workDir);
     const outDir = path.join(workDir, 'out');
     await rm(outDir, { recursive: true, force: true });
@@ -40,14 +51,14 @@ export async function gradeSubmissions(options: GradeOptions): Promise<Submissio
     const prepared: Prepared[] = [];
     for (const [i, submission] of options.submissions.entries()) {
         options.signal?.throwIfAborted();
-        prepared.push(await prepare(spec, submission, keys[i]!, workDir, options));
+        prepared.push(await prepare(spec, submission, keys[i]!, workDir, { ...options, gradingDir }));
     }
     const { ran, driverFailure } = await runTasks(prepared, workDir, outDir, options);
     const grades: SubmissionGrade[] = [];
     for (const p of prepared) {
         const outputs = new Map<string, TaskOutput>();
         for (const t of p.planned) outputs.set(t.task.id, await readTaskOutput(outDir, t.task.id, ran.get(t.task.id)));
-        const grade = gradeOne(spec, p, outputs, options.gradingDir, p.notRun ?? driverFailure);
+        const grade = gradeOne(spec, p, outputs, gradingDir, p.notRun ?? driverFailure);
         grades.push(await grade);
         options.onProgress?.({
             kind: 'graded',
@@ -57,6 +68,14 @@ export async function gradeSubmissions(options: GradeOptions): Promise<Submissio
         });
     }
     return grades;
+}
+
+/** A specification given as an object keeps the format too (the hidden files are checked when the tasks are planned). */
+function checkedSpec(spec: GradingSpec, gradingDir: string): GradingSpec {
+    const issues = gradingSpecIssues(spec);
+    if (issues.length === 0) return spec;
+    const file = path.join(gradingDir, GRADING_FILE_NAME);
+    throw new GradingSpecError(file, issues, `${file}: not a valid grading specification: ${formatIssues(issues, 5)}`);
 }
 
 /** Task id prefixes, one per submission, distinct. */
