@@ -27,7 +27,7 @@ import { defaultPython } from './python.js';
 import { gradeScenarios } from './scenarios.js';
 import { GradingSpecError, loadGradingSpec } from './spec.js';
 import { gradeStructure } from './structure.js';
-import { gradeTests } from './tests.js';
+import { gradeTests, stateLinkOf } from './tests.js';
 import type { GradeOptions, Submission } from './types.js';
 
 /** A submission checked, generated and planned. */
@@ -187,7 +187,7 @@ function gradeCriterion(
             return gradeDiagnostics(criterion, p.model.root, p.model.diagnostics);
         case 'tests': {
             const task = p.planned.find((t) => t.kind === 'tests');
-            return gradeTests(criterion, gradingDir, task ? outputs.get(task.task.id) : undefined, notRun);
+            return gradeTests(criterion, gradingDir, task ? outputs.get(task.task.id) : undefined, notRun, stateLinkOf(p.model));
         }
         case 'scenarios':
             return gradeScenarios(criterion, p.planned, outputs, { model: p.model, instances: p.instances, focus: focusOf(spec) }, notRun);

@@ -6,9 +6,23 @@
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import type { StreamTestResult } from '@maa/generators-python';
-import type { CriterionGrade, Feedback, TestsCriterion } from '@maa/protocol/grading';
+import type { CriterionGrade, Feedback, FeedbackElement, TestsCriterion } from '@maa/protocol/grading';
+import { automatonFacts, componentView } from './component.js';
 import { criterionGrade, plural } from './feedback.js';
+import { elementOf, type SubmissionModel } from './model.js';
 import { lastLines, type TaskOutput } from './outputs.js';
+
+/** The declaration of a component's automaton state (qualified component name, state path), for a link in feedback. */
+export type StateLink = (component: string, state: string) => FeedbackElement | undefined;
+
+/** Links a component's automaton state to its declaration in the submission's model. */
+export function stateLinkOf(model: SubmissionModel): StateLink {
+    return (component, state) => {
+        const node = model.components.get(component);
+        const declared = node ? automatonFacts(componentView(node))?.states.find((s) => s.path === state) : undefined;
+        return declared ? elementOf(model, declared.node, `${component}.${state}`) : undefined;
+    };
+}
 
 /** How many tests a stream file declares (`test "name" {`). */
 export async function declaredTests(file: string): Promise<number> {
@@ -39,6 +53,7 @@ export async function gradeTests(
     gradingDir: string,
     output: TaskOutput | undefined,
     notRun?: string,
+    link?: StateLink,
 ): Promise<CriterionGrade> {
     let total = 0;
     for (const f of criterion.files) total += await declaredTests(path.join(gradingDir, f));
@@ -59,7 +74,7 @@ export async function gradeTests(
             feedback.push({ severity: 'error', text: `The hidden tests of ${file} did not run: ${r.problems.join('; ')}` });
             continue;
         }
-        feedback.push(failedTest(r, output));
+        feedback.push(failedTest(r, output, link));
     }
     feedback.unshift({ severity: passed === total ? 'info' : 'error', text: `${passed} of ${plural(total, 'hidden test')} passed.` });
     return criterionGrade(criterion, total === 0 ? 0 : passed / total, feedback);
@@ -73,7 +88,7 @@ export function taskFailure(output: TaskOutput | undefined): string {
 }
 
 /** The sentence of a failed test: at which tick it first went wrong, the problems in words, and the automaton's state then. */
-function failedTest(r: StreamTestResult, output: TaskOutput | undefined): Feedback {
+function failedTest(r: StreamTestResult, output: TaskOutput | undefined, link: StateLink | undefined): Feedback {
     const all = r.problems.map(explainProblem);
     // the first failed state check stands for the others (each later one usually follows from it)
     const stateChecks = all.filter((e) => e.state);
@@ -82,19 +97,19 @@ function failedTest(r: StreamTestResult, output: TaskOutput | undefined): Feedba
         explained[0] = { ...explained[0]!, text: `${explained[0]!.text} (and ${plural(stateChecks.length - 1, 'later state check')})` };
     const ticks = explained.flatMap((e) => (e.tick === undefined ? [] : [e.tick]));
     const tick = ticks.length > 0 ? Math.min(...ticks) : undefined;
-    const trace = output?.states?.tests.find((t) => t.test === r.test && t.line === r.line)?.states;
+    const traced = output?.states?.tests.find((t) => t.test === r.test && t.line === r.line);
+    const trace = traced?.states;
     // the trace holds the state before the first tick and after every tick: at tick k the automaton started in trace[k - 1]
     const state = tick !== undefined ? trace?.[tick - 1] : trace?.at(-1);
     const where = tick !== undefined ? ` at tick ${tick}` : '';
-    const then = state
-        ? tick !== undefined
-            ? `; the automaton was in state ${state} then`
-            : `; the automaton ended in state ${state}`
-        : '';
+    const element = state && traced ? link?.(traced.component, state) : undefined;
+    const named = state ? `state ${state}${element ? ` (${element.file}:${element.line})` : ''}` : '';
+    const then = state ? (tick !== undefined ? `; the automaton was in ${named} then` : `; the automaton ended in ${named}`) : '';
     return {
         severity: 'error',
         text: `Hidden test '${r.test}' failed${where}: ${explained.map((e) => e.text).join('; ')}${then}`,
         ...(state ? { state } : {}),
+        ...(element ? { element } : {}),
     };
 }
 

@@ -7,7 +7,7 @@ import { loadSubmissionModel, type SubmissionModel } from '../src/model.js';
 import type { TaskOutput } from '../src/outputs.js';
 import { type PlannedTask, scenarioArgv } from '../src/plan.js';
 import { gradeScenarios } from '../src/scenarios.js';
-import { explainProblem, gradeTests } from '../src/tests.js';
+import { explainProblem, gradeTests, stateLinkOf } from '../src/tests.js';
 import { fixtures, tempDir, toastController } from './exercise.js';
 
 const gradingDir = path.join(fixtures, 'toast-controller');
@@ -161,14 +161,15 @@ describe('scoring and feedback (the toast-controller solution model, synthetic t
                 },
             ],
         };
-        const grade = await gradeTests(tests, gradingDir, output({ stdout, states }));
+        const grade = await gradeTests(tests, gradingDir, output({ stdout, states }), undefined, stateLinkOf(model));
         expect(grade.score).toBe(15);
         expect(grade.feedback).toEqual([
             { severity: 'error', text: '1 of 2 hidden tests passed.' },
             {
                 severity: 'error',
                 state: 'Toasting',
-                text: "Hidden test 'serves when golden' failed at tick 4: expected state Serving, got Toasting (line 9); port arm expected PICKUP_AND_DEPLOY, got no message; the automaton was in state Toasting then",
+                text: "Hidden test 'serves when golden' failed at tick 4: expected state Serving, got Toasting (line 9); port arm expected PICKUP_AND_DEPLOY, got no message; the automaton was in state Toasting (toast/Controller.arc:18) then",
+                element: { qualifiedName: 'toast.Controller.Toasting', file: 'toast/Controller.arc', line: 18 },
             },
         ]);
     });
