@@ -430,3 +430,42 @@ def test_an_unreachable_cluster_fails_fast_with_exit_1(tmp_path: Path) -> None:
     assert result.returncode == 1
     assert f"cannot reach the Ray cluster at RAY_ADDRESS={address}" in result.stderr
     assert result.stdout == ""
+
+
+def ray_dirs() -> set[str]:
+    return {entry.name for entry in Path("/tmp").glob("maa-ray-*")}
+
+
+def test_sigterm_stops_the_driver_its_tasks_and_its_ray_instance(tmp_path: Path) -> None:
+    data = tmp_path / "data"
+    data.mkdir()
+    scratch = tmp_path / "scratch"
+    scratch.mkdir()
+    job = write_job(
+        tmp_path / "job.json",
+        [task("long", data, ["{python}", "-c", VICTIM, "{output}", "sigterm-token-1618"], wallSeconds=100)],
+    )
+    before = ray_dirs()
+    process = subprocess.Popen(
+        [sys.executable, "-m", "maa_sim.grading", "run", "--job", str(job), "--out", str(tmp_path / "out")],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env={**os.environ, "TMPDIR": str(scratch)},
+    )
+    try:
+        wait_for_marker(scratch, "long", process)
+        mine = ray_dirs() - before
+        process.terminate()
+        stdout, stderr = process.communicate(timeout=120)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert process.returncode == 128 + signal.SIGTERM, stderr
+    assert [json.loads(line)["event"] for line in stdout.splitlines()] == ["started"]
+    deadline = time.monotonic() + 30  # Ray's workers end after the raylet that the shutdown stopped
+    while processes_with("sigterm-token-1618") and time.monotonic() < deadline:
+        time.sleep(0.2)
+    assert not processes_with("sigterm-token-1618"), "the task's command is left running"
+    assert not (mine & ray_dirs()), "the local Ray instance's folder is left"

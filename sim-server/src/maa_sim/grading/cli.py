@@ -4,10 +4,8 @@ from __future__ import annotations
 
 import argparse
 import os
-import signal
 import sys
 from pathlib import Path
-from types import FrameType
 
 from maa_sim.grading.job import JobError, load_job
 
@@ -53,11 +51,6 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _stop(signum: int, frame: FrameType | None) -> None:
-    del frame
-    raise SystemExit(128 + signum)
-
-
 def _run(args: argparse.Namespace) -> int:
     try:
         from maa_sim.grading.driver import Lines, Options, run_job
@@ -80,7 +73,6 @@ def _run(args: argparse.Namespace) -> int:
     # it starts) goes to stderr.
     lines = Lines(os.fdopen(os.dup(1), "w", encoding="utf-8"))
     os.dup2(2, 1)
-    signal.signal(signal.SIGTERM, _stop)
     try:
         run_job(tasks, args.out, lines, Options(workers=args.workers, grace=args.grace))
     except (ConnectionError, RuntimeError, ValueError) as error:  # Ray cannot start or reach the cluster

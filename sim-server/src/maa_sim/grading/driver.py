@@ -16,13 +16,16 @@ import os
 import re
 import secrets
 import shutil
+import signal
 import socket
 import tempfile
+import threading
 import time
 from collections import Counter
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from types import FrameType
 from typing import IO, Any
 
 import ray
@@ -268,6 +271,16 @@ class Run:
         return self.counts
 
 
+#: The signals that stopped the run (SIGTERM).
+_RECEIVED: list[int] = []
+
+
+def _stop(signum: int, frame: FrameType | None) -> None:
+    del frame
+    _RECEIVED.append(signum)
+    raise SystemExit(128 + signum)
+
+
 def run_job(
     tasks: list[JobTask], out_dir: Path, lines: Lines, options: Options, function: TaskFunction = run_task
 ) -> None:
@@ -275,6 +288,9 @@ def run_job(
     begin = time.monotonic()
     out_dir.mkdir(parents=True, exist_ok=True)
     connection = connect(options)
+    if threading.current_thread() is threading.main_thread():
+        # after ray.init, which sets a handler of its own: SIGTERM ends the run through `finally`
+        signal.signal(signal.SIGTERM, _stop)
     try:
         alive = [node for node in RAY.nodes() if node.get("Alive")]
         lines.emit(
@@ -289,5 +305,9 @@ def run_job(
         )
         counts = Run(tasks, out_dir, lines, options.grace, function).run()
         lines.emit({"event": "finished", "wallSeconds": round(time.monotonic() - begin, 3), "counts": dict(counts)})
+    except SystemExit:
+        if _RECEIVED:  # inside ray.wait, Ray turns the handler's exit into SystemExit(1)
+            raise SystemExit(128 + _RECEIVED[-1]) from None
+        raise
     finally:
         disconnect(connection)
