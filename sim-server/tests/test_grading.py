@@ -469,3 +469,17 @@ def test_sigterm_stops_the_driver_its_tasks_and_its_ray_instance(tmp_path: Path)
         time.sleep(0.2)
     assert not processes_with("sigterm-token-1618"), "the task's command is left running"
     assert not (mine & ray_dirs()), "the local Ray instance's folder is left"
+
+
+def test_the_cluster_commands_say_what_is_wrong(tmp_path: Path) -> None:
+    def cluster(*args: str) -> subprocess.CompletedProcess[str]:
+        command = [sys.executable, "-m", "maa_sim.grading", "cluster", *args, "--dir", str(tmp_path)]
+        return subprocess.run(command, capture_output=True, text=True, check=False, timeout=60)
+
+    stopped = cluster("stop")
+    assert stopped.returncode == 1
+    assert f"no cluster in {tmp_path}" in stopped.stderr
+    refused = cluster("start", "--nodes", "0")
+    assert refused.returncode == 2
+    assert "--nodes and --cpus-per-node must be at least 1" in refused.stderr
+    assert not (tmp_path / "cluster.json").exists()
