@@ -38,7 +38,7 @@ export async function registerExercisePanel(info: ExerciseInfo, root: string): P
     const changed = new api.EventEmitter<undefined>();
     const provider: vscode.TreeDataProvider<ExerciseItem> = {
         onDidChangeTreeData: changed.event,
-        getChildren: (item) => [...(item ? (item.children ?? []) : [...exerciseItems(info), ...gradingItems(grading, info.writable)])],
+        getChildren: (item) => (item ? [...(item.children ?? [])] : rootItems(info, grading)),
         getTreeItem: (item) => treeItem(api, item, root),
     };
     const refreshGrading = async (): Promise<GradingState | undefined> => {
@@ -68,6 +68,12 @@ export async function registerExercisePanel(info: ExerciseInfo, root: string): P
 }
 
 type Api = typeof vscode;
+
+/** The view's rows: the exercise and whose workspace, then its grading (near the top: the pane is small), then the rest. */
+function rootItems(info: ExerciseInfo, grading: GradingState | undefined): ExerciseItem[] {
+    const items = exerciseItems(info);
+    return [...items.slice(0, 2), ...gradingItems(grading, info.writable), ...items.slice(2)];
+}
 
 /** One row of the view as VS Code shows it: a file row opens the file (at its line), a command row runs it. */
 function treeItem(api: Api, item: ExerciseItem, root: string): vscode.TreeItem {
