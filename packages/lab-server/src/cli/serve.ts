@@ -35,7 +35,7 @@ export const OIDC_SECRET_VARIABLE = 'MAA_LAB_OIDC_CLIENT_SECRET';
  *   itself stops on SIGINT and SIGTERM)
  */
 export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, url: string) => void): Command {
-    return new Command('serve')
+    return withWorkOptions(new Command('serve'))
         .description('start the lab server on the embedded database (--data-dir) or on the PostgreSQL server of DATABASE_URL')
         .option('--port <port>', 'the port to listen on (0: any free port)', String(DEFAULT_PORT))
         .option('--host <address>', 'the address to listen on (0.0.0.0: every interface)', '127.0.0.1')
@@ -46,26 +46,6 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
         .option('--oidc-issuer <url>', `single sign-on: the OpenID Connect provider (the client secret comes from ${OIDC_SECRET_VARIABLE})`)
         .option('--oidc-client-id <id>', 'single sign-on: the client id registered at the provider')
         .option('--oidc-allow-http', 'single sign-on: accept a provider on plain http (only for a provider on this machine)')
-        .option(
-            '--max-simulations <n>',
-            'quota: simulations a student may run at the same time',
-            String(DEFAULT_QUOTAS.concurrentSimulations),
-        )
-        .option(
-            '--max-sim-seconds-per-hour <n>',
-            'quota: simulated seconds a student may run within any hour',
-            String(DEFAULT_QUOTAS.simulatedSecondsPerHour),
-        )
-        .option('--max-workspace-bytes <n>', "quota: the bytes of a workspace's files", String(DEFAULT_QUOTAS.workspaceBytes))
-        .option('--max-workspace-files <n>', 'quota: the files of a workspace', String(DEFAULT_QUOTAS.workspaceFiles))
-        .option(
-            '--generate-threads <n>',
-            `the worker threads that run the students' generators (default: the cores but one, 1 to 4; here ${defaultGenerateThreads()})`,
-        )
-        .option(
-            '--ray-address <address>',
-            'grading: run the grading tasks on this Ray cluster (default: RAY_ADDRESS, else Ray on this machine)',
-        )
         .action(async (options: ServeOptions) => {
             const port = Number(options.port);
             if (!Number.isInteger(port) || port < 0 || port > 65535)
@@ -112,6 +92,31 @@ export function serveCommand(io: LabIo, onStarted?: (stop: () => Promise<void>, 
                 process.once('SIGTERM', () => void stop());
             }
         });
+}
+
+/** The options of the students' work: quotas, generator threads, the grading's Ray cluster. */
+function withWorkOptions(command: Command): Command {
+    return command
+        .option(
+            '--max-simulations <n>',
+            'quota: simulations a student may run at the same time',
+            String(DEFAULT_QUOTAS.concurrentSimulations),
+        )
+        .option(
+            '--max-sim-seconds-per-hour <n>',
+            'quota: simulated seconds a student may run within any hour',
+            String(DEFAULT_QUOTAS.simulatedSecondsPerHour),
+        )
+        .option('--max-workspace-bytes <n>', "quota: the bytes of a workspace's files", String(DEFAULT_QUOTAS.workspaceBytes))
+        .option('--max-workspace-files <n>', 'quota: the files of a workspace', String(DEFAULT_QUOTAS.workspaceFiles))
+        .option(
+            '--generate-threads <n>',
+            `the worker threads that run the students' generators (default: the cores but one, 1 to 4; here ${defaultGenerateThreads()})`,
+        )
+        .option(
+            '--ray-address <address>',
+            'grading: run the grading tasks on this Ray cluster (default: RAY_ADDRESS, else Ray on this machine)',
+        );
 }
 
 /** The quota options, each a positive whole number (else a LabCliError naming it). */

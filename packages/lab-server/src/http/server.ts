@@ -98,8 +98,7 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
         { routes, store: options.store, sessions, originRefusal: (req) => context.origin.refusal(req), log },
         options.workspaces,
     );
-    const grading = new GradingService(options.store, { log, ...options.grading, dataDir: workspaces.dataDir });
-    addGradingRoutes(routes, grading, workspaces.dataDir);
+    const grading = startGrading(options, routes, workspaces.dataDir, log);
     server.on('request', (req: IncomingMessage, res: ServerResponse) => {
         res.on('finish', () => log(`${req.method} ${(req.url ?? '/').split('?')[0]} ${res.statusCode}`));
         void handle(context, req, res);
@@ -134,6 +133,13 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
             });
         },
     };
+}
+
+/** The grading service and its routes (docs/lab.md "Grading"); recordings go to the workspaces' data directory. */
+function startGrading(options: LabServerOptions, routes: LabRoutes, dataDir: string, log: (line: string) => void): GradingService {
+    const grading = new GradingService(options.store, { log, ...options.grading, dataDir });
+    addGradingRoutes(routes, grading, dataDir);
+    return grading;
 }
 
 interface Context {
