@@ -5,9 +5,14 @@
  * changes, so a self-loop (a transition back into its own state, an internal transition) is not
  * observable: those do not count. Two transitions with the same source and target cannot be told
  * apart: they count as one.
+ *
+ * Coverage is measured against what the exercise expects, not only against what the submission
+ * declares: otherwise a one-state stub would cover itself completely. The structure criterion's
+ * automaton requirement for the same component (named `states`, `minStates`, `minTransitions`)
+ * raises the totals: a required state the automaton lacks counts as not visited.
  */
 import type { ComponentView } from '@maa/generator-core';
-import type { CoverageCriterion, CriterionGrade, Feedback } from '@maa/protocol/grading';
+import type { CoverageCriterion, CriterionGrade, Feedback, GradingSpec } from '@maa/protocol/grading';
 import { type AutomatonFacts, automatonFacts, componentView } from './component.js';
 import { criterionGrade, plural } from './feedback.js';
 import { type AutomatonInstance, instanceOfNode } from './instances.js';
@@ -77,11 +82,39 @@ export function coverageShare(covered: number, total: number, required: number):
     return Math.min(1, covered / total / required);
 }
 
+/** What the exercise expects of a component's automaton (the structure criteria's requirements on it). */
+export interface ExpectedAutomaton {
+    /** states the automaton must declare (paths) */
+    readonly states: readonly string[];
+    readonly minStates: number;
+    readonly minTransitions: number;
+}
+
+/** The structure criteria's automaton requirements on `component`, merged (none: nothing expected). */
+export function expectedAutomaton(spec: GradingSpec, component: string): ExpectedAutomaton {
+    const states = new Set<string>();
+    let minStates = 0;
+    let minTransitions = 0;
+    for (const c of spec.criteria) {
+        if (c.kind !== 'structure') continue;
+        for (const r of c.require) {
+            if (r.component !== component || r.behavior?.kind !== 'automaton') continue;
+            for (const s of r.behavior.states ?? []) states.add(s);
+            minStates = Math.max(minStates, r.behavior.minStates ?? 0);
+            minTransitions = Math.max(minTransitions, r.behavior.minTransitions ?? 0);
+        }
+    }
+    return { states: [...states], minStates, minTransitions };
+}
+
+const NOTHING_EXPECTED: ExpectedAutomaton = { states: [], minStates: 0, minTransitions: 0 };
+
 export function gradeCoverage(
     criterion: CoverageCriterion,
     model: SubmissionModel,
     instances: readonly AutomatonInstance[],
     outputs: Iterable<TaskOutput>,
+    expected: ExpectedAutomaton = NOTHING_EXPECTED,
 ): CriterionGrade {
     const node = model.components.get(criterion.component);
     const view: ComponentView | undefined = node ? componentView(node) : undefined;
@@ -95,22 +128,30 @@ export function gradeCoverage(
     const coverage = computeCoverage(facts, tracesOf(view.qualifiedName, instances, outputs));
     const visited = coverage.states.filter((s) => s.visited).length;
     const taken = coverage.transitions.filter((t) => t.taken).length;
-    const stateShare = coverageShare(visited, coverage.states.length, criterion.states);
-    const transitionShare = coverageShare(taken, coverage.transitions.length, criterion.transitions);
+    const lacking = expected.states.filter((name) => !coverage.states.some((s) => s.path === name));
+    const stateTotal = Math.max(coverage.states.length + lacking.length, expected.minStates);
+    const transitionTotal = Math.max(coverage.transitions.length, expected.minTransitions);
+    const stateShare = coverageShare(visited, stateTotal, criterion.states);
+    const transitionShare = coverageShare(taken, transitionTotal, criterion.transitions);
     const pct = (a: number, b: number) => (b === 0 ? 100 : Math.round((a / b) * 100));
     const feedback: Feedback[] = [];
     const link = (n: (typeof facts.states)[number]['node'], name: string) => elementOf(model, n, `${view.qualifiedName}.${name}`);
     feedback.push({
         severity: stateShare < 1 ? 'error' : 'info',
-        text: `The scenarios and hidden tests visited ${visited} of ${plural(coverage.states.length, 'state')} of ${view.name} (${pct(visited, coverage.states.length)} %, ${Math.round(criterion.states * 100)} % needed).`,
+        text: `The scenarios and hidden tests visited ${visited} of ${plural(stateTotal, 'state')} of ${view.name} (${pct(visited, stateTotal)} %, ${Math.round(criterion.states * 100)} % needed).`,
     });
+    if (stateTotal > coverage.states.length || transitionTotal > coverage.transitions.length)
+        feedback.push({
+            severity: 'warning',
+            text: `${view.name} declares ${plural(coverage.states.length, 'state')} and ${plural(coverage.transitions.length, 'state-changing transition')}; the exercise expects at least ${plural(stateTotal, 'state')} and ${plural(transitionTotal, 'transition')}${lacking.length > 0 ? ` (missing: ${lacking.join(', ')})` : ''}, so coverage counts against those.`,
+        });
     for (const s of coverage.states.filter((x) => !x.visited)) {
         const element = link(facts.states.find((d) => d.path === s.path)!.node, s.path);
         feedback.push({ severity: 'warning', text: `State ${s.path} was never visited (${where(element)}).`, element, state: s.path });
     }
     feedback.push({
         severity: transitionShare < 1 ? 'error' : 'info',
-        text: `They took ${taken} of ${plural(coverage.transitions.length, 'state-changing transition')} (${pct(taken, coverage.transitions.length)} %, ${Math.round(criterion.transitions * 100)} % needed).`,
+        text: `They took ${taken} of ${plural(transitionTotal, 'state-changing transition')} (${pct(taken, transitionTotal)} %, ${Math.round(criterion.transitions * 100)} % needed).`,
     });
     for (const t of coverage.transitions.filter((x) => !x.taken)) {
         const declared = facts.transitions.find((d) => d.source === t.source && d.target === t.target)!;

@@ -15,7 +15,7 @@ import {
     gradingSpecIssues,
     type SubmissionGrade,
 } from '@maa/protocol/grading';
-import { gradeCoverage } from './coverage.js';
+import { expectedAutomaton, gradeCoverage } from './coverage.js';
 import { gradeDiagnostics } from './diagnostics.js';
 import { DriverError, runDriver } from './driver.js';
 import { generateTimesync } from './generate.js';
@@ -192,7 +192,7 @@ function gradeCriterion(
         case 'scenarios':
             return gradeScenarios(criterion, p.planned, outputs, { model: p.model, instances: p.instances, focus: focusOf(spec) }, notRun);
         case 'coverage':
-            return gradeCoverage(criterion, p.model, p.instances, outputs.values());
+            return gradeCoverage(criterion, p.model, p.instances, outputs.values(), expectedAutomaton(spec, criterion.component));
     }
 }
 

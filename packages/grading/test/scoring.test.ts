@@ -1,7 +1,7 @@
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, test } from 'vitest';
 import type { CoverageCriterion, DriverTask, ScenarioReport, ScenariosCriterion, TestsCriterion } from '@maa/protocol/grading';
-import { gradeCoverage } from '../src/coverage.js';
+import { expectedAutomaton, gradeCoverage } from '../src/coverage.js';
 import { type AutomatonInstance, automatonInstances } from '../src/instances.js';
 import { loadSubmissionModel, type SubmissionModel } from '../src/model.js';
 import type { TaskOutput } from '../src/outputs.js';
@@ -263,6 +263,58 @@ describe('scoring and feedback (the toast-controller solution model, synthetic t
             expect.stringMatching(/^Transition Toasting -> Serving was never taken \(toast\/Controller\.arc:\d+\)\.$/),
         );
         expect(texts).toContainEqual(expect.stringMatching(/^Transition Serving -> Idle was never taken/));
+    });
+
+    test('coverage counts against what the structure criterion expects: a smaller automaton does not cover itself fully', () => {
+        const outputs = [
+            output({
+                states: {
+                    format: 'maa-stream-states/1',
+                    tests: [
+                        {
+                            file: 'f',
+                            line: 1,
+                            test: 't',
+                            component: 'toast.Controller',
+                            states: ['Idle', 'Loading', 'Toasting', 'Serving', 'Idle'],
+                        },
+                    ],
+                },
+            }),
+        ];
+        // every declared state and transition visited: full marks without expectations
+        expect(gradeCoverage(coverage, model, instances, outputs).score).toBe(10);
+        const expected = expectedAutomaton(
+            {
+                format: 'maa-grading/1',
+                criteria: [
+                    coverage,
+                    {
+                        id: 'arch',
+                        title: 'Architecture',
+                        kind: 'structure',
+                        weight: 5,
+                        require: [
+                            {
+                                component: 'toast.Controller',
+                                behavior: { kind: 'automaton', minTransitions: 8, states: ['Idle', 'Cleaning'] },
+                            },
+                        ],
+                    },
+                ],
+            },
+            'toast.Controller',
+        );
+        expect(expected).toEqual({ states: ['Idle', 'Cleaning'], minStates: 0, minTransitions: 8 });
+        const grade = gradeCoverage(coverage, model, instances, outputs, expected);
+        // states 4 of 5 (Cleaning is missing), transitions 4 of 8: (0.8 + 0.5) / 2 of 10
+        expect(grade.score).toBe(6.5);
+        const texts = grade.feedback.map((f) => f.text);
+        expect(texts[0]).toBe('The scenarios and hidden tests visited 4 of 5 states of Controller (80 %, 100 % needed).');
+        expect(texts[1]).toBe(
+            'Controller declares 4 states and 4 state-changing transitions; the exercise expects at least 5 states and 8 transitions (missing: Cleaning), so coverage counts against those.',
+        );
+        expect(texts).toContain('They took 4 of 8 state-changing transitions (50 %, 100 % needed).');
     });
 
     test('coverage of a component that is missing or no automaton scores 0', () => {
