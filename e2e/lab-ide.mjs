@@ -9,7 +9,9 @@
 // read-only exercise file refuses the change), runs the stream tests from the Testing view and
 // simulates; bob does the same and keeps his simulation running. The instructor's dashboard
 // shows both students' tests and bob simulating; ada gets 403 for bob's files; the instructor
-// opens ada's IDE from the dashboard, read-only. Screenshots in e2e/artifacts/lab-ide-*.png.
+// opens ada's IDE from the dashboard, read-only. ada submits her controller for grading from the
+// Exercise view (issue 17): the grade and its feedback appear there and in the dashboard's grading
+// table, with the CSV and the scenario recordings. Screenshots in e2e/artifacts/lab-ide-*.png.
 //
 //   flock /tmp/helpers/e2e.lock node e2e/lab-ide.mjs   (needs npm run build: lab-server, ide-web)
 import { execFile, spawn } from 'node:child_process';
@@ -119,6 +121,8 @@ async function openFromStartPage(page, login) {
 /** Opens the explorer's Exercise view (the explorer shows it collapsed under the files). */
 async function expandExerciseView(page) {
     const header = page.locator('.pane-header', { hasText: 'Exercise' }).first();
+    // The view is in the explorer; another view container (Testing) may be in front of it.
+    if (!(await header.isVisible())) await page.locator('.activitybar .action-item a[aria-label^="Explorer"]').first().click();
     await header.waitFor({ timeout: 30_000 });
     if ((await header.getAttribute('aria-expanded')) !== 'true') await header.click();
 }
@@ -247,6 +251,24 @@ try {
         await screenshot(ada.page, 'lab-ide-ada-tests');
     });
 
+    await step('ada submits for grading from the Exercise view: her grade, feedback that opens the model at its line', async () => {
+        const { page } = ada;
+        await expandExerciseView(page);
+        const row = (text) => page.locator('.pane-body .monaco-list-row', { hasText: text }).first();
+        await row('Submit for grading').click();
+        // Her controller is still the starter's stub: the lab grades it (hidden tests, three
+        // scenarios in the sandbox on local Ray) and the Grading row shows the total.
+        await row('/ 100').waitFor({ timeout: 600_000 });
+        const grade = await row('/ 100').textContent();
+        if (/100 \/ 100/.test(grade ?? '')) await fail(`the stub got full marks: ${grade}`);
+        await screenshot(page, 'lab-ide-ada-graded');
+        await row('keeps its interface').click();
+        const item = row('toast/Controller.arc:');
+        await item.waitFor({ timeout: 30_000 });
+        await item.click();
+        await page.locator('.tabs-container .tab.active', { hasText: 'Controller.arc' }).first().waitFor({ timeout: 30_000 });
+    });
+
     await step('ada simulates: the run starts in her IDE and stops', async () => {
         await startSimulation(ada.page, 'ada');
         await stopSimulation(ada.page, 'ada');
@@ -302,6 +324,41 @@ try {
             { timeout: 120_000 },
         );
         await screenshot(page, 'lab-ide-dashboard');
+    });
+
+    await step("the dashboard's grading: ada's scores per criterion, her feedback, the CSV and her recordings", async () => {
+        const { page } = ada;
+        const section = page.locator(`#grading-${EXERCISE}`);
+        const adaRow = section.locator('table.grades tbody tr', { hasText: '(ada)' }).first();
+        await adaRow.waitFor({ timeout: 60_000 });
+        if (!/\/100\s*$/.test((await adaRow.textContent()) ?? ''))
+            await fail(`ada's grading row has no total: ${await adaRow.textContent()}`);
+        await adaRow.locator('button').click();
+        const recording = section.locator('ul.recordings a').first();
+        await recording.waitFor({ timeout: 10_000 });
+        await recording.scrollIntoViewIfNeeded();
+        await screenshot(page, 'lab-ide-dashboard-grading');
+        const csvHref = await section.locator('a', { hasText: 'CSV' }).getAttribute('href');
+        const got = await page.evaluate(
+            async ({ csv, mcap }) => {
+                const c = await fetch(csv);
+                const m = await fetch(mcap);
+                const bytes = new Uint8Array(await m.arrayBuffer());
+                return {
+                    csv: await c.text(),
+                    mcap: m.status,
+                    disposition: m.headers.get('content-disposition'),
+                    magic: [...bytes.slice(0, 5)],
+                };
+            },
+            { csv: csvHref, mcap: await recording.getAttribute('href') },
+        );
+        const [header, ...lines] = got.csv.trim().split('\n');
+        if (!header.includes('hidden-tests') || !header.includes('scenarios') || !lines.some((l) => l.startsWith('ada,')))
+            await fail(`the grades CSV lacks the criteria or ada:\n${got.csv}`);
+        // an MCAP file starts with the magic bytes 0x89 'MCAP'
+        if (got.mcap !== 200 || !/attachment/.test(got.disposition ?? '') || got.magic.join() !== '137,77,67,65,80')
+            await fail(`ada's recording answered ${got.mcap} (${got.disposition}, ${got.magic})`);
     });
 
     await step("the instructor opens ada's IDE from the dashboard: everything read-only", async () => {
