@@ -29,6 +29,9 @@ fi
 if [[ "$1 $2" == "-m venv" ]]; then mkdir -p "$3/bin" && cp "$0" "$3/bin/python" && echo "created $3" && exit 0; fi
 if [[ "$1 $2" == "-m pip" ]]; then
   src="\${@: -1}"
+  extras=""
+  if [[ "$src" == *"["*"]" ]]; then extras="\${src##*[}"; extras="\${extras%]}"; src="\${src%[*}"; fi
+  echo "$extras" > "$(dirname "$0")/extras"
   [[ -f "$src/pyproject.toml" && -f "$src/src/maa_sim/cli.py" ]] || { echo "no sources in $src" >&2; exit 1; }
   echo "Collecting mujoco==4.0.0"
   if [[ -f "$control/pip-fails" ]]; then echo "ERROR: No matching distribution found for mujoco" >&2; exit 1; fi
@@ -42,9 +45,18 @@ exit 9
     chmodSync(file, 0o755);
 }
 
-function ensure(env: Record<string, string> = {}): Promise<string> {
-    return ensureMaaSim({ env: { MAA_CACHE_DIR: path.join(root, 'cache'), ...env }, python, dir: sources, onProgress: (l: string) => progress.push(l) });
+function ensure(env: Record<string, string> = {}, extras: string[] = []): Promise<string> {
+    return ensureMaaSim({
+        env: { MAA_CACHE_DIR: path.join(root, 'cache'), ...env },
+        python,
+        dir: sources,
+        extras,
+        onProgress: (l: string) => progress.push(l),
+    });
 }
+
+/** The extras the stand-in pip installed last in the venv of `maaSim`. */
+const installedExtras = (maaSim: string) => readFileSync(path.join(path.dirname(maaSim), 'extras'), 'utf8').trim();
 
 beforeEach(() => {
     root = mkdtempSync(path.join(tmpdir(), 'maa-sim-env-'));
@@ -86,6 +98,21 @@ describe('ensureMaaSim', () => {
         expect(progress.at(-1)).toBe(`maa-sim: installed (${maaSim})`);
         progress = [];
         expect(await ensure()).toBe(maaSim);
+        expect(progress).toEqual([]);
+    });
+
+    it("installs maa-sim's extras when asked (the grading engine's Ray) and keeps them for callers without", async () => {
+        const plain = await ensure();
+        expect(installedExtras(plain)).toBe('');
+        progress = [];
+        // the venv lacks the grade extra: it is installed again, with it
+        expect(await ensure({}, ['grade'])).toBe(plain);
+        expect(progress[0]).toMatch(/first use: installing the simulator into .* \(MuJoCo, rclpy, viser, Ray from PyPI/);
+        expect(installedExtras(plain)).toBe('grade');
+        progress = [];
+        // a caller without extras and one with them both take it as it is
+        expect(await ensure()).toBe(plain);
+        expect(await ensure({}, ['grade'])).toBe(plain);
         expect(progress).toEqual([]);
     });
 

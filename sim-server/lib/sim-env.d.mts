@@ -16,6 +16,8 @@ export interface EnsureMaaSimOptions {
     onProgress?: (line: string) => void;
     /** The folder with pyproject.toml and src/maa_sim (default: this package's). */
     dir?: string;
+    /** maa-sim's pip extras the venv must have, e.g. `['grade']` (Ray, for the grading driver; default none). */
+    extras?: readonly string[];
 }
 /**
  * The maa-sim to run, installing it first when needed: $MAA_SIM when set, else the development

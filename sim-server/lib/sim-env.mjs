@@ -62,15 +62,33 @@ export async function ensureMaaSim({
     python = env.MAA_PYTHON || 'python3',
     onProgress = (line) => console.error(line),
     dir = packageDir,
+    extras = [],
 } = {}) {
     if (env.MAA_SIM) return env.MAA_SIM;
     if (existsSync(developmentMaaSim(dir))) return developmentMaaSim(dir);
     const venv = cachedVenv(env, dir);
     const maaSim = path.join(venv, 'bin', 'maa-sim');
     const want = `${sourcesHash(dir)} ${await pythonVersion(python)}`;
-    if (existsSync(maaSim) && readIfExists(path.join(venv, STAMP)) === want) return maaSim;
-    await installVenv(dir, venv, python, want, onProgress);
+    if (existsSync(maaSim) && hasInstalled(readIfExists(path.join(venv, STAMP)), want, extras)) return maaSim;
+    // A venv is reinstalled with the extras it had and the new ones, so users of different extras
+    // (maa-gen sim, the grading engine) do not take turns reinstalling it.
+    const had = installedExtras(readIfExists(path.join(venv, STAMP)), want);
+    const all = [...new Set([...had, ...extras])].sort();
+    await installVenv(dir, venv, python, all.length > 0 ? `${want} [${all.join(',')}]` : want, onProgress, all);
     return maaSim;
+}
+
+/** The extras a venv's stamp says were installed with these sources (none when it is of other sources). */
+function installedExtras(stamp, want) {
+    if (stamp === want) return [];
+    const match = stamp?.startsWith(`${want} [`) ? /\[([^\]]*)\]$/.exec(stamp) : null;
+    return match ? match[1].split(',').filter(Boolean) : [];
+}
+
+function hasInstalled(stamp, want, extras) {
+    if (stamp !== want && !stamp?.startsWith(`${want} [`)) return false;
+    const had = installedExtras(stamp, want);
+    return extras.every((e) => had.includes(e));
 }
 
 /** `python --version`, failing with a clear message when it is missing or older than 3.11. */
@@ -89,7 +107,7 @@ async function pythonVersion(python) {
  * Installs maa-sim into `venv` (venvs cannot be moved, so in place); the stamp is written last,
  * so a venv an interrupted install left behind has none and is removed and made again.
  */
-async function installVenv(dir, venv, python, stamp, onProgress) {
+async function installVenv(dir, venv, python, stamp, onProgress, extras) {
     rmSync(venv, { recursive: true, force: true });
     mkdirSync(path.dirname(venv), { recursive: true });
     // pip builds in the source tree; the installed package's folder may be read-only, so build from a copy.
@@ -98,9 +116,11 @@ async function installVenv(dir, venv, python, stamp, onProgress) {
         for (const entry of ['pyproject.toml', 'README.md', path.join('src', 'maa_sim')]) {
             if (existsSync(path.join(dir, entry))) cpSync(path.join(dir, entry), path.join(sources, entry), { recursive: true });
         }
-        onProgress(`maa-sim: first use: installing the simulator into ${venv} (MuJoCo, rclpy, viser from PyPI; a few minutes)`);
+        const what = extras.includes('grade') ? 'MuJoCo, rclpy, viser, Ray' : 'MuJoCo, rclpy, viser';
+        onProgress(`maa-sim: first use: installing the simulator into ${venv} (${what} from PyPI; a few minutes)`);
         await streamed(python, ['-m', 'venv', venv], onProgress, 'creating the venv');
-        const pip = ['-m', 'pip', 'install', '--disable-pip-version-check', '--progress-bar', 'off', sources];
+        const target = extras.length > 0 ? `${sources}[${extras.join(',')}]` : sources;
+        const pip = ['-m', 'pip', 'install', '--disable-pip-version-check', '--progress-bar', 'off', target];
         await streamed(path.join(venv, 'bin', 'python'), pip, onProgress, 'pip install');
         writeFileSync(path.join(venv, STAMP), stamp);
         onProgress(`maa-sim: installed (${path.join(venv, 'bin', 'maa-sim')})`);

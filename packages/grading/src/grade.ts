@@ -23,7 +23,7 @@ import { type AutomatonInstance, automatonInstances } from './instances.js';
 import { loadSubmissionModel, type SubmissionModel } from './model.js';
 import { readTaskOutput, type TaskOutput } from './outputs.js';
 import { type PlannedTask, planTasks, taskKey } from './plan.js';
-import { defaultPython } from './python.js';
+import { gradingPython } from './python.js';
 import { gradeScenarios } from './scenarios.js';
 import { GradingSpecError, loadGradingSpec } from './spec.js';
 import { gradeStructure } from './structure.js';
@@ -130,7 +130,7 @@ async function runTasks(
     if (owner.size === 0) return { ran: new Map() };
     try {
         const run = await runDriver({
-            python: options.python ?? defaultPython(),
+            python: options.python ?? (await gradingPython()),
             jobFile: path.join(workDir, 'job.json'),
             outDir,
             tasks: prepared.flatMap((p) => p.planned.map((t) => t.task)),

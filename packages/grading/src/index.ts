@@ -5,7 +5,7 @@
 export { gradeSubmissions } from './grade.js';
 export { GradingSpecError, loadGradingSpec } from './spec.js';
 export type { GradeOptions, GradeProgress, Submission } from './types.js';
-export { defaultPython, hasDefaultPython } from './python.js';
+export { defaultPython, gradingPython, hasDefaultPython } from './python.js';
 export { DriverError } from './driver.js';
 export { type SubmissionModel, loadSubmissionModel } from './model.js';
 export { gradeStructure } from './structure.js';

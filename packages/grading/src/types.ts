@@ -18,7 +18,7 @@ export interface GradeOptions {
     readonly submissions: readonly Submission[];
     /** Where builds, task inputs, the job file and the task outputs (recordings) go; owned by this call. */
     readonly workDir: string;
-    /** The Python of the grading driver (default: the sim-server venv's, {@link defaultPython}). */
+    /** The Python of the grading driver (default: {@link gradingPython}: $MAA_GRADING_PYTHON, the clone's sim-server venv, else the launcher's cached venv with Ray, installed on first use). */
     readonly python?: string;
     /** A Ray cluster (RAY_ADDRESS); local Ray when absent. */
     readonly rayAddress?: string;
