@@ -10,9 +10,9 @@
 //   1. local Ray with 1 worker (one task after the other: the baseline),
 //   2. local Ray with 2 workers (ray.init(num_cpus=2) on this machine),
 //   3. a local 2-node Ray cluster (ray start --head + a worker node, 1 CPU each, on 127.0.0.1),
-// and the table gives each mode's wall time, tasks/s and speed-up over mode 1. When
-// @maa/grading is ready (signal grading-engine-ready, its dist built), one more row grades the
-// first 3 submissions end to end with gradeSubmissions (check, generate, plan, driver, scores).
+// and the table gives each mode's wall time, tasks/s and speed-up over mode 1. One more row grades
+// the first 3 submissions end to end with @maa/grading's gradeSubmissions (check, generate, plan,
+// driver, scores). Needs a build (packages/grading/dist).
 //
 // usage: node scripts/bench-grade.mjs [--submissions N] [--modes serial,local,cluster] [--keep]
 import { spawn, spawnSync } from 'node:child_process';
@@ -24,6 +24,13 @@ import readline from 'node:readline';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const gradingDist = path.join(repo, 'packages', 'grading', 'dist', 'index.js');
+if (!existsSync(gradingDist)) {
+    console.error(`bench:grade: ${path.relative(repo, gradingDist)} is missing: build first (npm run build)`);
+    process.exit(1);
+}
+/** @maa/grading as built: the scenario tasks' argv and limits as it plans them, and gradeSubmissions. */
+const grading = await import(pathToFileURL(gradingDist).href);
 const python = path.join(repo, 'sim-server', '.venv', 'bin', 'python');
 const exercise = path.join(repo, 'examples', 'lab', 'toast-controller');
 const variants = path.join(repo, 'packages', 'lab-server', 'test', 'fixtures', 'grading', 'toast-controller');
@@ -65,37 +72,6 @@ function generate(app, out) {
     return path.join(out, 'timesync');
 }
 
-/** The argv of a scenario task, as @maa/grading plans it (packages/grading/src/plan.ts scenarioArgv). */
-function scenarioArgv(scenario) {
-    return [
-        '{python}',
-        '-m',
-        'maa_sim.cli',
-        'run',
-        '--package',
-        '{input}/build/timesync',
-        '--mode',
-        'lockstep',
-        '--speed',
-        '0',
-        '--world',
-        '{input}/world.json',
-        '--until-goal',
-        '--max-time',
-        String(scenario.timeLimit),
-        '--rosbridge-port',
-        'off',
-        '--viser-port',
-        'off',
-        '--record',
-        '{output}/recording.mcap',
-        '--report',
-        '{output}/report.json',
-    ];
-}
-
-const LIMITS = { wallSeconds: 600, cpuSeconds: 540, memoryMB: 3072, processes: 64, fileSizeMB: 512 };
-
 /** Writes the task input folders (a copy of the build and world.json each) and the job file. */
 async function writeJob(work, builds, submissions) {
     const spec = JSON.parse(await readFile(path.join(exercise, 'grading', 'grading.json'), 'utf8'));
@@ -111,8 +87,8 @@ async function writeJob(work, builds, submissions) {
             tasks.push({
                 id,
                 input,
-                argv: scenarioArgv(scenario),
-                limits: LIMITS,
+                argv: grading.scenarioArgv(scenario),
+                limits: grading.DEFAULT_LIMITS.scenarios,
                 env: { PYTHONPATH: '{input}/build/timesync', PYTHONDONTWRITEBYTECODE: '1' },
             });
         }
@@ -204,11 +180,9 @@ async function runModes(options, job, work) {
     return rows;
 }
 
-/** One end-to-end row with @maa/grading (when it is ready): gradeSubmissions of 3 submissions. */
+/** One end-to-end row with @maa/grading: gradeSubmissions of 3 submissions. */
 async function engineRow(work) {
-    const dist = path.join(repo, 'packages', 'grading', 'dist', 'index.js');
-    if (!existsSync('/tmp/helpers/signals/grading-engine-ready') || !existsSync(dist)) return undefined;
-    const { gradeSubmissions } = await import(pathToFileURL(dist).href);
+    const { gradeSubmissions } = grading;
     const submissions = [];
     for (const [i, variant] of ['solution', 'solution', BROKEN].entries()) {
         const root = path.join(work, 'engine', `sub${i + 1}`);
@@ -253,11 +227,17 @@ function table(rows, base) {
 function projection(rows, base, scenarios) {
     const perTask = base.wall / base.tasks;
     const two = rows.filter((r) => r.workers === 2);
-    const efficiency = two.length > 0 ? Math.max(...two.map((r) => base.wall / r.wall)) / 2 : 1;
+    const measured = two.length > 0;
+    // without a 2-worker row the projection can only assume linear scaling, and says so
+    const efficiency = measured ? Math.max(...two.map((r) => base.wall / r.wall)) / 2 : 1;
     const tasks = 300 * (scenarios + 1); // the scenarios and one hidden-tests task per submission
     const minutes = (workers) => ((tasks * perTask) / (workers === 1 ? 1 : workers * efficiency) / 60).toFixed(1);
     return [
-        `One worker: ${perTask.toFixed(2)} s per task (wall time / tasks). Efficiency of 2 workers: ${(efficiency * 100).toFixed(0)} %.`,
+        `One worker: ${perTask.toFixed(2)} s per task (wall time / tasks). ${
+            measured
+                ? `Efficiency of 2 workers: ${(efficiency * 100).toFixed(0)} %.`
+                : 'Efficiency of more workers: not measured (run the local or cluster mode); assumed 100 %.'
+        }`,
         `A course of 300 submissions x (${scenarios} scenarios + 1 hidden-tests task) = ${tasks} tasks at that efficiency:`,
         `${minutes(1)} min on 1 worker, ${minutes(2)} min on 2, ${minutes(8)} min on 8, ${minutes(32)} min on 32 (e.g. 4 nodes of 8 cores).`,
     ].join('\n');
@@ -286,11 +266,9 @@ async function main() {
             `\n## bench:grade (${new Date().toISOString().slice(0, 16)} UTC, ${os.cpus().length} cores, ${(os.totalmem() / 2 ** 30).toFixed(0)} GiB)\n`,
         );
         console.log(table(rows, base));
-        if (engine) {
-            console.log(
-                `\n@maa/grading end to end (check, generate, plan, driver on local Ray, scores): ${engine.tasks} tasks of 3 submissions in ${engine.seconds.toFixed(1)} s: ${engine.scores.join('; ')}`,
-            );
-        }
+        console.log(
+            `\n@maa/grading end to end (check, generate, plan, driver on local Ray, scores): ${engine.tasks} tasks of 3 submissions in ${engine.seconds.toFixed(1)} s: ${engine.scores.join('; ')}`,
+        );
         if (base) console.log(`\n${projection(rows, base, scenarios)}`);
     } finally {
         if (!options.keep) await rm(work, { recursive: true, force: true });

@@ -11,4 +11,4 @@ export { type SubmissionModel, loadSubmissionModel } from './model.js';
 export { gradeStructure } from './structure.js';
 export { gradeDiagnostics } from './diagnostics.js';
 export { computeCoverage, coverageShare, type Coverage } from './coverage.js';
-export { DEFAULT_LIMITS } from './plan.js';
+export { DEFAULT_LIMITS, scenarioArgv } from './plan.js';
