@@ -6,7 +6,7 @@
 // (both students, the cells' texts), filters it by name, sorts it, opens ada's workspace read-only
 // (her file with its diagnostic) and resets it (confirm, CSRF token). Any CSP violation fails it.
 //
-//   flock /tmp/helpers/e2e.lock node e2e/lab-dashboard.mjs   (needs npm run build -w @maa/lab-server)
+//   node e2e/lab-dashboard.mjs   (needs npm run build -w @maa/lab-server)
 import { mkdtempSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';

@@ -13,7 +13,7 @@
 // Exercise view (issue 17): the grade and its feedback appear there and in the dashboard's grading
 // table, with the CSV and the scenario recordings. Screenshots in e2e/artifacts/lab-ide-*.png.
 //
-//   flock /tmp/helpers/e2e.lock node e2e/lab-ide.mjs   (needs npm run build: lab-server, ide-web)
+//   node e2e/lab-ide.mjs   (needs npm run build: lab-server, ide-web)
 import { execFile, spawn } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
