@@ -120,8 +120,14 @@ export const hostScenarios = [
                 .first()
                 .waitFor({ timeout: 10_000 });
             const diagram = await openDiagram(page);
+            // The IDE opened the diagram at start too: the model may still be rendering when the
+            // first component shows, so wait for the whole robot rather than count once.
+            const complete = await diagram
+                .waitForFunction(() => document.querySelectorAll('.maa-component').length >= 8, undefined, { timeout: 30_000 })
+                .then(() => true)
+                .catch(() => false);
             const components = await diagram.locator('.maa-component').count();
-            if (components < 8) await fail(`the diagram shows ${components} components, expected the robot and its 7 subcomponents`);
+            if (!complete) await fail(`the diagram shows ${components} components, expected the robot and its 7 subcomponents`);
             await diagram.locator('.maa-port').first().waitFor();
             await diagram.locator('.maa-connector').first().waitFor();
             await shot('diagram');
