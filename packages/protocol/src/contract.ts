@@ -31,6 +31,17 @@ export function formatIssues(issues: readonly ContractIssue[], max = 3): string 
     return shown.join('; ');
 }
 
+/** TypeBox reports a union or a pattern failure once per sub-schema: one issue per pointer and message. */
+export function dedupeIssues(issues: readonly ContractIssue[]): ContractIssue[] {
+    const seen = new Set<string>();
+    return issues.filter((i) => {
+        const key = `${i.pointer}\u0000${i.message}`;
+        if (seen.has(key)) return false;
+        seen.add(key);
+        return true;
+    });
+}
+
 /**
  * The message of a schema's `errorMessage` keyword (`{key}` = the last segment of the pointer),
  * else the validator's own. Readers in other languages (maa_sim/deployment.py) do the same.

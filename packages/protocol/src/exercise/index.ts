@@ -1,4 +1,4 @@
-import { contract, type ContractIssue } from '../contract.js';
+import { contract, type ContractIssue, dedupeIssues } from '../contract.js';
 import { ExerciseManifest, ReleasedExercise } from './schema.js';
 
 export * from './schema.js';
@@ -20,7 +20,7 @@ export function isReadOnly(exercise: { readOnly: readonly string[] }, path: stri
  */
 export function exerciseIssues(value: unknown, starterFiles?: readonly string[]): ContractIssue[] {
     const issues = exerciseManifestContract.issues(value);
-    if (issues.length > 0 || !starterFiles) return dedupe(issues);
+    if (issues.length > 0 || !starterFiles) return dedupeIssues(issues);
     const manifest = value as ExerciseManifest;
     const files = new Set(starterFiles);
     const folder = manifest.starter ?? 'starter';
@@ -81,15 +81,4 @@ export function layerStarter(
     for (const f of starterFiles) files.set(f, 'starter');
     const sorted = [...files.keys()].sort((a, b) => (a < b ? -1 : a > b ? 1 : 0));
     return { files: sorted.map((p) => ({ path: p, from: files.get(p) as StarterSource['from'] })), issues };
-}
-
-/** TypeBox reports a union or a pattern failure once per sub-schema: one issue per pointer and message. */
-function dedupe(issues: readonly ContractIssue[]): ContractIssue[] {
-    const seen = new Set<string>();
-    return issues.filter((i) => {
-        const key = `${i.pointer}\u0000${i.message}`;
-        if (seen.has(key)) return false;
-        seen.add(key);
-        return true;
-    });
 }

@@ -1,4 +1,4 @@
-import { contract, type ContractIssue } from '../contract.js';
+import { contract, type ContractIssue, dedupeIssues } from '../contract.js';
 import { DriverLine, GradeJob } from './job.js';
 import { ScenarioReport, StreamStates } from './reports.js';
 import { SubmissionGrade } from './result.js';
@@ -40,7 +40,7 @@ export function gradingSpecIssues(value: unknown): ContractIssue[] {
     const issues = gradingSpecContract.issues(value);
     if (issues.length === 0) return uniqueIds(value as GradingSpec);
     const criteria = (value as { criteria?: unknown } | null)?.criteria;
-    if (!Array.isArray(criteria)) return dedupe(issues);
+    if (!Array.isArray(criteria)) return dedupeIssues(issues);
     const out = issues.filter((i) => !/^\/criteria\/\d+(\/|$)/.test(i.pointer));
     criteria.forEach((criterion: unknown, index) => {
         const kind = (criterion as { kind?: unknown } | null)?.kind;
@@ -57,7 +57,7 @@ export function gradingSpecIssues(value: unknown): ContractIssue[] {
         }
         for (const issue of own.issues(criterion)) out.push({ pointer: `/criteria/${index}${issue.pointer}`, message: issue.message });
     });
-    return dedupe(out);
+    return dedupeIssues(out);
 }
 
 function uniqueIds(spec: GradingSpec): ContractIssue[] {
@@ -75,15 +75,4 @@ function uniqueIds(spec: GradingSpec): ContractIssue[] {
         });
     });
     return out;
-}
-
-/** TypeBox reports a union or a pattern failure once per sub-schema: one issue per pointer and message. */
-function dedupe(issues: readonly ContractIssue[]): ContractIssue[] {
-    const seen = new Set<string>();
-    return issues.filter((i) => {
-        const key = `${i.pointer}\u0000${i.message}`;
-        if (seen.has(key)) return false;
-        seen.add(key);
-        return true;
-    });
 }
