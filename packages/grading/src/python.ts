@@ -9,10 +9,15 @@ import { cachedVenv, ensureMaaSim, packageDir } from '@maa/sim-server';
  * launcher installs maa-sim into.
  */
 export function defaultPython(env: NodeJS.ProcessEnv = process.env): string {
+    return givenOrDevelopment(env) ?? path.join(cachedVenv(env), 'bin', 'python');
+}
+
+/** `$MAA_GRADING_PYTHON`, else a clone's development venv when it exists (both used as they are). */
+function givenOrDevelopment(env: NodeJS.ProcessEnv): string | undefined {
     const own = env['MAA_GRADING_PYTHON'];
     if (own) return own;
     const development = path.join(packageDir, '.venv', 'bin', 'python');
-    return existsSync(development) ? development : path.join(cachedVenv(env), 'bin', 'python');
+    return existsSync(development) ? development : undefined;
 }
 
 /** Whether the default Python exists (tests skip without it). */
@@ -27,10 +32,8 @@ export function hasDefaultPython(): boolean {
  * on stderr), so an installed @maa/grading works without a clone.
  */
 export async function gradingPython(env: NodeJS.ProcessEnv = process.env): Promise<string> {
-    const own = env['MAA_GRADING_PYTHON'];
-    if (own) return own;
-    const development = path.join(packageDir, '.venv', 'bin', 'python');
-    if (existsSync(development)) return development;
+    const ready = givenOrDevelopment(env);
+    if (ready) return ready;
     const maaSim = await ensureMaaSim({ env, extras: ['grade'] });
     return path.join(path.dirname(maaSim), 'python');
 }
