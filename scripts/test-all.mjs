@@ -19,7 +19,7 @@ import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { junitCounts, Tally } from './test-summary.mjs';
+import { junitCounts, parseTimes, stageTable, Tally } from './test-summary.mjs';
 
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const npm = process.platform === 'win32' ? 'npm.cmd' : 'npm';
@@ -28,9 +28,22 @@ const started = Date.now();
 
 const tally = new Tally();
 
+/** Each stage run: its title, wall time and the CPU time (user + sys) of the processes it ran. */
+const stages = [];
+
+// A stage runs under bash, whose `times` (written to fd 3) gives the CPU time of the processes it
+// waited for: the stage's command and every descendant reaped along the way.
+const TIMED = '"$@"; status=$?; times >&3; exit $status';
+
 function step(title, command, args, cwd = repo, env = process.env) {
     console.log(`\n=== ${title}: ${[command, ...args].join(' ')}`);
-    const result = spawnSync(command, args, { cwd, stdio: 'inherit', env });
+    const begun = Date.now();
+    const result = spawnSync('bash', ['-c', TIMED, 'bash', command, ...args], {
+        cwd,
+        stdio: ['inherit', 'inherit', 'inherit', 'pipe'],
+        env,
+    });
+    stages.push({ title, wallMs: Date.now() - begun, cpuMs: parseTimes(result.output?.[3]?.toString() ?? '') });
     if (result.error) {
         console.error(`test-all: could not start ${command}: ${result.error.message}`);
         return 1;
@@ -40,6 +53,7 @@ function step(title, command, args, cwd = repo, env = process.env) {
 
 /** Prints what failed, by kind, and the closing line, and exits with the code that agrees with it. */
 function finish() {
+    for (const line of stageTable(stages, Date.now() - started)) console.log(line);
     for (const line of tally.summary((Date.now() - started) / 60_000)) console.log(line);
     process.exit(tally.exitCode);
 }

@@ -84,3 +84,33 @@ export function junitCounts(xml) {
     const skipped = attribute('skipped');
     return { passed: attribute('tests') - failed.length - errors.length - skipped, failed, errors, skipped };
 }
+
+/**
+ * The children's CPU time (user + sys, in ms) from the output of bash's `times`: two lines of
+ * `<user> <sys>` (e.g. `1m2.345s 0m0.120s`), the shell's own and then its children's.
+ * undefined when the text does not hold them.
+ */
+export function parseTimes(text) {
+    const lines = text
+        .trim()
+        .split('\n')
+        .map((line) => [...line.matchAll(/(\d+)m([\d.]+)s/g)].map((m) => (Number(m[1]) * 60 + Number(m[2])) * 1000));
+    if (lines.length !== 2 || lines.some((times) => times.length !== 2)) return undefined;
+    return lines[1][0] + lines[1][1];
+}
+
+/**
+ * The table of stages: each stage's wall time and CPU time (user + sys of the processes it ran),
+ * the sum of the CPU times, and the whole run's wall time; stages that ran side by side overlap in
+ * wall time, so their wall times add up to more than the total.
+ */
+export function stageTable(stages, totalMs) {
+    const seconds = (ms) => (ms === undefined ? '?'.padStart(8) : `${(ms / 1000).toFixed(1).padStart(6)} s`);
+    const width = Math.max(5, ...stages.map((s) => s.title.length));
+    const lines = ['', 'test-all: time per stage (wall, CPU = user + sys of its processes):'];
+    lines.push(`  ${'stage'.padEnd(width)}  ${'wall'.padStart(8)}  ${'CPU'.padStart(8)}`);
+    for (const s of stages) lines.push(`  ${s.title.padEnd(width)}  ${seconds(s.wallMs)}  ${seconds(s.cpuMs)}`);
+    const cpu = stages.reduce((sum, s) => sum + (s.cpuMs ?? 0), 0);
+    lines.push(`  ${'total'.padEnd(width)}  ${seconds(totalMs)}  ${seconds(cpu)}`);
+    return lines;
+}

@@ -10,7 +10,7 @@ import { fileURLToPath } from 'node:url';
 import { promisify } from 'node:util';
 import { afterAll, describe, expect, it } from 'vitest';
 // @ts-expect-error -- a plain .mjs script without type declarations
-import { junitCounts, Tally } from '../test-summary.mjs';
+import { junitCounts, parseTimes, stageTable, Tally } from '../test-summary.mjs';
 
 const scripts = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const repo = path.resolve(scripts, '..');
@@ -111,5 +111,28 @@ describe("pytest's JUnit report", () => {
     const counts = junitCounts(report('', 'errors="1" failures="0" skipped="0" tests="1"'));
     expect(counts).toEqual({ passed: 0, skipped: 0, failed: [], errors: ['an error (not named in the report)'] });
     expect(junitCounts('not xml')).toBeUndefined();
+  });
+});
+
+describe('the time per stage', () => {
+  it("reads the children's user + sys from bash's times, and nothing from other text", () => {
+    expect(parseTimes('0m0.002s 0m0.000s\n1m2.500s 0m0.250s\n')).toBe(62_750);
+    expect(parseTimes('0m0.002s 0m0.000s\n')).toBeUndefined();
+    expect(parseTimes('')).toBeUndefined();
+  });
+
+  it('lists each stage with its wall and CPU time, a stage without a CPU time as ?, and the totals', () => {
+    const lines: string[] = stageTable(
+      [
+        { title: 'build', wallMs: 60_000, cpuMs: 90_000 },
+        { title: 'vitest', wallMs: 300_000, cpuMs: 400_500 },
+        { title: 'e2e', wallMs: 1_000, cpuMs: undefined },
+      ],
+      361_000,
+    );
+    expect(lines).toContain('  build     60.0 s    90.0 s');
+    expect(lines).toContain('  vitest   300.0 s   400.5 s');
+    expect(lines).toContain('  e2e        1.0 s         ?');
+    expect(lines.at(-1)).toBe('  total    361.0 s   490.5 s');
   });
 });
