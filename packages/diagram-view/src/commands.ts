@@ -1,7 +1,17 @@
 /** The diagram's own Sprotty commands. */
 import { decorate, inject, injectable } from 'inversify';
-import { HiddenCommand, SystemCommand, TYPES, type CommandExecutionContext, type SModelRootImpl } from 'sprotty';
-import type { Action } from 'sprotty-protocol';
+import {
+    FadeAnimation,
+    HiddenCommand,
+    SChildElementImpl,
+    SystemCommand,
+    TYPES,
+    UpdateModelCommand,
+    type Animation,
+    type CommandExecutionContext,
+    type SModelRootImpl,
+} from 'sprotty';
+import type { Action, UpdateModelAction } from 'sprotty-protocol';
 
 /** Re-renders the current model (live values and active states changed; the model did not). */
 export class RedrawCommand extends SystemCommand {
@@ -43,3 +53,48 @@ export class ClearHiddenCommand extends HiddenCommand {
 }
 decorate(injectable(), ClearHiddenCommand);
 decorate(inject(TYPES.Action), ClearHiddenCommand, 0);
+
+/**
+ * A fade whose fade-out removes the faded copy only while it is still where the fade put it.
+ * Sprotty's own FadeAnimation removes it unconditionally at t = 1; when that copy is no longer a
+ * child of its parent then (seen when a connector is removed by one update and re-added by the
+ * next, e.g. by a quick fix), `SParentElementImpl.remove` throws inside the animation frame, the
+ * update's promise never settles and the command stack stops applying updates for good.
+ */
+export class GuardedFadeAnimation extends FadeAnimation {
+    override tween(t: number, _context: CommandExecutionContext): SModelRootImpl {
+        for (const { element, type } of this.elementFades) {
+            if (type === 'in') {
+                element.opacity = t;
+                continue;
+            }
+            element.opacity = 1 - t;
+            if (t === 1 && element instanceof SChildElementImpl && element.parent?.children.includes(element)) {
+                element.parent.remove(element);
+            }
+        }
+        return this.model;
+    }
+}
+
+/** Sprotty's model update, with its fades made safe against elements that are already gone. */
+export class GuardedUpdateModelCommand extends UpdateModelCommand {
+    constructor(action: UpdateModelAction) {
+        super(action);
+    }
+    protected override createAnimations(
+        data: Parameters<UpdateModelCommand['createAnimations']>[0],
+        root: SModelRootImpl,
+        context: CommandExecutionContext,
+    ): Animation[] {
+        return super
+            .createAnimations(data, root, context)
+            .map((animation) =>
+                animation instanceof FadeAnimation && !(animation instanceof GuardedFadeAnimation)
+                    ? new GuardedFadeAnimation(root, animation.elementFades, context, true)
+                    : animation,
+            );
+    }
+}
+decorate(injectable(), GuardedUpdateModelCommand);
+decorate(inject(TYPES.Action), GuardedUpdateModelCommand, 0);

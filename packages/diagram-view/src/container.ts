@@ -18,11 +18,12 @@ import {
     loadDefaultModules,
     moveFeature,
     popupFeature,
+    updateModule,
     type IActionDispatcher,
     type IActionHandler,
 } from 'sprotty';
 import { SelectAction } from 'sprotty-protocol';
-import { ClearHiddenCommand, RedrawCommand } from './commands.js';
+import { ClearHiddenCommand, GuardedUpdateModelCommand, RedrawCommand } from './commands.js';
 import { ComponentNode, ConnectorEdge, MaaGraph, MaaPort, StateNode, TransitionEdge } from './model.js';
 import { MaaDiagramProxy } from './proxy.js';
 import { StandaloneSvgExporter } from './svg-exporter.js';
@@ -70,13 +71,15 @@ export function createDiagramContainer(
             popupDiv: `${baseDiv}-popup`,
             zoomLimits: ZOOM_LIMITS,
         });
+        // In place of Sprotty's updateModule (excluded below): see GuardedFadeAnimation.
+        configureCommand(context, GuardedUpdateModelCommand);
         configureCommand(context, RedrawCommand);
         configureCommand(context, ClearHiddenCommand);
         bind(SELECTION_HANDLER).toConstantValue(selectionHandler);
         configureActionHandler(context, SelectAction.KIND, SELECTION_HANDLER);
     });
     const di = new Container();
-    loadDefaultModules(di);
+    loadDefaultModules(di, { exclude: [updateModule] });
     di.load(diagramModule);
     const proxy = di.get<MaaDiagramProxy>(TYPES.ModelSource);
     proxy.clientId = baseDiv;
