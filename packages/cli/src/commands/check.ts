@@ -4,6 +4,7 @@ import type { RootSpec } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
 import { formatJson } from '../format/json.js';
 import { displayPath, formatDiagnosticsText, formatSummaryText } from '../format/text.js';
+import { loadChecker } from '../check-loader.js';
 import type { CliIo } from '../io.js';
 import { createProgress } from '../progress.js';
 import { MODEL_FILE_EXTENSIONS, resolveRoots } from '../roots.js';
@@ -26,8 +27,9 @@ export async function runCheck(paths: readonly string[], options: CheckOptions, 
     let found: Awaited<ReturnType<typeof import('@maa/language-server').checkModelRoots>>;
     try {
         progress?.update('loading the language services');
-        // Loaded on demand, so that --help and usage errors stay fast.
-        const { checkModelRoots, CheckInputError } = await import('@maa/language-server');
+        // Loaded on demand, so that --help and usage errors stay fast (the one-module bundle
+        // where the build wrote one: see check-loader.ts).
+        const { checkModelRoots, CheckInputError } = await loadChecker(io.env);
         try {
             found = await checkModelRoots(roots, progress ? { onProgress: (msg) => progress.update(msg) } : {});
         } catch (e) {
