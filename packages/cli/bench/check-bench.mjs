@@ -1,17 +1,22 @@
 #!/usr/bin/env node
 // Benchmark of model checking (`npm run bench` at the repository root; not a test: it asserts
-// nothing about times). Generates a synthetic model root (default 1,000 components, see
-// generate-models.mjs) in a temporary folder and reports:
-//   - cold `maa-gen check` time and peak RSS, through the CLI as a child process;
-//   - in-process `checkModelRoots` time (first and second call) and peak RSS;
-//   - the language services' initial build, and the time to re-validate after a one-line
-//     change (median over several changes), through DocumentBuilder.update.
-// Every measurement runs in a fresh Node process of its own, so memory figures do not mix.
+// nothing about times). Generates synthetic model roots (generate-models.mjs; 250, 1,000 and
+// 4,000 components) in a temporary folder and prints ONE table with every figure of issue 18's
+// goals 1 and 2 and the goal beside it (met / not met):
+//   - parse only: the family's parser over the 1,000-component model's files, MB/s;
+//   - cold `maa-gen check` through the CLI (median of --cli-runs) and its peak RSS;
+//   - in-process checkModelRoots (1st and 2nd call) against the parse-only time, and the import
+//     of the checking path the CLI loads (the one-module bundle, dist/check-bundle.js, when the
+//     build wrote it; the unbundled @maa/language-server beside it);
+//   - linear scaling: the in-process check at each size, time per component;
+//   - the language services' initial build and the re-validation after a one-line change.
+// Every measurement runs in a fresh Node process of its own, so memory figures do not mix; the
+// runs of the CLI and the imports are interleaved, and the table gives medians.
 //
-// Options: --components N (1000)  --cli-runs N (3)  --changes N (5)  --keep (keep the models)
-//          --json (print the raw figures as JSON after the table)
+// Options: --components N (1000)  --sizes 250,1000,4000  --cli-runs N (3)  --changes N (5)
+//          --import-runs N (3)  --keep (keep the models)  --json (the raw figures after the table)
 import { execFile } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -60,9 +65,15 @@ const emit = (result) => console.log(RESULT_PREFIX + JSON.stringify(result));
 // ---------------------------------------------------------------------------------------------
 // Phases (each in its own process)
 
+const CHECK_LOADER = new URL('../dist/check-loader.js', import.meta.url);
+const BUNDLE = new URL('../dist/check-bundle.js', import.meta.url);
+
+/** The checking path as `maa-gen check` loads it (the bundle when it is current), timed. */
 async function phaseCheck(root) {
+    const { loadChecker, bundleIsCurrent } = await import(CHECK_LOADER.href);
+    const via = bundleIsCurrent() ? 'bundle' : 'package';
     const t0 = performance.now();
-    const { checkModelRoots } = await import('@maa/language-server');
+    const { checkModelRoots } = await loadChecker();
     const importMs = performance.now() - t0;
     const t1 = performance.now();
     const diagnostics = await checkModelRoots([{ root }]);
@@ -72,6 +83,7 @@ async function phaseCheck(root) {
     await checkModelRoots([{ root }]);
     const secondMs = performance.now() - t2;
     emit({
+        via,
         importMs,
         firstMs,
         secondMs,
@@ -83,6 +95,55 @@ async function phaseCheck(root) {
             .slice(0, 5)
             .map((d) => `${path.relative(root, d.file)}:${d.line}:${d.column} ${d.severity} ${d.code} ${d.message}`),
     });
+}
+
+/** A cold import of the checking path: `bundle` (dist/check-bundle.js) or `package` (@maa/language-server). */
+async function phaseImport(which) {
+    const t0 = performance.now();
+    if (which === 'bundle') await import(BUNDLE.href);
+    else await import('@maa/language-server');
+    emit({ which, ms: performance.now() - t0 });
+}
+
+/**
+ * Parse only: the family's parser (the LangiumParser of each file's language, as
+ * `services.parser.LangiumParser.parse(text)`) over every model file, several passes; nothing
+ * else (no documents, indexing, linking or validation).
+ */
+async function phaseParse(root, passes) {
+    const { createMaaServices } = await import('@maa/language-server');
+    const { URI } = await import('langium');
+    const { NodeFileSystem } = await import('langium/node');
+    const { shared } = createMaaServices(NodeFileSystem);
+    const extensions = shared.ServiceRegistry.all.flatMap((l) => l.LanguageMetaData.fileExtensions);
+    const files = listFiles(root, extensions).map((file) => {
+        const text = readFileSync(file, 'utf8');
+        return { parser: shared.ServiceRegistry.getServices(URI.file(file)).parser.LangiumParser, text };
+    });
+    const bytes = files.reduce((n, f) => n + Buffer.byteLength(f.text), 0);
+    const passMs = [];
+    let errors = 0;
+    for (let pass = 0; pass < passes; pass++) {
+        errors = 0;
+        const t = performance.now();
+        for (const { parser, text } of files) {
+            const r = parser.parse(text);
+            errors += r.lexerErrors.length + r.parserErrors.length;
+        }
+        passMs.push(performance.now() - t);
+    }
+    emit({ files: files.length, bytes, passMs, errors });
+}
+
+/** The model files below a folder (sorted). */
+function listFiles(dir, extensions) {
+    return readdirSync(dir, { withFileTypes: true })
+        .sort((a, b) => a.name.localeCompare(b.name))
+        .flatMap((e) => {
+            const p = path.join(dir, e.name);
+            if (e.isDirectory()) return listFiles(p, extensions);
+            return extensions.some((x) => e.name.endsWith(x)) ? [p] : [];
+        });
 }
 
 async function phaseIncremental(root, editableFile, changes) {
@@ -152,93 +213,180 @@ async function phaseIncremental(root, editableFile, changes) {
 // ---------------------------------------------------------------------------------------------
 // Driver
 
-async function driver() {
-    const components = Number(option('components', '1000'));
-    const cliRuns = Number(option('cli-runs', '3'));
-    const changes = Number(option('changes', '5'));
-    const work = mkdtempSync(path.join(tmpdir(), 'maa-bench-'));
-    const root = path.join(work, 'models');
-    try {
-        const gen = generateModels(root, components);
-        console.log(
-            `maa-gen check benchmark: ${gen.atomic + gen.composed} components (${gen.atomic} atomic, ${gen.composed} composed, 10 ports each) + 1 class diagram,`,
-        );
-        console.log(`${gen.files.length} files, ${gen.lines} lines, in ${root}`);
-        console.log(`Node ${process.version}, ${process.platform}/${process.arch}\n`);
+const s = (ms) => `${(ms / 1000).toFixed(2)} s`;
+const msf = (ms) => `${ms.toFixed(0)} ms`;
+const mb = (kb) => `${(kb / 1024).toFixed(0)} MB`;
+const verdict = (ok) => (ok ? 'met' : 'not met');
 
-        // A preload that reports the CLI process's peak RSS on exit.
-        const probe = path.join(work, 'rss-probe.mjs');
-        writeFileSync(
-            probe,
-            `import { writeSync } from 'node:fs';\nprocess.on('exit', () => writeSync(2, '\\n${RSS_PREFIX}' + process.resourceUsage().maxRSS + '\\n'));\n`,
-        );
-        const cli = [];
-        for (let i = 0; i < cliRuns; i++) {
-            process.stderr.write(`cli run ${i + 1}/${cliRuns}...\n`);
+/** Runs the phases of one benchmark: the CLI and imports interleaved, then parse, check per size, incremental. */
+async function measure(work, roots, primary, counts) {
+    const probe = path.join(work, 'rss-probe.mjs');
+    writeFileSync(
+        probe,
+        `import { writeSync } from 'node:fs';\nprocess.on('exit', () => writeSync(2, '\\n${RSS_PREFIX}' + process.resourceUsage().maxRSS + '\\n'));\n`,
+    );
+    const root = roots.get(primary).root;
+    const cli = [];
+    const imports = { bundle: [], package: [] };
+    const hasBundle = existsSync(fileURLToPath(BUNDLE));
+    for (let i = 0; i < Math.max(counts.cliRuns, counts.importRuns); i++) {
+        if (i < counts.cliRuns) {
+            process.stderr.write(`cli run ${i + 1}/${counts.cliRuns}...\n`);
             const r = await run(['--import', pathToFileURL(probe).href, CLI, 'check', '--format', 'json', root], { cwd: work });
             if (r.code !== 0 && r.code !== 1) throw new Error(`maa-gen check failed (exit ${r.code}):\n${r.stderr.trim()}`);
             const rss = /MAA_BENCH_MAXRSS_KB=(\d+)/.exec(r.stderr);
             cli.push({ ms: r.ms, code: r.code, maxRssKb: rss ? Number(rss[1]) : NaN, summary: JSON.parse(r.stdout).summary });
         }
+        if (i < counts.importRuns) {
+            for (const which of hasBundle ? ['bundle', 'package'] : ['package']) {
+                imports[which].push(phaseResult(`import ${which}`, await run([SELF, '--phase', 'import', which], { cwd: work })).ms);
+            }
+        }
+    }
+    process.stderr.write('parse only...\n');
+    const parse = phaseResult('parse', await run([SELF, '--phase', 'parse', root, '3'], { cwd: work }));
+    const checks = new Map();
+    for (const [n, r] of roots) {
+        process.stderr.write(`in-process check, ${n} components...\n`);
+        checks.set(n, phaseResult('check', await run([SELF, '--phase', 'check', r.root], { cwd: work })));
+    }
+    process.stderr.write('language services, one-line changes...\n');
+    const gen = roots.get(primary).gen;
+    const editable = gen.editable[Math.floor(gen.editable.length / 2)];
+    const incr = phaseResult(
+        'incremental',
+        await run([SELF, '--phase', 'incremental', root, editable, String(counts.changes)], { cwd: work }),
+    );
+    return { cli, imports, parse, checks, incr };
+}
 
-        process.stderr.write('in-process check...\n');
-        const inproc = phaseResult('check', await run([SELF, '--phase', 'check', root], { cwd: work }));
+/** The table rows [measure, value, goal, verdict] of issue 18's goals 1 and 2. */
+function tableRows(m, primary) {
+    const { cli, imports, parse, checks, incr } = m;
+    const inproc = checks.get(primary);
+    const parseMb = parse.bytes / 2 ** 20;
+    const parseMedian = median(parse.passMs);
+    const mbps = parseMb / (parseMedian / 1000);
+    const cliMedian = median(cli.map((c) => c.ms));
+    const ratio = inproc.firstMs / parse.passMs[0];
+    const usedImport = inproc.via === 'bundle' ? median(imports.bundle) : median(imports.package);
+    const rows = [
+        [
+            `parse only (${parse.files} files, ${(parse.bytes / 1024).toFixed(0)} KB; median of ${parse.passMs.length} passes)`,
+            `${mbps.toFixed(2)} MB/s = ${msf(parseMedian)}  (passes: ${parse.passMs.map(msf).join(', ')}${parse.errors ? `; ${parse.errors} syntax errors!` : ''})`,
+            '≥ 1 MB/s',
+            verdict(mbps >= 1),
+        ],
+        [
+            `cold check, CLI (maa-gen check, median of ${cli.length})`,
+            `${s(cliMedian)}  (runs: ${cli.map((c) => s(c.ms)).join(', ')})`,
+            '≤ 2 s',
+            verdict(cliMedian <= 2000),
+        ],
+        ['peak RSS, CLI process', mb(Math.max(...cli.map((c) => c.maxRssKb))), 'reported', '—'],
+        [
+            `import of the checking path the CLI loads (${inproc.via === 'bundle' ? 'dist/check-bundle.js' : '@maa/language-server'}, median)`,
+            `${msf(usedImport)}  (runs: ${(inproc.via === 'bundle' ? imports.bundle : imports.package).map(msf).join(', ')})`,
+            '≤ 300 ms',
+            verdict(usedImport <= 300),
+        ],
+        [
+            'import of @maa/language-server unbundled (median)',
+            `${msf(median(imports.package))}  (runs: ${imports.package.map(msf).join(', ')})`,
+            'for comparison',
+            '—',
+        ],
+        [
+            'cold check, in-process (checkModelRoots, 1st call)',
+            `${s(inproc.firstMs)} = ${ratio.toFixed(1)}× the parse-only time (1st pass, ${msf(parse.passMs[0])})`,
+            '≤ 2× parse only',
+            verdict(ratio <= 2),
+        ],
+        ['repeated check, in-process (2nd call)', s(inproc.secondMs), '—', '—'],
+        ['peak RSS, in-process after 1st check', mb(inproc.maxRssKb), 'reported', '—'],
+    ];
+    const base = inproc.firstMs / primary;
+    for (const [n, c] of checks) {
+        const per = c.firstMs / n;
+        const dev = (per / base - 1) * 100;
+        rows.push([
+            `scaling: in-process check, ${n} components (peak RSS ${mb(c.maxRssKb)})`,
+            `${s(c.firstMs)} = ${(per).toFixed(2)} ms per component (${dev >= 0 ? '+' : ''}${dev.toFixed(0)} % vs ${primary})`,
+            `±20 % of ${primary}`,
+            verdict(Math.abs(dev) <= 20),
+        ]);
+    }
+    rows.push(
+        ['language services: load + full build with validation', `${s(incr.initialMs)}  (${incr.documents} documents)`, '—', '—'],
+        ['peak RSS, language services after build', mb(incr.maxRssKbAfterBuild), 'reported', '—'],
+        [
+            `re-validate after a one-line change (median of ${incr.changeMs.length})`,
+            `${msf(median(incr.changeMs))}  (${incr.changeMs.map(msf).join(', ')}; via ${incr.via})`,
+            '—',
+            '—',
+        ],
+    );
+    return rows;
+}
 
-        process.stderr.write('language services, one-line changes...\n');
-        const editable = gen.editable[Math.floor(gen.editable.length / 2)];
-        const incr = phaseResult(
-            'incremental',
-            await run([SELF, '--phase', 'incremental', root, editable, String(changes)], { cwd: work }),
+function printTable(rows) {
+    const header = ['measure', 'value', 'goal', ''];
+    const widths = header.map((h, i) => Math.max(h.length, ...rows.map((r) => String(r[i]).length)));
+    const line = (cells) => `| ${cells.map((c, i) => String(c).padEnd(widths[i])).join(' | ')} |`;
+    console.log(line(header));
+    console.log(`|${widths.map((w) => '-'.repeat(w + 2)).join('|')}|`);
+    for (const r of rows) console.log(line(r));
+}
+
+async function driver() {
+    const primary = Number(option('components', '1000'));
+    const sizes = [...new Set([primary, ...option('sizes', '250,1000,4000').split(',').map(Number)])].sort((a, b) => a - b);
+    const counts = {
+        cliRuns: Number(option('cli-runs', '3')),
+        importRuns: Number(option('import-runs', '3')),
+        changes: Number(option('changes', '5')),
+    };
+    const work = mkdtempSync(path.join(tmpdir(), 'maa-bench-'));
+    try {
+        const roots = new Map();
+        for (const n of sizes) {
+            const root = path.join(work, `models-${n}`);
+            roots.set(n, { root, gen: generateModels(root, n) });
+        }
+        const gen = roots.get(primary).gen;
+        console.log(
+            `maa-gen check benchmark: ${gen.atomic + gen.composed} components (${gen.atomic} atomic, ${gen.composed} composed, 10 ports each) + 1 class diagram,`,
         );
-
-        const s = (ms) => `${(ms / 1000).toFixed(2)} s`;
-        const msf = (ms) => `${ms.toFixed(0)} ms`;
-        const mb = (kb) => `${(kb / 1024).toFixed(0)} MB`;
-        const summary = cli[0].summary;
-        const rows = [
-            [
-                'cold check, CLI (maa-gen check, median)',
-                `${s(median(cli.map((c) => c.ms)))}  (runs: ${cli.map((c) => s(c.ms)).join(', ')})`,
-            ],
-            ['peak RSS, CLI process', mb(Math.max(...cli.map((c) => c.maxRssKb)))],
-            [
-                'cold check, in-process (checkModelRoots, 1st call)',
-                `${s(inproc.firstMs)}  (+ ${msf(inproc.importMs)} to import the language server)`,
-            ],
-            ['repeated check, in-process (2nd call)', s(inproc.secondMs)],
-            ['peak RSS, in-process after 1st check', mb(inproc.maxRssKb)],
-            ['language services: load + full build with validation', `${s(incr.initialMs)}  (${incr.documents} documents)`],
-            ['peak RSS, language services after build', mb(incr.maxRssKbAfterBuild)],
-            [
-                `re-validate after a one-line change (median of ${incr.changeMs.length})`,
-                `${msf(median(incr.changeMs))}  (${incr.changeMs.map(msf).join(', ')}; via ${incr.via})`,
-            ],
-        ];
-        const width = Math.max(...rows.map((r) => r[0].length));
-        console.log(`| ${'measure'.padEnd(width)} | value`);
-        console.log(`|${'-'.repeat(width + 2)}|${'-'.repeat(40)}`);
-        for (const [k, v] of rows) console.log(`| ${k.padEnd(width)} | ${v}`);
+        console.log(`${gen.files.length} files, ${gen.lines} lines; scaling at ${sizes.join(', ')} components; in ${work}`);
+        console.log(`Node ${process.version}, ${process.platform}/${process.arch}\n`);
+        const m = await measure(work, roots, primary, counts);
+        printTable(tableRows(m, primary));
+        const summary = m.cli[0].summary;
+        const inproc = m.checks.get(primary);
         console.log(
             `\nDiagnostics of the generated models: CLI ${summary.errors} errors, ${summary.warnings} warnings in ${summary.files} files; ` +
-                `language services ${incr.totals.errors} errors, ${incr.totals.warnings} warnings.`,
+                `language services ${m.incr.totals.errors} errors, ${m.incr.totals.warnings} warnings.`,
         );
         console.log(
-            `Changed file: ${incr.changedFile}; its errors after each change: ${incr.errorsAfterEachChange.join(', ')} (odd changes break the line, even ones repair it).`,
+            `Changed file: ${m.incr.changedFile}; its errors after each change: ${m.incr.errorsAfterEachChange.join(', ')} (odd changes break the line, even ones repair it).`,
         );
         if (inproc.sample.length > 0) console.log(`First diagnostics:\n  ${inproc.sample.join('\n  ')}`);
-        if (flag('json'))
-            console.log(
-                JSON.stringify({ generated: { ...gen, files: gen.files.length, editable: undefined }, cli, inproc, incr }, null, 2),
-            );
+        if (flag('json')) {
+            const raw = { ...m, checks: Object.fromEntries(m.checks), generated: { ...gen, files: gen.files.length, editable: undefined } };
+            console.log(JSON.stringify(raw, null, 2));
+        }
     } finally {
-        if (flag('keep')) console.log(`\nmodels kept in ${root}`);
+        if (flag('keep')) console.log(`\nmodels kept in ${work}`);
         else rmSync(work, { recursive: true, force: true });
     }
 }
 
 const phase = option('phase', undefined);
 try {
-    if (phase === 'check') await phaseCheck(process.argv[process.argv.indexOf('--phase') + 2]);
+    const args = process.argv.slice(process.argv.indexOf('--phase') + 2);
+    if (phase === 'check') await phaseCheck(args[0]);
+    else if (phase === 'import') await phaseImport(args[0]);
+    else if (phase === 'parse') await phaseParse(args[0], Number(args[1]));
     else if (phase === 'incremental') {
         const [root, file, changes] = process.argv.slice(process.argv.indexOf('--phase') + 2);
         await phaseIncremental(root, file, Number(changes));

@@ -10,8 +10,10 @@
 //     checks and generator rules, instantiation, generation (rendering through FileBuilders),
 //     tracing, and the transactional write; first run (empty output) and second run (unchanged);
 //   - the orchestration overhead: everything but loading the models, minus raw rendering;
-//   - a cold `maa-gen generate` through the CLI (wall time).
-// Options: --components N (1000)  --keep (keep the folder)  --json (raw figures)
+//   - cold `maa-gen generate` through the CLI against a cold `maa-gen check` of the same model
+//     root, interleaved (medians of --cli-runs): issue 18's goal 3, generate ≤ check + 1 s.
+// One table, with each goal beside its figure (met / not met).
+// Options: --components N (1000)  --cli-runs N (3)  --keep (keep the folder)  --json (raw figures)
 import { execFile } from 'node:child_process';
 import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -28,6 +30,12 @@ function option(name, fallback) {
     return i >= 0 && process.argv[i + 1] !== undefined ? process.argv[i + 1] : fallback;
 }
 const flag = (name) => process.argv.includes(`--${name}`);
+const median = (xs) => {
+    const sorted = [...xs].sort((a, b) => a - b);
+    const mid = Math.floor(sorted.length / 2);
+    return sorted.length % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
+};
+const verdict = (ok) => (ok ? 'met' : 'not met');
 
 const COMPONENT_TEMPLATE = `# Generated from {{ c.qualifiedName }}
 {% for p in c.parameters %}
@@ -222,47 +230,89 @@ async function main() {
         }
         const rawMs = Math.min(...raw.map((r) => r.ms));
 
-        process.stderr.write('cold maa-gen generate (CLI)...\n');
-        const cli = await run([CLI, 'generate', path.join(root, 'Bench.arcapp'), '--out', path.join(work, 'out-cli')], { cwd: work });
-        if (cli.code !== 0) throw new Error(`maa-gen generate failed (exit ${cli.code}):\n${cli.stderr}`);
+        // Cold runs through the CLI, interleaved so both see the same load: `maa-gen generate` of
+        // the application and `maa-gen check` of its model root (the same files).
+        const cliRuns = Number(option('cli-runs', '3'));
+        const cliGenerate = [];
+        const cliCheck = [];
+        for (let i = 0; i < cliRuns; i++) {
+            process.stderr.write(`cold maa-gen generate and check (CLI), run ${i + 1}/${cliRuns}...\n`);
+            const g = await run([CLI, 'generate', path.join(root, 'Bench.arcapp'), '--out', path.join(work, `out-cli-${i}`)], {
+                cwd: work,
+            });
+            if (g.code !== 0) throw new Error(`maa-gen generate failed (exit ${g.code}):\n${g.stderr}`);
+            cliGenerate.push(g.ms);
+            const c = await run([CLI, 'check', '--format', 'json', root], { cwd: work });
+            if (c.code !== 0 && c.code !== 1) throw new Error(`maa-gen check failed (exit ${c.code}):\n${c.stderr}`);
+            cliCheck.push(c.ms);
+        }
+        const generateMs = median(cliGenerate);
+        const checkMs = median(cliCheck);
 
         const f = first.timings;
         const overhead = f.discover + f.check + f.instantiate + f.generate + f.trace + f.write - raw[0].ms;
         const ms = (x) => `${x.toFixed(0)} ms`;
         const s = (x) => `${(x / 1000).toFixed(2)} s`;
         const files = first.platforms[0].files.length;
+        const runs = (xs) => xs.map(s).join(', ');
         const rows = [
+            [
+                `cold maa-gen generate through the CLI (median of ${cliRuns})`,
+                `${s(generateMs)}  (runs: ${runs(cliGenerate)})`,
+                `≤ check + 1 s = ${s(checkMs + 1000)}`,
+                verdict(generateMs <= checkMs + 1000),
+            ],
+            [
+                `cold maa-gen check of the same model root (median of ${cliRuns})`,
+                `${s(checkMs)}  (runs: ${runs(cliCheck)}; generate - check = ${s(generateMs - checkMs)})`,
+                '≤ 2 s',
+                verdict(checkMs <= 2000),
+            ],
             [
                 'raw template rendering, cold (templates compiled on first use)',
                 `${ms(raw[0].ms)}  (${files} outputs, ${(raw[0].bytes / 1024).toFixed(0)} KiB)`,
+                '—',
+                '—',
             ],
-            ['raw template rendering, warm (best of 3)', ms(rawMs)],
-            ['building the architecture view (once)', ms(archMs)],
-            ['orchestrated, 1st run: discover manifests', ms(f.discover)],
-            ['orchestrated, 1st run: load + language checks (all files)', s(f.load)],
-            ['orchestrated, 1st run: configuration checks + generator rules', ms(f.check)],
-            ['orchestrated, 1st run: instantiate generators', ms(f.instantiate)],
-            ['orchestrated, 1st run: generate (render via FileBuilders, trace marks)', ms(f.generate)],
-            ['orchestrated, 1st run: resolve traces + trace file', ms(f.trace)],
+            ['raw template rendering, warm (best of 3)', ms(rawMs), '—', '—'],
+            ['building the architecture view (once)', ms(archMs), '—', '—'],
+            ['orchestrated, 1st run: discover manifests', ms(f.discover), '—', '—'],
+            ['orchestrated, 1st run: load + language checks (all files)', s(f.load), '—', '—'],
+            ['orchestrated, 1st run: configuration checks + generator rules', ms(f.check), '—', '—'],
+            ['orchestrated, 1st run: instantiate generators', ms(f.instantiate), '—', '—'],
+            ['orchestrated, 1st run: generate (render via FileBuilders, trace marks)', ms(f.generate), '—', '—'],
+            ['orchestrated, 1st run: resolve traces + trace file', ms(f.trace), '—', '—'],
             [
                 'orchestrated, 1st run: plan (protected regions) + stage + commit the write',
                 `${ms(f.write)}  (${first.platforms[0].written.length} files written)`,
+                '—',
+                '—',
             ],
-            ['orchestrated, 1st run: total (in-process)', s(firstMs)],
+            [
+                'orchestrated, 1st run: total (in-process)',
+                `${s(firstMs)}  (all but load: ${s(firstMs - f.load)})`,
+                'all but load ≤ 1 s',
+                verdict(firstMs - f.load <= 1000),
+            ],
             [
                 'orchestration overhead (1st run: all but loading, minus cold raw rendering)',
                 `${ms(overhead)}  (${(overhead / raw[0].ms).toFixed(1)} x cold raw rendering; ${((overhead / firstMs) * 100).toFixed(0)} % of the run)`,
+                '—',
+                '—',
             ],
             [
                 'orchestrated, 2nd run (output unchanged): total',
                 `${s(secondMs)}  (load ${s(second.timings.load)}, generate ${ms(second.timings.generate)}, trace ${ms(second.timings.trace)}, plan + write ${ms(second.timings.write)}, ${second.platforms[0].written.length} written)`,
+                '—',
+                '—',
             ],
-            ['cold maa-gen generate through the CLI (wall time)', s(cli.ms)],
         ];
-        const width = Math.max(...rows.map((r) => r[0].length));
-        console.log(`| ${'measure'.padEnd(width)} | value`);
-        console.log(`|${'-'.repeat(width + 2)}|${'-'.repeat(40)}`);
-        for (const [k, v] of rows) console.log(`| ${k.padEnd(width)} | ${v}`);
+        const header = ['measure', 'value', 'goal', ''];
+        const widths = header.map((h, i) => Math.max(h.length, ...rows.map((r) => String(r[i]).length)));
+        const line = (cells) => `| ${cells.map((c, i) => String(c).padEnd(widths[i])).join(' | ')} |`;
+        console.log(line(header));
+        console.log(`|${widths.map((w) => '-'.repeat(w + 2)).join('|')}|`);
+        for (const r of rows) console.log(line(r));
         console.log(
             `\n${files} generated files + trace file; ${first.diagnostics.filter((d) => d.severity === 'warning').length} model warnings (unconnected outputs of the System's subcomponents).`,
         );
@@ -275,7 +325,8 @@ async function main() {
                         archMs,
                         first: { ms: firstMs, timings: first.timings },
                         second: { ms: secondMs, timings: second.timings },
-                        cliMs: cli.ms,
+                        cliGenerate,
+                        cliCheck,
                     },
                     null,
                     2,
