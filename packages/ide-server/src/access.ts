@@ -113,7 +113,7 @@ export type Authentication =
 
 /** A request (or WebSocket upgrade) let in, with its parsed URL, or refused and why. */
 export type Admission =
-    | { ok: true; url: URL; via: 'cookie' | 'bearer' | 'query' | 'public' }
+    | { ok: true; url: URL; via: 'cookie' | 'bearer' | 'query' | 'public' | 'capability' }
     /** `unauthenticated`: the Host and Origin were fine, the token was missing or wrong (401). */
     | { ok: false; refusal: AccessRefusal; unauthenticated: boolean };
 
@@ -138,11 +138,14 @@ export class AccessGuard {
      * @param listenHost the `--host` the server listens on (also accepted as Host)
      * @param port the port it serves
      * @param token the per-start secret
+     * @param capabilityPath whether a path carries a capability of its own instead of the token
+     *   (the viser view's, viser-view.ts); Host and Origin are checked all the same
      */
     constructor(
         listenHost: string,
         readonly port: number,
         readonly token: string,
+        private readonly capabilityPath: (pathname: string) => boolean = () => false,
     ) {
         this.hostOrigin = new HostOriginCheck('maa-ide', listenHost, port);
     }
@@ -171,6 +174,7 @@ export class AccessGuard {
             return { ok: false, refusal: { status: 400, message: 'malformed URL' }, unauthenticated: false };
         }
         if (isPublicScript(req.method, url.pathname)) return { ok: true, url, via: 'public' };
+        if (this.capabilityPath(url.pathname)) return { ok: true, url, via: 'capability' };
         const auth = this.authenticate(req, url.searchParams);
         return auth.ok ? { ok: true, url, via: auth.via } : { ok: false, refusal: auth.refusal, unauthenticated: true };
     }

@@ -14,8 +14,8 @@ export class Gate {
     private guard: AccessGuard | undefined;
 
     /** Known once the server listens (the port may be 0 until then); no request arrives before. */
-    open(host: string, port: number, token: string): void {
-        this.guard = new AccessGuard(host, port, token);
+    open(host: string, port: number, token: string, capabilityPath?: (pathname: string) => boolean): void {
+        this.guard = new AccessGuard(host, port, token, capabilityPath);
     }
 
     /**

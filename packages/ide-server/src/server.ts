@@ -10,12 +10,13 @@ import { createApiRouter } from './api.js';
 import { GenerationService } from './generation.js';
 import { Gate, isUnder } from './gate.js';
 import { sendError, sendJson } from './http-util.js';
-import { rejectUpgrade, SimProxy } from './proxy.js';
+import { rejectUpgrade, SimProxy, VISER_PATH } from './proxy.js';
 import { PathRedactor } from './redact.js';
 import { Ros2Environment } from './ros2-environment.js';
 import type { Router } from './router.js';
 import { SimSessions } from './sim-session.js';
 import { StaticApp } from './static.js';
+import { ViserView } from './viser-view.js';
 import { Workspace } from './workspace.js';
 
 /** This package's folder (dist/ or src/ lie one level below it). */
@@ -108,13 +109,13 @@ export async function startIdeServer(options: IdeServerOptions): Promise<IdeServ
 
     const gate = new Gate();
     const server = createServer(requestHandler(gate, services));
-    const upgraded = handleUpgrades(server, gate, services.proxy);
+    const upgraded = handleUpgrades(server, gate, services);
     server.on('clientError', (_err, socket) => {
         if (socket.writable) socket.end('HTTP/1.1 400 Bad Request\r\nConnection: close\r\n\r\n');
         else socket.destroy();
     });
     const port = await listen(server, options.port ?? defaults.port, settings.host, (port) =>
-        gate.open(settings.host, port, settings.token),
+        gate.open(settings.host, port, settings.token, (pathname) => services.viserView.admits(pathname)),
     );
     const shownHost = displayHost(settings.host);
     return {
@@ -161,6 +162,7 @@ interface Services {
     sims: SimSessions;
     api: Router;
     proxy: SimProxy;
+    viserView: ViserView;
     app: StaticApp;
 }
 
@@ -187,7 +189,7 @@ function createServices(options: IdeServerOptions, { workspaceDir, idleSeconds }
     const proxy = new SimProxy(sims);
     const appDir = path.resolve(options.appDir ?? defaults.appDir);
     const app = new StaticApp(appDir, redact.text(appDir));
-    return { workspace, redact, sims, api, proxy, app };
+    return { workspace, redact, sims, api, proxy, viserView: new ViserView(), app };
 }
 
 /** Every request goes through the gate, then to its route; a failure is answered as a (redacted) error. */
@@ -202,12 +204,19 @@ function requestHandler(gate: Gate, services: Services): (req: IncomingMessage, 
 }
 
 /** Where an admitted request goes: the REST API, the simulator's proxy, or the app's files. */
-async function route({ sims, api, proxy, app }: Services, req: IncomingMessage, res: ServerResponse, url: URL): Promise<void> {
+async function route({ sims, api, proxy, viserView, app }: Services, req: IncomingMessage, res: ServerResponse, url: URL): Promise<void> {
     const pathname = url.pathname;
     if (pathname.startsWith('/api/sim/')) sims.signOfLife();
     if (isUnder(pathname, '/api')) await api.dispatch(req, res, pathname, url.searchParams);
     else if (isUnder(pathname, '/sim')) {
-        if (!proxy.handleRequest(req, res, pathname)) sendJson(res, 404, { error: `unknown route: ${req.method} ${pathname}` });
+        // The viser page goes to a frame of another site, a process of its own (viser-view.ts).
+        const away = viserView.redirect(req, url);
+        const inner = away ? undefined : viserView.rewrite(req, url);
+        if (away || inner === VISER_PATH) {
+            res.writeHead(302, { Location: away ?? `${pathname}/${url.search}`, 'Content-Length': 0, 'Cache-Control': 'no-store' });
+            res.end();
+        } else if (!proxy.handleRequest(req, res, inner ?? pathname))
+            sendJson(res, 404, { error: `unknown route: ${req.method} ${pathname}` });
     } else await app.handle(req, res, pathname);
 }
 
@@ -215,7 +224,7 @@ async function route({ sims, api, proxy, app }: Services, req: IncomingMessage, 
  * WebSocket upgrades go through the gate to the simulator's proxy. Upgraded sockets leave the
  * server's bookkeeping, so the returned set holds them for the shutdown to end.
  */
-function handleUpgrades(server: Server, gate: Gate, proxy: SimProxy): Set<Duplex> {
+function handleUpgrades(server: Server, gate: Gate, { proxy, viserView }: Services): Set<Duplex> {
     const upgraded = new Set<Duplex>();
     server.on('upgrade', (req: IncomingMessage, socket: Duplex, head: Buffer) => {
         upgraded.add(socket);
@@ -223,7 +232,8 @@ function handleUpgrades(server: Server, gate: Gate, proxy: SimProxy): Set<Duplex
         socket.on('error', () => socket.destroy());
         const url = gate.admitUpgrade(req, socket);
         if (!url) return;
-        if (!proxy.handleUpgrade(req, socket, head, url.pathname)) rejectUpgrade(socket, 404, `no WebSocket endpoint at ${url.pathname}`);
+        const pathname = viserView.rewrite(req, url) ?? url.pathname;
+        if (!proxy.handleUpgrade(req, socket, head, pathname)) rejectUpgrade(socket, 404, `no WebSocket endpoint at ${url.pathname}`);
     });
     return upgraded;
 }

@@ -2,6 +2,7 @@ import { createReadStream, existsSync } from 'node:fs';
 import { realpath, stat } from 'node:fs/promises';
 import type { IncomingMessage, ServerResponse } from 'node:http';
 import path from 'node:path';
+import { chooseEncoding, CompressedFiles, compressible } from './compression.js';
 import { sendJson, sendText } from './http-util.js';
 
 const CONTENT_TYPES: Record<string, string> = {
@@ -34,9 +35,13 @@ export function contentType(file: string): string {
 
 /**
  * Serves the built web app. Vite puts content-hashed files under `assets/`, which may be cached
- * for good; everything else (index.html above all) is revalidated by ETag on every load.
+ * for good; everything else (index.html above all) is revalidated by ETag on every load. Text
+ * files go out compressed (brotli or gzip, by Accept-Encoding; compression.ts), each encoding
+ * with an ETag of its own.
  */
 export class StaticApp {
+    private readonly compressed = new CompressedFiles();
+
     /** @param shownDir how the folder is named in answers (no absolute paths in error bodies) */
     constructor(
         readonly dir: string,
@@ -79,22 +84,33 @@ export class StaticApp {
             sendJson(res, 404, { error: `not found: ${pathname}` });
             return;
         }
-        const etag = `W/"${info.size.toString(16)}-${Math.floor(info.mtimeMs).toString(16)}"`;
+        const encoding = compressible(file, info.size) ? chooseEncoding(req.headers['accept-encoding']) : undefined;
+        const etag = `W/"${info.size.toString(16)}-${Math.floor(info.mtimeMs).toString(16)}${encoding ? `-${encoding}` : ''}"`;
         const immutable = segments[0] === 'assets';
         res.setHeader('ETag', etag);
         res.setHeader('Last-Modified', info.mtime.toUTCString());
         res.setHeader('Cache-Control', immutable ? 'public, max-age=31536000, immutable' : 'no-cache');
+        if (compressible(file, info.size)) res.setHeader('Vary', 'Accept-Encoding');
         if (req.headers['if-none-match'] === etag) {
             res.writeHead(304);
             res.end();
             return;
         }
-        res.writeHead(200, { 'Content-Type': contentType(file), 'Content-Length': info.size, 'X-Content-Type-Options': 'nosniff' });
+        const body = encoding ? await this.compressed.get(file, info, encoding, (f) => this.confined(f)).catch(() => undefined) : undefined;
+        if (encoding && !body) res.setHeader('ETag', etag.replace(`-${encoding}"`, '"')); // served as it is
+        const headers: Record<string, string | number> = { 'Content-Type': contentType(file), 'X-Content-Type-Options': 'nosniff' };
+        if (body && encoding) headers['Content-Encoding'] = encoding;
+        headers['Content-Length'] = !body ? info.size : 'body' in body ? body.body.length : body.size;
+        res.writeHead(200, headers);
         if (req.method === 'HEAD') {
             res.end();
             return;
         }
-        createReadStream(file)
+        if (body && 'body' in body) {
+            res.end(body.body);
+            return;
+        }
+        createReadStream(body?.file ?? file)
             .on('error', () => res.destroy())
             .pipe(res);
     }

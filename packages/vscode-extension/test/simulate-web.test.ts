@@ -11,7 +11,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 // The panel's endpoints (not exported by @maa/simulate-view: the webview bundle uses them internally).
 import { simEndpoints } from '../../simulate-view/src/endpoints.js';
 import { webAppPath, webBackendBase } from '../src/simulate/web-target.js';
-import { simulateCsp } from '../src/simulate/webview-html.js';
+import { otherLoopbackOrigin, simulateCsp } from '../src/simulate/webview-html.js';
 
 describe('webBackendBase', () => {
     it('is the page folder without a trailing slash', () => {
@@ -66,7 +66,18 @@ describe("the simulate view's endpoints in the browser IDE", () => {
                 .find((d) => d[0] === name)
                 ?.slice(1);
         expect(directive('connect-src')).toEqual([new URL(endpoints.api).origin, new URL(endpoints.rosbridge).origin]);
-        expect(directive('frame-src')).toEqual([new URL(endpoints.viser).origin]);
+        // the viser page also from the other loopback name: maa-ide moves it to a process of its own there
+        expect(directive('frame-src')).toEqual([new URL(endpoints.viser).origin, 'http://localhost:4000']);
+    });
+
+    it('admits the viser frame from the other loopback name only for a loopback http origin', () => {
+        expect(otherLoopbackOrigin('http://127.0.0.1:4000')).toBe('http://localhost:4000');
+        expect(otherLoopbackOrigin('http://localhost:4000')).toBe('http://127.0.0.1:4000');
+        expect(otherLoopbackOrigin('http://[::1]:4000')).toBe('http://127.0.0.1:4000');
+        expect(otherLoopbackOrigin('https://lab.example')).toBeUndefined();
+        expect(otherLoopbackOrigin('http://192.168.1.5:4000')).toBeUndefined();
+        const lab = simulateCsp({ cspSource: 'https://cdn.example', relayOrigin: 'https://lab.example', nonce: 'n' });
+        expect(lab).toMatch(/frame-src https:\/\/lab\.example$/);
     });
 
     it('keeps a lab prefix on every endpoint', () => {

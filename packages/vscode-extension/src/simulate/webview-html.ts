@@ -24,10 +24,23 @@ export function webSocketOrigin(origin: string): string {
     return `${url.protocol === 'https:' ? 'wss:' : 'ws:'}//${url.host}`;
 }
 
-/** The Content-Security-Policy of the page: the common one (../webview-page.ts) plus the relay for connections and frames. */
+/** The other loopback name of a loopback origin (`127.0.0.1` ↔ `localhost`, `[::1]` → `127.0.0.1`), same port; else undefined. */
+export function otherLoopbackOrigin(origin: string): string | undefined {
+    const url = new URL(origin);
+    const other = ({ '127.0.0.1': 'localhost', localhost: '127.0.0.1', '[::1]': '127.0.0.1' } as Record<string, string>)[url.hostname];
+    return other && url.protocol === 'http:' ? `http://${other}${url.port ? `:${url.port}` : ''}` : undefined;
+}
+
+/**
+ * The Content-Security-Policy of the page: the common one (../webview-page.ts) plus the relay for
+ * connections and frames. The viser frame may also come from the relay's other loopback name:
+ * maa-ide sends it there, to another site, so that it renders in a process of its own
+ * (packages/ide-server/src/viser-view.ts).
+ */
 export function simulateCsp(page: Required<Pick<SimulatePage, 'cspSource' | 'relayOrigin' | 'nonce'>>): string {
     const relay = new URL(page.relayOrigin).origin;
-    return webviewCsp(page.cspSource, page.nonce, { extra: [`connect-src ${relay} ${webSocketOrigin(relay)}`, `frame-src ${relay}`] });
+    const frames = [relay, otherLoopbackOrigin(relay)].filter((o) => o !== undefined).join(' ');
+    return webviewCsp(page.cspSource, page.nonce, { extra: [`connect-src ${relay} ${webSocketOrigin(relay)}`, `frame-src ${frames}`] });
 }
 
 /** The page's HTML (a fresh nonce unless `page.nonce`). */
