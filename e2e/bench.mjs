@@ -180,7 +180,9 @@ async function benchWorkspace(label, workspaceFrom, startFile, edits, browser, a
         await ide.login(page);
         for (let i = 0; i < Math.max(2, Math.min(RUNS, 3)); i++) {
             await longTasks.drain(page); // the frames of the previous load go with the navigation
+            const cdp = PROFILE && i === 0 ? await startProfile(page) : undefined;
             result.load.push(await longTasks.phase('start', page, () => loadIde(page, ide.url, startFile ?? edits[0]?.path)));
+            if (cdp) await stopProfile(cdp, `bench-start-${label.split(' ')[0]}`);
             progress(`${label}: load ${i + 1}: ${JSON.stringify(result.load.at(-1))}`);
         }
         for (const edit of edits) {
@@ -346,6 +348,24 @@ async function served(ide) {
 const browser = await launchBrowser();
 const longTasks = await LongTasks.attach(browser.context);
 const results = [];
+/** `--profile`: the CPU profile of the page's renderer (its main thread runs every same-site frame). */
+async function startProfile(page) {
+    const cdp = await page.context().newCDPSession(page);
+    await cdp.send('Profiler.enable');
+    await cdp.send('Profiler.setSamplingInterval', { interval: 1000 });
+    await cdp.send('Profiler.start');
+    return cdp;
+}
+
+async function stopProfile(cdp, name) {
+    const { profile } = await cdp.send('Profiler.stop');
+    await cdp.detach().catch(() => undefined);
+    mkdirSync(artifacts, { recursive: true });
+    const file = path.join(artifacts, `${name}.cpuprofile`);
+    writeFileSync(file, JSON.stringify(profile));
+    progress(`profile in ${path.relative(process.cwd(), file)}`);
+}
+
 let servedBundle;
 let sim;
 /** The example's steps after its loads and keystrokes: generation, a simulation, the bundle as served. */
@@ -354,25 +374,14 @@ async function exampleAfter(page, result, ide) {
     progress(`generation: ${result.generationMs} ms`);
     if (SIMULATE) {
         sim = {};
-        let cdp;
-        if (PROFILE) {
-            cdp = await page.context().newCDPSession(page);
-            await cdp.send('Profiler.enable');
-            await cdp.send('Profiler.setSamplingInterval', { interval: 1000 });
-            await cdp.send('Profiler.start');
-        }
+        const cdp = PROFILE ? await startProfile(page) : undefined;
         try {
             await simulation(page, sim, longTasks);
         } catch (error) {
             sim.error = String(error?.message ?? error).split('\n')[0];
             progress(`simulation failed: ${sim.error}`);
         } finally {
-            if (cdp) {
-                const { profile } = await cdp.send('Profiler.stop');
-                mkdirSync(artifacts, { recursive: true });
-                writeFileSync(path.join(artifacts, 'bench-simulation.cpuprofile'), JSON.stringify(profile));
-                progress(`profile of the workbench page during the simulation in ${path.join(artifacts, 'bench-simulation.cpuprofile')}`);
-            }
+            if (cdp) await stopProfile(cdp, 'bench-simulation');
         }
     }
     servedBundle = await served(ide);

@@ -5,8 +5,12 @@ import { RequestModelAction, type Action, type ActionMessage, type DiagramOption
 import { MaaDiagramServer } from './diagram-server.js';
 import type { MaaDiagramServices } from './services.js';
 
-/** How long to wait after the last change before a diagram is regenerated. */
-export const UPDATE_DELAY_MS = 150;
+/**
+ * How long to wait after a build before the diagrams are regenerated: the builds themselves follow
+ * the edits (a new edit cancels the build under way), so this only merges builds that end close
+ * together; every millisecond of it is part of keystroke → diagram (issue 18: 150 before).
+ */
+export const UPDATE_DELAY_MS = 30;
 /** How long a model request waits at most for its source document's validation. */
 const VALIDATION_WAIT_MS = 10_000;
 
