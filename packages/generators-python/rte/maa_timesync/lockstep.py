@@ -103,6 +103,9 @@ def port_message(value: object) -> JsonMessage:
     enums: the constant's name, ``{"data": "GOLDEN"}`` (``std_msgs/String``); class-diagram objects:
     ``{"data": "<JSON of the fields>"}`` (``std_msgs/String``).
     """
+    kind = type(value)
+    if kind is int or kind is str or kind is bool:  # the common case first, before the isinstance checks
+        return {"data": value}
     if isinstance(value, Enum):
         return {"data": value.name}
     if isinstance(value, bool | int | str):
@@ -210,6 +213,9 @@ class LockstepApp:
         if self.port_topics:
             out.update(fed)
             for topic, items in self._observed:
+                if len(items) == 1 and items[0] is TICK:  # the usual slice of a port without a message
+                    items.clear()
+                    continue
                 values = [port_message(v) for v in items if v is not TICK]
                 items.clear()
                 if values:

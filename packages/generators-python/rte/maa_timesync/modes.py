@@ -20,7 +20,7 @@ from collections import deque
 from collections.abc import Mapping
 from typing import ClassVar
 
-from maa_timesync.runtime import TICK, ComposedComponent, Connector, Instance, Target, _Forward, drain_slice
+from maa_timesync.runtime import TICK, ComposedComponent, Connector, Instance, Target, _Forward
 
 
 class ModeComponent(ComposedComponent):
@@ -128,7 +128,7 @@ class ModeInstance(Instance):
 
     # -- steps ---------------------------------------------------------------------------
     def _sync_slice(self) -> None:
-        inputs = drain_slice(self.buffers)
+        inputs = self._drain_slice()
         self._switch(None, inputs)
         for port in self.ctype.IN_PORTS:
             value = inputs.get(port)

@@ -78,6 +78,10 @@ class Instance:
         self.ctype = ctype
         self.params = ctype.defaults(params)
         self.buffers: dict[str, deque[object]] = {p: deque() for p in (*ctype.IN_PORTS, "")}
+        #: ticks waiting in each buffer, and how many buffers hold at least one: a sync instance is
+        #: ready when every buffer does (kept by deliver and _drain_slice instead of scanning buffers)
+        self.ticks: dict[str, int] = {}
+        self.ticked = 0
         self.queue: deque[str] = deque()
         self.out_targets: dict[str, list[Target]] = {p: [] for p in ctype.OUT_PORTS}
         self.observers: dict[str, list[object]] = {}
@@ -86,7 +90,8 @@ class Instance:
         self.undriven_out: list[str] = []
         self.behavior: Behavior | None = None
         if issubclass(ctype, AtomicComponent):
-            self.behavior = ctype.BEHAVIOR(self._emit, self.params)
+            # the behavior emits straight into send (one call less per message than through _emit)
+            self.behavior = ctype.BEHAVIOR(self.send, self.params)
             self.behavior.set_delay_hook(self._delay_ticks)
             self.sync = self.behavior.TIMING == "sync"
         else:
@@ -106,17 +111,46 @@ class Instance:
 
     def send(self, port: str, item: object) -> None:
         """Sends a message or a tick on an out port: straight through forwarders into buffers."""
-        if port in self.observers:
-            self.observers[port].append(item)
-        for inst, target in self.out_targets.get(port, ()):
-            inst.deliver(target, item)
+        observer = self.observers.get(port)
+        if observer is not None:
+            observer.append(item)
+        targets = self.out_targets.get(port)
+        if targets:
+            for inst, target in targets:
+                inst.deliver(target, item)
 
     def deliver(self, port: str, item: object) -> None:
         """An item arrives at an in port (``""``: the tick port)."""
         buf = self.buffers[port]
         buf.append(item)
-        if port and len(buf) == 1 and item is not TICK and not self.sync and port not in self.queue:
+        if item is TICK:
+            ticks = self.ticks
+            count = ticks.get(port, 0)
+            ticks[port] = count + 1
+            if not count:
+                self.ticked += 1
+        elif not self.sync and port and len(buf) == 1 and port not in self.queue:
             self.queue.append(port)
+
+    def _drain_slice(self) -> dict[str, object]:
+        """Takes one slice off every in-port buffer (up to and including its tick): the last message of
+        each port, None where the slice held none. The '' buffer is the tick-only trigger, not a port.
+        Keeps the tick counts."""
+        ticks = self.ticks
+        inputs: dict[str, object] = {}
+        for port, buf in self.buffers.items():
+            count = ticks[port] - 1
+            ticks[port] = count
+            if not count:
+                self.ticked -= 1
+            last: object = None
+            item = buf.popleft()
+            while item is not TICK:
+                last = item
+                item = buf.popleft()
+            if port:
+                inputs[port] = last
+        return inputs
 
     def _delay_ticks(self) -> None:
         for port in self.ctype.OUT_PORTS:
@@ -133,7 +167,7 @@ class Instance:
 
     def ready(self) -> bool:
         if self.sync:
-            return all(any(x is TICK for x in buf) for buf in self.buffers.values())
+            return self.ticked == len(self.buffers)
         if self.queue:
             return True
         return all(buf and buf[0] is TICK for buf in self.buffers.values())
@@ -150,8 +184,13 @@ class Instance:
             if buf and buf[0] is not TICK and port not in self.queue:
                 self.queue.append(port)
         else:
-            for buf in self.buffers.values():
+            ticks = self.ticks
+            for port, buf in self.buffers.items():
                 buf.popleft()
+                count = ticks[port] - 1
+                ticks[port] = count
+                if not count:
+                    self.ticked -= 1
             self._tick()
             for port in self.ctype.IN_PORTS:
                 buf = self.buffers[port]
@@ -159,11 +198,12 @@ class Instance:
                     self.queue.append(port)
 
     def _sync_slice(self) -> None:
-        inputs = drain_slice(self.buffers)
+        inputs = self._drain_slice()
         assert self.behavior is not None
         self.behavior.step(inputs)
+        send = self.send
         for port in self.ctype.OUT_PORTS:
-            self.send(port, TICK)
+            send(port, TICK)
 
     def _message(self, port: str, value: object) -> None:
         if self.behavior is not None:
@@ -241,9 +281,10 @@ class System:
         return any(i.ready() for i in self.instances)
 
     def _rounds(self) -> None:
+        instances = self.instances
         while True:
             progressed = False
-            for inst in self.instances:
+            for inst in instances:
                 if inst.ready():
                     inst.execute()
                     progressed = True
@@ -286,22 +327,6 @@ class _Forward:
 
     def deliver(self, _port: str, item: object) -> None:
         self.inst.send(self.port, item)
-
-
-def drain_slice(buffers: Mapping[str, deque[object]]) -> dict[str, object]:
-    """Takes one slice off every in-port buffer (up to and including its tick): the last message of
-    each port, None where the slice held none. The '' buffer is the tick-only trigger, not a port."""
-    inputs: dict[str, object] = {}
-    for port, buf in buffers.items():
-        last: object = None
-        while True:
-            item = buf.popleft()
-            if item is TICK:
-                break
-            last = item
-        if port:
-            inputs[port] = last
-    return inputs
 
 
 def make_system(ctype: type[ComponentType], params: Mapping[str, object] | None = None) -> System:
