@@ -63,11 +63,15 @@ def normalize_outputs(outputs: Mapping[str, OutputValue] | None) -> dict[str, li
     if not isinstance(outputs, Mapping):
         raise TypeError("a lock-step controller must return a mapping of topic to message(s)")
     for topic, value in outputs.items():
+        kind = type(value)
+        if kind is list and type(topic) is str:  # the usual shape (a timesync build's), before the ABC checks
+            result[topic] = [dict(v) for v in cast(list[JsonMessage], value)]
+            continue
         if not isinstance(topic, str):
             raise TypeError("topic names must be strings")
         if value is None:
             continue
-        if isinstance(value, Mapping):
+        if isinstance(value, dict | Mapping):
             result[topic] = [dict(value)]
         elif isinstance(value, Sequence) and not isinstance(value, str | bytes):
             result[topic] = [dict(v) for v in value]

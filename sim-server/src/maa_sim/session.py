@@ -216,9 +216,7 @@ class Runner:
                 with self._injected_lock:
                     injected, self.injected = self.injected, {}
                 outputs = self._controller_step(self.controller, inputs, injected)
-                for topic, messages in outputs.items():
-                    for msg in messages:
-                        self._emit(topic, msg)
+                self._emit_all(outputs)
                 self._inputs = session.advance()
         else:
             session.advance()
@@ -252,6 +250,19 @@ class Runner:
                 + ("" if restored else " (the application's state could not be saved before the slice)"),
             )
         return normalize_outputs(controller.step(inputs))
+
+    def _emit_all(self, outputs: dict[str, list[JsonMessage]]) -> None:
+        """:meth:`_emit` of every message of a slice (on a local bus only topics with subscribers)."""
+        transport = self.session.transport
+        if isinstance(transport, LocalBus):
+            for topic, messages in outputs.items():
+                for msg in messages:
+                    if transport.has_subscribers(topic):
+                        transport.deliver(topic, msg)
+            return
+        for topic, messages in outputs.items():
+            for msg in messages:
+                self._emit(topic, msg)
 
     def _emit(self, topic: str, msg: JsonMessage) -> None:
         """A controller's message: actuator topics reach the session, every topic its observers."""
