@@ -6,8 +6,8 @@
 //   longest main-thread task and the number of tasks over 200 ms, seen by a PerformanceObserver
 //   for 'longtask' in every frame (the workbench page and the webviews' iframes: the diagram, the
 //   simulate view, viser);
-// - time to interactive (cold: the first load with an empty HTTP cache; warm: the median of the
-//   reloads), keystroke → updated diagnostics, keystroke → updated diagram (medians);
+// - time to interactive (cold: loads with the HTTP cache emptied; warm: loads with it), keystroke
+//   → updated diagnostics, keystroke → updated diagram (medians);
 // - the JavaScript bundle: the main entry raw and as served (Content-Encoding, bytes on the wire,
 //   Cache-Control), and all files.
 //
@@ -105,7 +105,12 @@ async function loadIde(page, url, open) {
     } catch (error) {
         progress(`no diagram: ${String(error?.message ?? error).split('\n')[0]}`);
     }
-    return { interactiveMs: timings.editor, readyMs: timings.ready, diagramMs };
+    // The main script as chromium got it (bytes on the wire and decoded; 0 on the wire from the HTTP cache).
+    const mainScript = await page.evaluate(() => {
+        const e = performance.getEntriesByType('resource').find((r) => /\/assets\/main-[^/]+\.js$/.test(r.name));
+        return e ? { transferBytes: e.transferSize, encodedBytes: e.encodedBodySize, decodedBytes: e.decodedBodySize } : undefined;
+    });
+    return { interactiveMs: timings.editor, readyMs: timings.ready, diagramMs, mainScript };
 }
 
 /** Types `text` at the end of the first match of `needle` (in the editor of `file`) and measures, in the page,
@@ -178,13 +183,20 @@ async function benchWorkspace(label, workspaceFrom, startFile, edits, browser, a
     try {
         const { page } = browser;
         await ide.login(page);
-        for (let i = 0; i < Math.max(2, Math.min(RUNS, 3)); i++) {
+        const loads = Math.max(2, Math.min(RUNS, 3));
+        const network = await page.context().newCDPSession(page);
+        for (let i = 0; i < 2 * loads; i++) {
+            // the first half cold (the HTTP cache emptied), the second half warm
+            const cold = i < loads;
+            if (cold) await network.send('Network.clearBrowserCache');
             await longTasks.drain(page); // the frames of the previous load go with the navigation
             const cdp = PROFILE && i === 0 ? await startProfile(page) : undefined;
-            result.load.push(await longTasks.phase('start', page, () => loadIde(page, ide.url, startFile ?? edits[0]?.path)));
+            const load = await longTasks.phase('start', page, () => loadIde(page, ide.url, startFile ?? edits[0]?.path));
+            result.load.push({ ...load, cold });
             if (cdp) await stopProfile(cdp, `bench-start-${label.split(' ')[0]}`);
             progress(`${label}: load ${i + 1}: ${JSON.stringify(result.load.at(-1))}`);
         }
+        await network.detach().catch(() => undefined);
         for (const edit of edits) {
             if (edit.open && edit.open !== startFile) {
                 // The diagram follows the active editor: the time until it shows the opened component
@@ -207,10 +219,12 @@ async function benchWorkspace(label, workspaceFrom, startFile, edits, browser, a
                 await page.waitForTimeout(1500);
             }
             const runs = [];
+            const typingProfile = PROFILE && edit.name === 'systemDiagram' ? await startProfile(page) : undefined;
             for (let i = 0; i < (edit.runs ?? RUNS); i++) {
                 runs.push(await longTasks.phase('typing', page, () => keystroke(page, edit)));
                 progress(`${label}: ${edit.name} ${i + 1}: ${JSON.stringify(runs.at(-1))}`);
             }
+            if (typingProfile) await stopProfile(typingProfile, 'bench-typing-system');
             result.edits[edit.name] = runs;
         }
         if (after) await after(page, result, ide);
@@ -253,6 +267,25 @@ async function roundTrip(page) {
     return Date.now() - t0;
 }
 
+/**
+ * Brings the diagram's tab to the front while the simulation runs. Playwright's click waits for
+ * the page to draw (its actionability checks); the mouse-down a tab opens on, dispatched on the
+ * element, does not: used when the click does not happen within 10 s, and recorded.
+ */
+async function diagramTabToFront(page, result) {
+    const tab = page.locator('.tabs-container .tab', { hasText: 'MontiArc Diagram' }).first();
+    const t0 = Date.now();
+    try {
+        await tab.click({ timeout: 10_000 });
+        result.diagramTab = `clicked after ${Date.now() - t0} ms`;
+    } catch (error) {
+        await tab.dispatchEvent('mousedown', { button: 0 }).catch(() => undefined);
+        await tab.dispatchEvent('mouseup', { button: 0 }).catch(() => undefined);
+        result.diagramTab = `click timed out (${String(error?.message ?? error).split('\n')[0]}); mouse-down dispatched`;
+    }
+    progress(`simulation: the diagram's tab: ${result.diagramTab}`);
+}
+
 /** The backend's simulation status, asked from the page (its origin and token cookie). */
 const simStatus = (page) => page.evaluate(async () => (await fetch('api/sim/status')).json());
 
@@ -277,14 +310,14 @@ async function simulation(page, result, longTasks) {
     await longTasks.phase('running simulation', page, async () => {
         // a lock-step run starts paused: resume it (1× real time)
         const resume = view.locator('[data-testid=sim-resume]');
-        if (await resume.isEnabled().catch(() => false)) await resume.click();
+        if (await resume.isEnabled().catch(() => false)) await resume.click({ timeout: 10_000 }).catch(() => undefined);
         const until = Date.now() + RUN_SECONDS * 1000;
         let diagramInFront = false;
         while (Date.now() < until) {
             trips.push(await roundTrip(page));
             if (!diagramInFront && Date.now() > until - (RUN_SECONDS * 1000) / 2) {
                 diagramInFront = true;
-                await page.locator('.tabs-container .tab', { hasText: 'MontiArc Diagram' }).first().click({ timeout: 30_000 });
+                await diagramTabToFront(page, result);
             }
             await page.waitForTimeout(250);
         }
@@ -454,8 +487,8 @@ async function benchLarge() {
 const bundle = bundleSize();
 const summary = results.map((r) => ({
     workspace: r.label,
-    interactiveEditorMs: median(r.load.slice(1).map((l) => l.interactiveMs)),
-    firstLoadInteractiveMs: r.load[0]?.interactiveMs,
+    interactiveEditorMs: median(r.load.filter((l) => !l.cold).map((l) => l.interactiveMs)),
+    coldInteractiveMs: median(r.load.filter((l) => l.cold).map((l) => l.interactiveMs)),
     firstDiagramMs: median(r.load.map((l) => l.diagramMs)),
     keystrokeToDiagnosticsMs: median((r.edits.diagnostics ?? []).map((e) => e.diagnosticsMs)),
     keystrokeToDiagramMs: median((r.edits.diagram ?? []).map((e) => e.diagramMs)),
@@ -504,13 +537,13 @@ function rows() {
     ]) {
         if (!s) continue;
         out.push([
-            `${label}: time to interactive, cold (first load)`,
-            fmt(s.firstLoadInteractiveMs),
+            `${label}: time to interactive, cold (HTTP cache emptied)`,
+            fmt(s.coldInteractiveMs),
             '≤ 2 s',
-            within(s.firstLoadInteractiveMs, 2000),
+            within(s.coldInteractiveMs, 2000),
         ]);
         out.push([
-            `${label}: time to interactive, warm (reloads)`,
+            `${label}: time to interactive, warm (HTTP cache)`,
             fmt(s.interactiveEditorMs),
             '≤ 2 s',
             within(s.interactiveEditorMs, 2000),
@@ -538,7 +571,20 @@ function rows() {
         const b = servedBundle;
         const compressed = b.encoding === 'gzip' || b.encoding === 'br';
         out.push([`main bundle (${b.entry}) raw`, kb(b.rawBytes), '—', '']);
-        out.push(['main bundle as served', `${kb(b.wireBytes)} ${b.encoding}`, 'gzip or br', compressed ? 'met' : 'not met']);
+        out.push([
+            'main bundle as served (Accept-Encoding: gzip, deflate, br)',
+            `${kb(b.wireBytes)} ${b.encoding}`,
+            'gzip or br',
+            compressed ? 'met' : 'not met',
+        ]);
+        const got = results[0]?.load[0]?.mainScript;
+        if (got)
+            out.push([
+                'main bundle as chromium got it (first load)',
+                `${kb(got.encodedBytes)} on the wire for ${kb(got.decodedBytes)}`,
+                'compressed',
+                got.encodedBytes < got.decodedBytes ? 'met' : 'not met',
+            ]);
         const cached =
             /immutable/.test(b.entryCacheControl ?? '') && /no-cache/.test(b.pageCacheControl ?? '') && b.pageRevalidatedStatus === 304;
         out.push([
@@ -562,7 +608,9 @@ if (asJson) {
 } else {
     const table = rows();
     const width = (i) => Math.max(...table.map((r) => r[i].length));
-    console.log(`\nIDE benchmark (medians of ${RUNS} keystrokes; headless chromium without a GPU; long tasks in every frame)\n`);
+    console.log(
+        `\nIDE benchmark (medians of ${RUNS} keystrokes and of the loads; headless chromium without a GPU; long tasks in every frame)\n`,
+    );
     for (const r of table) console.log(`  ${r[0].padEnd(width(0))}  ${r[1].padEnd(width(1))}  ${r[2].padEnd(width(2))}  ${r[3]}`);
     console.log(`\n(details in ${path.relative(process.cwd(), path.join(artifacts, 'bench.json'))})`);
 }
