@@ -3,7 +3,7 @@ import { mkdtempSync, rmSync, statSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { Command, Option } from 'commander';
-import { findStreamFiles, type StreamTestResult, selectStreamCases } from '@maa/generators-python';
+import type { StreamTestResult } from '@maa/generators-python';
 import type { CheckDiagnostic } from '@maa/language-server';
 import { CliError, ExitCode } from '../errors.js';
 import { appFileArg, modelRootOfApp } from '../roots.js';
@@ -46,7 +46,7 @@ export async function runTest(appArg: string, files: string[], options: TestComm
             if (json) reportJson([], diagnostics, true, io);
             return ExitCode.ok;
         }
-        const results = selectCases(runStreamTests(path.join(outDir, options.platform), streamFiles, options, io), options.case);
+        const results = await selectCases(runStreamTests(path.join(outDir, options.platform), streamFiles, options, io), options.case);
         const failed = results.filter((r) => !r.passed).length;
         if (json) reportJson(results, diagnostics, true, io);
         else reportText(results, io);
@@ -65,7 +65,7 @@ function resolveApp(appArg: string, options: TestCommandOptions, io: CliIo): { a
 
 /** The named stream files (each must exist), or every one below the model root. */
 async function resolveStreamFiles(files: readonly string[], modelRoot: string, io: CliIo): Promise<string[]> {
-    if (files.length === 0) return findStreamFiles(modelRoot);
+    if (files.length === 0) return (await generatorsPython()).findStreamFiles(modelRoot);
     const streamFiles = files.map((f) => path.resolve(io.cwd, f));
     for (const f of streamFiles) {
         try {
@@ -94,8 +94,16 @@ function runStreamTests(build: string, streamFiles: readonly string[], options: 
 }
 
 /** The results of the tests `--case` names (@maa/generators-python's selection); a name no file has a test of is a usage problem. */
-export function selectCases(results: readonly StreamTestResult[], cases: readonly string[] | undefined): StreamTestResult[] {
-    return selectStreamCases(results, cases, (message) => new CliError(message));
+export async function selectCases(results: readonly StreamTestResult[], cases: readonly string[] | undefined): Promise<StreamTestResult[]> {
+    return (await generatorsPython()).selectStreamCases(results, cases, (message) => new CliError(message));
+}
+
+/**
+ * @maa/generators-python, loaded on demand: a static import made every command, `check` and
+ * `--help` included, load the whole generator and language family first (issue 18).
+ */
+function generatorsPython(): Promise<typeof import('@maa/generators-python')> {
+    return import('@maa/generators-python');
 }
 
 /**
