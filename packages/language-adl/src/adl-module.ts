@@ -11,6 +11,7 @@ import {
 } from 'langium';
 import type { WorkspaceFolder } from 'vscode-languageserver-types';
 import { ModelRoots } from './model-roots.js';
+import { createAdlParser } from './parser/adl-parser.js';
 import { GuardedLexer } from './parser/guarded-lexer.js';
 import { AdlScopeComputation } from './scoping/adl-scope-computation.js';
 import { AdlScopeProvider } from './scoping/adl-scope-provider.js';
@@ -80,6 +81,7 @@ export const AdlSharedModule: Module<AdlSharedServices, PartialLangiumSharedCore
 export const AdlModule: Module<AdlServices, PartialLangiumCoreServices & AdlAddedServices> = {
     parser: {
         Lexer: (s) => new GuardedLexer(s),
+        LangiumParser: (s) => createAdlParser(s),
     },
     references: {
         Linker: (s) => new AdlLinker(s),

@@ -1,0 +1,208 @@
+import {
+    CompositeCstNodeImpl,
+    CstNodeBuilder,
+    LangiumParser,
+    createParser,
+    type GrammarAST,
+    type CompositeCstNode,
+    type CstNode,
+    type LangiumCoreServices,
+    type AstNode,
+    type Lexer,
+    type LexerResult,
+    type Mutable,
+    type ParseResult,
+} from 'langium';
+
+type ParserOptions = Parameters<LangiumParser['parse']>[1] & {};
+
+/**
+ * The parser of every language of the family: Langium's parser with a cheaper CST builder and
+ * AST merge. Parsing the 1,000-component benchmark model spent more time building the CST and
+ * collecting its garbage than recognizing the input (issue 18; profile of `parse` with `node --cpu-prof`): every token
+ * that starts a rule walked up the new, still empty CST nodes of the rules it starts (an
+ * expression operand starts 16) to insert the hidden tokens before it, even when there were none;
+ * each insertion and each removal of an empty node went through `Array#splice` of Langium's
+ * `Array` subclass, which constructs another instance of that subclass for the removed elements;
+ * and the offset and length of a composite node, asked once per rule call, iterated with
+ * iterators. The CST and AST built are the same as Langium's: the overrides below only skip work
+ * whose result is discarded or compute the same values without the intermediate objects.
+ */
+export function createAdlParser(services: LangiumCoreServices): LangiumParser {
+    const parser = new AdlParser(services);
+    createParser(services.Grammar, parser, services.parser.Lexer.definition);
+    parser.finalize();
+    return parser;
+}
+
+/** The members of Langium's parser that the overrides below use (private in its typings). */
+interface LangiumParserInternals {
+    nodeBuilder: CstNodeBuilder;
+    lexer: Lexer;
+    wrapper: { input: LexerResult['tokens']; errors: ParseResult['parserErrors'] };
+    lexerResult: LexerResult | undefined;
+    allRules: Map<string, unknown>;
+    mainRule: unknown;
+    unorderedGroups: Map<string, boolean[]>;
+    doParse(rule: unknown): AstNode;
+}
+
+export class AdlParser extends LangiumParser {
+    constructor(services: LangiumCoreServices) {
+        super(services);
+        (this as unknown as LangiumParserInternals).nodeBuilder = new AdlCstNodeBuilder();
+    }
+
+    /**
+     * Langium's `parse`, with the containers of the AST nodes set by `linkContainers` (below)
+     * instead of `linkContentToContainer`, which took a sixth of the parse time.
+     */
+    override parse<T extends AstNode = AstNode>(input: string, options: ParserOptions = {}): ParseResult<T> {
+        const self = this as unknown as LangiumParserInternals;
+        self.nodeBuilder.buildRootNode(input);
+        const lexerResult = self.lexer.tokenize(input);
+        self.lexerResult = lexerResult;
+        self.wrapper.input = lexerResult.tokens;
+        const ruleMethod = options.rule ? self.allRules.get(options.rule) : self.mainRule;
+        if (!ruleMethod) {
+            throw new Error(options.rule ? `No rule found with name '${options.rule}'` : 'No main rule available.');
+        }
+        const result = self.doParse(ruleMethod);
+        self.nodeBuilder.addHiddenNodes(lexerResult.hidden);
+        self.unorderedGroups.clear();
+        self.lexerResult = undefined;
+        linkContainers(result);
+        return {
+            value: result as T,
+            lexerErrors: lexerResult.errors,
+            lexerReport: lexerResult.report,
+            parserErrors: self.wrapper.errors,
+        };
+    }
+}
+
+function isNode(value: unknown): value is AstNode {
+    return typeof value === 'object' && value !== null && typeof (value as { $type?: unknown }).$type === 'string';
+}
+
+/**
+ * Sets `$container`, `$containerProperty` and `$containerIndex` of every node below `node`, as
+ * Langium's `linkContentToContainer(node, { deep: true })` does, without one entry array per
+ * property and one closure per list.
+ */
+function linkContainers(node: AstNode): void {
+    const record = node as unknown as Record<string, unknown>;
+    for (const name of Object.keys(record)) {
+        if (name.charCodeAt(0) === 36 /* $ */) continue;
+        const value = record[name];
+        if (Array.isArray(value)) {
+            for (let index = 0; index < value.length; index++) {
+                const item: unknown = value[index];
+                if (isNode(item)) {
+                    const child = item as Mutable<AstNode>;
+                    child.$container = node;
+                    child.$containerProperty = name;
+                    child.$containerIndex = index;
+                    linkContainers(child);
+                }
+            }
+        } else if (isNode(value)) {
+            const child = value as Mutable<AstNode>;
+            child.$container = node;
+            child.$containerProperty = name;
+            linkContainers(child);
+        }
+    }
+}
+
+/**
+ * Merges the AST node of a rule called without assignment (`target`) with the node of the
+ * calling rule (`source`), as Langium's `assignWithoutOverride` does, without one entry array
+ * per property (`Object.entries`).
+ */
+function assignWithoutOverride(target: Record<string, unknown>, source: Record<string, unknown>): Record<string, unknown> {
+    for (const name of Object.keys(source)) {
+        const existingValue = source[name];
+        const newValue = target[name];
+        if (newValue === undefined) {
+            target[name] = existingValue;
+        } else if (Array.isArray(newValue) && Array.isArray(existingValue)) {
+            for (const item of newValue) existingValue.push(item);
+            target[name] = existingValue;
+        }
+    }
+    // The CST node the target got when its rule ended is replaced by the caller's: drop the
+    // references between the two (as Langium does), so the CST holds no stale AST node.
+    const targetCstNode = target.$cstNode as { astNode: unknown } | undefined;
+    if (targetCstNode) {
+        targetCstNode.astNode = undefined;
+        target.$cstNode = undefined;
+    }
+    return target;
+}
+// `assignWithoutOverride` is private in Langium's typings, so it cannot be overridden in the class body.
+Object.defineProperty(AdlParser.prototype, 'assignWithoutOverride', {
+    value: assignWithoutOverride,
+    writable: true,
+    configurable: true,
+});
+
+/** Appends `child` to `parent`'s content, as `content.push(child)` does, without the rest array. */
+function append(parent: CompositeCstNode, child: CstNode): void {
+    (child as { container?: CompositeCstNode }).container = parent;
+    const content = parent.content;
+    content[content.length] = child;
+}
+
+/** Langium's CST builder without the work whose result is discarded (see createAdlParser). */
+export class AdlCstNodeBuilder extends CstNodeBuilder {
+    override buildCompositeNode(feature: GrammarAST.AbstractElement): CompositeCstNode {
+        const compositeNode = new AdlCompositeCstNode();
+        compositeNode.grammarSource = feature;
+        const current = this.current;
+        compositeNode.root = current.root;
+        append(current, compositeNode);
+        (this as unknown as { nodeStack: CompositeCstNode[] }).nodeStack.push(compositeNode);
+        return compositeNode;
+    }
+
+    /** Adding no hidden tokens changes nothing: skip the search for where they would go. */
+    override addHiddenNodes(tokens: Parameters<CstNodeBuilder['addHiddenNodes']>[0]): void {
+        if (tokens.length > 0) super.addHiddenNodes(tokens);
+    }
+
+    /** Removes the node from its container's content in place (no `splice`, see createAdlParser). */
+    override removeNode(node: CstNode): void {
+        const content = node.container?.content;
+        if (!content) return;
+        const index = content.indexOf(node);
+        if (index < 0) return;
+        for (let i = index + 1; i < content.length; i++) content[i - 1] = content[i]!;
+        content.length--;
+    }
+}
+
+/** A composite CST node whose first and last non-hidden children are found without iterators. */
+export class AdlCompositeCstNode extends CompositeCstNodeImpl {}
+
+Object.defineProperty(AdlCompositeCstNode.prototype, 'firstNonHiddenNode', {
+    get(this: CompositeCstNode): CstNode | undefined {
+        const content = this.content;
+        for (let i = 0; i < content.length; i++) {
+            if (!content[i]!.hidden) return content[i];
+        }
+        return content[0];
+    },
+    configurable: true,
+});
+
+Object.defineProperty(AdlCompositeCstNode.prototype, 'lastNonHiddenNode', {
+    get(this: CompositeCstNode): CstNode | undefined {
+        const content = this.content;
+        for (let i = content.length - 1; i >= 0; i--) {
+            if (!content[i]!.hidden) return content[i];
+        }
+        return content[content.length - 1];
+    },
+    configurable: true,
+});
