@@ -29,19 +29,19 @@ export async function loadChecker(env: NodeJS.ProcessEnv = process.env): Promise
  * Whether the bundle exists and no workspace module it holds was rebuilt after it (in a
  * published install those paths do not exist or carry the same packing date: it is current).
  */
-export function bundleIsCurrent(): boolean {
+export function bundleIsCurrent(bundle: URL = BUNDLE, inputsFile: URL = INPUTS): boolean {
     let built: number;
     let inputs: string[];
     try {
-        built = statSync(BUNDLE).mtimeMs;
-        inputs = (JSON.parse(readFileSync(INPUTS, 'utf8')) as { inputs: string[] }).inputs;
+        built = statSync(bundle).mtimeMs;
+        inputs = (JSON.parse(readFileSync(inputsFile, 'utf8')) as { inputs: string[] }).inputs;
     } catch {
         return false;
     }
     for (const input of inputs) {
         let modified: number;
         try {
-            modified = statSync(new URL(input, BUNDLE)).mtimeMs;
+            modified = statSync(new URL(input, bundle)).mtimeMs;
         } catch {
             continue;
         }
