@@ -243,6 +243,13 @@ describe('the relay between the webview and the backend', () => {
         expect(answer.headers['set-cookie']).toBeUndefined();
     });
 
+    it("keeps the viser frame's page on the relay (maa-ide moves only frames the browser asks for itself)", async () => {
+        // no session runs: maa-ide's own answer, not a redirect to its other loopback name
+        const answer = await http(`${base.href}/sim/viser/`, { 'sec-fetch-dest': 'iframe' });
+        expect(answer.headers.location).toBeUndefined();
+        expect(answer.status).toBe(502);
+    });
+
     it('refuses other origins, hosts and capabilities, for requests and WebSocket upgrades', async () => {
         const origin = `http://127.0.0.1:${port}`;
         for (const evil of [

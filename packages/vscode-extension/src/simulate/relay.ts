@@ -38,6 +38,9 @@ const DROPPED = new Set([
     'proxy-authorization',
     'forwarded',
     'x-forwarded-for',
+    // The viser frame is of another site than the webview already (a process of its own); maa-ide
+    // would move a frame's viser page to its other loopback name (viser-view.ts), past the relay.
+    'sec-fetch-dest',
 ]);
 
 export class SimRelay {
