@@ -9,6 +9,7 @@ Run with the venv of scripts/setup_ros2_venv.sh:
 from __future__ import annotations
 
 import fcntl
+import hashlib
 import os
 import shutil
 import subprocess
@@ -31,6 +32,20 @@ RUFF_CONFIG = HERE / "ruff-generated.toml"
 INSTALL_INTERFACES = PACKAGE_DIR / "scripts" / "install_ros2_interfaces.sh"
 PKG = "toast_service_robot"
 IFACE = f"{PKG}_interfaces"
+
+
+def install_interfaces_command(interfaces: Path) -> list[str]:
+    """scripts/install_ros2_interfaces.sh for this venv, under the lock maa-gen and the IDE backend take.
+
+    The lock is @maa/protocol's ros2EnvironmentLock(venv): Vitest's tests (maa-gen sim, the IDE
+    backend's ROS 2 session) install the same interface package into this venv while npm test runs
+    this suite beside them, and two installs at once would write the same files.
+    """
+    digest = hashlib.sha256(os.path.abspath(sys.prefix).encode()).hexdigest()[:16]
+    command = ["bash", str(INSTALL_INTERFACES), sys.prefix, str(interfaces)]
+    flock = shutil.which("flock")
+    lock = Path(tempfile.gettempdir()) / f"maa-ide-ros2-{digest}.lock"
+    return [flock, str(lock), *command] if flock else command
 
 
 @dataclass(frozen=True)
@@ -83,7 +98,7 @@ def installed(generated: Generated, tmp_path_factory: pytest.TempPathFactory) ->
     # the script users run for their own venv (it skips the build while the sources are unchanged)
     start = time.monotonic()
     result = subprocess.run(
-        ["bash", str(INSTALL_INTERFACES), sys.prefix, str(generated.interfaces)],
+        install_interfaces_command(generated.interfaces),
         capture_output=True,
         text=True,
         check=False,

@@ -21,7 +21,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from ros2_support import INSTALL_INTERFACES, PACKAGE_DIR, RUFF_CONFIG
+from ros2_support import PACKAGE_DIR, RUFF_CONFIG, install_interfaces_command
 from test_ros2_modes import generate_package
 from test_ros2_toast_service import deployed_nodes
 
@@ -40,7 +40,7 @@ def package(tmp_path_factory: pytest.TempPathFactory) -> Path:
     pytest.importorskip("rosidl_adapter", reason="needs the venv of scripts/setup_ros2_venv.sh")
     pkg = generate_package(APP, tmp_path_factory.mktemp("mode-types"), PKG)
     result = subprocess.run(
-        ["bash", str(INSTALL_INTERFACES), sys.prefix, str(pkg.parent / IFACE)],
+        install_interfaces_command(pkg.parent / IFACE),
         capture_output=True,
         text=True,
         check=False,
