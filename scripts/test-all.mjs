@@ -1,22 +1,27 @@
 #!/usr/bin/env node
-// `npm test`: builds every workspace package, sets up the simulator's venv (Vitest uses it), runs
+// `npm test`: builds every workspace package, sets up the Python venvs (Vitest uses them too), runs
 // every Vitest suite of the workspace (vitest.config.ts at the root), the browser end-to-end
-// suite (e2e/), the pack-and-install test (scripts/pack-install.mjs), then the Python suites
-// (PYTHON_SUITES below: sim-server, the ROS 2 family with real rclpy, the Python RTEs; each with
-// its own idempotent venv setup, pytest and linters), and closes with
+// suite (e2e/), the Python suites (PYTHON_SUITES below: sim-server, the ROS 2 family with real
+// rclpy, the Python RTEs; each with pytest and its linters) and the pack-and-install test
+// (scripts/pack-install.mjs), prints a table of its stages (wall and CPU time), and closes with
 //   failures: <every kind of failure, counted and named>     (only when something failed)
 //   tests: N passed, N failed, N skipped
 // where "failed" counts every failure of every kind (failed tests, unhandled errors, test files
 // that did not run, failed hooks, setups, linters, runners that wrote no report), and the exit
 // code is 0 exactly when that number is 0 and some test passed.
 // Installs no npm packages: run `npm ci` first (the README's test command does).
+// Two lanes run side by side to use both cores of a small machine: the main lane builds, then runs
+// Vitest (two workers, or one less than the cores on a bigger machine) and the e2e suite, printing
+// as it goes; the side lane sets up the venvs and the Debian packages and runs the linters while
+// the build runs, then the Python suites and the pack-and-install test beside Vitest (each stage's
+// output is printed when it ends). MAA_TEST_SERIAL=1 runs every stage one after the other.
 // Extra arguments go to Vitest, e.g. `npm test -- packages/cli`; MAA_TEST_PYTHON=0 skips the
 // Python suites except ROS 2, MAA_TEST_ROS2=0 skips ROS 2, MAA_TEST_E2E=0 the browser tests,
 // MAA_TEST_BUILD=0 the build (for a tree that is built already), MAA_TEST_LINT=0 the linters,
 // MAA_TEST_PACK=0 the pack-and-install test.
-import { spawnSync } from 'node:child_process';
+import { spawn } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { availableParallelism, tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { junitCounts, parseTimes, stageTable, Tally } from './test-summary.mjs';
@@ -25,37 +30,95 @@ const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const npm = process.platform === 'win32' ? 'npm.cmd' : 'npm';
 const npx = process.platform === 'win32' ? 'npx.cmd' : 'npx';
 const started = Date.now();
+const machineAtStart = machineBusyMs();
+const serial = process.env.MAA_TEST_SERIAL === '1';
+const enabled = (name) => process.env[name] !== '0';
 
 const tally = new Tally();
 
-/** Each stage run: its title, wall time and the CPU time (user + sys) of the processes it ran. */
+/** Each stage run: its title, when it started, its wall time and the CPU time (user + sys) of the processes it ran. */
 const stages = [];
 
 // A stage runs under bash, whose `times` (written to fd 3) gives the CPU time of the processes it
 // waited for: the stage's command and every descendant reaped along the way.
 const TIMED = '"$@"; status=$?; times >&3; exit $status';
 
-function step(title, command, args, cwd = repo, env = process.env) {
-    console.log(`\n=== ${title}: ${[command, ...args].join(' ')}`);
+/**
+ * Runs one stage and resolves to its exit status. The main lane's output goes straight to the
+ * terminal; a side stage's (`side: true`) is kept and printed in one piece when it ends, so that
+ * the two lanes do not interleave line by line.
+ */
+function step(title, command, args, { cwd = repo, env = process.env, side = false } = {}) {
+    const banner = `\n=== ${title}: ${[command, ...args].join(' ')}\n`;
+    if (!side) process.stdout.write(banner);
     const begun = Date.now();
-    const result = spawnSync('bash', ['-c', TIMED, 'bash', command, ...args], {
-        cwd,
-        stdio: ['inherit', 'inherit', 'inherit', 'pipe'],
-        env,
+    return new Promise((resolve) => {
+        const output = [];
+        const times = [];
+        const child = spawn('bash', ['-c', TIMED, 'bash', command, ...args], {
+            cwd,
+            env,
+            stdio: [side ? 'ignore' : 'inherit', side ? 'pipe' : 'inherit', side ? 'pipe' : 'inherit', 'pipe'],
+        });
+        if (side) {
+            child.stdout.on('data', (chunk) => output.push(chunk));
+            child.stderr.on('data', (chunk) => output.push(chunk));
+        }
+        child.stdio[3].on('data', (chunk) => times.push(chunk));
+        child.on('error', (error) => output.push(Buffer.from(`test-all: could not start ${command}: ${error.message}\n`)));
+        child.on('close', (code) => {
+            const stage = {
+                title,
+                startMs: begun - started,
+                wallMs: Date.now() - begun,
+                cpuMs: parseTimes(Buffer.concat(times).toString()),
+            };
+            stages.push(stage);
+            const cpu = stage.cpuMs === undefined ? '' : `, ${(stage.cpuMs / 1000).toFixed(1)} s CPU`;
+            const done = `=== ${title}: exit ${code ?? 1} after ${(stage.wallMs / 1000).toFixed(1)} s${cpu}\n`;
+            if (side) process.stdout.write(`${banner}${Buffer.concat(output).toString()}${done}`);
+            else process.stdout.write(`${Buffer.concat(output).toString()}${done}`);
+            resolve(code ?? 1);
+        });
     });
-    stages.push({ title, wallMs: Date.now() - begun, cpuMs: parseTimes(result.output?.[3]?.toString() ?? '') });
-    if (result.error) {
-        console.error(`test-all: could not start ${command}: ${result.error.message}`);
-        return 1;
-    }
-    return result.status ?? 1;
 }
 
 /** Prints what failed, by kind, and the closing line, and exits with the code that agrees with it. */
 function finish() {
+    stages.sort((a, b) => a.startMs - b.startMs);
     for (const line of stageTable(stages, Date.now() - started)) console.log(line);
+    const machineAtEnd = machineBusyMs();
+    if (machineAtStart !== undefined && machineAtEnd !== undefined) {
+        // what every process on the machine used meanwhile, this run's and others' (a shared machine)
+        const busy = (machineAtEnd - machineAtStart) / 1000;
+        const capacity = ((Date.now() - started) / 1000) * availableParallelism();
+        console.log(
+            `test-all: the machine's ${availableParallelism()} cores were busy ${busy.toFixed(0)} s of ${capacity.toFixed(0)} s meanwhile`,
+        );
+    }
     for (const line of tally.summary((Date.now() - started) / 60_000)) console.log(line);
     process.exit(tally.exitCode);
+}
+
+/** CPU time every process of the machine has used since boot (Linux: /proc/stat), in ms; undefined elsewhere. */
+function machineBusyMs() {
+    try {
+        const [user, nice, system, , , irq, softirq, steal] = readFileSync('/proc/stat', 'utf8')
+            .split('\n')[0]
+            .trim()
+            .split(/\s+/)
+            .slice(1)
+            .map(Number);
+        return ((user + nice + system + irq + softirq + (steal ?? 0)) * 1000) / 100; // USER_HZ is 100 on Linux
+    } catch {
+        return undefined;
+    }
+}
+
+/** Runs the lanes side by side, or one after the other with MAA_TEST_SERIAL=1. */
+async function lanes(...runs) {
+    if (serial) for (const run of runs) await run();
+    else await Promise.all(runs.map((run) => run()));
 }
 
 if (!existsSync(path.join(repo, 'node_modules'))) {
@@ -63,68 +126,13 @@ if (!existsSync(path.join(repo, 'node_modules'))) {
     finish();
 }
 
-const buildStatus = process.env.MAA_TEST_BUILD === '0' ? 0 : step('build', npm, ['run', 'build']);
-if (buildStatus !== 0) {
-    tally.fail('setups that failed', `the build exited with ${buildStatus}; no test was run`);
-    finish();
-}
-
-// Some Vitest suites use the simulator (the generated example runs in it), so its Python
-// environment is set up before Vitest; the setup script is idempotent and fast when up to date.
-if (process.env.MAA_TEST_PYTHON !== '0') {
-    const simSetup = step('sim-server setup (used by Vitest too)', 'bash', [path.join(repo, 'sim-server', 'scripts', 'setup_env.sh')]);
-    if (simSetup !== 0) {
-        tally.fail('setups that failed', `sim-server setup exited with ${simSetup}; no test was run`);
-        finish();
-    }
-}
-
-// The IDE backend's ROS 2 session test runs the generated nodes from the ROS 2 venv.
-if (process.env.MAA_TEST_ROS2 !== '0') {
-    const ros2Setup = step('ROS 2 venv setup (used by Vitest too)', 'bash', [
-        path.join(repo, 'packages', 'generators-python', 'scripts', 'setup_ros2_venv.sh'),
-    ]);
-    if (ros2Setup !== 0) {
-        tally.fail('setups that failed', `the ROS 2 venv setup exited with ${ros2Setup}; no test was run`);
-        finish();
-    }
-}
-
-// The house rules (scripts/lint.mjs: Biome for TypeScript/JavaScript, ruff for Python, lint and
-// formatting); a finding counts as one failure, and the tests run anyway.
-if (process.env.MAA_TEST_LINT !== '0') {
-    const lintStatus = step('lint', process.execPath, [path.join(repo, 'scripts', 'lint.mjs')]);
-    if (lintStatus !== 0) tally.fail('linters that failed', `npm run lint exited with ${lintStatus}`);
-}
-
-// The lab server's storage tests run on PGlite and on a real PostgreSQL they start in a temporary
-// cluster (packages/lab-server/test/postgres-cluster.ts): Debian's postgresql is installed when missing.
-const postgres = step('lab storage: postgresql', process.execPath, [path.join(repo, 'scripts', 'ensure-postgresql.mjs')]);
-if (postgres !== 0) tally.fail('setups that failed', 'PostgreSQL for the lab storage tests is missing and could not be installed');
-
-// maa_sim.sandbox (grading runs, the lab's live simulations; sim-server/tests/test_sandbox.py) runs
-// students' code in bubblewrap: Debian's bubblewrap is installed when missing.
-const bubblewrap = step('sandbox: bubblewrap', process.execPath, [path.join(repo, 'scripts', 'ensure-bubblewrap.mjs')]);
-if (bubblewrap !== 0) tally.fail('setups that failed', 'bubblewrap for the sandbox is missing and could not be installed');
-
-vitestSuite(process.argv.slice(2));
-
-// The browser end-to-end suite (e2e/run.mjs): maa-ide with the built app on a fresh copy of
-// examples/, driven through playwright-core in Debian's chromium (installed here when missing).
-// Its results (one per scenario) are in e2e/artifacts/results.json, screenshots beside them.
-if (process.env.MAA_TEST_E2E !== '0') e2eSuite();
-
-// The pack-and-install test (scripts/pack-install.mjs): the public packages packed, installed into
-// an empty folder outside the repository, and used there as a user would (one result per step).
-if (process.env.MAA_TEST_PACK !== '0') packInstallSuite();
-
 // The Python suites: each sets up its venv (idempotent scripts), runs pytest (JUnit XML for the
 // counts), then its linters; a failing linter counts as one failure.
 const PYTHON_SUITES = [
     {
         // The simulation sidecar (MuJoCo, rclpy, rosbridge, viser).
         title: 'sim-server',
-        enabled: process.env.MAA_TEST_PYTHON !== '0',
+        enabled: enabled('MAA_TEST_PYTHON'),
         dir: 'sim-server',
         setup: 'sim-server/scripts/setup_env.sh',
         python: 'sim-server/.venv/bin/python',
@@ -137,7 +145,7 @@ const PYTHON_SUITES = [
         // compiles and is ruff-clean, the interface package builds, the ToastService nodes run, and
         // serve the toast in the simulator (maa-sim is installed into this venv by its setup script).
         title: 'ros2',
-        enabled: process.env.MAA_TEST_ROS2 !== '0',
+        enabled: enabled('MAA_TEST_ROS2'),
         dir: 'packages/generators-python',
         setup: 'packages/generators-python/scripts/setup_ros2_venv.sh',
         python: 'packages/generators-python/.venv-ros2/bin/python',
@@ -147,7 +155,7 @@ const PYTHON_SUITES = [
     {
         // The Python generators' run-time environments (maa_behavior, maa_timesync).
         title: 'generators-python',
-        enabled: process.env.MAA_TEST_PYTHON !== '0',
+        enabled: enabled('MAA_TEST_PYTHON'),
         dir: 'packages/generators-python',
         setup: 'packages/generators-python/scripts/setup_venv.sh',
         python: 'packages/generators-python/.venv/bin/python',
@@ -155,18 +163,88 @@ const PYTHON_SUITES = [
         lint: [], // ruff (lint and format): scripts/lint.mjs
     },
 ];
-for (const suite of PYTHON_SUITES.filter((x) => x.enabled)) pythonSuite(suite);
+
+// Phase 1: the build beside the setups. The venv setups run one after the other (sim-server's and
+// the ROS 2 one both install sim-server editable, which writes into its source folder), as do the
+// Debian packages (apt-get takes a lock).
+let buildStatus = 0;
+/** The exit status of ensure-chromium (run with the setups). */
+let chromiumStatus = 0;
+let setupsOk = true;
+await lanes(
+    async () => {
+        if (enabled('MAA_TEST_BUILD')) buildStatus = await step('build', npm, ['run', 'build']);
+    },
+    async () => {
+        setupsOk = await setups();
+        // The house rules (scripts/lint.mjs: Biome for TypeScript/JavaScript, ruff for Python, lint
+        // and formatting); a finding counts as one failure, and the tests run anyway.
+        if (enabled('MAA_TEST_LINT')) {
+            const lintStatus = await step('lint', process.execPath, [path.join(repo, 'scripts', 'lint.mjs')], { side: !serial });
+            if (lintStatus !== 0) tally.fail('linters that failed', `npm run lint exited with ${lintStatus}`);
+        }
+    },
+);
+if (buildStatus !== 0) tally.fail('setups that failed', `the build exited with ${buildStatus}; no test was run`);
+if (buildStatus !== 0 || !setupsOk) finish();
+
+// Phase 2: Vitest and the e2e suite in the main lane; the Python suites and the pack-and-install
+// test beside them (they use their own venvs, ROS domains leased per process, and free ports).
+await lanes(
+    async () => {
+        await vitestSuite(process.argv.slice(2));
+        // The browser end-to-end suite (e2e/run.mjs): maa-ide with the built app on a fresh copy of
+        // examples/, driven through playwright-core in Debian's chromium. Its results (one per
+        // scenario) are in e2e/artifacts/results.json, screenshots beside them.
+        if (enabled('MAA_TEST_E2E')) await e2eSuite();
+    },
+    async () => {
+        for (const suite of PYTHON_SUITES.filter((x) => x.enabled)) await pythonSuite(suite);
+        // The pack-and-install test (scripts/pack-install.mjs): the public packages packed, installed
+        // into an empty folder outside the repository, and used there as a user would (one result per step).
+        if (enabled('MAA_TEST_PACK')) await packInstallSuite();
+    },
+);
 finish();
 
+/**
+ * The venvs (Vitest uses sim-server's and the ROS 2 one too: the generated example runs in the
+ * simulator, the IDE backend's ROS 2 session runs the generated nodes) and the Debian packages
+ * some tests need; false when a venv setup failed (then no test is run).
+ */
+async function setups() {
+    const side = !serial;
+    for (const suite of PYTHON_SUITES.filter((x) => x.enabled)) {
+        const status = await step(`${suite.title} setup`, 'bash', [path.join(repo, suite.setup)], { side });
+        if (status !== 0) {
+            tally.fail('setups that failed', `${suite.title} setup exited with ${status}; no test was run`);
+            return false;
+        }
+    }
+    // The lab server's storage tests run on PGlite and on a real PostgreSQL they start in a temporary
+    // cluster (packages/lab-server/test/postgres-cluster.ts): Debian's postgresql is installed when missing.
+    if ((await step('lab storage: postgresql', process.execPath, [path.join(repo, 'scripts', 'ensure-postgresql.mjs')], { side })) !== 0) {
+        tally.fail('setups that failed', 'PostgreSQL for the lab storage tests is missing and could not be installed');
+    }
+    // maa_sim.sandbox (grading runs, the lab's live simulations; sim-server/tests/test_sandbox.py)
+    // runs students' code in bubblewrap: Debian's bubblewrap is installed when missing.
+    if ((await step('sandbox: bubblewrap', process.execPath, [path.join(repo, 'scripts', 'ensure-bubblewrap.mjs')], { side })) !== 0) {
+        tally.fail('setups that failed', 'bubblewrap for the sandbox is missing and could not be installed');
+    }
+    if (enabled('MAA_TEST_E2E')) {
+        chromiumStatus = await step('e2e: chromium', process.execPath, [path.join(repo, 'scripts', 'ensure-chromium.mjs')], { side });
+    }
+    return true;
+}
 /**
  * Vitest with the default reporter for people and scripts/vitest-outcome-reporter.mjs for the
  * counts: its outcome names failed tests, unhandled errors, test files that did not run and
  * failed hooks separately, which Vitest's own JSON report folds into a bare exit code.
  */
-function vitestSuite(extraArgs) {
+async function vitestSuite(extraArgs) {
     const outcomeDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-'));
     const outcomeFile = path.join(outcomeDir, 'vitest-outcome.json');
-    const status = step(
+    const status = await step(
         'vitest',
         npx,
         [
@@ -177,8 +255,7 @@ function vitestSuite(extraArgs) {
             `--reporter=${path.join(repo, 'scripts', 'vitest-outcome-reporter.mjs')}`,
             ...extraArgs,
         ],
-        repo,
-        { ...process.env, MAA_VITEST_OUTCOME: outcomeFile },
+        { env: { ...process.env, MAA_VITEST_OUTCOME: outcomeFile } },
     );
     let outcome;
     try {
@@ -210,24 +287,17 @@ function vitestSuite(extraArgs) {
     }
 }
 
-function pythonSuite(suite) {
-    const setupStatus = step(`${suite.title} setup`, 'bash', [path.join(repo, suite.setup)]);
-    if (setupStatus !== 0) {
-        tally.fail('setups that failed', `${suite.title} setup exited with ${setupStatus}; none of its tests was run`);
-        return;
-    }
+async function pythonSuite(suite) {
+    const side = !serial;
     const python = path.join(repo, suite.python);
     const junitDir = mkdtempSync(path.join(tmpdir(), `maa-test-all-${suite.title}-`));
     const junitFile = path.join(junitDir, 'pytest.xml');
-    const pytestStatus = step(`${suite.title} tests`, python, [
-        '-m',
-        'pytest',
-        suite.tests,
-        '-q',
-        '-p',
-        'no:cacheprovider',
-        `--junitxml=${junitFile}`,
-    ]);
+    const pytestStatus = await step(
+        `${suite.title} tests`,
+        python,
+        ['-m', 'pytest', suite.tests, '-q', '-p', 'no:cacheprovider', `--junitxml=${junitFile}`],
+        { side },
+    );
     let junit;
     try {
         junit = readFileSync(junitFile, 'utf8');
@@ -249,15 +319,19 @@ function pythonSuite(suite) {
         }
     }
     for (const [name, args] of suite.lint) {
-        const lintStatus = step(`${suite.title} ${name}`, python, args, path.join(repo, suite.dir));
+        const lintStatus = await step(`${suite.title} ${name}`, python, args, { cwd: path.join(repo, suite.dir), side });
         if (lintStatus !== 0) tally.fail('linters that failed', `${suite.title} ${name} exited with ${lintStatus}`);
     }
 }
 
-function packInstallSuite() {
+async function packInstallSuite() {
     const resultsDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-pack-'));
     const resultsFile = path.join(resultsDir, 'results.json');
-    const status = step('pack and install', process.execPath, [path.join(repo, 'scripts', 'pack-install.mjs'), '--results', resultsFile]);
+    const status = await step('pack and install', process.execPath, [
+        path.join(repo, 'scripts', 'pack-install.mjs'),
+        '--results',
+        resultsFile,
+    ]);
     let results;
     try {
         results = JSON.parse(readFileSync(resultsFile, 'utf8')).results;
@@ -276,15 +350,14 @@ function packInstallSuite() {
         tally.fail('runners that failed without a reason', `the pack-and-install test exited with ${status}`);
 }
 
-function e2eSuite() {
-    const chromium = step('e2e: chromium', process.execPath, [path.join(repo, 'scripts', 'ensure-chromium.mjs')]);
-    if (chromium !== 0) {
+async function e2eSuite() {
+    if (chromiumStatus !== 0) {
         tally.fail('setups that failed', 'chromium for the e2e tests is missing and could not be installed');
         return;
     }
     const resultsFile = path.join(repo, 'e2e', 'artifacts', 'results.json');
     rmSync(resultsFile, { force: true });
-    const status = step('e2e', process.execPath, [path.join(repo, 'e2e', 'run.mjs')]);
+    const status = await step('e2e', process.execPath, [path.join(repo, 'e2e', 'run.mjs')]);
     let results;
     try {
         results = JSON.parse(readFileSync(resultsFile, 'utf8'));
@@ -300,7 +373,7 @@ function e2eSuite() {
     // the e2e checks that run on their own pages, outside the IDE's scenario runner (e2e/run.mjs)
     for (const script of ['vscode-diagram-webview.mjs', 'vscode-simulate.mjs', 'lab-dashboard.mjs', 'lab-ide.mjs']) {
         // each is one test: it prints its checks and exits 0 only when all pass
-        if (step(`e2e: ${script}`, process.execPath, [path.join(repo, 'e2e', script)]) === 0) tally.passed += 1;
+        if ((await step(`e2e: ${script}`, process.execPath, [path.join(repo, 'e2e', script)])) === 0) tally.passed += 1;
         else tally.fail('failed tests', `e2e: ${script} (its checks are printed above)`);
     }
 }

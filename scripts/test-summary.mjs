@@ -100,17 +100,17 @@ export function parseTimes(text) {
 }
 
 /**
- * The table of stages: each stage's wall time and CPU time (user + sys of the processes it ran),
- * the sum of the CPU times, and the whole run's wall time; stages that ran side by side overlap in
- * wall time, so their wall times add up to more than the total.
+ * The table of stages: when each stage started (from the start of the run), its wall time and its
+ * CPU time (user + sys of the processes it ran), the sum of the CPU times, and the whole run's wall
+ * time; stages that ran side by side overlap, so their wall times add up to more than the total.
  */
 export function stageTable(stages, totalMs) {
     const seconds = (ms) => (ms === undefined ? '?'.padStart(8) : `${(ms / 1000).toFixed(1).padStart(6)} s`);
     const width = Math.max(5, ...stages.map((s) => s.title.length));
     const lines = ['', 'test-all: time per stage (wall, CPU = user + sys of its processes):'];
-    lines.push(`  ${'stage'.padEnd(width)}  ${'wall'.padStart(8)}  ${'CPU'.padStart(8)}`);
-    for (const s of stages) lines.push(`  ${s.title.padEnd(width)}  ${seconds(s.wallMs)}  ${seconds(s.cpuMs)}`);
+    lines.push(`  ${'stage'.padEnd(width)}  ${'start'.padStart(8)}  ${'wall'.padStart(8)}  ${'CPU'.padStart(8)}`);
+    for (const s of stages) lines.push(`  ${s.title.padEnd(width)}  ${seconds(s.startMs)}  ${seconds(s.wallMs)}  ${seconds(s.cpuMs)}`);
     const cpu = stages.reduce((sum, s) => sum + (s.cpuMs ?? 0), 0);
-    lines.push(`  ${'total'.padEnd(width)}  ${seconds(totalMs)}  ${seconds(cpu)}`);
+    lines.push(`  ${'total'.padEnd(width)}  ${seconds(0)}  ${seconds(totalMs)}  ${seconds(cpu)}`);
     return lines;
 }

@@ -121,18 +121,18 @@ describe('the time per stage', () => {
     expect(parseTimes('')).toBeUndefined();
   });
 
-  it('lists each stage with its wall and CPU time, a stage without a CPU time as ?, and the totals', () => {
+  it('lists each stage with its start, wall and CPU time, a stage without a CPU time as ?, and the totals', () => {
     const lines: string[] = stageTable(
       [
-        { title: 'build', wallMs: 60_000, cpuMs: 90_000 },
-        { title: 'vitest', wallMs: 300_000, cpuMs: 400_500 },
-        { title: 'e2e', wallMs: 1_000, cpuMs: undefined },
+        { title: 'build', startMs: 0, wallMs: 60_000, cpuMs: 90_000 },
+        { title: 'vitest', startMs: 60_000, wallMs: 300_000, cpuMs: 400_500 },
+        { title: 'e2e', startMs: 360_000, wallMs: 1_000, cpuMs: undefined },
       ],
       361_000,
     );
-    expect(lines).toContain('  build     60.0 s    90.0 s');
-    expect(lines).toContain('  vitest   300.0 s   400.5 s');
-    expect(lines).toContain('  e2e        1.0 s         ?');
-    expect(lines.at(-1)).toBe('  total    361.0 s   490.5 s');
+    expect(lines).toContain('  build      0.0 s    60.0 s    90.0 s');
+    expect(lines).toContain('  vitest    60.0 s   300.0 s   400.5 s');
+    expect(lines).toContain('  e2e      360.0 s     1.0 s         ?');
+    expect(lines.at(-1)).toBe('  total      0.0 s   361.0 s   490.5 s');
   });
 });
