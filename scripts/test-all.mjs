@@ -327,11 +327,14 @@ async function pythonSuite(suite) {
 async function packInstallSuite() {
     const resultsDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-pack-'));
     const resultsFile = path.join(resultsDir, 'results.json');
-    const status = await step('pack and install', process.execPath, [
-        path.join(repo, 'scripts', 'pack-install.mjs'),
-        '--results',
-        resultsFile,
-    ]);
+    const status = await step(
+        'pack and install',
+        process.execPath,
+        [path.join(repo, 'scripts', 'pack-install.mjs'), '--results', resultsFile],
+        {
+            side: !serial,
+        },
+    );
     let results;
     try {
         results = JSON.parse(readFileSync(resultsFile, 'utf8')).results;
