@@ -1,12 +1,16 @@
 import {
     CompositeCstNodeImpl,
+    AstUtils,
     CstNodeBuilder,
+    CstUtils,
+    LeafCstNodeImpl,
     LangiumParser,
     createParser,
-    type GrammarAST,
+    GrammarAST,
     type CompositeCstNode,
     type CstNode,
     type LangiumCoreServices,
+    type LeafCstNode,
     type AstNode,
     type Lexer,
     type LexerResult,
@@ -92,7 +96,7 @@ function isNode(value: unknown): value is AstNode {
  */
 function linkContainers(node: AstNode): void {
     const record = node as unknown as Record<string, unknown>;
-    for (const name of Object.keys(record)) {
+    for (const name in record) {
         if (name.charCodeAt(0) === 36 /* $ */) continue;
         const value = record[name];
         if (Array.isArray(value)) {
@@ -121,7 +125,8 @@ function linkContainers(node: AstNode): void {
  * per property (`Object.entries`).
  */
 function assignWithoutOverride(target: Record<string, unknown>, source: Record<string, unknown>): Record<string, unknown> {
-    for (const name of Object.keys(source)) {
+    // AST nodes are plain objects: `for in` visits exactly their own enumerable properties.
+    for (const name in source) {
         const existingValue = source[name];
         const newValue = target[name];
         if (newValue === undefined) {
@@ -147,6 +152,30 @@ Object.defineProperty(AdlParser.prototype, 'assignWithoutOverride', {
     configurable: true,
 });
 
+interface AssignmentInfo {
+    assignment?: GrammarAST.Assignment;
+    crossRef?: 'single' | 'multi';
+}
+
+/** Langium's `getAssignment` (the assignment a grammar element belongs to, cached) with one map lookup instead of two. */
+function getAssignment(
+    this: { assignmentMap: Map<GrammarAST.AbstractElement, AssignmentInfo> },
+    feature: GrammarAST.AbstractElement,
+): AssignmentInfo {
+    let info = this.assignmentMap.get(feature);
+    if (info === undefined) {
+        const assignment = AstUtils.getContainerOfType(feature, GrammarAST.isAssignment);
+        const terminal = assignment?.terminal;
+        info = {
+            assignment,
+            crossRef: terminal && GrammarAST.isCrossReference(terminal) ? (terminal.isMulti ? 'multi' : 'single') : undefined,
+        };
+        this.assignmentMap.set(feature, info);
+    }
+    return info;
+}
+Object.defineProperty(AdlParser.prototype, 'getAssignment', { value: getAssignment, writable: true, configurable: true });
+
 /** Appends `child` to `parent`'s content, as `content.push(child)` does, without the rest array. */
 function append(parent: CompositeCstNode, child: CstNode): void {
     (child as { container?: CompositeCstNode }).container = parent;
@@ -164,6 +193,21 @@ export class AdlCstNodeBuilder extends CstNodeBuilder {
         append(current, compositeNode);
         (this as unknown as { nodeStack: CompositeCstNode[] }).nodeStack.push(compositeNode);
         return compositeNode;
+    }
+
+    override buildLeafNode(token: LexerResult['tokens'][number], feature?: GrammarAST.AbstractElement): LeafCstNode {
+        const leafNode = new LeafCstNodeImpl(
+            token.startOffset,
+            token.image.length,
+            CstUtils.tokenToRange(token),
+            token.tokenType,
+            !feature,
+        );
+        leafNode.grammarSource = feature;
+        const current = this.current;
+        leafNode.root = current.root;
+        append(current, leafNode);
+        return leafNode;
     }
 
     /** Adding no hidden tokens changes nothing: skip the search for where they would go. */
