@@ -135,9 +135,7 @@ class SimSession:
     def publish(self, outputs: Mapping[str, JsonMessage]) -> None:
         transport = self.transport
         if isinstance(transport, LocalBus):
-            for topic, msg in outputs.items():
-                if transport.has_subscribers(topic):
-                    transport.deliver(topic, msg)
+            transport.deliver_all(outputs.items())
             return
         for topic, msg in outputs.items():
             transport.publish(topic, msg)
@@ -255,10 +253,7 @@ class Runner:
         """:meth:`_emit` of every message of a slice (on a local bus only topics with subscribers)."""
         transport = self.session.transport
         if isinstance(transport, LocalBus):
-            for topic, messages in outputs.items():
-                for msg in messages:
-                    if transport.has_subscribers(topic):
-                        transport.deliver(topic, msg)
+            transport.deliver_all((topic, msg) for topic, messages in outputs.items() for msg in messages)
             return
         for topic, messages in outputs.items():
             for msg in messages:

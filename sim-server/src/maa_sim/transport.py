@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import itertools
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from typing import Protocol
 
@@ -98,6 +98,17 @@ class LocalBus:
             subs = list(self._subs.get(topic, ()))
         for sub in subs:
             sub.callback(topic, msg)
+
+    def deliver_all(self, messages: Iterable[tuple[str, JsonMessage]]) -> None:
+        """`deliver` of each (topic, message) in order, with the subscribers of all topics taken
+        under one lock (the lock-step loop's messages of one period: most topics have none)."""
+        batch = list(messages)
+        with self._lock:
+            subs = self._subs
+            found = [(topic, msg, list(subs[topic])) for topic, msg in batch if subs.get(topic)]
+        for topic, msg, topic_subs in found:
+            for sub in topic_subs:
+                sub.callback(topic, msg)
 
     def subscribe(self, topic: str, type_name: str | None, callback: MessageCallback) -> Subscription:
         normalized = normalize_type(type_name) if type_name else None

@@ -54,6 +54,8 @@ LEVER_DOWN = -0.10
 TOAST_COLORS: tuple[str, ...] = ("WHITE", "GOLDEN", "BURNT")
 GOLDEN_LEVEL = 0.8
 BURNT_LEVEL = 1.6
+#: The colour sensor sees the bread up to this far along its ray (m).
+COLOR_RANGE = 0.05
 #: Distance sensor reading when nothing is within the range finder's cut-off (mm).
 DISTANCE_MAX_MM = 2000
 
@@ -100,6 +102,24 @@ def toast_rgba(level: float) -> npt.NDArray[np.float64]:
         return (1.0 - t) * _BREAD_RGBA + t * _GOLDEN_RGBA
     t = min(level - 1.0, 1.0)
     return (1.0 - t) * _GOLDEN_RGBA + t * _BURNT_RGBA
+
+
+_BREAD_RGBA_F = _BREAD_RGBA.tolist()
+_GOLDEN_RGBA_F = _GOLDEN_RGBA.tolist()
+_BURNT_RGBA_F = _BURNT_RGBA.tolist()
+
+
+def _toast_rgba_floats(level: float) -> list[float]:
+    """`toast_rgba` in plain floats (the same products and sums per component, so the same
+    values bit for bit, a few times faster than numpy for four components)."""
+    if level <= 1.0:
+        t = max(level, 0.0)
+        a, b = _BREAD_RGBA_F, _GOLDEN_RGBA_F
+    else:
+        t = min(level - 1.0, 1.0)
+        a, b = _GOLDEN_RGBA_F, _BURNT_RGBA_F
+    s = 1.0 - t
+    return [s * a[0] + t * b[0], s * a[1] + t * b[1], s * a[2] + t * b[2], s * a[3] + t * b[3]]
 
 
 def classify_toast(level: float) -> str:
@@ -184,6 +204,9 @@ class ToastKitchen:
         self._joint_q = np.array([self._qadr[n] for n in JOINT_NAMES], dtype=np.intp)
         self._joint_d = np.array([self._dadr[n] for n in JOINT_NAMES], dtype=np.intp)
         self._act = {mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_ACTUATOR, i): i for i in range(m.nu)}
+        act = self._act
+        self._ctrl_yaw, self._ctrl_lift = act["base_yaw"], act["lift"]
+        self._ctrl_fingers = (act["finger_inner"], act["finger_outer"])
         self.bread_geom = gid("bread")
         self.bread_body = bid("bread")
         self.plate_geom = gid("plate")
@@ -199,9 +222,19 @@ class ToastKitchen:
         self._toaster_xmat = self.data.xmat[self.toaster_body]
         self._color_xpos = self.data.site_xpos[self._color_site]
         self._color_xmat = self.data.site_xmat[self._color_site]
+        self._bread_geom_xpos = self.data.geom_xpos[self.bread_geom]
+        #: the colour ray's range (5 cm) plus the bread's bounding radius, with a margin for rounding
+        self._ray_reach = COLOR_RANGE + float(m.geom_rbound[self.bread_geom]) + 1e-6
         self._ray_pnt = np.zeros(3)
         self._ray_vec = np.zeros(3)
         self._toaster_rot_t = self._toaster_xmat.reshape(3, 3).T
+        # the toaster is fixed to the world (no joint, not mocap): its frame is the same at every
+        # step, so bread_in_slot takes it in plain floats, read after each reset's mj_forward
+        tb = self.toaster_body
+        self._toaster_static = (
+            int(m.body_weldid[tb]) == 0 and int(m.body_mocapid[tb]) < 0 and int(m.body_jntnum[tb]) == 0
+        )
+        self._toaster_frame: tuple[list[float], list[float]] | None = None
         self.reset(self.config.seed)
 
     # ----------------------------------------------------------------------------- lifecycle
@@ -239,6 +272,8 @@ class ToastKitchen:
         m.geom_rgba[self.bread_geom] = toast_rgba(0.0)
         self._apply_ctrl()
         mujoco.mj_forward(m, d)
+        static = self._toaster_static
+        self._toaster_frame = (self._toaster_xpos.tolist(), self._toaster_xmat.tolist()) if static else None
 
     # ----------------------------------------------------------------------------- commands
 
@@ -289,36 +324,50 @@ class ToastKitchen:
         """Advances the world by n physics steps.
 
         The per-step work around `mj_step` is the lock-step loop's own cost (sim-server/bench):
-        the arrays of `data` are views that stay valid across steps, so they are looked up once,
-        and the references are advanced only while one of them moves.
+        the arrays of `data` are views that stay valid across steps, so they are looked up once;
+        the references that move are advanced in local floats with `_Reference.advance`'s
+        arithmetic (the same values bit for bit) and only their actuators' controls are written
+        (nothing else writes the arm's controls between steps).
         """
         m, d = self.model, self.data
         dt = self.timestep
-        yaw, lift, grip = self._yaw, self._lift, self._grip
+        refs = (self._yaw, self._lift, self._grip)
+        yaw_v, lift_v, grip_v = (r.value for r in refs)
+        yaw_t, lift_t, grip_t = (r.target for r in refs)
+        yaw_s, lift_s, grip_s = (r.speed * dt for r in refs)
+        ctrl = d.ctrl
+        c_yaw, c_lift = self._ctrl_yaw, self._ctrl_lift
+        c_inner, c_outer = self._ctrl_fingers
+        copysign = math.copysign
         qpos = d.qpos
         lever = self._qadr["toaster_lever"]
         heater_below = LEVER_DOWN + 0.01
+        in_slot = self.bread_in_slot
+        toast_step = dt / self.config.golden_seconds
         step = mujoco.mj_step
         toasted = False
         for _ in range(n):
-            moving = False  # a settled reference would not change in advance: only the others move
-            if yaw.value != yaw.target:
-                yaw.advance(dt)
-                moving = True
-            if lift.value != lift.target:
-                lift.advance(dt)
-                moving = True
-            if grip.value != grip.target:
-                grip.advance(dt)
-                moving = True
-            if moving:
-                self._apply_ctrl()
+            if yaw_v != yaw_t:
+                delta = yaw_t - yaw_v
+                yaw_v = yaw_t if abs(delta) <= yaw_s else yaw_v + copysign(yaw_s, delta)
+                ctrl[c_yaw] = yaw_v
+            if lift_v != lift_t:
+                delta = lift_t - lift_v
+                lift_v = lift_t if abs(delta) <= lift_s else lift_v + copysign(lift_s, delta)
+                ctrl[c_lift] = lift_v
+            if grip_v != grip_t:
+                delta = grip_t - grip_v
+                grip_v = grip_t if abs(delta) <= grip_s else grip_v + copysign(grip_s, delta)
+                half = grip_v / 2
+                ctrl[c_inner] = half
+                ctrl[c_outer] = half
             step(m, d)
-            if qpos[lever] < heater_below and self.bread_in_slot():
-                self.toast_level += dt / self.config.golden_seconds
+            if qpos[lever] < heater_below and in_slot():
+                self.toast_level += toast_step
                 toasted = True
+        refs[0].value, refs[1].value, refs[2].value = yaw_v, lift_v, grip_v
         if toasted:  # the colour is only drawn (no physics, no sensor reads it): once per call
-            m.geom_rgba[self.bread_geom] = toast_rgba(self.toast_level)
+            m.geom_rgba[self.bread_geom] = _toast_rgba_floats(self.toast_level)
 
     # ----------------------------------------------------------------------------- state
 
@@ -333,8 +382,10 @@ class ToastKitchen:
         # from numpy's in the last bits, so numpy decides whenever a coordinate is that close to a
         # bound of the slot: the answer is numpy's either way.
         bx, by, bz = self._bread_xpos.tolist()
-        tx, ty, tz = self._toaster_xpos.tolist()
-        r = self._toaster_xmat.tolist()
+        frame = self._toaster_frame
+        if frame is None:
+            frame = (self._toaster_xpos.tolist(), self._toaster_xmat.tolist())
+        (tx, ty, tz), r = frame
         dx, dy, dz = bx - tx, by - ty, bz - tz
         x = r[0] * dx + r[3] * dy + r[6] * dz
         y = r[1] * dx + r[4] * dy + r[7] * dz
@@ -378,11 +429,17 @@ class ToastKitchen:
 
     def color(self) -> str:
         """The colour sensor's reading: WHITE unless its ray hits the bread."""
+        # the ray counts only when it hits the bread within 5 cm: with the bread's bounding sphere
+        # farther than that from the sensor it cannot, and the ray is not cast (the same answer)
+        sx, sy, sz = self._color_xpos.tolist()
+        gx, gy, gz = self._bread_geom_xpos.tolist()
+        if math.sqrt((gx - sx) ** 2 + (gy - sy) ** 2 + (gz - sz) ** 2) > self._ray_reach:
+            return "WHITE"
         pnt, vec = self._ray_pnt, self._ray_vec
         pnt[:] = self._color_xpos  # the sensor's position and its z axis (the column 2 of its frame)
         vec[:] = self._color_xmat[2::3]
         dist = mujoco.mj_ray(self.model, self.data, pnt, vec, None, 1, -1, self._ray_geom)
-        if dist >= 0 and dist < 0.05 and int(self._ray_geom[0]) == self.bread_geom:
+        if dist >= 0 and dist < COLOR_RANGE and int(self._ray_geom[0]) == self.bread_geom:
             return classify_toast(self.toast_level)
         return "WHITE"
 
