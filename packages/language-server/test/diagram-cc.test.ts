@@ -2,7 +2,7 @@
 // example and of a nested fixture, as the IDE's client receives it from the diagram server:
 // elements, properties, traces, diagnostics, server-side layout, stable ids and updates.
 import { describe, expect, test } from 'vitest';
-import type { SModelElement, SModelRoot } from 'sprotty-protocol';
+import type { ActionMessage, SModelElement, SModelRoot } from 'sprotty-protocol';
 import { byId, diagramWorkspace, exampleFiles, TestClient, type DiagramWorkspace } from './diagram-helpers.js';
 
 type Element = SModelElement & Record<string, unknown>;
@@ -206,7 +206,10 @@ describe('the C&C diagram of the ToastServiceRobot', () => {
         const { client } = await ccModel(ws);
         const mark = client.received.length;
         await ws.edit('toast/Controller.arc', (t) => t.replace('ToastColor.GOLDEN', 'ToastColor.GOLD'));
-        const update = await client.next(mark, (k) => k === 'updateModel');
+        // The markers come with the update after the build's validation.
+        const marks = (id: string) => (k: string, m: ActionMessage) =>
+            k === 'updateModel' && byId((m.action as unknown as { newRoot: SModelRoot }).newRoot).get(id)?.severity === 'error';
+        const update = await client.next(mark, marks('root.ctrl'));
         const action = update.action as unknown as { newRoot: SModelRoot; animate: boolean };
         expect(action.animate).toBe(true);
         expect(byId(action.newRoot).get('root.ctrl')!.severity).toBe('error');
@@ -216,7 +219,7 @@ describe('the C&C diagram of the ToastServiceRobot', () => {
         const mark1 = client.received.length;
         expect(byId(action.newRoot).get('root.toasterCtrl')!.severity).toBeUndefined();
         await ws.edit('toast/types/Types.cd', (t) => t.replace('enum ToasterCmd { START, STOP; }', 'enum ToasterCmd { BEGIN, STOP; }'));
-        const update1 = await client.next(mark1, (k) => k === 'updateModel');
+        const update1 = await client.next(mark1, marks('root.toasterCtrl'));
         expect(byId((update1.action as unknown as { newRoot: SModelRoot }).newRoot).get('root.toasterCtrl')!.severity).toBe('error');
 
         const mark2 = client.received.length;

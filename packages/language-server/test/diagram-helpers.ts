@@ -103,11 +103,11 @@ export class TestClient {
         return (answer.action as unknown as { newRoot: SModelRoot }).newRoot;
     }
 
-    /** The first action after index `from` whose kind matches. */
-    async next(from: number, kind: (k: string) => boolean, timeout = 10_000): Promise<ActionMessage> {
+    /** The first action after index `from` whose kind (and message) matches. */
+    async next(from: number, kind: (k: string, m: ActionMessage) => boolean, timeout = 10_000): Promise<ActionMessage> {
         const deadline = Date.now() + timeout;
         for (;;) {
-            const found = this.received.slice(from).find((m) => kind(m.action.kind));
+            const found = this.received.slice(from).find((m) => kind(m.action.kind, m));
             if (found) return found;
             if (Date.now() > deadline) throw new Error(`no matching action; got ${this.received.map((m) => m.action.kind).join(', ')}`);
             await new Promise<void>((r) => {

@@ -3,6 +3,7 @@ import type { ELK, ELKConstructorArguments, ElkNode, LayoutOptions } from 'elkjs
 import { DefaultElementFilter, DefaultLayoutConfigurator, ElkLayoutEngine } from 'sprotty-elk/lib/elk-layout.js';
 import type { Dimension, SGraph, SLabel, SModelElement, SModelIndex, SNode, SPort } from 'sprotty-protocol';
 import { TYPES, type ComponentNode, type PortNode, type StateNode } from './model.js';
+import { CachingElk } from './layout-cache.js';
 import { PORT_SIZE } from './sizes.js';
 
 /**
@@ -19,11 +20,13 @@ import { PORT_SIZE } from './sizes.js';
  *   sized here, initial states get room on their left for the client's initial marker.
  *
  * ELK is deterministic (fixed seed) and keeps the model order of nodes and edges where it can,
- * so a small edit changes little of the layout.
+ * so a small edit changes little of the layout; an edit that changes nothing ELK sees reuses the
+ * last layout (`CachingElk`).
  */
 export class MaaLayoutEngine extends ElkLayoutEngine {
     constructor() {
-        super(createElk, new MaaElementFilter(), new MaaLayoutConfigurator());
+        // ELK remembers its last layouts: an edit that leaves the laid-out graph as it was needs none.
+        super(() => new CachingElk(createElk()) as unknown as ELK, new MaaElementFilter(), new MaaLayoutConfigurator());
     }
 
     override async layout(graph: SGraph, index?: SModelIndex): Promise<SGraph> {

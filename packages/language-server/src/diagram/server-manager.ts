@@ -1,7 +1,15 @@
 import { DocumentState, URI, type LangiumDocument } from 'langium';
 import { Disposable, type CancellationToken } from 'vscode-languageserver';
 import { DefaultDiagramServerManager, DiagramActionNotification, type LangiumSprottySharedServices } from 'langium-sprotty';
-import { RequestModelAction, type Action, type ActionMessage, type DiagramOptions, type DiagramServer } from 'sprotty-protocol';
+import {
+    RequestModelAction,
+    type Action,
+    type ActionMessage,
+    type DiagramOptions,
+    type DiagramServer,
+    type SModelElement,
+    type SModelRoot,
+} from 'sprotty-protocol';
 import { MaaDiagramServer } from './diagram-server.js';
 import type { MaaDiagramServices } from './services.js';
 
@@ -20,11 +28,23 @@ const VALIDATION_WAIT_MS = 10_000;
  * regenerated after any document of the workspace changed: a component diagram shows
  * subcomponent types, behaviors and data types from other files of the family. Updates are
  * debounced, and skipped while the source document does not parse (the last good diagram stays).
+ *
+ * A diagram's structure needs linked documents, not validated ones (issue 18: keystroke →
+ * diagram): the update starts as soon as a build has linked and indexed every document (its
+ * `IndexedReferences` phase), before that build validates, if no newer edit has reset a document
+ * meanwhile (no half-linked model is shown; that edit's build updates the diagrams then). Its
+ * elements keep the markers they had (the edited documents' diagnostics are not there yet); the
+ * update after the build's validation sends the new markers, only if the model changed. Updates
+ * that a newer one overtook are dropped, so the client never gets an older model after a newer one.
  */
 export class MaaDiagramServerManager extends DefaultDiagramServerManager {
     private readonly services: MaaDiagramServices;
     private readonly listeners = new Set<(message: ActionMessage) => void>();
     private timer: ReturnType<typeof setTimeout> | undefined;
+    /** Counts update runs: a run sends nothing once a newer one has started. */
+    private updateRun = 0;
+    /** Update after a build's linking (true) or only after its validation, under the workspace lock (false: before issue 18). */
+    updateAfterLinking = true;
 
     constructor(services: MaaDiagramServices) {
         const holder: { manager?: MaaDiagramServerManager } = {};
@@ -40,6 +60,7 @@ export class MaaDiagramServerManager extends DefaultDiagramServerManager {
         super(facade);
         holder.manager = this;
         this.services = services;
+        services.shared.workspace.DocumentBuilder.onBuildPhase(DocumentState.IndexedReferences, (built) => this.documentsLinked(built));
     }
 
     /** Listens to every action sent to clients (besides the LSP notification, if connected). */
@@ -90,13 +111,31 @@ export class MaaDiagramServerManager extends DefaultDiagramServerManager {
         await this.connection?.sendNotification(DiagramActionNotification.type, message);
     }
 
+    private changedIn(built: LangiumDocument[]): boolean {
+        return built.some((d) => this.changedUris.some((u) => u.toString() === d.uri.toString()));
+    }
+
+    /** A build has linked and indexed its documents: the diagrams can be updated now. */
+    private documentsLinked(built: LangiumDocument[]): Promise<void> {
+        if (this.updateAfterLinking && this.changedIn(built) && this.diagramServerMap.size > 0) {
+            // At once, not debounced: this build got through linking, so no newer edit came
+            // meanwhile; the validation goes on while the diagrams are laid out.
+            if (this.timer) clearTimeout(this.timer);
+            this.timer = undefined;
+            void this.updateAll(true);
+        }
+        return Promise.resolve();
+    }
+
     protected override documentsBuilt(built: LangiumDocument[], _cancelToken: CancellationToken): Promise<void> {
-        const changed = built.some((d) => this.changedUris.some((u) => u.toString() === d.uri.toString()));
+        const changed = this.changedIn(built);
         this.changedUris = [];
+        // After an early update only the markers can have changed: sent if they did.
         if (changed && this.diagramServerMap.size > 0) this.schedule();
         return Promise.resolve();
     }
 
+    /** Updates the diagrams soon, under the workspace lock. */
     private schedule(): void {
         if (this.timer) clearTimeout(this.timer);
         this.timer = setTimeout(() => {
@@ -105,10 +144,21 @@ export class MaaDiagramServerManager extends DefaultDiagramServerManager {
         }, UPDATE_DELAY_MS);
     }
 
-    /** Regenerates every open diagram from the current documents and sends the updates. */
-    async updateAll(): Promise<void> {
+    /** Whether every document is linked and indexed (a new edit resets its documents to an earlier state). */
+    private allLinked(): boolean {
+        return this.services.shared.workspace.LangiumDocuments.all.every((d) => d.state >= DocumentState.IndexedReferences);
+    }
+
+    /**
+     * Regenerates every open diagram from the current documents and sends the updates; with
+     * `whileLinked`, outside the workspace lock, only as long as every document is linked (each
+     * diagram is generated in one go up to its layout, which reads no documents).
+     */
+    async updateAll(whileLinked = false): Promise<void> {
+        const run = ++this.updateRun;
         const documents = this.services.shared.workspace.LangiumDocuments;
         for (const server of this.servers()) {
+            if (whileLinked && !this.allLinked()) return;
             const uri = server.sourceUri;
             const document = uri ? documents.getDocument(URI.parse(uri)) : undefined;
             if (!document || document.parseResult.lexerErrors.length > 0 || document.parseResult.parserErrors.length > 0) continue;
@@ -118,10 +168,44 @@ export class MaaDiagramServerManager extends DefaultDiagramServerManager {
                     options: server.state.options ?? {},
                     state: server.state,
                 });
+                // A newer update has started (after a newer edit): its models replace these.
+                if (run !== this.updateRun) return;
+                const previous = server.state.currentRoot;
+                if (whileLinked) keepMarkers(model, previous);
+                // Nothing the diagram shows changed (an expression, a comment, the same markers).
+                if (previous && sameModel(previous, model)) continue;
                 await server.updateModel(model);
             } catch (err) {
                 console.error(`Diagram update failed: ${(err as Error).message}`);
             }
         }
     }
+}
+
+/**
+ * The markers of the shown model on the elements of a model generated before its documents'
+ * validation (whose diagnostics are not there yet): like an editor's squiggles, markers change
+ * when the validation ends (the update after the build sends them), and do not blink off meanwhile.
+ */
+function keepMarkers(model: SModelRoot, previous: SModelRoot | undefined): void {
+    if (!previous) return;
+    const before = new Map<string, unknown>();
+    const collect = (e: SModelElement): void => {
+        const severity = (e as { severity?: unknown }).severity;
+        if (severity !== undefined) before.set(e.id, severity);
+        for (const c of e.children ?? []) collect(c);
+    };
+    collect(previous);
+    const apply = (e: SModelElement): void => {
+        const marked = e as { severity?: unknown };
+        if (marked.severity === undefined && before.has(e.id)) marked.severity = before.get(e.id);
+        for (const c of e.children ?? []) apply(c);
+    };
+    apply(model);
+}
+
+/** Whether two models are the same but for their revision (which the diagram server sets). */
+function sameModel(a: SModelRoot, b: SModelRoot): boolean {
+    const text = (m: SModelRoot): string => JSON.stringify({ ...m, revision: undefined });
+    return text(a) === text(b);
 }
