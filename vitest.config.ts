@@ -1,3 +1,4 @@
+import { availableParallelism } from 'node:os';
 import { defineConfig } from 'vitest/config';
 
 // One Vitest run over every package of the workspace (`npm test` builds first, see
@@ -8,5 +9,9 @@ export default defineConfig({
         exclude: ['**/node_modules/**', '**/dist/**'],
         testTimeout: 120_000,
         hookTimeout: 120_000,
+        // Vitest's default is one worker less than the cores: one on a 2-core machine. Most test
+        // files wait on child processes (maa-gen, the simulator, servers) for much of their time,
+        // so two files at once fit two cores (docs/testing.md, Where the time goes).
+        maxWorkers: Math.max(2, availableParallelism() - 1),
     },
 });
