@@ -33,8 +33,9 @@ const VALIDATION_WAIT_MS = 10_000;
  * diagram): the update starts as soon as a build has linked and indexed every document (its
  * `IndexedReferences` phase), before that build validates, if no newer edit has reset a document
  * meanwhile (no half-linked model is shown; that edit's build updates the diagrams then). Its
- * elements keep the markers they had (the edited documents' diagnostics are not there yet); the
- * update after the build's validation sends the new markers, only if the model changed. Updates
+ * elements keep the markers they had (the edited documents' diagnostics are not there yet), and
+ * it is not sent if nothing changed; the update after the build's validation (sent after every
+ * build, as before) brings the new markers. Updates
  * that a newer one overtook are dropped, so the client never gets an older model after a newer one.
  */
 export class MaaDiagramServerManager extends DefaultDiagramServerManager {
@@ -130,7 +131,6 @@ export class MaaDiagramServerManager extends DefaultDiagramServerManager {
     protected override documentsBuilt(built: LangiumDocument[], _cancelToken: CancellationToken): Promise<void> {
         const changed = this.changedIn(built);
         this.changedUris = [];
-        // After an early update only the markers can have changed: sent if they did.
         if (changed && this.diagramServerMap.size > 0) this.schedule();
         return Promise.resolve();
     }
@@ -171,9 +171,11 @@ export class MaaDiagramServerManager extends DefaultDiagramServerManager {
                 // A newer update has started (after a newer edit): its models replace these.
                 if (run !== this.updateRun) return;
                 const previous = server.state.currentRoot;
-                if (whileLinked) keepMarkers(model, previous);
-                // Nothing the diagram shows changed (an expression, a comment, the same markers).
-                if (previous && sameModel(previous, model)) continue;
+                if (whileLinked) {
+                    keepMarkers(model, previous);
+                    // Nothing the diagram shows changed (an expression, a comment): the update after the validation follows.
+                    if (previous && sameModel(previous, model)) continue;
+                }
                 await server.updateModel(model);
             } catch (err) {
                 console.error(`Diagram update failed: ${(err as Error).message}`);
