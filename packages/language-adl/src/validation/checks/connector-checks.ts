@@ -2,7 +2,6 @@ import type { AstNode, ValidationAcceptor, ValidationChecks } from 'langium';
 import type { AdlAstType, AutoConnect, ComponentType, Connector, PortAccess, Subcomponent } from '../../generated/ast.js';
 import type { AdlServices } from '../../adl-module.js';
 import {
-    allPorts,
     behaviorsOf,
     isComposed,
     subcomponentType,
@@ -13,9 +12,10 @@ import {
 } from '../../components/component-model.js';
 import { currentVariant, inSubcomponent } from '../../components/variant-context.js';
 import type { TypeRelations } from '../../types/type-relations.js';
-import { isErroneous, printType } from '../../types/sym-type.js';
+import { EMPTY_SUBSTITUTION, isErroneous, printType } from '../../types/sym-type.js';
 import { Codes } from '../codes.js';
 import { PortTables } from './port-tables.js';
+import { ComponentFacts } from './port-cache.js';
 import { impliedConnectors, type ImpliedConnector } from '../../components/autoconnect.js';
 
 /**
@@ -47,9 +47,11 @@ interface End {
 /** Context conditions on connectors: directions, types, timings, senders, connectedness, causality. */
 export class ConnectorChecks {
     private readonly rel: TypeRelations;
+    private readonly facts: ComponentFacts;
 
     constructor(services: AdlServices) {
         this.rel = services.maa.TypeRelations;
+        this.facts = new ComponentFacts(services.shared);
     }
 
     readonly checks: ValidationChecks<AdlAstType> = {
@@ -89,10 +91,10 @@ export class ConnectorChecks {
                 : access.subcomponent.ref;
             if (!sub) return undefined;
             const { decl, subst } = subcomponentType(sub);
-            const info = decl && tables.port(sub, name, () => inSubcomponent(sub, () => allPorts(decl, subst)));
+            const info = decl && tables.port(sub, name, () => this.facts.portsOfSub(sub, decl, subst));
             return info ? { access, info, sub } : undefined;
         }
-        const info = tables.port(c, name, () => allPorts(c));
+        const info = tables.port(c, name, () => this.facts.portsOf(c));
         return info ? { access, info } : undefined;
     }
 
@@ -176,7 +178,7 @@ export class ConnectorChecks {
         for (const sub of subcomponentsOf(c)) {
             const { decl, subst } = subcomponentType(sub);
             if (!decl) continue;
-            for (const p of inSubcomponent(sub, () => allPorts(decl, subst))) {
+            for (const p of this.facts.portsOfSub(sub, decl, subst)) {
                 if (used.has(`${sub.name}.${p.name}`)) continue;
                 if (p.direction === 'in') {
                     accept(
@@ -193,7 +195,7 @@ export class ConnectorChecks {
                 }
             }
         }
-        for (const p of allPorts(c)) {
+        for (const p of this.facts.portsOf(c)) {
             if (used.has(`.${p.name}`)) continue;
             if (p.direction === 'in') {
                 accept('warning', `Incoming port '${p.name}' of composed component '${c.name}' is not forwarded to any subcomponent.`, {
@@ -243,13 +245,13 @@ export class ConnectorChecks {
                 // Every input of an atomic component may pass to every undelayed output: one node
                 // between them instead of all pairs (quadratic in its ports).
                 const hub = `${sub.name}.#`;
-                for (const p of inSubcomponent(sub, () => allPorts(decl))) {
+                for (const p of this.facts.portsOfSub(sub, decl, EMPTY_SUBSTITUTION)) {
                     if (p.direction === 'in') add(`${sub.name}.${p.name}`, hub);
                     else if (!p.delayed) add(hub, `${sub.name}.${p.name}`);
                 }
                 continue;
             }
-            for (const [i, o] of inSubcomponent(sub, () => this.instantaneousPaths(decl, new Set())))
+            for (const [i, o] of inSubcomponent(sub, () => this.instantaneousPaths(decl, new Set()).paths))
                 add(`${sub.name}.${i}`, `${sub.name}.${o}`);
         }
         const state = new Map<string, 1 | 2>();
@@ -287,13 +289,27 @@ export class ConnectorChecks {
         for (const n of [...edges.keys()]) if (!state.has(n)) visit(n);
     }
 
-    /** Pairs (incoming, outgoing) of a component type's ports between which messages pass within one time slice. */
-    private instantaneousPaths(decl: ComponentType, seen: Set<ComponentType>): Array<[string, string]> {
-        const ports = allPorts(decl);
+    /**
+     * Pairs (incoming, outgoing) of a component type's ports between which messages pass within
+     * one time slice; `cut` tells whether the walk met a component type already on its way (a
+     * cycle of component types, whose result depends on where the walk began). Results without
+     * a cut are the same from everywhere and kept once per component type (ComponentFacts).
+     */
+    private instantaneousPaths(decl: ComponentType, seen: Set<ComponentType>): Paths {
+        const cached = this.facts.cachedPaths(decl);
+        if (cached) return { paths: cached, cut: false };
+        const computed = this.computePaths(decl, seen);
+        if (!computed.cut) this.facts.storePaths(decl, computed.paths);
+        return computed;
+    }
+
+    private computePaths(decl: ComponentType, seen: Set<ComponentType>): Paths {
+        const ports = this.facts.portsOf(decl);
         const ins = ports.filter((p) => p.direction === 'in');
         const outs = ports.filter((p) => p.direction === 'out');
         if (!isComposed(decl) || seen.has(decl)) {
-            return ins.flatMap((i) => outs.filter((o) => !o.delayed).map((o) => [i.name, o.name] as [string, string]));
+            const paths = ins.flatMap((i) => outs.filter((o) => !o.delayed).map((o) => [i.name, o.name] as const));
+            return { paths, cut: seen.has(decl) };
         }
         seen.add(decl);
         const edges = new Map<string, string[]>();
@@ -307,13 +323,15 @@ export class ConnectorChecks {
         }
         for (const i of impliedConnectors(decl))
             add(`${i.source.sub?.name ?? ''}.${i.source.info.name}`, `${i.target.sub?.name ?? ''}.${i.target.info.name}`);
+        let cut = false;
         for (const sub of subcomponentsOf(decl)) {
             const d = subcomponentType(sub).decl;
-            if (d)
-                for (const [i, o] of inSubcomponent(sub, () => this.instantaneousPaths(d, seen)))
-                    add(`${sub.name}.${i}`, `${sub.name}.${o}`);
+            if (!d) continue;
+            const inner = inSubcomponent(sub, () => this.instantaneousPaths(d, seen));
+            cut ||= inner.cut;
+            for (const [i, o] of inner.paths) add(`${sub.name}.${i}`, `${sub.name}.${o}`);
         }
-        const result: Array<[string, string]> = [];
+        const result: Array<readonly [string, string]> = [];
         for (const i of ins) {
             const reach = new Set<string>();
             const stack = [`.${i.name}`];
@@ -328,8 +346,13 @@ export class ConnectorChecks {
             for (const o of outs) if (reach.has(`.${o.name}`) && !o.delayed) result.push([i.name, o.name]);
         }
         seen.delete(decl);
-        return result;
+        return { paths: result, cut };
     }
+}
+
+interface Paths {
+    readonly paths: ReadonlyArray<readonly [string, string]>;
+    readonly cut: boolean;
 }
 
 function text(e: End): string {
