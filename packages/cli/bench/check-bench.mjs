@@ -22,6 +22,7 @@ import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { performance } from 'node:perf_hooks';
 import { EDITABLE_LINE, generateModels } from './generate-models.mjs';
+import { printTable } from './table.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const CLI = path.resolve(here, '..', 'bin', 'maa-gen.js');
@@ -330,15 +331,6 @@ function tableRows(m, primary) {
         ],
     );
     return rows;
-}
-
-function printTable(rows) {
-    const header = ['measure', 'value', 'goal', ''];
-    const widths = header.map((h, i) => Math.max(h.length, ...rows.map((r) => String(r[i]).length)));
-    const line = (cells) => `| ${cells.map((c, i) => String(c).padEnd(widths[i])).join(' | ')} |`;
-    console.log(line(header));
-    console.log(`|${widths.map((w) => '-'.repeat(w + 2)).join('|')}|`);
-    for (const r of rows) console.log(line(r));
 }
 
 async function driver() {

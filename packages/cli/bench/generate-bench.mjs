@@ -21,6 +21,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { performance } from 'node:perf_hooks';
 import { generateModels, PACKAGES, writeSystemComponent } from './generate-models.mjs';
+import { printTable } from './table.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const CLI = path.resolve(here, '..', 'bin', 'maa-gen.js');
@@ -307,12 +308,7 @@ async function main() {
                 '—',
             ],
         ];
-        const header = ['measure', 'value', 'goal', ''];
-        const widths = header.map((h, i) => Math.max(h.length, ...rows.map((r) => String(r[i]).length)));
-        const line = (cells) => `| ${cells.map((c, i) => String(c).padEnd(widths[i])).join(' | ')} |`;
-        console.log(line(header));
-        console.log(`|${widths.map((w) => '-'.repeat(w + 2)).join('|')}|`);
-        for (const r of rows) console.log(line(r));
+        printTable(rows);
         console.log(
             `\n${files} generated files + trace file; ${first.diagnostics.filter((d) => d.severity === 'warning').length} model warnings (unconnected outputs of the System's subcomponents).`,
         );
