@@ -38,11 +38,25 @@ describe('simulation sessions with a command wrapper', () => {
             `trap 'echo "$PWD" > ${stopped}; exit 0' TERM\necho '{"event": "ready", "rosbridge": "ws://127.0.0.1:${port}", "viser": null}'\nwhile :; do sleep 0.1; done`,
         );
         const seen = path.join(dir, 'wrapper-args');
-        // the wrapper records what it runs, passes SIGTERM on and waits, as maa_sim.sandbox does
-        const wrapper = script(
-            'wrapper',
-            `printf '%s\\n' "$@" > ${seen}\nshift\n"$@" &\nchild=$!\ntrap 'kill -TERM $child' TERM\nwait $child; wait $child`,
+        // The wrapper records what it runs, passes SIGTERM on and waits, as maa_sim.sandbox does. In
+        // Python: a bash stand-in (trap, `cmd &`, `wait`) now and then ended by the stop's signal before
+        // its trap was set, or with 255 from `wait`, under load (seen in 1 of 200 runs).
+        const wrapper = path.join(dir, 'wrapper');
+        writeFileSync(
+            wrapper,
+            [
+                '#!/usr/bin/env python3',
+                'import signal, subprocess, sys',
+                'child = None',
+                'signal.signal(signal.SIGTERM, lambda *_: child and child.send_signal(signal.SIGTERM))',
+                `with open(${JSON.stringify(seen)}, 'w') as f:`,
+                "    f.write('\\n'.join(sys.argv[1:]) + '\\n')",
+                'child = subprocess.Popen(sys.argv[2:])',
+                'sys.exit(child.wait())',
+                '',
+            ].join('\n'),
         );
+        chmodSync(wrapper, 0o755);
         const platformDir = path.join(dir, 'platform');
         mkdirSync(platformDir);
         writeFileSync(path.join(platformDir, SIM_PACKAGE_FILE.lockstep), '{}');
