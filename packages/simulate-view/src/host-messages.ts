@@ -27,7 +27,30 @@ export type FromWebview =
     /** Live port values by port path (empty: cleared). */
     | { type: 'live-values'; values: Array<[string, string]> }
     /** Active automaton states or modes by instance path (empty: cleared). */
-    | { type: 'active-states'; states: Array<[string, string]> };
+    | { type: 'active-states'; states: Array<[string, string]> }
+    /**
+     * A transition (or program step) was selected in a panel: open `file` (workspace-relative)
+     * at `line` (1-based) and, with `highlight`, highlight it in the diagrams (maa.diagram.highlightTrace).
+     */
+    | RevealMessage;
+
+/** The argument of `maa.diagram.highlightTrace`: a component's state and the transition taken into it. */
+export interface TraceHighlight {
+    /** The component's qualified name. */
+    component: string;
+    instancePath: string;
+    state?: string;
+    transition?: { from: string; to: string; index: number };
+}
+
+export interface RevealMessage {
+    type: 'reveal';
+    /** Workspace-relative path, `/`-separated, without `..`. */
+    file: string;
+    line: number;
+    column?: number;
+    highlight?: TraceHighlight;
+}
 
 type Fields = Record<string, unknown>;
 
@@ -49,6 +72,49 @@ function pairs(x: unknown): Array<[string, string]> | undefined {
     for (const e of x) {
         if (!Array.isArray(e) || e.length !== 2 || !isString(e[0]) || !isString(e[1])) return undefined;
         out.push([e[0], e[1]]);
+    }
+    return out;
+}
+
+const isLine = (x: unknown): x is number => typeof x === 'number' && Number.isInteger(x) && x >= 1;
+
+/**
+ * A workspace-relative file path as a reveal may name it: relative, `/`-separated, no empty,
+ * `.` or `..` segment (the extension opens it inside a workspace folder, nowhere else).
+ */
+export function isRelativeFile(file: unknown): file is string {
+    if (!isString(file) || file.length === 0 || file.length > 1024) return false;
+    if (file.startsWith('/') || file.includes('\\') || /^[a-zA-Z]:/.test(file) || file.includes('\0')) return false;
+    return file.split('/').every((seg) => seg.length > 0 && seg !== '.' && seg !== '..');
+}
+
+function parseHighlight(x: unknown): TraceHighlight | undefined {
+    if (!isRecord(x) || !isString(x['component']) || !isString(x['instancePath'])) return undefined;
+    const out: TraceHighlight = { component: x['component'], instancePath: x['instancePath'] };
+    if (x['state'] !== undefined) {
+        if (!isString(x['state'])) return undefined;
+        out.state = x['state'];
+    }
+    const t = x['transition'];
+    if (t !== undefined) {
+        if (!isRecord(t) || !isString(t['from']) || !isString(t['to']) || !Number.isInteger(t['index'])) return undefined;
+        out.transition = { from: t['from'], to: t['to'], index: t['index'] as number };
+    }
+    return out;
+}
+
+function parseReveal(x: Fields): RevealMessage | undefined {
+    const { file, line, column, highlight } = x;
+    if (!isRelativeFile(file) || !isLine(line)) return undefined;
+    const out: RevealMessage = { type: 'reveal', file, line };
+    if (column !== undefined) {
+        if (!isLine(column)) return undefined;
+        out.column = column;
+    }
+    if (highlight !== undefined) {
+        const h = parseHighlight(highlight);
+        if (!h) return undefined;
+        out.highlight = h;
     }
     return out;
 }
@@ -95,6 +161,8 @@ export function parseFromWebview(x: unknown): FromWebview | undefined {
             const states = pairs(x['states']);
             return states ? { type: 'active-states', states } : undefined;
         }
+        case 'reveal':
+            return parseReveal(x);
         default:
             return undefined;
     }

@@ -71,3 +71,47 @@ describe('the messages between the extension and the simulate webview', () => {
         for (const m of bad) expect(parseFromWebview(m), JSON.stringify(m)).toBeUndefined();
     });
 });
+
+describe('the reveal message (a selected transition → its source line and diagram highlight)', () => {
+    const highlight = { component: 'toast.Controller', instancePath: 'ctrl', state: 'Serving', transition: { from: 'Toasting', to: 'Serving', index: 3 } };
+
+    it('accepts a reveal with and without column and highlight, copying only its fields', () => {
+        expect(parseFromWebview({ type: 'reveal', file: 'toast-service/Controller.arc', line: 12, extra: 1 })).toEqual({
+            type: 'reveal',
+            file: 'toast-service/Controller.arc',
+            line: 12,
+        });
+        expect(parseFromWebview({ type: 'reveal', file: 'a/B.arc', line: 1, column: 5, highlight: { ...highlight, x: 1 } })).toEqual({
+            type: 'reveal',
+            file: 'a/B.arc',
+            line: 1,
+            column: 5,
+            highlight,
+        });
+        expect(parseFromWebview({ type: 'reveal', file: 'B.arc', line: 2, highlight: { component: 'C', instancePath: '' } })).toEqual({
+            type: 'reveal',
+            file: 'B.arc',
+            line: 2,
+            highlight: { component: 'C', instancePath: '' },
+        });
+    });
+
+    it('refuses a reveal outside the workspace or with a bad position or highlight', () => {
+        const bad = [
+            { type: 'reveal', file: '/etc/passwd', line: 1 },
+            { type: 'reveal', file: '../secret.arc', line: 1 },
+            { type: 'reveal', file: 'a/../../b.arc', line: 1 },
+            { type: 'reveal', file: 'a//b.arc', line: 1 },
+            { type: 'reveal', file: 'C:/x.arc', line: 1 },
+            { type: 'reveal', file: 'a\\b.arc', line: 1 },
+            { type: 'reveal', file: '', line: 1 },
+            { type: 'reveal', file: 'a.arc', line: 0 },
+            { type: 'reveal', file: 'a.arc', line: 1.5 },
+            { type: 'reveal', file: 'a.arc', line: 1, column: -1 },
+            { type: 'reveal', file: 'a.arc', line: 1, highlight: { component: 'C' } },
+            { type: 'reveal', file: 'a.arc', line: 1, highlight: { ...highlight, transition: { from: 'a', to: 'b' } } },
+            { type: 'reveal', file: 'a.arc', line: 1, highlight: { ...highlight, state: 3 } },
+        ];
+        for (const m of bad) expect(parseFromWebview(m), JSON.stringify(m)).toBeUndefined();
+    });
+});
