@@ -63,6 +63,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_world_options(commands.choices["run"])
     _add_output_options(commands.choices["run"])
     _add_inspect_command(commands)
+    _add_replay_command(commands)
     return parser
 
 
@@ -185,6 +186,56 @@ def _add_inspect_command(commands: argparse._SubParsersAction[argparse.ArgumentP
         "message count. Exit 2 when the file cannot be read.",
     )
     inspect.add_argument("file", type=Path, metavar="FILE.mcap")
+
+
+def _add_replay_command(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    replay = commands.add_parser(
+        "replay",
+        help="play a recording back (3D scene and seek service)",
+        description="Serves a recording of `maa-sim run --record`: the viser 3D scene placed from the recorded "
+        "scene states and a rosbridge endpoint with /sim/seek, /sim/get_status and /sim/replay_messages "
+        "(docs/simulation.md). Runs until interrupted. Exit 2 when the file is no readable recording.",
+    )
+    replay.add_argument("file", type=Path, metavar="FILE.mcap")
+    replay.add_argument("--host", default="127.0.0.1", help="address to serve on (default: %(default)s)")
+    replay.add_argument(
+        "--rosbridge-port", type=_port, default=9090, metavar="PORT", help="rosbridge port (default: %(default)s)"
+    )
+    replay.add_argument(
+        "--viser-port", type=_port, default=8080, metavar="PORT|off", help="viser port (default: %(default)s)"
+    )
+    replay.add_argument("--status-json", action="store_true", help="print one JSON line with the endpoints once ready")
+
+
+def _replay(args: argparse.Namespace) -> int:
+    """`maa-sim replay`: serves the recording until SIGINT/SIGTERM."""
+    from .replay import RecordingError, ReplayServer, load_recording
+
+    if args.rosbridge_port is None:
+        print("maa-sim: replay needs a rosbridge port (its seek service)", file=sys.stderr)
+        return 2
+    interrupted = threading.Event()
+    _install_signal_handlers(interrupted, [])
+    try:
+        recording = load_recording(args.file)
+        server = ReplayServer(recording, host=args.host, rosbridge_port=args.rosbridge_port, viser_port=args.viser_port)
+        server.start()
+    except (RecordingError, RuntimeError, ValueError, OSError) as exc:
+        print(f"maa-sim: {exc}", file=sys.stderr)
+        return 2
+    try:
+        line = server.ready_line()
+        if args.status_json:
+            print(json.dumps(line), flush=True)
+        else:
+            print(f"maa-sim: replaying {args.file} ({line['start']:.2f} s to {line['end']:.2f} s)", flush=True)
+            print(f"  rosbridge  {server.rosbridge.url_with_token}", flush=True)
+            if server.scene is not None:
+                print(f"  viser      {server.scene.view.url_with_token}", flush=True)
+        interrupted.wait()
+    finally:
+        server.stop()
+    return 0
 
 
 def _inspect(path: Path) -> int:
@@ -351,6 +402,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     if args.command == "inspect":
         return _inspect(args.file)
+    if args.command == "replay":
+        return _replay(args)
     interrupted = threading.Event()
     received: list[str] = []
     _install_signal_handlers(interrupted, received)
