@@ -13,6 +13,8 @@ import {
 } from '@maa/protocol';
 import { HttpError, type Redact, readBody, readJsonObject, readRequest, requireQuery, sendJson, sendText } from './http-util.js';
 import { ROSBRIDGE_PATH, VISER_PATH } from './proxy.js';
+import { addRecordingRoutes } from './recording-routes.js';
+import type { Recordings } from './recordings.js';
 import { Router } from './router.js';
 import { StreamTestService, streamTestRequest } from './stream-tests.js';
 import { topicMap } from './topic-map.js';
@@ -27,6 +29,8 @@ export interface ApiOptions {
     maxFileBytes: number;
     /** What error bodies and simulator logs pass through (no absolute paths). */
     redact?: Redact;
+    /** The workspace's recordings (record and replay, recordings.ts); absent: neither is offered (the lab). */
+    recordings?: Recordings;
 }
 
 const OK: OkAnswer = { ok: true };
@@ -41,6 +45,7 @@ export function createApiRouter(options: ApiOptions): Router {
     addGenerationRoutes(router, options);
     addSimulationRoutes(router, options);
     addTestRoutes(router, options);
+    if (options.recordings) addRecordingRoutes(router, options.recordings, options.sims);
     return router;
 }
 
@@ -130,8 +135,12 @@ function addSimulationRoutes(router: Router, options: ApiOptions): void {
 }
 
 /** Checks the mode against the platform's kind, generates the platform (409 if that fails) and starts a session. */
-export async function startSimulation({ workspace, generation, sims }: ApiOptions, request: SimStartRequest): Promise<SimStartAnswer> {
-    const { app: appPath, platform: platformName, speed, ...body } = request;
+export async function startSimulation(
+    { workspace, generation, sims, recordings }: ApiOptions,
+    request: SimStartRequest,
+): Promise<SimStartAnswer> {
+    const { app: appPath, platform: platformName, speed, record, ...body } = request;
+    if (record && !recordings) throw new HttpError(400, 'recording is not offered here');
     const platform = await platformOf(workspace, appPath, platformName);
     const mode = body.mode ?? (platform.kind === 'ros2' ? 'ros2' : 'lockstep');
     if (platform.kind !== MODE_KIND[mode]) {
@@ -147,7 +156,15 @@ export async function startSimulation({ workspace, generation, sims }: ApiOption
             diagnostics: generated.diagnostics,
         });
     }
-    const { session } = await sims.start({ app: appPath, platform: platformName, mode, speed, platformDir: generated.platformDir });
+    const target = record && recordings ? await recordings.newTarget({ app: appPath, platform: platformName, mode }) : undefined;
+    const { session } = await sims.start({
+        app: appPath,
+        platform: platformName,
+        mode,
+        speed,
+        platformDir: generated.platformDir,
+        ...(target ? { record: target.file } : {}),
+    });
     return { ok: true, session, mode, rosbridge: ROSBRIDGE_PATH, viser: `${VISER_PATH}/` };
 }
 

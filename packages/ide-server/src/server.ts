@@ -13,6 +13,7 @@ import { sendError, sendJson } from './http-util.js';
 import { rejectUpgrade, SimProxy, VISER_PATH } from './proxy.js';
 import { PathRedactor } from './redact.js';
 import { Ros2Environment } from './ros2-environment.js';
+import { Recordings } from './recordings.js';
 import type { Router } from './router.js';
 import { SimSessions } from './sim-session.js';
 import { StaticApp } from './static.js';
@@ -185,7 +186,14 @@ function createServices(options: IdeServerOptions, { workspaceDir, idleSeconds }
         { readyTimeoutMs: options.simReadyTimeoutMs, idleMs: idleSeconds * 1000, stopGraceMs: options.simStopGraceMs },
         ros2Environment(options.ros2Venv),
     );
-    const api = createApiRouter({ workspace, generation, sims, maxFileBytes: options.maxFileBytes ?? defaults.maxFileBytes, redact });
+    const api = createApiRouter({
+        workspace,
+        generation,
+        sims,
+        maxFileBytes: options.maxFileBytes ?? defaults.maxFileBytes,
+        redact,
+        recordings: new Recordings(workspace),
+    });
     const proxy = new SimProxy(sims);
     const appDir = path.resolve(options.appDir ?? defaults.appDir);
     const app = new StaticApp(appDir, redact.text(appDir));

@@ -2,6 +2,7 @@ import { spawn, type ChildProcess } from 'node:child_process';
 import { randomBytes, randomUUID } from 'node:crypto';
 import { existsSync } from 'node:fs';
 import { connect } from 'node:net';
+import path from 'node:path';
 import { createInterface } from 'node:readline';
 import type { SimMode, SimStatusAnswer } from '@maa/protocol';
 import { findPackageDir, SIM_PACKAGE_FILE } from '@maa/protocol/sim-package';
@@ -30,6 +31,10 @@ export interface SimStartRequest {
     speed?: number;
     /** The generated platform folder. */
     platformDir: string;
+    /** Record the run into this MCAP file (maa-sim's `--record`; recordings.ts). */
+    record?: string;
+    /** Replay this MCAP file instead of running the platform (`maa-sim replay`; recording-routes.ts). */
+    replay?: string;
 }
 
 export interface SimEndpoints {
@@ -206,6 +211,8 @@ export class SimSessions {
             app: s.request.app,
             platform: s.request.platform,
             ...(running || s.exitCode === undefined ? {} : { exitCode: s.exitCode }),
+            ...(s.request.replay ? { replay: path.basename(s.request.replay) } : {}),
+            ...(s.request.record ? { recording: path.basename(s.request.record) } : {}),
             log: s.log.slice(-STATUS_LOG_LINES),
         };
     }
@@ -218,8 +225,9 @@ export class SimSessions {
 
     /** Starts maa-sim for the request (after preparing the ros2 environment) and waits until it is ready. */
     private async spawnSession(request: SimStartRequest): Promise<{ session: string }> {
-        const ros2 = request.mode === 'ros2' ? this.ros2 : undefined;
-        const packageDir = this.packageToRun(request, ros2);
+        const ros2 = request.mode === 'ros2' && !request.replay ? this.ros2 : undefined;
+        // a replay runs in its recording's folder and needs no package
+        const packageDir = request.replay ? path.dirname(request.replay) : this.packageToRun(request, ros2);
         const { log, push } = boundedLog();
         const maaSim = ros2 ? await this.prepareRos2(ros2, request, log, push) : this.maaSim;
         if (request.mode === 'ros2') push(`maa-ide: starting ${maaSim} (ros2 mode)`);
@@ -348,6 +356,9 @@ function boundedLog(): { log: string[]; push: (line: string) => void } {
 
 /** `maa-sim run` for the package: ports chosen by maa-sim, announced in its `--status-json` ready line. */
 function maaSimArgs(request: SimStartRequest, packageDir: string): string[] {
+    if (request.replay) {
+        return ['replay', request.replay, '--rosbridge-port', '0', '--viser-port', '0', '--host', '127.0.0.1', '--status-json'];
+    }
     const args = [
         'run',
         '--package',
@@ -364,6 +375,7 @@ function maaSimArgs(request: SimStartRequest, packageDir: string): string[] {
         ...(request.mode === 'ros2' ? ROS2_SUPERVISION : []),
     ];
     if (request.speed !== undefined) args.push('--speed', String(request.speed));
+    if (request.record) args.push('--record', request.record);
     return args;
 }
 

@@ -6,7 +6,7 @@ import { contract } from '../contract.js';
 import { AppsAnswer } from './apps.js';
 import { ErrorAnswer } from './errors.js';
 import { GenerateAnswer, GenerateRequest } from './generate.js';
-import { SimStartAnswer, SimStartRequest, SimStatusAnswer } from './sim.js';
+import { SimRecordingsAnswer, SimReplayAnswer, SimReplayRequest, SimStartAnswer, SimStartRequest, SimStatusAnswer } from './sim.js';
 import { FilesAnswer, OkAnswer } from './workspace.js';
 
 export * from './apps.js';
@@ -19,6 +19,7 @@ export * from './workspace.js';
 export const requests = {
     generate: contract('POST /api/generate request', GenerateRequest),
     simStart: contract('POST /api/sim/start request', SimStartRequest),
+    simReplay: contract('POST /api/sim/replay request', SimReplayRequest),
 };
 
 /** The answers, by route. */
@@ -29,5 +30,7 @@ export const answers = {
     generate: contract('POST /api/generate answer', GenerateAnswer),
     simStart: contract('POST /api/sim/start answer', SimStartAnswer),
     simStatus: contract('GET /api/sim/status answer', SimStatusAnswer),
+    simRecordings: contract('GET /api/sim/recordings answer', SimRecordingsAnswer),
+    simReplay: contract('POST /api/sim/replay answer', SimReplayAnswer),
     error: contract('error answer', ErrorAnswer),
 };
