@@ -25,6 +25,12 @@ export function addRecordingRoutes(router: Router, recordings: Recordings, sims:
             platformDir: '',
             replay: file,
         });
-        sendJson(res, 200, { ok: true, session, recording: info, rosbridge: ROSBRIDGE_PATH, viser: `${VISER_PATH}/` } satisfies SimReplayAnswer);
+        sendJson(res, 200, {
+            ok: true,
+            session,
+            recording: info,
+            rosbridge: ROSBRIDGE_PATH,
+            viser: `${VISER_PATH}/`,
+        } satisfies SimReplayAnswer);
     });
 }

@@ -28,7 +28,12 @@ export function fileStamp(now: Date): string {
 
 /** `examples/TR.arcapp` at 17:03:02 UTC → `TR-20260124-170302.mcap` (other characters than letters, digits, `_`, `-` become `_`). */
 export function recordingName(app: string, now: Date, taken: ReadonlySet<string> = new Set()): string {
-    const stem = path.posix.basename(app).replace(/\.arcapp$/, '').replace(/[^A-Za-z0-9_-]/g, '_').slice(0, 80) || 'run';
+    const stem =
+        path.posix
+            .basename(app)
+            .replace(/\.arcapp$/, '')
+            .replace(/[^A-Za-z0-9_-]/g, '_')
+            .slice(0, 80) || 'run';
     const base = `${/^[A-Za-z0-9]/.test(stem) ? '' : 'run'}${stem}-${fileStamp(now)}`;
     let name = `${base}.mcap`;
     for (let i = 2; taken.has(name); i++) name = `${base}-${i}.mcap`;
@@ -77,7 +82,10 @@ export class Recordings {
     /** A recording by name: its absolute path and what is known of it; 400 for a bad name, 404 when there is none. */
     async resolve(name: string): Promise<{ file: string; info: SimRecordingInfo }> {
         if (!RECORDING_NAME.test(name)) {
-            throw new HttpError(400, `not a recording name: ${JSON.stringify(name.slice(0, 80))} (a .mcap file name in ${RECORDINGS_DIR}/)`);
+            throw new HttpError(
+                400,
+                `not a recording name: ${JSON.stringify(name.slice(0, 80))} (a .mcap file name in ${RECORDINGS_DIR}/)`,
+            );
         }
         const file = await this.workspace.confined.resolve(`${RECORDINGS_DIR}/${name}`, 'recording');
         const info = await this.info(name).catch(() => undefined);

@@ -112,7 +112,11 @@ describe('recordings and replay sessions', () => {
     it('replays a recording: maa-sim replay <file> with the ports it picks; the status names the recording', async () => {
         const fake = await siteWithFake();
         site = fake.site;
-        const file = addRecording(site, 'TR-20260101-100000.mcap', { app: 'toast-service/TR.arcapp', platform: 'timesync', mode: 'lockstep' });
+        const file = addRecording(site, 'TR-20260101-100000.mcap', {
+            app: 'toast-service/TR.arcapp',
+            platform: 'timesync',
+            mode: 'lockstep',
+        });
         const res = await replay(site, 'TR-20260101-100000.mcap');
         expect(res.status, await res.clone().text()).toBe(200);
         const answer = await json<{ ok: boolean; recording: { app: string }; rosbridge: string; viser: string }>(res);
@@ -152,8 +156,12 @@ describe('recordings and replay sessions', () => {
         const body = JSON.stringify({ recording: 'ok.mcap' });
         const post = { method: 'POST', body, headers: { 'Content-Type': 'application/json' } };
         expect((await rawRequest(base, '/api/sim/recordings', { headers: { Authorization: null } })).status).toBe(401);
-        expect((await rawRequest(base, '/api/sim/replay', { ...post, headers: { ...post.headers, Authorization: null } })).status).toBe(401);
-        expect((await rawRequest(base, '/api/sim/replay', { ...post, headers: { ...post.headers, Origin: 'http://evil.example' } })).status).toBe(403);
+        expect((await rawRequest(base, '/api/sim/replay', { ...post, headers: { ...post.headers, Authorization: null } })).status).toBe(
+            401,
+        );
+        expect(
+            (await rawRequest(base, '/api/sim/replay', { ...post, headers: { ...post.headers, Origin: 'http://evil.example' } })).status,
+        ).toBe(403);
         expect((await rawRequest(base, '/api/sim/recordings', { headers: { Origin: 'http://evil.example' } })).status).toBe(403);
         expect((await rawRequest(base, '/api/sim/recordings', { headers: { Host: 'evil.example' } })).status).toBe(403);
         expect((await rawRequest(base, '/api/sim/recordings', { headers: { Origin: `http://${own}` } })).status).toBe(200);
