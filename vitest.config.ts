@@ -13,5 +13,8 @@ export default defineConfig({
         // files wait on child processes (maa-gen, the simulator, servers) for much of their time,
         // so two files at once fit two cores (docs/testing.md, Where the time goes).
         maxWorkers: Math.max(2, availableParallelism() - 1),
+        // With MAA_VITEST_CPU_DIR set (npm test sets it), each test file records the CPU time of its
+        // worker and of the processes it started: the slowest files by CPU in npm test's summary.
+        setupFiles: ['scripts/vitest-file-cpu.mjs'],
     },
 });

@@ -20,7 +20,7 @@
 // MAA_TEST_BUILD=0 the build (for a tree that is built already), MAA_TEST_LINT=0 the linters,
 // MAA_TEST_PACK=0 the pack-and-install test.
 import { spawn } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { availableParallelism, tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -244,6 +244,9 @@ async function setups() {
 async function vitestSuite(extraArgs) {
     const outcomeDir = mkdtempSync(path.join(tmpdir(), 'maa-test-all-'));
     const outcomeFile = path.join(outcomeDir, 'vitest-outcome.json');
+    // each test file's CPU time (scripts/vitest-file-cpu.mjs), for the list of the costliest files
+    const cpuDir = path.join(outcomeDir, 'cpu');
+    mkdirSync(cpuDir);
     const status = await step(
         'vitest',
         npx,
@@ -255,7 +258,7 @@ async function vitestSuite(extraArgs) {
             `--reporter=${path.join(repo, 'scripts', 'vitest-outcome-reporter.mjs')}`,
             ...extraArgs,
         ],
-        { env: { ...process.env, MAA_VITEST_OUTCOME: outcomeFile } },
+        { env: { ...process.env, MAA_VITEST_OUTCOME: outcomeFile, MAA_VITEST_CPU_DIR: cpuDir } },
     );
     let outcome;
     try {
@@ -284,6 +287,14 @@ async function vitestSuite(extraArgs) {
         for (const { file, ms } of outcome.slowestFiles) console.log(`  ${seconds(ms)}  ${file}`);
         console.log('test-all: the slowest Vitest tests:');
         for (const { test, ms } of outcome.slowest) console.log(`  ${seconds(ms)}  ${test}`);
+    }
+    if (outcome.cpu) {
+        // what a 2-core machine runs out of: CPU, the file's worker and the processes it started
+        const { files, ms, childrenMs } = outcome.cpu;
+        console.log(
+            `test-all: the Vitest files that used the most CPU (of ${seconds(ms).trim()} over ${files} files, ${seconds(childrenMs).trim()} in their child processes):`,
+        );
+        for (const f of outcome.costliestFiles) console.log(`  ${seconds(f.ms)}  ${f.file} (children ${seconds(f.childrenMs).trim()})`);
     }
 }
 

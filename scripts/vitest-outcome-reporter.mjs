@@ -4,7 +4,7 @@
 // e.g. `[vitest-worker]: Timeout calling "onTaskUpdate"`) and test files that never ran their
 // tests (an import that throws, a worker that died). The slowest tests are listed with their
 // durations so that the closing summary can show what the suite's time is spent on.
-import { writeFileSync } from 'node:fs';
+import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 
 const SLOWEST = 10;
@@ -42,6 +42,13 @@ export default class OutcomeReporter {
             slowest: [],
             /** Test files by their whole time (hooks included: a beforeAll that generates and runs code). */
             slowestFiles: [],
+            /**
+             * Test files by CPU time (ms): their worker's and that of the processes it started, as
+             * scripts/vitest-file-cpu.mjs records them when MAA_VITEST_CPU_DIR is set; the total
+             * over every file that recorded, and how many did.
+             */
+            costliestFiles: [],
+            cpu: undefined,
         };
         const durations = [];
         const fileDurations = [];
@@ -75,6 +82,37 @@ export default class OutcomeReporter {
         }
         outcome.slowest = durations.sort((a, b) => b.ms - a.ms).slice(0, SLOWEST);
         outcome.slowestFiles = fileDurations.sort((a, b) => b.ms - a.ms).slice(0, SLOWEST);
+        const cpu = fileCpu(process.env.MAA_VITEST_CPU_DIR, this.root ?? process.cwd());
+        if (cpu.length > 0) {
+            outcome.costliestFiles = cpu.sort((a, b) => b.ms - a.ms).slice(0, SLOWEST);
+            outcome.cpu = {
+                files: cpu.length,
+                ms: cpu.reduce((sum, f) => sum + f.ms, 0),
+                childrenMs: cpu.reduce((sum, f) => sum + f.childrenMs, 0),
+            };
+        }
         writeFileSync(target, JSON.stringify(outcome, null, 2));
     }
+}
+
+/** The records of scripts/vitest-file-cpu.mjs: per test file, its worker's CPU time and its children's (ms). */
+function fileCpu(dir, root) {
+    if (!dir) return [];
+    let names;
+    try {
+        names = readdirSync(dir).filter((name) => name.endsWith('.json'));
+    } catch {
+        return [];
+    }
+    const files = [];
+    for (const name of names) {
+        try {
+            const record = JSON.parse(readFileSync(`${dir}/${name}`, 'utf8'));
+            const childrenMs = record.childrenMs ?? 0;
+            files.push({ file: path.relative(root, record.file), ms: record.selfMs + childrenMs, childrenMs });
+        } catch {
+            // a record cut short (its worker killed while writing): left out
+        }
+    }
+    return files;
 }

@@ -1,6 +1,6 @@
 // `maa-gen check` on a folder without a model file: a wrong path said plainly, exit 2.
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
-import { ModelDir, requireBuiltCli, runCli } from './helpers.js';
+import { ModelDir, requireBuiltCli, runCliInProcess } from './helpers.js';
 
 let dirs: ModelDir[] = [];
 function tempDir(): ModelDir {
@@ -19,7 +19,7 @@ describe('maa-gen check on a folder without models', () => {
         const d = tempDir();
         d.write('empty/README.md', '# not a model\n');
         d.write('empty/.hidden/A.arc', 'package x; component A {}\n');
-        const r = await runCli(['check', 'empty'], d.dir);
+        const r = await runCliInProcess(['check', 'empty'], d.dir);
         expect(r.code).toBe(2);
         expect(r.stderr).toContain('maa-gen: error: no models found in empty (no .arc, .arcapp, .cd, .ra files below it)');
         expect(r.stdout).toBe('');
@@ -27,7 +27,7 @@ describe('maa-gen check on a folder without models', () => {
 
     it('names the current folder "."', async () => {
         const d = tempDir();
-        const r = await runCli(['check', '.'], d.dir);
+        const r = await runCliInProcess(['check', '.'], d.dir);
         expect(r.code).toBe(2);
         expect(r.stderr).toContain('no models found in . (');
     });
@@ -37,7 +37,7 @@ describe('maa-gen check on a folder without models', () => {
         d.write('models/a/A.arc', 'package a;\ncomponent A {}\n');
         d.write('none/notes.txt', 'nothing\n');
         d.write('other/x/y.txt', 'nothing\n');
-        const r = await runCli(['check', 'models/a', 'none', 'other'], d.dir);
+        const r = await runCliInProcess(['check', 'models/a', 'none', 'other'], d.dir);
         expect(r.code).toBe(2);
         expect(r.stderr).toContain('no models found in none');
         expect(r.stderr).toContain('no models found in other');
@@ -47,7 +47,7 @@ describe('maa-gen check on a folder without models', () => {
     it('a folder with a model below it is checked as before', async () => {
         const d = tempDir();
         d.write('models/a/A.arc', 'package a;\ncomponent A {}\n');
-        const r = await runCli(['check', 'models'], d.dir);
+        const r = await runCliInProcess(['check', 'models'], d.dir);
         expect(r.code).toBe(0);
         expect(r.stderr).toContain('0 errors, 0 warnings in 1 file');
     });

@@ -1,7 +1,11 @@
 import { chmodSync } from 'node:fs';
 import path from 'node:path';
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
-import { ModelDir, parseTextLines, requireBuiltCli, runCli } from './helpers.js';
+import { ModelDir, parseTextLines, requireBuiltCli, runCli, runCliInProcess } from './helpers.js';
+
+// The cases run maa-gen in a warm worker thread (runCliInProcess); those that hold the bin to its
+// exit codes 0, 1 and 2, its streams, help and version, and a pathologically deep model run it as a
+// process (runCli).
 
 // Real models (the codes are those of docs/diagnostics.md).
 const COMP1 = 'component Comp1 { port in int i; port out int o; i -> o; }\n';
@@ -81,7 +85,7 @@ describe('maa-gen check, text format', () => {
     it('prints a warning as file:line:col: severity code message and exits 0', async () => {
         const m = models();
         m.write('Comp1.arc', COMP1);
-        const r = await runCli(['check', m.dir], m.dir);
+        const r = await runCliInProcess(['check', m.dir], m.dir);
         expect(r.code).toBe(0);
         expect(r.stdout).toBe(
             `Comp1.arc:1:${COMP1_CONNECTOR_COLUMN}: warning arc/connector-in-atomic ${parseTextLines(r.stdout)[0]?.['message']}\n`,
@@ -105,7 +109,7 @@ describe('maa-gen check, text format', () => {
     it('prints paths relative to the current folder, with packages in folders', async () => {
         const m = models();
         m.write('models/p/Comp1.arc', `package p;\n${COMP1}`);
-        const r = await runCli(['check', 'models'], m.dir);
+        const r = await runCliInProcess(['check', 'models'], m.dir);
         expect(r.code).toBe(0);
         const lines = parseTextLines(r.stdout);
         expect(lines.map((l) => [l['file'], l['line'], l['code']])).toEqual([['models/p/Comp1.arc', '2', 'arc/connector-in-atomic']]);
@@ -115,7 +119,7 @@ describe('maa-gen check, text format', () => {
         const m = models();
         const file = m.write('models/Comp1.arc', COMP1);
         m.write('work/.keep', '');
-        const r = await runCli(['check', '../models'], m.path('work'));
+        const r = await runCliInProcess(['check', '../models'], m.path('work'));
         expect(r.code).toBe(0);
         expect(parseTextLines(r.stdout).map((l) => l['file'])).toEqual([file]);
     });
@@ -127,7 +131,7 @@ describe('maa-gen check, text format', () => {
         m.write('c/Clean.arc', CLEAN);
         // The same component name in two roots is no clash: each root has its own scope.
         m.write('c/Comp1.arc', 'component Comp1 { port in int i; }\n');
-        const r = await runCli(['check', 'a', 'b', 'c'], m.dir);
+        const r = await runCliInProcess(['check', 'a', 'b', 'c'], m.dir);
         expect(r.code).toBe(1);
         const files = new Set(parseTextLines(r.stdout).map((l) => l['file']));
         expect(files).toEqual(new Set(['a/Comp1.arc', 'b/Foo.arc']));
@@ -142,7 +146,7 @@ describe('maa-gen check, text format', () => {
         m.write('Truncated.arc', 'package ; component Truncated { port in int');
         m.write('Garbage.arc', Buffer.from(Array.from({ length: 512 }, (_, i) => (i * 7919 + 13) % 256)));
         m.write('Unbalanced.arc', 'component Unbalanced { port in int i; } } }\n');
-        const r = await runCli(['check', '.'], m.dir);
+        const r = await runCliInProcess(['check', '.'], m.dir);
         expect(r.code).toBe(1);
         expectNoStackTrace(r.stderr);
         const lines = parseTextLines(r.stdout);
@@ -182,7 +186,7 @@ describe('maa-gen check, file arguments', () => {
         const m = models();
         m.write('Comp1.arc', COMP1);
         m.write('Foo.arc', BROKEN);
-        const r = await runCli(['check', '--format', 'json', 'Comp1.arc'], m.dir);
+        const r = await runCliInProcess(['check', '--format', 'json', 'Comp1.arc'], m.dir);
         expect(r.code).toBe(0);
         const report = parseJson(r.stdout);
         expect(report.diagnostics.map((d) => [d.root, d.file, d.code])).toEqual([[m.dir, m.path('Comp1.arc'), 'arc/connector-in-atomic']]);
@@ -194,7 +198,7 @@ describe('maa-gen check, file arguments', () => {
         m.write('Sub.arc', SUB);
         m.write('Sys.arc', SYS);
         m.write('Foo.arc', BROKEN);
-        const r = await runCli(['check', 'Sys.arc'], m.dir);
+        const r = await runCliInProcess(['check', 'Sys.arc'], m.dir);
         expect(r.stdout).toBe('');
         expect(r.code).toBe(0);
         expect(r.stderr.trim()).toBe('0 errors, 0 warnings in 1 file (1 root)');
@@ -205,7 +209,7 @@ describe('maa-gen check, file arguments', () => {
         const file = m.write('models/robot/arm/Comp1.arc', `package robot.arm;\n${COMP1}`);
         m.write('models/robot/Sub.arc', `package robot;\n${SUB}`);
         m.write('models/robot/Sys.arc', `package robot;\nimport robot.arm.*;\n${SYS}`);
-        const r = await runCli(['check', '-f', 'json', 'models/robot/arm/Comp1.arc', 'models/robot/Sys.arc'], m.dir);
+        const r = await runCliInProcess(['check', '-f', 'json', 'models/robot/arm/Comp1.arc', 'models/robot/Sys.arc'], m.dir);
         expect(r.code).toBe(0);
         const report = parseJson(r.stdout);
         expect(report.diagnostics.map((d) => [d.root, d.file, d.code])).toEqual([[m.path('models'), file, 'arc/connector-in-atomic']]);
@@ -215,7 +219,7 @@ describe('maa-gen check, file arguments', () => {
     it('a file whose folders do not match its package is checked in its own folder', async () => {
         const m = models();
         m.write('models/elsewhere/Comp1.arc', `package robot;\n${COMP1}`);
-        const r = await runCli(['check', 'models/elsewhere/Comp1.arc'], m.dir);
+        const r = await runCliInProcess(['check', 'models/elsewhere/Comp1.arc'], m.dir);
         expect(r.code).toBe(1);
         expect(parseTextLines(r.stdout).map((l) => l['code'])).toContain('arc/package-mismatch');
     });
@@ -224,7 +228,7 @@ describe('maa-gen check, file arguments', () => {
         const m = models();
         m.write('Comp1.arc', COMP1);
         m.write('Foo.arc', BROKEN);
-        const r = await runCli(['check', 'Comp1.arc', '.'], m.dir);
+        const r = await runCliInProcess(['check', 'Comp1.arc', '.'], m.dir);
         expect(r.code).toBe(1);
         expect(new Set(parseTextLines(r.stdout).map((l) => l['file']))).toEqual(new Set(['Comp1.arc', 'Foo.arc']));
     });
@@ -236,7 +240,7 @@ describe('maa-gen check --format json', () => {
         m.write('a/Comp1.arc', COMP1);
         m.write('b/Foo.arc', BROKEN);
         m.write('b/Clean.arc', CLEAN);
-        const r = await runCli(['check', '--format', 'json', 'a', 'b'], m.dir);
+        const r = await runCliInProcess(['check', '--format', 'json', 'a', 'b'], m.dir);
         expect(r.code).toBe(1);
         expect(r.stderr).toBe('');
         const report = parseJson(r.stdout);
@@ -263,7 +267,7 @@ describe('maa-gen check --format json', () => {
     it('prints an empty list for a clean root and exits 0', async () => {
         const m = models();
         m.write('Clean.arc', CLEAN);
-        const r = await runCli(['check', '-f', 'json', '.'], m.dir);
+        const r = await runCliInProcess(['check', '-f', 'json', '.'], m.dir);
         expect(r.code).toBe(0);
         expect(parseJson(r.stdout)).toEqual({
             diagnostics: [],
@@ -276,7 +280,7 @@ describe('maa-gen usage and I/O problems', () => {
     it('exits 2 and names a missing path', async () => {
         const m = models();
         m.write('Comp1.arc', COMP1);
-        const r = await runCli(['check', '.', 'no-such-folder'], m.dir);
+        const r = await runCliInProcess(['check', '.', 'no-such-folder'], m.dir);
         expect(r.code).toBe(2);
         expect(r.stdout).toBe('');
         expect(r.stderr).toContain('no-such-folder');
@@ -286,7 +290,7 @@ describe('maa-gen usage and I/O problems', () => {
 
     it('names every missing path at once', async () => {
         const m = models();
-        const r = await runCli(['check', '--format', 'json', 'missing-a', 'missing/b.arc'], m.dir);
+        const r = await runCliInProcess(['check', '--format', 'json', 'missing-a', 'missing/b.arc'], m.dir);
         expect(r.code).toBe(2);
         expect(r.stdout).toBe('');
         expect(r.stderr).toContain('missing-a');
@@ -296,7 +300,7 @@ describe('maa-gen usage and I/O problems', () => {
     it('exits 2 for a file that is not a model file', async () => {
         const m = models();
         m.write('notes.txt', 'hello');
-        const r = await runCli(['check', 'notes.txt'], m.dir);
+        const r = await runCliInProcess(['check', 'notes.txt'], m.dir);
         expect(r.code).toBe(2);
         expect(r.stderr).toContain('notes.txt');
         expectNoStackTrace(r.stderr);
@@ -307,7 +311,7 @@ describe('maa-gen usage and I/O problems', () => {
         const file = m.write('Comp1.arc', COMP1);
         chmodSync(file, 0o000);
         try {
-            const r = await runCli(['check', 'Comp1.arc'], m.dir);
+            const r = await runCliInProcess(['check', 'Comp1.arc'], m.dir);
             expect(r.code).toBe(2);
             expect(r.stderr).toContain('Comp1.arc');
             expectNoStackTrace(r.stderr);
@@ -321,7 +325,7 @@ describe('maa-gen usage and I/O problems', () => {
         m.write('Comp1.arc', COMP1);
         // The model root's configuration (docs/diagnostics.md, arc/reserved-name) is not valid JSON.
         m.write('maa.json', '{ "reservedNames": ');
-        const r = await runCli(['check', '.'], m.dir);
+        const r = await runCliInProcess(['check', '.'], m.dir);
         expect(r.code).toBe(2);
         expect(r.stdout).toBe('');
         expect(r.stderr).toContain('maa.json');

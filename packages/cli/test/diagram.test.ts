@@ -5,12 +5,14 @@ import { type ast, allPorts, behaviorsOf, elementsOf, subcomponentType, subcompo
 import { type AnyTransition, allTransitions, sourceOf, statePath, substates, targetOf } from '@maa/language-automata';
 import { IDE_DIAGRAM_CSS, loadDiagramWorkspace, workspaceComponents } from '@maa/language-server';
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
-import { ModelDir, requireBuiltCli, runCli } from './helpers.js';
+import { ModelDir, requireBuiltCli, runCli, runCliInProcess } from './helpers.js';
 import { descendants, modelIds, parseSvg, type SvgNode, withClass } from './svg-tree.js';
 
 // `maa-gen diagram`: the IDE's C&C and automaton views of a component as SVG (checked element by
 // element against the model's AST) and PNG. That the SVG holds what the IDE's Export SVG holds
 // for the same component is checked in the e2e suite (e2e/scenarios.mjs, "diagram export").
+// maa-gen runs in a warm worker thread (runCliInProcess; a cold diagram process costs about three
+// seconds of CPU), except for the default output file, an SVG on stdout, and a usage error.
 
 const REPO = fileURLToPath(new URL('../../../', import.meta.url));
 const EXAMPLE = path.join(REPO, 'examples', 'toast-service');
@@ -55,7 +57,7 @@ beforeAll(() => requireBuiltCli());
 async function diagramSvg(args: string[]): Promise<{ svg: SvgNode; text: string; stderr: string }> {
     dir ??= new ModelDir();
     const out = dir.path(`out-${Math.random().toString(36).slice(2)}.svg`);
-    const result = await runCli(['diagram', ...args, '--out', out], REPO);
+    const result = await runCliInProcess(['diagram', ...args, '--out', out], REPO);
     expect(result.stderr).toMatch(/C&C view of|state machine of/);
     expect(result.code, result.stderr).toBe(0);
     const text = readFileSync(out, 'utf8');
@@ -126,7 +128,7 @@ describe('maa-gen diagram: the C&C view', () => {
         dir = new ModelDir();
         for (const [file, text] of Object.entries(NESTED)) dir.write(file, text);
         const instances = async (depth: string): Promise<string[]> => {
-            const out = await runCli(['diagram', 'nest.Top', '--depth', depth, '--out', '-'], dir!.dir);
+            const out = await runCliInProcess(['diagram', 'nest.Top', '--depth', depth, '--out', '-'], dir!.dir);
             expect(out.code, out.stderr).toBe(0);
             return withClass(parseSvg(out.stdout), 'maa-component')
                 .map((n) => n.attrs['data-instance-path']!)
@@ -136,12 +138,12 @@ describe('maa-gen diagram: the C&C view', () => {
         expect(await instances('2')).toEqual(['', 'mid', 'mid.low']);
         expect(await instances('3')).toEqual(['', 'mid', 'mid.low', 'mid.low.leaf']);
         expect(await instances('all')).toEqual(['', 'mid', 'mid.low', 'mid.low.leaf']);
-        const two = parseSvg((await runCli(['diagram', 'nest.Top', '--depth', '2', '--out', '-'], dir.dir)).stdout);
+        const two = parseSvg((await runCliInProcess(['diagram', 'nest.Top', '--depth', '2', '--out', '-'], dir.dir)).stdout);
         const mid = withClass(two, 'maa-component').find((n) => n.attrs['data-instance-path'] === 'mid')!;
         expect(mid.attrs['class']).toContain('maa-expanded');
         // The opened subcomponent's connectors are drawn inside it.
         expect(modelIds(two)).toEqual(expect.arrayContaining(['conn:root.mid:i->low.i', 'conn:root.mid:low.o->o']));
-        const bad = await runCli(['diagram', 'nest.Top', '--depth', '0'], dir.dir);
+        const bad = await runCliInProcess(['diagram', 'nest.Top', '--depth', '0'], dir.dir);
         expect(bad.code).toBe(2);
         expect(bad.stderr).toContain('--depth takes a number from 1 or "all"');
     });
@@ -210,7 +212,7 @@ describe('maa-gen diagram --automaton', () => {
 describe('maa-gen diagram: PNG and errors', () => {
     it('writes a PNG of the SVG size times --scale', async () => {
         dir = new ModelDir();
-        const svgRun = await runCli(['diagram', 'toast.ToastServiceRobot', '--root', EXAMPLE, '--out', 'robot.svg'], dir.dir);
+        const svgRun = await runCliInProcess(['diagram', 'toast.ToastServiceRobot', '--root', EXAMPLE, '--out', 'robot.svg'], dir.dir);
         expect(svgRun.code, svgRun.stderr).toBe(0);
         const svg = parseSvg(readFileSync(dir.path('robot.svg'), 'utf8'));
         const width = Number(svg.attrs['width']);
@@ -219,7 +221,7 @@ describe('maa-gen diagram: PNG and errors', () => {
             [['--out', 'robot.png'], 2],
             [['--format', 'png', '--scale', '1', '--out', 'one.bin'], 1],
         ] as const) {
-            const result = await runCli(['diagram', 'toast.ToastServiceRobot', '--root', EXAMPLE, ...args], dir.dir);
+            const result = await runCliInProcess(['diagram', 'toast.ToastServiceRobot', '--root', EXAMPLE, ...args], dir.dir);
             expect(result.code, result.stderr).toBe(0);
             const png = readFileSync(dir.path(args[args.length - 1]!));
             expect(png.subarray(0, 8)).toEqual(Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]));
@@ -230,10 +232,10 @@ describe('maa-gen diagram: PNG and errors', () => {
     });
 
     it('an unknown component is a usage error (exit 2) that names the components there are', async () => {
-        const result = await runCli(['diagram', 'toast.ToastRobot', '--root', EXAMPLE], REPO);
+        const result = await runCliInProcess(['diagram', 'toast.ToastRobot', '--root', EXAMPLE], REPO);
         expect(result.code).toBe(2);
         expect(result.stderr).toMatch(/^maa-gen: error: unknown component "toast\.ToastRobot"; similar: .*toast\.ToastServiceRobot/m);
-        const none = await runCli(['diagram', 'Nothing', '--root', EXAMPLE], REPO);
+        const none = await runCliInProcess(['diagram', 'Nothing', '--root', EXAMPLE], REPO);
         expect(none.code).toBe(2);
         expect(none.stderr).toContain('unknown component "Nothing"; the model root has: toast.ArmController');
     });
@@ -242,7 +244,7 @@ describe('maa-gen diagram: PNG and errors', () => {
         dir = new ModelDir();
         dir.write('maa.json', '{}\n');
         dir.write('Broken.arc', 'component Broken {\n  port in Missing x;\n  port out int o;\n}\n');
-        const result = await runCli(['diagram', 'Broken', '--out', '-'], dir.dir);
+        const result = await runCliInProcess(['diagram', 'Broken', '--out', '-'], dir.dir);
         expect(result.code, result.stderr).toBe(0);
         const port = withClass(parseSvg(result.stdout), 'maa-port').find((n) => n.attrs['data-port-path'] === 'x');
         expect(port?.attrs['class']).toContain('maa-error');
@@ -252,7 +254,7 @@ describe('maa-gen diagram: PNG and errors', () => {
     it('an output that cannot be written is an I/O problem (exit 2)', async () => {
         dir = new ModelDir();
         dir.write('blocker', 'a file, not a folder\n');
-        const result = await runCli(['diagram', 'Controller', '--root', EXAMPLE, '--out', 'blocker/x.svg'], dir.dir);
+        const result = await runCliInProcess(['diagram', 'Controller', '--root', EXAMPLE, '--out', 'blocker/x.svg'], dir.dir);
         expect(result.code).toBe(2);
         expect(result.stderr).toContain('maa-gen: error: cannot write blocker/x.svg');
     });

@@ -3,10 +3,13 @@ import { chmodSync, existsSync, readdirSync, readFileSync, readlinkSync, statSyn
 import path from 'node:path';
 import { killWhenPaused } from '@maa/generator-core/node';
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
-import { BIN, ModelDir, parseTextLines, requireBuiltCli, runCli } from './helpers.js';
+import { BIN, ModelDir, parseTextLines, requireBuiltCli, runCli, runCliInProcess } from './helpers.js';
 
 // `maa-gen generate` and `maa-gen generators` against a generator package installed in the
 // test folder's node_modules (small generators written here; the real ones are separate packages).
+// maa-gen runs in a warm worker thread (runCliInProcess) except where the process itself is tested:
+// usage errors and help through the bin, a generator failing by its environment, a run without
+// write permission, and runs killed while writing.
 
 const MODELS: Record<string, string> = {
     'models/robot/Robot.arc':
@@ -143,7 +146,7 @@ afterEach(() => {
 describe('maa-gen generators', () => {
     it('lists the generators of installed packages', async () => {
         const w = workspace();
-        const r = await runCli(['generators'], w.dir);
+        const r = await runCliInProcess(['generators'], w.dir);
         expect(r.code).toBe(0);
         const lines = r.stdout.trim().split('\n');
         expect(lines[0]).toMatch(/^NAME\s+KIND\s+LANGUAGE\s+GPL\s+RTE\s+CHECKS\s+PACKAGE$/);
@@ -168,7 +171,7 @@ describe('maa-gen generators', () => {
                 maa: { generators: [{ name: 'b.X', kind: 'behavior', output: { gpl: 'python', rte: 'r' }, entry: 'x.js' }] },
             }),
         });
-        const r = await runCli(['generators', '--format', 'json'], w.dir);
+        const r = await runCliInProcess(['generators', '--format', 'json'], w.dir);
         expect(r.code).toBe(1);
         const report = JSON.parse(r.stdout) as {
             generators: Array<{ name: string; package: string }>;
@@ -187,7 +190,7 @@ describe('maa-gen generators', () => {
                 message: "missing required field 'language'",
             },
         ]);
-        const text = await runCli(['generators'], w.dir);
+        const text = await runCliInProcess(['generators'], w.dir);
         expect(text.code).toBe(1);
         expect(text.stderr).toContain(
             `error: generator package bad-gens (${path.join(w.dir, 'node_modules/bad-gens/package.json')}): maa.generators[0]: missing required field 'language'`,
@@ -198,7 +201,7 @@ describe('maa-gen generators', () => {
 describe('maa-gen generate', () => {
     it('generates a platform, reports each generator with its file count, and writes a trace', async () => {
         const w = workspace();
-        const r = await runCli(['generate', 'models/App.arcapp', '--platform', 'alpha', '--out', 'out'], w.dir);
+        const r = await runCliInProcess(['generate', 'models/App.arcapp', '--platform', 'alpha', '--out', 'out'], w.dir);
         expect(r.stdout).toBe('');
         expect(r.stderr.split('\n').filter(Boolean)).toEqual([
             'alpha: t.Components: 4 files',
@@ -225,14 +228,14 @@ describe('maa-gen generate', () => {
             '2-2 Port robot/Ctrl.arc',
         ]);
         // Again: nothing changes, the user file is kept.
-        const again = await runCli(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out'], w.dir);
+        const again = await runCliInProcess(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out'], w.dir);
         expect(again.code).toBe(0);
         expect(again.stderr).toContain('alpha: 6 files in out/alpha (0 written, 5 unchanged, 1 user file kept)');
     });
 
     it('reports configuration errors of the platform with exit 1 and writes nothing', async () => {
         const w = workspace();
-        const r = await runCli(['generate', 'models/App.arcapp', '--platform', 'beta', '--out', 'out'], w.dir);
+        const r = await runCliInProcess(['generate', 'models/App.arcapp', '--platform', 'beta', '--out', 'out'], w.dir);
         expect(r.code).toBe(1);
         const lines = parseTextLines(r.stdout);
         expect(lines.map((l) => `${l['file']}:${l['line']} ${l['code']}`)).toEqual(['models/App.arcapp:7 app/uncovered-behavior-language']);
@@ -279,7 +282,7 @@ describe('maa-gen generate', () => {
 
     it('the JSON report is one object on stdout, two-space indented, with the documented fields in order', async () => {
         const w = workspace();
-        const r = await runCli(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out', '--format', 'json'], w.dir);
+        const r = await runCliInProcess(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out', '--format', 'json'], w.dir);
         expect(r.code).toBe(0);
         expect(r.stderr).toBe('');
         const report = JSON.parse(r.stdout) as {
@@ -301,13 +304,13 @@ describe('maa-gen generate', () => {
 
     it('a folder as the application or a missing --root folder is a usage problem (exit 2)', async () => {
         const w = workspace();
-        const folder = await runCli(['generate', 'models'], w.dir);
+        const folder = await runCliInProcess(['generate', 'models'], w.dir);
         expect(folder.code).toBe(2);
         expect(folder.stderr).toBe('maa-gen: error: not a file: models\n');
-        const root = await runCli(['generate', 'models/App.arcapp', '--root', 'nowhere'], w.dir);
+        const root = await runCliInProcess(['generate', 'models/App.arcapp', '--root', 'nowhere'], w.dir);
         expect(root.code).toBe(2);
         expect(root.stderr).toBe('maa-gen: error: model root not found: nowhere\n');
-        const fileRoot = await runCli(['generate', 'models/App.arcapp', '--root', 'models/App.arcapp'], w.dir);
+        const fileRoot = await runCliInProcess(['generate', 'models/App.arcapp', '--root', 'models/App.arcapp'], w.dir);
         expect(fileRoot.code).toBe(2);
         expect(fileRoot.stderr).toBe('maa-gen: error: model root not found: models/App.arcapp\n');
         expect(existsSync(w.path('models/generated'))).toBe(false);
@@ -315,7 +318,7 @@ describe('maa-gen generate', () => {
 
     it('an output that cannot be written exits 2, names the folder and changes nothing', async () => {
         const w = workspace();
-        expect((await runCli(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out'], w.dir)).code).toBe(0);
+        expect((await runCliInProcess(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out'], w.dir)).code).toBe(0);
         const before = tree(w.path('out/alpha'));
         w.write(
             'models/robot/Sensor.arc',
@@ -343,7 +346,7 @@ describe('maa-gen generate', () => {
     it('a file where the platform folder belongs exits 2 naming it (JSON too)', async () => {
         const w = workspace();
         w.write('out/alpha', 'my notes\n');
-        const r = await runCli(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out', '--format', 'json'], w.dir);
+        const r = await runCliInProcess(['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out', '--format', 'json'], w.dir);
         expect(r.code).toBe(2);
         const report = JSON.parse(r.stdout) as { diagnostics: Array<{ code: string; message: string }>; summary: { ok: boolean } };
         expect(report.summary.ok).toBe(false);
@@ -356,13 +359,13 @@ describe('maa-gen generate', () => {
     it('killed at each phase of writing (MAA_GEN_PAUSE_AT), the platform folder is wholly old or new, and the next run succeeds', async () => {
         const w = workspace();
         const args = ['generate', 'models/App.arcapp', '-p', 'alpha', '-o', 'out'];
-        expect((await runCli(args, w.dir)).code).toBe(0);
+        expect((await runCliInProcess(args, w.dir)).code).toBe(0);
         const older = tree(w.path('out/alpha'));
         w.write(
             'models/robot/Sensor.arc',
             'package robot;\n\n<<handwritten>> component Sensor {\n  port out int value;\n  port out int extra;\n}\n',
         );
-        expect((await runCli(args, w.dir)).code).toBe(0);
+        expect((await runCliInProcess(args, w.dir)).code).toBe(0);
         const newer = tree(w.path('out/alpha'));
         expect(newer).not.toEqual(older);
         const sensor = (extra: boolean): string =>
@@ -378,7 +381,7 @@ describe('maa-gen generate', () => {
             });
             expect(paused).toMatch(new RegExp(`^${phase} \\d+$`));
             expect(tree(w.path('out/alpha')), `killed at ${paused}`).toEqual(phase === 'staging' ? from : to);
-            const again = await runCli(args, w.dir);
+            const again = await runCliInProcess(args, w.dir);
             expect(again.code).toBe(0);
             expect(tree(w.path('out/alpha'))).toEqual(to);
             // Nothing of the killed run is left: the state folder holds the current version only.

@@ -3,6 +3,7 @@ import { existsSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { Worker } from 'node:worker_threads';
 
 export const BIN = fileURLToPath(new URL('../bin/maa-gen.js', import.meta.url));
 const BUILT_MAIN = fileURLToPath(new URL('../dist/main.js', import.meta.url));
@@ -35,6 +36,51 @@ export function runCli(args: string[], cwd: string): Promise<CliResult> {
                 resolve({ code: error ? (error.code as number) : 0, stdout, stderr });
             },
         );
+    });
+}
+
+let worker: Worker | undefined;
+let nextId = 0;
+const pending = new Map<number, { resolve: (r: CliResult) => void; reject: (e: Error) => void }>();
+
+/** The thread of runCliInProcess, started on first use; idle, it does not keep the test process alive. */
+function inProcessWorker(): Worker {
+    if (worker) return worker;
+    const w = new Worker(new URL('./in-process-worker.mjs', import.meta.url));
+    w.unref();
+    w.on('message', (m: { id: number; code?: number; stdout?: string; stderr?: string; error?: string }) => {
+        const call = pending.get(m.id);
+        pending.delete(m.id);
+        if (pending.size === 0) w.unref();
+        if (m.error !== undefined) call?.reject(new Error(`runCliInProcess: ${m.error}`));
+        else call?.resolve({ code: m.code ?? null, stdout: m.stdout ?? '', stderr: m.stderr ?? '' });
+    });
+    const fail = (error: Error): void => {
+        for (const call of pending.values()) call.reject(error);
+        pending.clear();
+        worker = undefined;
+    };
+    w.on('error', fail);
+    w.on('exit', (code) => fail(new Error(`runCliInProcess: the worker thread exited with ${code}`)));
+    worker = w;
+    return w;
+}
+
+/**
+ * Runs the built maa-gen's main() in a worker thread of this test process, with stdout and stderr
+ * captured as runCli's pipes would (not TTYs) and the exit code main() returns, which the bin
+ * passes to process.exit. One warm thread per test file instead of a cold process per command (a
+ * cold `maa-gen check` costs about a second of CPU): for tests of what a command does, not of the
+ * process boundary, which runCli tests (the bin, the flushing of stdout/stderr, the exit code).
+ * `env` is added to the environment the command sees (CliIo.env; not the thread's process.env).
+ */
+export function runCliInProcess(args: string[], cwd: string, env: Record<string, string> = {}): Promise<CliResult> {
+    const id = nextId++;
+    return new Promise((resolve, reject) => {
+        pending.set(id, { resolve, reject });
+        const w = inProcessWorker();
+        w.ref(); // while a command runs (unref'd again when none is left)
+        w.postMessage({ id, args, cwd, env: { ...process.env, NO_COLOR: '1', ...env } });
     });
 }
 

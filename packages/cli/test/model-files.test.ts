@@ -4,7 +4,7 @@ import { afterEach, beforeAll, describe, expect, it } from 'vitest';
 import { LANGUAGE_FACTS } from '@maa/language-server/language-facts';
 import { isModelFile, MODEL_FILE_EXTENSIONS } from '../src/roots.js';
 import { listModelFiles } from '../src/summary.js';
-import { ModelDir, requireBuiltCli, runCli } from './helpers.js';
+import { ModelDir, requireBuiltCli, runCliInProcess } from './helpers.js';
 
 const APP = 'application App for Sys {\n  platform timesync {\n    timesync.Components;\n    timesync.DataTypes;\n  }\n}\n';
 const SYS = 'component Sys {\n  port in int a;\n  port out int b;\n}\n';
@@ -49,13 +49,13 @@ describe('maa-gen check with .arcapp files', () => {
         const m = models();
         m.write('Sys.arc', SYS);
         m.write('App.arcapp', APP);
-        const ok = await runCli(['check', '-f', 'json', 'App.arcapp'], m.dir);
+        const ok = await runCliInProcess(['check', '-f', 'json', 'App.arcapp'], m.dir);
         expect(ok.stderr).toBe('');
         expect(ok.code).toBe(0);
         expect(JSON.parse(ok.stdout)).toEqual({ diagnostics: [], summary: { errors: 0, warnings: 0, infos: 0, files: 1, roots: 1 } });
 
         m.write('Bad.arcapp', 'application Bad for NoSuchComponent {\n  platform timesync {\n    timesync.Components;\n  }\n}\n');
-        const bad = await runCli(['check', '-f', 'json', 'Bad.arcapp'], m.dir);
+        const bad = await runCliInProcess(['check', '-f', 'json', 'Bad.arcapp'], m.dir);
         expect(bad.code).toBe(1);
         const report = JSON.parse(bad.stdout) as { diagnostics: Array<{ file: string; severity: string }> };
         expect(report.diagnostics.length).toBeGreaterThan(0);
@@ -66,7 +66,7 @@ describe('maa-gen check with .arcapp files', () => {
         const m = models();
         m.write('Sys.arc', SYS);
         m.write('App.arcapp', APP);
-        const r = await runCli(['check', '-f', 'json', '.'], m.dir);
+        const r = await runCliInProcess(['check', '-f', 'json', '.'], m.dir);
         expect(r.code).toBe(0);
         expect(JSON.parse(r.stdout)).toMatchObject({ summary: { files: 2, roots: 1 } });
     });

@@ -5,7 +5,7 @@ import { existsSync } from 'node:fs';
 import path from 'node:path';
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
 import { modelRootOfFile, modelRootOfApp } from '../src/roots.js';
-import { ModelDir, requireBuiltCli, runCli } from './helpers.js';
+import { ModelDir, requireBuiltCli, runCliInProcess } from './helpers.js';
 
 const APP = 'application A for robot.Ctrl {\n  platform timesync {\n    timesync.Components;\n    timesync.DataTypes;\n  }\n}\n';
 const CTRL = 'package robot;\n\ncomponent Ctrl {\n  port in int a;\n  port out int b;\n}\n';
@@ -38,19 +38,22 @@ describe('model roots of maa-gen', () => {
 
     it('generate without --root resolves the app in the maa.json folder; --root still overrides', async () => {
         const m = project();
-        const ok = await runCli(['generate', 'proj/apps/A.arcapp', '-p', 'timesync', '-o', 'out'], m.dir);
+        const ok = await runCliInProcess(['generate', 'proj/apps/A.arcapp', '-p', 'timesync', '-o', 'out'], m.dir);
         expect(ok.stderr).toContain('0 errors');
         expect(ok.code).toBe(0);
         expect(existsSync(m.path(path.join('out', 'timesync')))).toBe(true);
 
-        const explicit = await runCli(['generate', 'proj/apps/A.arcapp', '-p', 'timesync', '-o', 'out2', '--root', 'proj/apps'], m.dir);
+        const explicit = await runCliInProcess(
+            ['generate', 'proj/apps/A.arcapp', '-p', 'timesync', '-o', 'out2', '--root', 'proj/apps'],
+            m.dir,
+        );
         expect(explicit.code).toBe(1);
         expect(explicit.stdout).toContain('app/unknown-component');
     });
 
     it('check of the app file checks it within the same root', async () => {
         const m = project();
-        const r = await runCli(['check', '-f', 'json', 'proj/apps/A.arcapp'], m.dir);
+        const r = await runCliInProcess(['check', '-f', 'json', 'proj/apps/A.arcapp'], m.dir);
         expect(r.code).toBe(0);
         expect(JSON.parse(r.stdout)).toMatchObject({ diagnostics: [], summary: { errors: 0, files: 1, roots: 1 } });
     });

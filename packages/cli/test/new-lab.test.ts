@@ -5,7 +5,7 @@ import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
-import { ModelDir, requireBuiltCli, runCli } from './helpers.js';
+import { ModelDir, requireBuiltCli, runCliInProcess } from './helpers.js';
 
 const repoDir = fileURLToPath(new URL('../../../', import.meta.url));
 const labDir = path.join(repoDir, 'examples', 'lab');
@@ -60,7 +60,7 @@ describe('maa-gen new <lab exercise>', () => {
     it.each(exercises)('new %s makes a project maa-gen check reads: the starter, its README, no solution', async (name) => {
         const work = new ModelDir();
         dirs.push(work);
-        const made = await runCli(['new', name, 'demo'], work.dir);
+        const made = await runCliInProcess(['new', name, 'demo'], work.dir);
         expect(made.code, made.stderr).toBe(0);
         const demo = work.path('demo');
         expect(readFileSync(path.join(demo, 'README.md'), 'utf8')).toBe(readFileSync(path.join(labDir, name, 'description.md'), 'utf8'));
@@ -84,7 +84,7 @@ describe('maa-gen new <lab exercise>', () => {
             expect(filesOf(demo).filter((f) => f !== 'README.md')).toEqual([...expected.keys()].sort());
             for (const [f, source] of expected) expect(readFileSync(path.join(demo, f), 'utf8'), f).toBe(readFileSync(source, 'utf8'));
         }
-        const check = await runCli(['check', '.', '--format', 'json'], demo);
+        const check = await runCliInProcess(['check', '.', '--format', 'json'], demo);
         const diagnostics = (JSON.parse(check.stdout) as { diagnostics: Array<{ severity: string; code: string }> }).diagnostics;
         expect(diagnostics.filter((d) => d.severity === 'error').map((d) => d.code)).toEqual(STARTER_ERRORS[name]);
         expect(check.code).toBe(STARTER_ERRORS[name]?.length ? 1 : 0);

@@ -7,7 +7,7 @@ import { fileURLToPath } from 'node:url';
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
 // @ts-expect-error: a plain ES module of the build step, without type declarations
 import { adaptReadme, templateFiles } from '../scripts/copy-templates.mjs';
-import { ModelDir, requireBuiltCli, runCli } from './helpers.js';
+import { ModelDir, requireBuiltCli, runCli, runCliInProcess } from './helpers.js';
 
 const repoDir = fileURLToPath(new URL('../../../', import.meta.url));
 const distTemplates = fileURLToPath(new URL('../dist/templates/', import.meta.url));
@@ -27,7 +27,7 @@ afterEach(() => {
 
 describe('maa-gen new --list', () => {
     it('lists every template with a one-line description', async () => {
-        const r = await runCli(['new', '--list'], tempDir().dir);
+        const r = await runCliInProcess(['new', '--list'], tempDir().dir);
         expect(r.code).toBe(0);
         const lines = r.stdout.trimEnd().split('\n');
         expect(lines.map((l) => l.trim().split(/\s+/)[0])).toEqual([
@@ -44,7 +44,7 @@ describe('maa-gen new --list', () => {
 describe('maa-gen new minimal', () => {
     it('creates a project on which check is clean and every stream test passes', async () => {
         const work = tempDir();
-        const made = await runCli(['new', 'minimal', 'proj'], work.dir);
+        const made = await runCliInProcess(['new', 'minimal', 'proj'], work.dir);
         expect(made.code, made.stderr).toBe(0);
         expect(made.stdout).toContain('Created proj from the template minimal (7 files).');
         for (const step of [
@@ -56,12 +56,12 @@ describe('maa-gen new minimal', () => {
             expect(made.stdout).toContain(step);
         }
         const proj = work.path('proj');
-        const check = await runCli(['check', '.'], proj);
+        const check = await runCliInProcess(['check', '.'], proj);
         expect(check.code, check.stdout + check.stderr).toBe(0);
         expect(check.stdout).toBe('');
         expect(check.stderr).toContain('0 errors, 0 warnings in 3 files (1 root)');
 
-        const test = await runCli(['test', 'App.arcapp', '--format', 'json'], proj);
+        const test = await runCliInProcess(['test', 'App.arcapp', '--format', 'json'], proj);
         expect(test.code, test.stdout + test.stderr).toBe(0);
         const report = JSON.parse(test.stdout) as {
             results: Array<{ file: string; passed: boolean }>;
@@ -73,7 +73,7 @@ describe('maa-gen new minimal', () => {
 
     it('writes into the current folder with "." and then prints no cd step', async () => {
         const work = tempDir();
-        const r = await runCli(['new', 'minimal', '.'], work.dir);
+        const r = await runCliInProcess(['new', 'minimal', '.'], work.dir);
         expect(r.code, r.stderr).toBe(0);
         expect(r.stdout).toContain('Created . from the template minimal');
         expect(r.stdout).not.toContain('cd ');
@@ -83,7 +83,7 @@ describe('maa-gen new minimal', () => {
     it('defaults the folder to the template name and accepts an existing folder without collisions', async () => {
         const work = tempDir();
         work.write('minimal/notes.txt', 'mine\n');
-        const r = await runCli(['new', 'minimal'], work.dir);
+        const r = await runCliInProcess(['new', 'minimal'], work.dir);
         expect(r.code, r.stderr).toBe(0);
         expect(readFileSync(work.path('minimal/notes.txt'), 'utf8')).toBe('mine\n');
         expect(existsSync(work.path('minimal/App.arcapp'))).toBe(true);
@@ -93,15 +93,15 @@ describe('maa-gen new minimal', () => {
 describe('maa-gen new toast-service', () => {
     it('creates the example as a project: check is clean, the timesync platform generates', async () => {
         const work = tempDir();
-        const made = await runCli(['new', 'toast-service', 'demo'], work.dir);
+        const made = await runCliInProcess(['new', 'toast-service', 'demo'], work.dir);
         expect(made.code, made.stderr).toBe(0);
         expect(made.stdout).toContain('npx maa-gen test TR.arcapp');
         const demo = work.path('demo');
-        const check = await runCli(['check', '.'], demo);
+        const check = await runCliInProcess(['check', '.'], demo);
         expect(check.code, check.stdout + check.stderr).toBe(0);
         expect(check.stderr).toMatch(/^0 errors, /);
 
-        const gen = await runCli(['generate', 'TR.arcapp', '--platform', 'timesync', '--out', 'out'], demo);
+        const gen = await runCliInProcess(['generate', 'TR.arcapp', '--platform', 'timesync', '--out', 'out'], demo);
         expect(gen.code, gen.stdout + gen.stderr).toBe(0);
         expect(existsSync(path.join(demo, 'out', 'timesync', 'maa_app.py'))).toBe(true);
         // The handwritten platform components of the example (toast/*.timesync.py) are part of the build.
@@ -142,7 +142,7 @@ describe('maa-gen new refusals', () => {
     it('refuses to overwrite: names the existing file, exits 2 and writes nothing', async () => {
         const work = tempDir();
         work.write('proj/maa.json', '{"keep": true}\n');
-        const r = await runCli(['new', 'minimal', 'proj'], work.dir);
+        const r = await runCliInProcess(['new', 'minimal', 'proj'], work.dir);
         expect(r.code).toBe(2);
         expect(r.stderr).toContain('maa-gen: error: refusing to overwrite proj/maa.json');
         expect(r.stderr).toContain('nothing was written');
@@ -154,7 +154,7 @@ describe('maa-gen new refusals', () => {
     it('refuses a file where the template needs a folder', async () => {
         const work = tempDir();
         work.write('proj/hello', 'a file, not a folder\n');
-        const r = await runCli(['new', 'minimal', 'proj'], work.dir);
+        const r = await runCliInProcess(['new', 'minimal', 'proj'], work.dir);
         expect(r.code).toBe(2);
         expect(r.stderr).toContain('refusing to overwrite proj/hello');
         expect(readdirSync(work.path('proj'))).toEqual(['hello']);
@@ -162,9 +162,9 @@ describe('maa-gen new refusals', () => {
 
     it('names at most five files and counts the rest', async () => {
         const work = tempDir();
-        const first = await runCli(['new', 'toast-service', 'demo'], work.dir);
+        const first = await runCliInProcess(['new', 'toast-service', 'demo'], work.dir);
         expect(first.code).toBe(0);
-        const again = await runCli(['new', 'toast-service', 'demo'], work.dir);
+        const again = await runCliInProcess(['new', 'toast-service', 'demo'], work.dir);
         expect(again.code).toBe(2);
         expect(again.stderr.match(/refusing to overwrite/g)).toHaveLength(5);
         expect(again.stderr).toContain('... and 19 more files of the template that exist');
@@ -180,7 +180,7 @@ describe('maa-gen new refusals', () => {
     });
 
     it('no template exits 2 and lists the templates', async () => {
-        const r = await runCli(['new'], tempDir().dir);
+        const r = await runCliInProcess(['new'], tempDir().dir);
         expect(r.code).toBe(2);
         expect(r.stderr).toContain('no template given');
         expect(r.stderr).toContain('toast-service');

@@ -5,7 +5,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { simulatorFinishedContract } from '@maa/protocol';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { requireBuiltCli, runCli } from './helpers.js';
+import { requireBuiltCli, runCli, runCliInProcess } from './helpers.js';
 
 const repo = fileURLToPath(new URL('../../..', import.meta.url));
 const EXAMPLE = path.join(repo, 'examples', 'toast-service');
@@ -53,23 +53,23 @@ describe('maa-gen sim: usage', () => {
     afterAll(() => rmSync(dir, { recursive: true, force: true }));
 
     it('needs --platform when the application has several', async () => {
-        const r = await runCli(['sim', 'TR.arcapp', '--until-goal'], dir);
+        const r = await runCliInProcess(['sim', 'TR.arcapp', '--until-goal'], dir);
         expect(r.code).toBe(2);
         expect(r.stderr).toContain('TR.arcapp has 2 platforms (rospython, timesync): choose one with --platform');
         expect(existsSync(path.join(dir, 'generated'))).toBe(false);
     });
 
     it('refuses an unknown platform, a missing file, --headless with --viewer and a bad --duration', async () => {
-        const unknown = await runCli(['sim', 'TR.arcapp', '--platform', 'nope'], dir);
+        const unknown = await runCliInProcess(['sim', 'TR.arcapp', '--platform', 'nope'], dir);
         expect(unknown.code).toBe(2);
         expect(unknown.stderr).toContain('TR.arcapp has no platform nope (its platforms: rospython, timesync)');
-        const missing = await runCli(['sim', 'missing.arcapp', '--platform', 'timesync'], dir);
+        const missing = await runCliInProcess(['sim', 'missing.arcapp', '--platform', 'timesync'], dir);
         expect(missing.code).toBe(2);
         expect(missing.stderr).toContain('path not found: missing.arcapp');
-        const both = await runCli(['sim', 'TR.arcapp', '--platform', 'timesync', '--headless', '--viewer'], dir);
+        const both = await runCliInProcess(['sim', 'TR.arcapp', '--platform', 'timesync', '--headless', '--viewer'], dir);
         expect(both.code).toBe(2);
         expect(both.stderr).toContain('--headless and --viewer exclude each other');
-        const duration = await runCli(['sim', 'TR.arcapp', '--platform', 'timesync', '--duration', '-1'], dir);
+        const duration = await runCliInProcess(['sim', 'TR.arcapp', '--platform', 'timesync', '--duration', '-1'], dir);
         expect(duration.code).toBe(2);
         expect(duration.stderr).toContain('expected a number > 0');
     });

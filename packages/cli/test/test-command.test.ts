@@ -4,7 +4,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { selectCases, type StreamTestResult } from '../src/commands/test.js';
-import { ModelDir, requireBuiltCli, runCli } from './helpers.js';
+import { ModelDir, requireBuiltCli, runCliInProcess } from './helpers.js';
 
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..', '..');
 const python = path.join(repo, 'packages', 'generators-python', '.venv', 'bin', 'python');
@@ -46,7 +46,7 @@ describe('maa-gen test --case (toast example)', () => {
     it('reports only the named tests', async () => {
         requireBuiltCli();
         const names = ['a plate starts loading the bread', 'a burnt toast is not served'];
-        const r = await runCli(
+        const r = await runCliInProcess(
             ['test', APP, CONTROLLER, '--format', 'json', '--python', python, '--case', names[0]!, '-c', names[1]!],
             repo,
         );
@@ -60,7 +60,7 @@ describe('maa-gen test --case (toast example)', () => {
 
     it('exits 2 for a name no test has', async () => {
         requireBuiltCli();
-        const r = await runCli(['test', APP, CONTROLLER, '--python', python, '--case', 'no such test'], repo);
+        const r = await runCliInProcess(['test', APP, CONTROLLER, '--python', python, '--case', 'no such test'], repo);
         expect(r.code).toBe(2);
         expect(r.stderr).toContain('no stream test named "no such test"');
     }, 180_000);
@@ -78,7 +78,7 @@ describe('maa-gen test --format json when the models do not generate', () => {
                 'App.arcapp',
                 'application App for a.Broken {\n  platform timesync {\n    timesync.Components;\n    timesync.DataTypes;\n  }\n}\n',
             );
-            const r = await runCli(['test', 'App.arcapp', '--format', 'json', '--python', python], models.dir);
+            const r = await runCliInProcess(['test', 'App.arcapp', '--format', 'json', '--python', python], models.dir);
             expect(r.code, r.stderr).toBe(1);
             const report = JSON.parse(r.stdout) as {
                 diagnostics: Array<{ file: string; line: number; severity: string; code: string }>;
