@@ -53,8 +53,9 @@ async function call<T extends TSchema>(method: 'GET' | 'POST', url: string, cont
 /** The simulation API below a prefix (`''`: the page's origin; endpoints.ts). */
 export function createSimApi(prefix: string) {
     return {
-        start: (app: string, platform: string, mode: SimMode, speed: number): Promise<SimStartAnswer> =>
-            call('POST', `${prefix}/api/sim/start`, answers.simStart, { app, platform, mode, speed }),
+        /** `record`: the run is recorded (docs/ide.md "Record and replay"). */
+        start: (app: string, platform: string, mode: SimMode, speed: number, record?: boolean): Promise<SimStartAnswer> =>
+            call('POST', `${prefix}/api/sim/start`, answers.simStart, { app, platform, mode, speed, ...(record ? { record } : {}) }),
         /** The application configurations of the workspace (`GET /api/apps`). */
         apps: async (): Promise<AppInfo[]> => (await call('GET', `${prefix}/api/apps`, answers.apps)).apps,
         stop: (): Promise<OkAnswer> => call('POST', `${prefix}/api/sim/stop`, answers.ok, {}),

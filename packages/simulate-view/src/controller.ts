@@ -189,6 +189,7 @@ export class SimulationController implements Disposable {
 
     /** A session found at mount: a start still preparing (another window, or before a reload), or a running one. */
     private async adopt(first: SimStatusAnswer): Promise<void> {
+        if (first.replay) return; // a replay session: replay/session.ts reattaches to it
         let st = first;
         const app = st.app && (st.preparing || st.running) ? this.parts.controls.choose(st.app, st.platform) : undefined;
         if (st.preparing && !this.disposed && this.dispatch({ type: 'adopt-preparing' })) {

@@ -21,6 +21,10 @@ import { createSimApi } from './backend.js';
 import { Inspector } from './inspector.js';
 import { StatusView } from './status-view.js';
 import { Viewer } from './viewer.js';
+import { createReplayApi } from './replay/api.js';
+import { ReplayBar } from './replay/bar.js';
+import { ReplayController } from './replay/session.js';
+import { TimelineStore } from './timeline/store.js';
 
 /** The mounted panel: its tool bar's actions for hosts that offer them as commands too. */
 export interface SimulatePanel extends Disposable {
@@ -39,6 +43,10 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
     const status = new StatusView();
     const endpoints = simEndpoints(host.backendBase, window.location);
     const viewer = new Viewer(endpoints.viser);
+    // the session's timeline store (C5): a live run's messages, or a replay's recording
+    const timeline = new TimelineStore();
+    const replayBar = new ReplayBar();
+    controls.element.append(...replayBar.toolbarItems);
     let controller: SimulationController | undefined;
     const inspector = new Inspector({
         sampleTime: () => controller?.clockSeconds() ?? performance.now() / 1000,
@@ -48,26 +56,48 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
     container.replaceChildren(
         controls.element,
         status.bar,
+        replayBar.element,
         status.errorBox,
         status.progressBox,
         el('div', { class: 'maa-sim-body' }, viewer.element, inspector.element),
     );
+    const simApi = createSimApi(endpoints.api);
     controller = new SimulationController({
         host,
         controls,
         status,
         inspector,
         viewer,
-        api: createSimApi(endpoints.api),
+        // the Record toggle decides whether a start records
+        api: { ...simApi, start: (app, platform, mode, speed) => simApi.start(app, platform, mode, speed, replayBar.recordToggle.checked) },
         rosbridge: endpoints.rosbridge,
     });
-    void controller.mount();
+    const replay = new ReplayController({
+        bar: replayBar,
+        api: createReplayApi(endpoints.api),
+        simApi,
+        rosbridge: endpoints.rosbridge,
+        store: timeline,
+        viewer,
+        diagram: host.diagram,
+        status,
+        notify: (severity, message) => host.notify(severity, message),
+        runActive: () => controller !== undefined && controller.state.kind !== 'idle',
+    });
+    // a start ends a replay session (one session at a time); a run's end lists its recording
+    controls.startBtn.addEventListener('click', () => replay.leaveForRun());
+    controls.stopBtn.addEventListener('click', () => void replay.refresh());
+    // the controller renders its session state; the replay buttons follow it (enabled only without a run)
+    const renderReplay = setInterval(() => replay.render(), 500);
+    void controller.mount().then(() => replay.mount());
     return {
         start: async (app, platform) => (controller ? controller.startWith(app, platform) : false),
         stop: async () => controller?.stop(),
         reset: async () => (controller ? controller.reset() : false),
         dispose(): void {
             if (!controller) return;
+            clearInterval(renderReplay);
+            replay.dispose();
             controller.dispose();
             controller = undefined;
             container.replaceChildren();
