@@ -138,6 +138,8 @@ def test_seek_places_the_scene_at_the_recorded_poses(server: ReplayServer) -> No
     answer = server.seek({"time": on_plate + 1e-4})
     assert answer["success"] and answer["scene"] is recording.scenes[i]
     assert answer["status"]["time"] == pytest.approx(on_plate + 1e-4)
+    assert answer["status"]["toast_on_plate"] is True and "scene" not in answer["status"]
+    assert server.status(with_scene=True)["scene"] is recording.scenes[i]
     recorded_bread = recording.scenes[i]["body_poses"][recording.scenes[i]["body_names"].index("bread")]
     frame = scene._frames["bread"]
     assert frame.position == pytest.approx(tuple(recorded_bread["position"][k] for k in "xyz"))

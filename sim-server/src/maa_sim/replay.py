@@ -7,7 +7,7 @@ endpoint (the same guards as a run's) offers the replay's services:
 
 - `/sim/seek {"time": s}`: moves the scene to the last scene state at or before `s` (simulated
   seconds of the recording); answers the status;
-- `/sim/get_status {}`: the recording's span and the time shown;
+- `/sim/get_status {}`: the recording's span, the time shown and the scene state there;
 - `/sim/replay_messages {"exclude": [topics]}`: every recorded message but the scene poses, as
   `{"t", "topic", "message"}` in time order (the simulate view fills its timeline store with them).
 
@@ -249,17 +249,25 @@ class ReplayServer:
             self.stop()
             raise
 
-    def status(self) -> JsonMessage:
+    def status(self, with_scene: bool = False) -> JsonMessage:
+        """The recording's span, the time shown and the toast there (`with_scene`: the scene state shown)."""
         shown = self.scene.time if self.scene is not None else None
-        return {
+        t = shown if shown is not None else self.recording.start
+        scene = self.recording.scene_at(t)
+        status: JsonMessage = {
             "replay": self.recording.path.name,
             "start": self.recording.start,
             "end": self.recording.end,
-            "time": shown if shown is not None else self.recording.start,
+            "time": t,
             "paused": True,
+            "toast_level": scene.get("toast_level") if scene is not None else None,
+            "toast_on_plate": scene.get("toast_on_plate") if scene is not None else None,
             "topics": self.recording.topics(),
             "messages": len(self.recording.messages) + len(self.recording.scenes),
         }
+        if with_scene:
+            status["scene"] = scene
+        return status
 
     def seek(self, args: JsonMessage) -> JsonMessage:
         t = args.get("time")
@@ -279,7 +287,7 @@ class ReplayServer:
 
         return {
             "sim/seek": self.seek,
-            "sim/get_status": lambda _args: self.status(),
+            "sim/get_status": lambda _args: self.status(with_scene=True),
             # the whole recording in one answer: serialized on a worker thread, not the server's loop
             "sim/replay_messages": BlockingService(self.messages),
         }
