@@ -21,10 +21,10 @@ import contextlib
 import struct
 import sys
 import threading
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, overload
 
 import mujoco
 import viser
@@ -61,13 +61,47 @@ def to_json(value: Any) -> Any:
     return str(value)
 
 
+class LazyScenes(Sequence[JsonMessage]):
+    """The scene states of a recording, decoded when first asked for (they are most of a recording's
+    bytes and of its decoding time; a replay shows only those it seeks to). The same object is
+    returned for an index every time."""
+
+    def __init__(self) -> None:
+        self._data: list[bytes] = []
+        self._decode: list[Callable[[bytes], Any]] = []
+        self._decoded: dict[int, JsonMessage] = {}
+
+    def append_raw(self, data: bytes, decode: Callable[[bytes], Any]) -> None:
+        self._data.append(data)
+        self._decode.append(decode)
+
+    def __len__(self) -> int:
+        return len(self._data)
+
+    @overload
+    def __getitem__(self, index: int) -> JsonMessage: ...
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[JsonMessage]: ...
+    def __getitem__(self, index: int | slice) -> JsonMessage | Sequence[JsonMessage]:
+        if isinstance(index, slice):
+            return [self[i] for i in range(*index.indices(len(self)))]
+        i = index + len(self._data) if index < 0 else index
+        if not 0 <= i < len(self._data):
+            raise IndexError(index)
+        scene = self._decoded.get(i)
+        if scene is None:
+            scene = to_json(self._decode[i](self._data[i]))
+            self._decoded[i] = scene
+        return scene
+
+
 @dataclass
 class Recording:
     """What a recording holds: the scene states by time and every other message."""
 
     path: Path
     scene_times: list[float] = field(default_factory=list)
-    scenes: list[JsonMessage] = field(default_factory=list)
+    scenes: LazyScenes = field(default_factory=LazyScenes)
     messages: list[TimedMessage] = field(default_factory=list)
 
     @property
@@ -103,17 +137,26 @@ def load_recording(path: Path) -> Recording:
     from mcap_ros2.decoder import DecoderFactory
 
     recording = Recording(path)
+    factory = DecoderFactory()
+    decoders: dict[int, Callable[[bytes], Any]] = {}
     try:
         with path.open("rb") as stream:
-            reader = make_reader(stream, decoder_factories=[DecoderFactory()])
-            for _schema, channel, message, decoded in reader.iter_decoded_messages(log_time_order=True):
+            reader = make_reader(stream)
+            for schema, channel, message in reader.iter_messages(log_time_order=True):
+                decode = decoders.get(channel.id)
+                if decode is None:
+                    found = factory.decoder_for(channel.message_encoding, schema)
+                    if found is None:
+                        raise ValueError(f"{channel.topic}: no decoder for {channel.message_encoding}")
+                    decode = decoders[channel.id] = found
                 t = message.log_time / 1e9
-                body = to_json(decoded)
                 if channel.topic == SCENE_TOPIC:
                     recording.scene_times.append(t)
-                    recording.scenes.append(body)
+                    recording.scenes.append_raw(message.data, decode)
                 else:
-                    recording.messages.append((t, channel.topic, body))
+                    recording.messages.append((t, channel.topic, to_json(decode(message.data))))
+        if recording.scenes:
+            _ = recording.scenes[0]  # a scene that cannot be decoded is found now, not at a seek
     except (OSError, McapError, ValueError, EOFError, struct.error) as exc:
         raise RecordingError(f"cannot read the recording {path.name}: {exc}") from None
     if not recording.scenes:
