@@ -37,7 +37,7 @@ export function numericFields(message: unknown): string[] {
             out.push(path);
             return;
         }
-        if (Array.isArray(x)) x.forEach((e, i) => walk(e, `${path}[${i}]`));
+        if (Array.isArray(x)) for (const [i, e] of x.entries()) walk(e, `${path}[${i}]`);
         else if (x && typeof x === 'object')
             for (const [k, v] of Object.entries(x as Record<string, unknown>)) walk(v, path ? `${path}.${k}` : k);
     };
@@ -112,7 +112,13 @@ export function valueRange(series: readonly (readonly Point[])[]): { min: number
  * `width` × `height` box; a point that keeps the value adds nothing, and points on one pixel
  * column become one vertical stroke, so a long run still draws a short path.
  */
-export function seriesPath(points: readonly Point[], span: TimeSpan, range: { min: number; max: number }, width: number, height: number): string {
+export function seriesPath(
+    points: readonly Point[],
+    span: TimeSpan,
+    range: { min: number; max: number },
+    width: number,
+    height: number,
+): string {
     if (points.length === 0) return '';
     const yOf = (v: number): number => height - ((v - range.min) / (range.max - range.min)) * height;
     const parts: string[] = [];
@@ -122,7 +128,8 @@ export function seriesPath(points: readonly Point[], span: TimeSpan, range: { mi
         const x = round(Math.max(-1, xOf(p.t, span, width)));
         const y = round(yOf(p.v));
         if (parts.length === 0) parts.push(`M ${x} ${y}`);
-        else if (y === lastY) continue; // the step line holds it anyway
+        else if (y === lastY)
+            continue; // the step line holds it anyway
         else if (x === lastX) parts.push(`V ${y}`);
         else parts.push(`H ${x} V ${y}`);
         lastX = x;

@@ -12,6 +12,7 @@ import { showActiveStates, showLiveValues } from '../diagram/index.js';
 import { pickPlatform } from '../platform-pick.js';
 import type { PlatformItem } from '../platforms.js';
 import { SimulateView } from './panel.js';
+import { revealTrace } from './reveal.js';
 
 /** The live state of a run as the simulate view reports it (port path → value, instance path → state). */
 export interface LiveSnapshot {
@@ -105,6 +106,13 @@ export class SimulateSession implements vscode.Disposable {
                 this.snapshot = { values: this.snapshot.values, states: new Map(message.states) };
                 showActiveStates(this.snapshot.states);
                 live.fire(this.snapshot);
+                break;
+            case 'reveal':
+                revealTrace(message).catch((e: unknown) =>
+                    vscode.window.showErrorMessage(
+                        `MontiArc: could not reveal ${message.file}:${message.line}: ${e instanceof Error ? e.message : String(e)}`,
+                    ),
+                );
                 break;
             default:
                 break;
