@@ -3,13 +3,17 @@
  * wrote (never guessed from names): a ros2 platform's `deployment.json` (@maa/protocol's
  * Deployment: each node's instance and the topics of its ports), a timesync platform's app
  * module (`lockstep.json` names it; its `PORT_TOPICS` and `NODE_NAMES` tables, one entry a line).
+ * Both also hold the automata table (deployment.json's `automata`, the app module's `AUTOMATA`:
+ * one JSON entry a line); a build generated before the table existed has none (an empty list).
  */
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import {
+    automatonEntryContract,
     deploymentContract,
     DEPLOYMENT_FILE_NAME,
     type Deployment,
+    type AutomatonEntry,
     type InstanceNode,
     type PortTopicEntry,
     type SimMode,
@@ -35,7 +39,7 @@ function markExternal(ports: PortTopicEntry[]): PortTopicEntry[] {
 }
 
 /** The port topics and nodes of a deployment (ros2). */
-export function fromDeployment(deployment: Deployment): { ports: PortTopicEntry[]; nodes: InstanceNode[] } {
+export function fromDeployment(deployment: Deployment): { ports: PortTopicEntry[]; nodes: InstanceNode[]; automata: AutomatonEntry[] } {
     const ports: PortTopicEntry[] = [];
     const nodes: InstanceNode[] = [];
     for (const node of deployment.nodes) {
@@ -46,7 +50,7 @@ export function fromDeployment(deployment: Deployment): { ports: PortTopicEntry[
         for (const t of node.publishes ?? []) if (t.port) ports.push(entry(instancePath, t.port, 'out', t.topic, t.type));
         for (const t of node.subscribes ?? []) if (t.port) ports.push(entry(instancePath, t.port, 'in', t.topic, t.type));
     }
-    return { ports: markExternal(ports), nodes };
+    return { ports: markExternal(ports), nodes, automata: deployment.automata ?? [] };
 }
 
 /**
@@ -68,13 +72,31 @@ export function pythonTable(source: string, name: string): Array<[string, string
 }
 
 /** The port topics and nodes of a timesync app module (`PORT_TOPICS`: out ports of atomic instances, in ports of the root). */
-export function fromAppModule(source: string): { ports: PortTopicEntry[]; nodes: InstanceNode[] } {
+export function fromAppModule(source: string): { ports: PortTopicEntry[]; nodes: InstanceNode[]; automata: AutomatonEntry[] } {
     const ports = pythonTable(source, 'PORT_TOPICS').map(([key, [topic, type]]) => {
         const dot = key.lastIndexOf('.');
         return dot < 0 ? entry('', key, 'in', topic!, type ?? '') : entry(key.slice(0, dot), key.slice(dot + 1), 'out', topic!, type ?? '');
     });
     const nodes = pythonTable(source, 'NODE_NAMES').map(([instancePath, [node]]) => ({ instancePath, node: node! }));
-    return { ports: markExternal(ports), nodes };
+    return { ports: markExternal(ports), nodes, automata: automataTable(source) };
+}
+
+/** The app module's `AUTOMATA` table (none in a build generated before it existed): each line's JSON entry, checked. */
+export function automataTable(source: string): AutomatonEntry[] {
+    if (!source.split('\n').some((l) => l.startsWith('AUTOMATA: '))) return [];
+    return pythonTable(source, 'AUTOMATA').map(([instancePath, [json]]) => {
+        let value: unknown;
+        try {
+            value = JSON.parse(json!);
+        } catch (e) {
+            throw new HttpError(409, `the generated AUTOMATA entry of ${instancePath} is no JSON: ${(e as Error).message}`);
+        }
+        if (!automatonEntryContract.check(value)) {
+            const issue = automatonEntryContract.issues(value)[0];
+            throw new HttpError(409, `the generated AUTOMATA entry of ${instancePath} is invalid: ${issue?.pointer} ${issue?.message}`);
+        }
+        return value;
+    });
 }
 
 async function readJson(file: string): Promise<unknown> {

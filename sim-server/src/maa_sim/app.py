@@ -20,6 +20,7 @@ from typing import Any, Literal
 
 from . import interface
 from .access import AccessPolicy, resolve_token
+from .breakpoints import TRANSITIONS_TOPIC, Breakpoints, check_request
 from .deployment import Deployment
 from .lockstep import LockstepPackage
 from .messages import JsonMessage, MessageError
@@ -89,6 +90,8 @@ class SimApp:
         self.failed = threading.Event()
         #: the token both endpoints require (maa_sim.access)
         self.token = resolve_token(options.token)
+        #: the breakpoints of a lock-step run (maa_sim.breakpoints); None in ROS 2 mode
+        self.breakpoints: Breakpoints | None = None
 
     # ----------------------------------------------------------------------------- start
 
@@ -101,6 +104,7 @@ class SimApp:
             assert self.session is not None and self.runner is not None
             self.session.event_listeners.append(self._on_event)
             self._watch_states()
+            self._watch_breakpoints()
             if self.options.scenario:
                 self._observe_scenario()
             if self.options.record is not None:
@@ -249,6 +253,15 @@ class SimApp:
             return  # a lock-step controller without automaton states
         transport.subscribe(STATES_TOPIC, "std_msgs/msg/String", self._on_states)
 
+    def _watch_breakpoints(self) -> None:
+        """Lock-step mode: the transitions of every period are checked against the breakpoints."""
+        assert self.session is not None and self.runner is not None
+        transport = self.session.transport
+        if not isinstance(transport, LocalBus) or transport.topic_type(TRANSITIONS_TOPIC) is None:
+            return  # ROS 2 mode, or a controller that reports no transitions
+        self.breakpoints = Breakpoints(self.runner.pause)
+        transport.subscribe(TRANSITIONS_TOPIC, "std_msgs/msg/String", self.breakpoints.on_transition)
+
     def _on_states(self, _topic: str, msg: JsonMessage) -> None:
         try:
             states = json.loads(str(msg.get("data", "")))
@@ -329,7 +342,12 @@ class SimApp:
             runner().pause()
             return ok("paused")
 
+        def going_on() -> None:
+            if self.breakpoints is not None:
+                self.breakpoints.clear_hit()
+
         def resume(_args: JsonMessage) -> JsonMessage:
+            going_on()
             runner().resume()
             return ok("running")
 
@@ -337,6 +355,7 @@ class SimApp:
             steps = args.get("steps", 1)
             if isinstance(steps, bool) or not isinstance(steps, int):
                 raise ServiceError("steps must be an integer")
+            going_on()
             done, interrupted = runner().step(steps)
             if interrupted:
                 return ok(f"stepped {done} of {steps} period(s); stopped by {interrupted}")
@@ -353,6 +372,7 @@ class SimApp:
                     + ("" if restarted else " (not every node came up again)")
                 )
             self._clear_states()  # the controller emits its states again in its next first slice
+            going_on()
             runner().reset(seed)
             return ok("reset")
 
@@ -366,6 +386,16 @@ class SimApp:
         def get_status(_args: JsonMessage) -> JsonMessage:
             return self.status()
 
+        def set_breakpoints(args: JsonMessage) -> JsonMessage:
+            if self.breakpoints is None:
+                raise ServiceError("breakpoints need a lock-step run of a generated application (--mode lockstep)")
+            try:
+                breakpoints = check_request(args)
+            except ValueError as exc:
+                raise ServiceError(str(exc)) from None
+            self.breakpoints.set(breakpoints)
+            return ok(f"{len(breakpoints)} breakpoint(s)")
+
         return {
             "sim/pause": pause,
             "sim/resume": resume,
@@ -375,6 +405,7 @@ class SimApp:
             "sim/reset": BlockingService(reset),  # restarting nodes takes seconds
             "sim/set_speed": set_speed,
             "sim/get_status": get_status,
+            "sim/set_breakpoints": set_breakpoints,
         }
 
     def reset_ros2(self, seed: int | None = None) -> bool:
@@ -413,6 +444,7 @@ class SimApp:
             "domain_id": self.domain_id,
             "nodes": self.supervisor.statuses() if self.supervisor is not None else [],
             "automaton_states": self._latched_states(),
+            "breakpoint": self.breakpoints.hit if self.breakpoints is not None else None,
             "events": [e.as_json() for e in list(self.session.events)[-20:]],
             "rosbridge": self.rosbridge.url if self.rosbridge is not None else None,
             "viser": self.viewer.url if self.viewer is not None else None,

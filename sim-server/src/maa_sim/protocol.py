@@ -278,6 +278,95 @@ DEPLOYMENT_SCHEMA: Final[dict[str, Any]] = json.loads(
      }
     ]
    }
+  },
+  "automata": {
+   "type": "array",
+   "items": {
+    "type": "object",
+    "required": [
+     "instancePath",
+     "node",
+     "component",
+     "file",
+     "states",
+     "transitions"
+    ],
+    "properties": {
+     "instancePath": {
+      "type": "string"
+     },
+     "node": {
+      "pattern": "^/",
+      "type": "string"
+     },
+     "component": {
+      "minLength": 1,
+      "type": "string"
+     },
+     "file": {
+      "type": "string"
+     },
+     "states": {
+      "type": "array",
+      "items": {
+       "type": "object",
+       "required": [
+        "path",
+        "line"
+       ],
+       "properties": {
+        "path": {
+         "minLength": 1,
+         "type": "string"
+        },
+        "line": {
+         "minimum": 1,
+         "type": "integer"
+        }
+       }
+      }
+     },
+     "transitions": {
+      "type": "array",
+      "items": {
+       "type": "object",
+       "required": [
+        "index",
+        "from",
+        "to",
+        "label",
+        "line",
+        "column"
+       ],
+       "properties": {
+        "index": {
+         "minimum": 0,
+         "type": "integer"
+        },
+        "from": {
+         "minLength": 1,
+         "type": "string"
+        },
+        "to": {
+         "minLength": 1,
+         "type": "string"
+        },
+        "label": {
+         "type": "string"
+        },
+        "line": {
+         "minimum": 1,
+         "type": "integer"
+        },
+        "column": {
+         "minimum": 1,
+         "type": "integer"
+        }
+       }
+      }
+     }
+    }
+   }
   }
  }
 }
@@ -478,6 +567,58 @@ SIMULATOR_STATUS_SCHEMA: Final[dict[str, Any]] = json.loads(
      "type": "string"
     }
    }
+  },
+  "breakpoint": {
+   "anyOf": [
+    {
+     "anyOf": [
+      {
+       "additionalProperties": false,
+       "type": "object",
+       "required": [
+        "node",
+        "state"
+       ],
+       "properties": {
+        "node": {
+         "pattern": "^/",
+         "type": "string"
+        },
+        "state": {
+         "minLength": 1,
+         "type": "string"
+        }
+       }
+      },
+      {
+       "additionalProperties": false,
+       "type": "object",
+       "required": [
+        "node",
+        "from",
+        "to"
+       ],
+       "properties": {
+        "node": {
+         "pattern": "^/",
+         "type": "string"
+        },
+        "from": {
+         "minLength": 1,
+         "type": "string"
+        },
+        "to": {
+         "minLength": 1,
+         "type": "string"
+        }
+       }
+      }
+     ]
+    },
+    {
+     "type": "null"
+    }
+   ]
   },
   "events": {
    "type": "array",
@@ -1969,6 +2110,72 @@ STREAM_STATES_SCHEMA: Final[dict[str, Any]] = json.loads(
 """
 )
 
+SET_BREAKPOINTS_SCHEMA: Final[dict[str, Any]] = json.loads(
+    r"""
+{
+ "$id": "urn:maa:protocol:set-breakpoints",
+ "title": "SetBreakpoints",
+ "description": "the request of /sim/set_breakpoints",
+ "additionalProperties": false,
+ "type": "object",
+ "required": [
+  "breakpoints"
+ ],
+ "properties": {
+  "breakpoints": {
+   "maxItems": 1000,
+   "type": "array",
+   "items": {
+    "anyOf": [
+     {
+      "additionalProperties": false,
+      "type": "object",
+      "required": [
+       "node",
+       "state"
+      ],
+      "properties": {
+       "node": {
+        "pattern": "^/",
+        "type": "string"
+       },
+       "state": {
+        "minLength": 1,
+        "type": "string"
+       }
+      }
+     },
+     {
+      "additionalProperties": false,
+      "type": "object",
+      "required": [
+       "node",
+       "from",
+       "to"
+      ],
+      "properties": {
+       "node": {
+        "pattern": "^/",
+        "type": "string"
+       },
+       "from": {
+        "minLength": 1,
+        "type": "string"
+       },
+       "to": {
+        "minLength": 1,
+        "type": "string"
+       }
+      }
+     }
+    ]
+   }
+  }
+ }
+}
+"""
+)
+
 #: The simulator's platform topics (@maa/protocol SIMULATOR_TOPICS): name, type, publisher, description.
 SIMULATOR_TOPICS: Final[list[dict[str, str]]] = json.loads(
     r"""
@@ -2021,6 +2228,10 @@ SIMULATOR_TOPICS: Final[list[dict[str, str]]] = json.loads(
 
 AUTOMATON_STATES_TOPIC: Final = "/maa/automaton_states"
 
+TRANSITIONS_TOPIC: Final = "/maa/transitions"
+
+PROGRAM_STEPS_TOPIC: Final = "/maa/program_steps"
+
 
 class PortTopic(TypedDict):
     """A topic of a node with its ROS 2 type and port"""
@@ -2043,6 +2254,33 @@ class DeploymentNode(TypedDict):
     component: NotRequired[str]
 
 
+class DeploymentAutomataItemStatesItem(TypedDict):
+    path: str
+    line: int
+
+
+DeploymentAutomataItemTransitionsItem = TypedDict(
+    "DeploymentAutomataItemTransitionsItem",
+    {
+        "index": int,
+        "from": str,
+        "to": str,
+        "label": str,
+        "line": int,
+        "column": int,
+    },
+)
+
+
+class DeploymentAutomataItem(TypedDict):
+    instancePath: str
+    node: str
+    component: str
+    file: str
+    states: list[DeploymentAutomataItemStatesItem]
+    transitions: list[DeploymentAutomataItemTransitionsItem]
+
+
 class Deployment(TypedDict):
     """deployment.json: how maa-sim starts a generated ROS 2 application (docs/simulation.md)"""
 
@@ -2052,6 +2290,7 @@ class Deployment(TypedDict):
     python_path: NotRequired[list[str]]
     env: NotRequired[dict[str, str]]
     nodes: list[DeploymentNode]
+    automata: NotRequired[list[DeploymentAutomataItem]]
 
 
 class Lockstep(TypedDict):
@@ -2062,6 +2301,21 @@ class Lockstep(TypedDict):
     python_path: NotRequired[list[str]]
     period: NotRequired[float]
     parameters: NotRequired[dict[str, Any]]
+
+
+class SimulatorStatusBreakpoint00(TypedDict):
+    node: str
+    state: str
+
+
+SimulatorStatusBreakpoint01 = TypedDict(
+    "SimulatorStatusBreakpoint01",
+    {
+        "node": str,
+        "from": str,
+        "to": str,
+    },
+)
 
 
 class SimulatorStatus(TypedDict):
@@ -2082,6 +2336,7 @@ class SimulatorStatus(TypedDict):
     domain_id: int | None
     nodes: list[dict[str, Any]]
     automaton_states: dict[str, str]
+    breakpoint: NotRequired[SimulatorStatusBreakpoint00 | SimulatorStatusBreakpoint01 | None]
     events: list[dict[str, Any]]
     rosbridge: str | None
     viser: str | None
@@ -2382,3 +2637,24 @@ class StreamStates(TypedDict):
 
     format: Literal["maa-stream-states/1"]
     tests: list[StreamStatesTest]
+
+
+class SetBreakpointsBreakpointsItem0(TypedDict):
+    node: str
+    state: str
+
+
+SetBreakpointsBreakpointsItem1 = TypedDict(
+    "SetBreakpointsBreakpointsItem1",
+    {
+        "node": str,
+        "from": str,
+        "to": str,
+    },
+)
+
+
+class SetBreakpoints(TypedDict):
+    """the request of /sim/set_breakpoints"""
+
+    breakpoints: list[SetBreakpointsBreakpointsItem0 | SetBreakpointsBreakpointsItem1]

@@ -8,6 +8,10 @@ from typing import ClassVar
 Emit = Callable[[str, object], None]
 """``emit(port, value)``: sends one message on an out port (``None`` sends nothing)."""
 
+TransitionHook = Callable[[int, str, str], None]
+"""``hook(index, source, target)``: an automaton took its transition ``index`` (0-based, in the
+automaton's order of transitions) from state path ``source`` to state path ``target``."""
+
 
 class Behavior:
     """Base class of generated behaviors.
@@ -27,11 +31,19 @@ class Behavior:
         self._params: Mapping[str, object] = params or {}
         self._delay_hook: Callable[[], None] | None = None
         self._delay_done = False
+        self._transition_hook: TransitionHook | None = None
 
     # -- the platform's side ------------------------------------------------------------
     def set_delay_hook(self, hook: Callable[[], None]) -> None:
         """Called by the platform: ``hook`` sends the initial tick of every delayed out port."""
         self._delay_hook = hook
+
+    def set_transition_hook(self, hook: TransitionHook | None) -> None:
+        """Called by the platform: ``hook`` hears of every transition taken (``/maa/transitions``).
+
+        Observing only: the hook must not emit on ports (stream semantics stay as they are).
+        """
+        self._transition_hook = hook
 
     def start(self) -> None:
         """Runs :meth:`init` and makes sure the delay point was passed exactly once."""
@@ -65,12 +77,24 @@ class Behavior:
         state = self.current_state() if parents is not None else None
         if state is None or parents is None:
             return None
+        return self._path_of(state, parents)
+
+    @staticmethod
+    def _path_of(state: str, parents: Mapping[str, str | None]) -> str:
+        """The dotted path of a state from its top state."""
         path = [state]
         parent = parents.get(state)
         while parent is not None and len(path) <= len(parents):
             path.append(parent)
             parent = parents.get(parent)
         return ".".join(reversed(path))
+
+    def _taken(self, index: int, source: str) -> None:
+        """Called by a generated automaton after its transition ``index`` fired in state ``source``."""
+        hook = self._transition_hook
+        if hook is not None:
+            parents: Mapping[str, str | None] = getattr(type(self), "_PARENT", {})
+            hook(index, self._path_of(source, parents), self.state_path() or "")
 
     def _emit(self, port: str, value: object) -> None:
         if value is not None:

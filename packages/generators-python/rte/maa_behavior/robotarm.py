@@ -9,7 +9,7 @@ joint positions through an :class:`Arm`, emits joint targets and gripper command
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from enum import Enum
 from typing import ClassVar
@@ -58,6 +58,10 @@ class Gripper:
 
 
 Step = Move | Gripper
+
+StepHook = Callable[[str, int, int, str], None]
+"""``hook(program, step, line, text)``: a program started its statement ``step`` (0-based), which is
+at ``line`` (1-based) of its file and reads ``text``."""
 
 
 @dataclass
@@ -115,6 +119,9 @@ class RobotArmExecutor(Behavior):
     TIMING = "sync"
     PROGRAMS: ClassVar[Mapping[str, tuple[Step, ...]]] = {}
     COMMANDS: ClassVar[Mapping[str, str]] = {}
+    #: the programs' file (relative to the model root) and (line, source) of every step (generated; empty in older builds)
+    FILE: ClassVar[str] = ""
+    SOURCES: ClassVar[Mapping[str, tuple[tuple[int, str], ...]]] = {}
     STATUS: ClassVar[type[Enum] | None] = None
     CMD_PORT: ClassVar[str] = "cmd"
     STATUS_PORT: ClassVar[str] = "status"
@@ -127,6 +134,11 @@ class RobotArmExecutor(Behavior):
         self.program: str | None = None
         self._steps: list[Step] = []
         self._active: Step | None = None
+        self._step_hook: StepHook | None = None
+
+    def set_step_hook(self, hook: StepHook | None) -> None:
+        """Called by the platform: ``hook`` hears of every statement a program starts (``/maa/program_steps``)."""
+        self._step_hook = hook
 
     def _status(self, name: str) -> None:
         value: object = self.STATUS[name] if self.STATUS is not None else name
@@ -171,6 +183,14 @@ class RobotArmExecutor(Behavior):
             if not self._start(self._steps[0]):
                 return  # waits for a port value
             self._active = self._steps.pop(0)
+            if self._step_hook is not None and self.program is not None:
+                self._started(self.program, len(self.PROGRAMS[self.program]) - len(self._steps) - 1)
+
+    def _started(self, program: str, step: int) -> None:
+        assert self._step_hook is not None
+        sources = self.SOURCES.get(program, ())
+        line, text = sources[step] if step < len(sources) else (1, "")
+        self._step_hook(program, step, line, text)
 
     def _joint(self, source: JointSource, current: float) -> float | None:
         if isinstance(source, Fixed):

@@ -29,7 +29,7 @@ from typing import Any, ClassVar
 
 import rclpy
 from maa_behavior import Behavior, Emit
-from maa_behavior.robotarm import Arm
+from maa_behavior.robotarm import Arm, RobotArmExecutor
 from maa_ros2.arm import RosArm
 from maa_ros2.ports import PortCodec
 from rclpy.executors import ExternalShutdownException
@@ -58,6 +58,21 @@ STATES_QOS = QoSProfile(
     reliability=ReliabilityPolicy.RELIABLE,
     durability=DurabilityPolicy.TRANSIENT_LOCAL,
 )
+
+
+#: The transitions taken and the RobotArm statements started (docs/generating-ros2.md, "Traces"):
+#: std_msgs/String, data = JSON ``{"node", "from", "to", "index"}`` and ``{"node", "program", "step",
+#: "line", "text", "file"}``, one message per event in the period it happens; reliable and volatile.
+TRANSITIONS_TOPIC = "/maa/transitions"
+PROGRAM_STEPS_TOPIC = "/maa/program_steps"
+EVENTS_QOS = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=100, reliability=ReliabilityPolicy.RELIABLE)
+
+
+def json_message(data: Mapping[str, object]) -> String:
+    """A std_msgs/String with ``data`` as JSON."""
+    msg = String()
+    msg.data = json.dumps(data)
+    return msg
 
 
 def state_message(node: str, state: str) -> String:
@@ -167,6 +182,7 @@ class ComponentNode(Node):
         if isinstance(getattr(self.behavior, "arm", None), Arm):
             # a RobotArm executor: its arm is the simulator's (or robot driver's) on ROS 2
             self.behavior.arm = RosArm(self, PORT_QOS)  # type: ignore[attr-defined]
+        self._trace_events()
         self.behavior.start()
         self._maa_delay_passed = True
         self._maa_state: str | None = None
@@ -174,6 +190,26 @@ class ComponentNode(Node):
             self.create_publisher(String, STATES_TOPIC, STATES_QOS) if self.behavior.state_path() is not None else None
         )
         self.slice_timer = self.create_timer(self.period, self._on_period)
+
+    def _trace_events(self) -> None:
+        """Publishes the automaton's transitions and the RobotArm program's steps as they happen."""
+        node = self.get_fully_qualified_name()
+        if getattr(type(self.behavior), "_PARENT", None) is not None:
+            transitions = self.create_publisher(String, TRANSITIONS_TOPIC, EVENTS_QOS)
+
+            def taken(index: int, source: str, target: str) -> None:
+                transitions.publish(json_message({"node": node, "from": source, "to": target, "index": index}))
+
+            self.behavior.set_transition_hook(taken)
+        arm = self.behavior
+        if isinstance(arm, RobotArmExecutor):
+            steps = self.create_publisher(String, PROGRAM_STEPS_TOPIC, EVENTS_QOS)
+
+            def started(program: str, step: int, line: int, text: str) -> None:
+                data = {"node": node, "program": program, "step": step, "line": line, "text": text, "file": arm.FILE}
+                steps.publish(json_message(data))
+
+            arm.set_step_hook(started)
 
     # -- modes ------------------------------------------------------------------------------
     def active(self) -> bool:

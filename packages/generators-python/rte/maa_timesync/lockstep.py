@@ -13,6 +13,7 @@ from collections.abc import Callable, Mapping
 from enum import Enum
 from typing import Any
 
+from maa_behavior.behavior import Behavior
 from maa_behavior.robotarm import Arm, RobotArmExecutor
 from maa_timesync.modes import ModeInstance
 from maa_timesync.runtime import TICK, ComponentType, System
@@ -94,6 +95,10 @@ class SimulatorArm(Arm):
 #: The topic of the automaton states (docs/ide.md, "Live values").
 STATES_TOPIC = "/maa/automaton_states"
 STATES_TYPE = "std_msgs/msg/String"
+#: The transitions taken (``{"node", "from", "to", "index"}``) and the RobotArm statements started
+#: (``{"node", "program", "step", "line", "text", "file"}``), JSON in std_msgs/String (docs/generating-timesync.md).
+TRANSITIONS_TOPIC = "/maa/transitions"
+PROGRAM_STEPS_TOPIC = "/maa/program_steps"
 
 
 def port_message(value: object) -> JsonMessage:
@@ -176,6 +181,10 @@ class LockstepApp:
                 if entry is not None:
                     self._observed.append((entry[0], inst.observers.setdefault(port, [])))
         self._states: dict[str, str] | None = None
+        self._events: dict[str, list[JsonMessage]] = {}
+        for inst in system.instances:
+            if inst.behavior is not None:
+                self._observe_events(inst.behavior, self.node_names.get(".".join(inst.path), ".".join(inst.path)))
         system.init()
         # live states: the state path of every automaton and the mode of every mode component
         self._automata: list[tuple[str, Callable[[], str | None]]] = []
@@ -186,6 +195,23 @@ class LockstepApp:
             elif inst.behavior is not None and inst.behavior.state_path() is not None:
                 self._automata.append((node, inst.behavior.state_path))
         return system
+
+    def _observe_events(self, behavior: Behavior, node: str) -> None:
+        """Collects the behavior's transitions and program steps for the slice's result."""
+        events = self._events
+
+        def taken(index: int, source: str, target: str) -> None:
+            data = {"node": node, "from": source, "to": target, "index": index}
+            events.setdefault(TRANSITIONS_TOPIC, []).append({"data": json.dumps(data)})
+
+        def started(program: str, step: int, line: int, text: str) -> None:
+            data = {"node": node, "program": program, "step": step, "line": line, "text": text, "file": file}
+            events.setdefault(PROGRAM_STEPS_TOPIC, []).append({"data": json.dumps(data)})
+
+        behavior.set_transition_hook(taken)
+        file = getattr(behavior, "FILE", "")
+        if isinstance(behavior, RobotArmExecutor):
+            behavior.set_step_hook(started)
 
     def reset(self) -> None:
         """Restarts the application in its initial state."""
@@ -210,6 +236,9 @@ class LockstepApp:
         self.system.run(1)
         out = _PLATFORM.outbox
         _PLATFORM.outbox = {}
+        if self._events:
+            out.update(self._events)
+            self._events.clear()
         if self.port_topics:
             out.update(fed)
             for topic, items in self._observed:
@@ -241,4 +270,6 @@ class LockstepApp:
         result = {topic: type_name for topic, type_name in self.port_topics.values()}
         if self.port_topics:
             result[STATES_TOPIC] = STATES_TYPE
+            result[TRANSITIONS_TOPIC] = STATES_TYPE
+            result[PROGRAM_STEPS_TOPIC] = STATES_TYPE
         return result

@@ -74,7 +74,7 @@ export function automatonClassView(automaton: Automaton, spec: ClassSpec, import
     // transitions: the first enabled one fires
     const sync = spec.timing === 'sync';
     const transitions: TransitionView[] = [];
-    for (const t of allTransitions(automaton)) {
+    for (const [index, t] of allTransitions(automaton).entries()) {
         const source = sourceOf(t);
         const target = targetOf(t);
         if (!source || !target) throw new GenerationError('a transition with an unresolved state cannot be translated', t);
@@ -88,7 +88,7 @@ export function automatonClassView(automaton: Automaton, spec: ClassSpec, import
         }
         if (t.guard) conditions.push(tr.expr(t.guard));
         if (t.$type === 'InternalTransition') {
-            transitions.push({ conditions, internal: true, exitUntil: null, action: t.action ? tr.stmt(t.action) : [], entered: [] });
+            transitions.push({ index, conditions, internal: true, exitUntil: null, action: t.action ? tr.stmt(t.action) : [], entered: [] });
             continue;
         }
         const sp = statePath(source);
@@ -99,7 +99,7 @@ export function automatonClassView(automaton: Automaton, spec: ClassSpec, import
         const exitUntil = common > 0 ? sp[common - 1].name : null;
         const action = t.action ? tr.stmt(t.action) : [];
         const entered = [...tp.slice(common), ...initialChain(target)].map((s) => s.name);
-        transitions.push({ conditions, internal: false, exitUntil, action, entered });
+        transitions.push({ index, conditions, internal: false, exitUntil, action, entered });
     }
     const ins = spec.ports.filter((p) => p.direction === 'in');
     return {

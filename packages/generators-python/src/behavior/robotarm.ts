@@ -1,5 +1,6 @@
 import type { BehaviorGenerator, BehaviorGeneratorFactory, BehaviorView, RuleViolation, WellFormednessRule } from '@maa/generator-core';
 import { GenerationError } from '@maa/generator-core/node';
+import type { AstNode } from 'langium';
 import {
     commandTable,
     isEmbedded,
@@ -12,6 +13,7 @@ import {
 import { renderLines } from '../python/templates.js';
 import { Imports, typeRef, specFrom } from './common.js';
 import { behaviorModule, moduleText } from './automata.js';
+import { modelFile } from './automata-table.js';
 
 const str = (s: string): string => JSON.stringify(s);
 
@@ -29,6 +31,14 @@ function joint(j: JointSource): string {
         default:
             return `FromPort(${str(j.name)}, ${num(j.toSI)})`;
     }
+}
+
+/** A statement's `(line, "source")` tuple for `/maa/program_steps`: its 1-based line and its text on one line. */
+function stepSource(node: AstNode): string {
+    const cst = node.$cstNode;
+    const line = cst ? cst.range.start.line + 1 : 1;
+    const text = (cst?.text ?? '').replace(/\s+/g, ' ').trim();
+    return `(${line}, ${str(text)})`;
 }
 
 /** robotarm.Translatable: the executor needs the embedded protocol (cmd enum, status enum). */
@@ -69,9 +79,10 @@ export function robotArmGenerator(lineLength?: number): BehaviorGenerator {
             const statusPort = spec.ports.find((p) => p.name === 'status');
             const statusDecl = statusPort?.type.kind === 'object' ? statusPort.type.decl : undefined;
             const statusType = statusDecl ? typeRef(ctx.datatypes, imports, statusDecl) : 'None';
-            const programs: Array<{ name: string; steps: string[] }> = [];
+            const programs: Array<{ name: string; steps: string[]; sources: string[] }> = [];
             let stepKinds = new Set<string>();
             for (const p of programsOf(body)) {
+                const sources = programSteps(p).map((s) => stepSource(s.node));
                 const steps = programSteps(p).map((s) => {
                     if (s.kind !== 'move') {
                         stepKinds.add('Gripper');
@@ -82,7 +93,7 @@ export function robotArmGenerator(lineLength?: number): BehaviorGenerator {
                         stepKinds.add(j.kind === 'fixed' ? 'Fixed' : j.kind === 'keep' ? 'Keep' : 'FromPort');
                     return `Move(${joint(s.angle)}, ${joint(s.height)}${s.target ? `, ${str(s.target.name)}` : ''})`;
                 });
-                programs.push({ name: p.name, steps });
+                programs.push({ name: p.name, steps, sources });
             }
             stepKinds = new Set([...stepKinds].sort());
             for (const k of stepKinds) imports.add('maa_behavior.robotarm', k);
@@ -92,6 +103,7 @@ export function robotArmGenerator(lineLength?: number): BehaviorGenerator {
             const cls = renderLines('behavior/robotarm.njk', {
                 className: spec.className,
                 qualifiedName: component.qualifiedName,
+                file: modelFile(body, component.packageName),
                 inPorts: spec.ports.filter((p) => p.direction === 'in').map((p) => p.name),
                 outPorts: outs.map((p) => p.name),
                 delayed: outs.filter((p) => p.delayed).map((p) => p.name),

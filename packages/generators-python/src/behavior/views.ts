@@ -57,6 +57,8 @@ export interface StateActionsView {
 
 /** A transition of `_fire`. */
 export interface TransitionView {
+    /** Its 0-based position in allTransitions (the `index` of `/maa/transitions`). */
+    readonly index: number;
     /** Python conditions joined by `and`. */
     readonly conditions: readonly string[];
     /** An internal transition runs its action only. */
@@ -96,13 +98,18 @@ export interface AutomatonClassView {
 export interface RobotArmClassView {
     readonly className: string;
     readonly qualifiedName: string;
+    /** The programs' file relative to the model root (`/maa/program_steps`). */
+    readonly file: string;
     readonly inPorts: readonly string[];
     readonly outPorts: readonly string[];
     readonly delayed: readonly string[];
     /** The status enum's Python name, or None. */
     readonly statusType: string;
-    /** Programs by name, each step a Python expression (`Move(...)`, `Gripper(...)`). */
-    readonly programs: ReadonlyArray<{ readonly name: string; readonly steps: readonly string[] }>;
+    /**
+     * Programs by name, each step a Python expression (`Move(...)`, `Gripper(...)`), and each
+     * step's source as a Python tuple `(line, "text")`.
+     */
+    readonly programs: ReadonlyArray<{ readonly name: string; readonly steps: readonly string[]; readonly sources: readonly string[] }>;
     /** Command constant -> program name. */
     readonly commands: ReadonlyArray<{ readonly constant: string; readonly program: string }>;
 }

@@ -4,6 +4,7 @@
  * topics and node names it publishes under.
  */
 import type { ArchitectureModel, ComponentGenerationContext, PortView } from '@maa/generator-core';
+import { automatonEntry } from '../behavior/automata-table.js';
 import { Imports, typeRef } from '../behavior/common.js';
 import { pyName } from '../python/expressions.js';
 import { renderPython } from '../python/templates.js';
@@ -70,24 +71,28 @@ function componentsByName(architecture: ArchitectureModel, imports: Imports): Ap
  * Live values in the simulator's lock-step mode: every port value under its ROS 2 topic name (the
  * ros2 generator's rule), so the IDE sees the same topics in both modes: the root's in ports and
  * the out ports of atomic instances. Mode components have a live state too, their mode, under
- * their instance's node path as on ROS 2.
+ * their instance's node path as on ROS 2. The automata table (`AUTOMATA`) lists the automaton
+ * instances with their states and transitions for the IDE.
  */
-function liveTopics(architecture: ArchitectureModel): Pick<AppModuleView, 'portTopics' | 'nodeNames'> {
+function liveTopics(architecture: ArchitectureModel): Pick<AppModuleView, 'portTopics' | 'nodeNames' | 'automata'> {
     const rootNs = `/${rosName(architecture.root.name)}`;
     const portTopics: AppModuleView['portTopics'][number][] = [];
     const nodeNames: AppModuleView['nodeNames'][number][] = [];
+    const automata: AppModuleView['automata'][number][] = [];
     for (const p of architecture.root.ports.filter((x) => x.direction === 'in')) {
         portTopics.push({ key: p.name, topic: `${rootNs}/${rosName(p.name)}`, type: topicType(p) });
     }
     for (const inst of architecture.instances.filter((i) => i.component.atomic || i.component.modes)) {
         const node = [rootNs, ...inst.path.map(rosName)].join('/');
         nodeNames.push({ path: inst.path.join('.'), node });
+        const automaton = automatonEntry(inst, node);
+        if (automaton) automata.push({ path: automaton.instancePath, json: JSON.stringify(automaton) });
         if (!inst.component.atomic) continue;
         for (const p of inst.component.ports.filter((x) => x.direction === 'out')) {
             portTopics.push({ key: `${inst.path.join('.')}.${p.name}`, topic: `${node}/${rosName(p.name)}`, type: topicType(p) });
         }
     }
-    return { portTopics, nodeNames };
+    return { portTopics, nodeNames, automata };
 }
 
 /** Primitives travel as their std_msgs type; enums as their constant name and classes as JSON, both in std_msgs/String. */

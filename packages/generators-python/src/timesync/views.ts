@@ -80,6 +80,8 @@ export interface AppModuleView {
     readonly enums: ReadonlyArray<{ readonly name: string; readonly type: string }>;
     readonly portTopics: ReadonlyArray<{ readonly key: string; readonly topic: string; readonly type: string }>;
     readonly nodeNames: ReadonlyArray<{ readonly path: string; readonly node: string }>;
+    /** The automata table by instance path: each entry (@maa/protocol's AutomatonEntry) as JSON. */
+    readonly automata: ReadonlyArray<{ readonly path: string; readonly json: string }>;
 }
 
 /** The head of a class diagram's module. */

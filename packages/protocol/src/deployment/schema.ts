@@ -10,6 +10,7 @@
  */
 import { Type, type Static } from '@sinclair/typebox';
 import { DEPLOYMENT_FORMAT } from '../formats.js';
+import { AutomatonEntry } from '../topics/schema.js';
 
 export { DEPLOYMENT_FORMAT } from '../formats.js';
 
@@ -141,6 +142,8 @@ export const Deployment = Type.Object(
             ),
         ),
         nodes: Type.Array(DeploymentNode, { minItems: 1, errorMessage: 'nodes must be a non-empty list' }),
+        /** The automata of the application with their states and transitions (the IDE's GET /api/sim/topics). */
+        automata: Type.Optional(Type.Array(AutomatonEntry)),
     },
     {
         $id: 'urn:maa:protocol:deployment',

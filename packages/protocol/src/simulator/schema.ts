@@ -59,6 +59,72 @@ export const SIMULATOR_TOPICS: readonly SimulatorTopic[] = [
 /** The topic of the automaton states of a run: a JSON object `{node: state}` in a std_msgs/String. */
 export const AUTOMATON_STATES_TOPIC = '/maa/automaton_states';
 
+/**
+ * The topic of the transitions taken (std_msgs/String, `data` = JSON {@link TransitionEvent}), one
+ * message per transition in the period it is taken, on both platforms.
+ */
+export const TRANSITIONS_TOPIC = '/maa/transitions';
+
+/** A transition taken by the automaton of a node (the `data` of a `/maa/transitions` message). */
+export const TransitionEvent = Type.Object(
+    {
+        /** The node of the automaton's instance (`/toast_service_robot/ctrl`), as on `/maa/automaton_states`. */
+        node: Type.String({ pattern: '^/' }),
+        /** The state path before the transition (the innermost active state, as on `/maa/automaton_states`). */
+        from: Type.String(),
+        /** The state path after it. */
+        to: Type.String(),
+        /** The transition's 0-based position in the automaton's transitions (the automata table's `index`). */
+        index: Type.Integer({ minimum: 0 }),
+    },
+    { $id: 'urn:maa:protocol:transition-event', title: 'TransitionEvent', description: 'a message of /maa/transitions' },
+);
+export type TransitionEvent = Static<typeof TransitionEvent>;
+
+/** The topic of RobotArm program steps (std_msgs/String, `data` = JSON {@link ProgramStepEvent}), one message per statement started. */
+export const PROGRAM_STEPS_TOPIC = '/maa/program_steps';
+
+/** A RobotArm program starting one of its statements (the `data` of a `/maa/program_steps` message). */
+export const ProgramStepEvent = Type.Object(
+    {
+        node: Type.String({ pattern: '^/' }),
+        /** The program's name. */
+        program: Type.String(),
+        /** The statement's 0-based index in the program. */
+        step: Type.Integer({ minimum: 0 }),
+        /** Its 1-based line in the program's file. */
+        line: Type.Integer({ minimum: 1 }),
+        /** Its source, one line (whitespace collapsed). */
+        text: Type.String(),
+        /** The program's file relative to the model root (`toast/ArmController.arc`). */
+        file: Type.Optional(Type.String()),
+    },
+    { $id: 'urn:maa:protocol:program-step-event', title: 'ProgramStepEvent', description: 'a message of /maa/program_steps' },
+);
+export type ProgramStepEvent = Static<typeof ProgramStepEvent>;
+
+/** A breakpoint of a lock-step run: a state entered, or a transition taken (state names or paths). */
+export const Breakpoint = Type.Union([
+    Type.Object({ node: Type.String({ pattern: '^/' }), state: Type.String({ minLength: 1 }) }, { additionalProperties: false }),
+    Type.Object(
+        { node: Type.String({ pattern: '^/' }), from: Type.String({ minLength: 1 }), to: Type.String({ minLength: 1 }) },
+        { additionalProperties: false },
+    ),
+]);
+export type Breakpoint = Static<typeof Breakpoint>;
+
+/** The request of the rosbridge service `/sim/set_breakpoints`: the whole set (an empty list clears them). */
+export const SetBreakpoints = Type.Object(
+    { breakpoints: Type.Array(Breakpoint, { maxItems: 1000 }) },
+    {
+        $id: 'urn:maa:protocol:set-breakpoints',
+        title: 'SetBreakpoints',
+        description: 'the request of /sim/set_breakpoints',
+        additionalProperties: false,
+    },
+);
+export type SetBreakpoints = Static<typeof SetBreakpoints>;
+
 /** `/sim/get_status` (docs/simulation.md "Services"). */
 export const SimulatorStatus = Type.Object(
     {
@@ -83,6 +149,8 @@ export const SimulatorStatus = Type.Object(
         nodes: Type.Array(Type.Record(Type.String(), Type.Unknown())),
         /** Node → active state (the latched `/maa/automaton_states`). */
         automaton_states: Type.Record(Type.String(), Type.String()),
+        /** The breakpoint the run paused at (until it resumes, steps or resets); null otherwise. */
+        breakpoint: Type.Optional(Type.Union([Breakpoint, Type.Null()])),
         events: Type.Array(Type.Record(Type.String(), Type.Unknown())),
         rosbridge: Type.Union([Type.String(), Type.Null()]),
         viser: Type.Union([Type.String(), Type.Null()]),

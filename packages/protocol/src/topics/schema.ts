@@ -2,7 +2,9 @@
  * The port topics of a generated application (`GET /api/sim/topics`): which ROS topic carries
  * which port, read by the backend from what the generator wrote (`deployment.json` of a ros2
  * platform, the `PORT_TOPICS`/`NODE_NAMES` tables of a timesync platform's app module), so the
- * IDE never guesses a port back from a snake-case topic name.
+ * IDE never guesses a port back from a snake-case topic name. It also lists the automata of the
+ * application (their states and transitions with source positions), the table the trace panels
+ * and breakpoints resolve `/maa/transitions` and `/maa/automaton_states` against.
  */
 import { Type, type Static } from '@sinclair/typebox';
 import { SimMode } from '../http/sim.js';
@@ -33,6 +35,46 @@ export const InstanceNode = Type.Object({
 });
 export type InstanceNode = Static<typeof InstanceNode>;
 
+/** A state of an automaton in the automata table. */
+export const AutomatonStateEntry = Type.Object({
+    /** Its path from the top state (`Outer.Inner`), as on `/maa/automaton_states`. */
+    path: Type.String({ minLength: 1 }),
+    /** 1-based line of its declaration in the automaton's file. */
+    line: Type.Integer({ minimum: 1 }),
+});
+export type AutomatonStateEntry = Static<typeof AutomatonStateEntry>;
+
+/** A transition of an automaton in the automata table. */
+export const AutomatonTransitionEntry = Type.Object({
+    /** 0-based position in the automaton's transitions (@maa/language-automata's allTransitions), the `index` of `/maa/transitions`. */
+    index: Type.Integer({ minimum: 0 }),
+    /** Path of the declared source state. */
+    from: Type.String({ minLength: 1 }),
+    /** Path of the declared target state (the source's for an internal transition). */
+    to: Type.String({ minLength: 1 }),
+    /** `trigger [guard] / action` as the diagram shows it (`""` for none). */
+    label: Type.String(),
+    /** 1-based line and column of the transition in the automaton's file. */
+    line: Type.Integer({ minimum: 1 }),
+    column: Type.Integer({ minimum: 1 }),
+});
+export type AutomatonTransitionEntry = Static<typeof AutomatonTransitionEntry>;
+
+/** One automaton instance of a generated application: a component instance with an automaton, or a mode component's mode automaton. */
+export const AutomatonEntry = Type.Object({
+    /** The instance path (`ctrl`, `unit.ctrl`). */
+    instancePath: Type.String(),
+    /** Its ROS node (`/toast_service_robot/ctrl`), the `node` of `/maa/transitions` and the key of `/maa/automaton_states`. */
+    node: Type.String({ pattern: '^/' }),
+    /** Qualified name of the component type. */
+    component: Type.String({ minLength: 1 }),
+    /** The component's file, relative to the model root (`toast/Controller.arc`). */
+    file: Type.String(),
+    states: Type.Array(AutomatonStateEntry),
+    transitions: Type.Array(AutomatonTransitionEntry),
+});
+export type AutomatonEntry = Static<typeof AutomatonEntry>;
+
 export const TopicMapAnswer = Type.Object(
     {
         app: Type.String(),
@@ -40,6 +82,8 @@ export const TopicMapAnswer = Type.Object(
         mode: SimMode,
         ports: Type.Array(PortTopicEntry),
         nodes: Type.Array(InstanceNode),
+        /** The automata of the application (absent from an answer of a build generated before the table existed). */
+        automata: Type.Optional(Type.Array(AutomatonEntry)),
     },
     { $id: 'urn:maa:protocol:topic-map', title: 'TopicMap', description: 'Port topics of a generated application (GET /api/sim/topics)' },
 );

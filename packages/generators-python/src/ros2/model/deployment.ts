@@ -1,4 +1,4 @@
-import type { Deployment, DeploymentNode, PortTopic } from '@maa/protocol';
+import type { AutomatonEntry, Deployment, DeploymentNode, PortTopic } from '@maa/protocol';
 import { DEPLOYMENT_FORMAT } from '@maa/protocol/formats';
 import {
     publishedTopics,
@@ -8,6 +8,7 @@ import {
     type Parameter,
     type Ros2Application,
 } from './model.js';
+import { automatonEntry } from '../../behavior/automata-table.js';
 
 /**
  * `deployment.json` (the contract `Deployment` of `@maa/protocol`, docs/simulation.md): the
@@ -21,7 +22,16 @@ export function deploymentOf(app: Ros2Application, application: string): Deploym
         python_path: ['.'],
         env: {},
         nodes: [...app.nodes, ...app.managers].map(deploymentNode),
+        automata: automataOf(app),
     };
+}
+
+/** The automata table (the IDE's trace and breakpoints): the nodes of instances with an automaton. */
+function automataOf(app: Ros2Application): AutomatonEntry[] {
+    return app.nodes.flatMap((n) => {
+        const entry = automatonEntry(n.instance, `${n.namespace === '/' ? '' : n.namespace}/${n.name}`);
+        return entry ? [entry] : [];
+    });
 }
 
 function deploymentNode(n: ComponentNode | ModeManagerNode): DeploymentNode {

@@ -36,6 +36,10 @@ NODE_NAMES: dict[str, str] = {
     "t": "/gearbox/t",
 }
 
+#: The automata table (@maa/protocol AutomatonEntry, for the IDE): instance path -> its entry as JSON.
+AUTOMATA: dict[str, str] = {
+}
+
 
 def create_controller(parameters: Mapping[str, object]) -> LockstepApp:
     """The simulator's lock-step factory (lockstep.json)."""

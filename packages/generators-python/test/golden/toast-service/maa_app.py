@@ -58,6 +58,12 @@ NODE_NAMES: dict[str, str] = {
     "arm": "/toast_service_robot/arm",
 }
 
+#: The automata table (@maa/protocol AutomatonEntry, for the IDE): instance path -> its entry as JSON.
+AUTOMATA: dict[str, str] = {
+    "ctrl": "{\"instancePath\":\"ctrl\",\"node\":\"/toast_service_robot/ctrl\",\"component\":\"toast.Controller\",\"file\":\"toast/Controller.arc\",\"states\":[{\"path\":\"Idle\",\"line\":16},{\"path\":\"Loading\",\"line\":17},{\"path\":\"Toasting\",\"line\":18},{\"path\":\"Serving\",\"line\":19}],\"transitions\":[{\"index\":0,\"from\":\"Idle\",\"to\":\"Loading\",\"label\":\"[distance < threshold] / { arm = ArmProgram.LOAD_BREAD; }\",\"line\":22,\"column\":5},{\"index\":1,\"from\":\"Loading\",\"to\":\"Toasting\",\"label\":\"[armStatus == ArmStatus.DONE] / { toaster = ToasterCmd.START; }\",\"line\":23,\"column\":5},{\"index\":2,\"from\":\"Toasting\",\"to\":\"Serving\",\"label\":\"[color == ToastColor.GOLDEN] / { toaster = ToasterCmd.STOP; arm = ArmProgram.PICKUP_AND_DEPLOY; }\",\"line\":24,\"column\":5},{\"index\":3,\"from\":\"Serving\",\"to\":\"Idle\",\"label\":\"[armStatus == ArmStatus.DONE] / { served++; }\",\"line\":25,\"column\":5}]}",
+    "toasterCtrl": "{\"instancePath\":\"toasterCtrl\",\"node\":\"/toast_service_robot/toaster_ctrl\",\"component\":\"toast.ToasterController\",\"file\":\"toast/ToasterController.arc\",\"states\":[{\"path\":\"Off\",\"line\":13},{\"path\":\"On\",\"line\":14}],\"transitions\":[{\"index\":0,\"from\":\"On\",\"to\":\"On\",\"label\":\"[cmd != ToasterCmd.STOP && slices < maxSlices] / { slices++; }\",\"line\":19,\"column\":7},{\"index\":1,\"from\":\"Off\",\"to\":\"On\",\"label\":\"[cmd == ToasterCmd.START]\",\"line\":22,\"column\":5},{\"index\":2,\"from\":\"On\",\"to\":\"Off\",\"label\":\"[cmd == ToasterCmd.STOP]\",\"line\":23,\"column\":5},{\"index\":3,\"from\":\"On\",\"to\":\"Off\",\"label\":\"[slices >= maxSlices]\",\"line\":24,\"column\":5}]}",
+}
+
 
 def create_controller(parameters: Mapping[str, object]) -> LockstepApp:
     """The simulator's lock-step factory (lockstep.json)."""

@@ -68,12 +68,14 @@ class LampBehavior(Behavior):
         if state in ("On", "Dim", "Bright") and event == "level" and (self.level > 5):
             self.presses = (self.presses + 1)
             self._emit("log", "internal")
+            self._taken(0, state)
             return True
         if state == "Dim" and event is None:
             self._exit_until("On")
             self._emit("log", "brighter")
             self._entry("Bright")
             self._state = "Bright"
+            self._taken(1, state)
             return True
         if state == "Off" and event == "press" and self.press:
             self._exit_until(None)
@@ -81,11 +83,13 @@ class LampBehavior(Behavior):
             self._entry("On")
             self._entry("Dim")
             self._state = "Dim"
+            self._taken(2, state)
             return True
         if state in ("On", "Dim", "Bright") and event == "press" and self.press:
             self._exit_until(None)
             self._entry("Off")
             self._state = "Off"
+            self._taken(3, state)
             return True
         return False
 

@@ -43,6 +43,34 @@ class ArmControllerBehavior(RobotArmExecutor):
             Move(Keep(), Fixed(0.3), "top"),
         ),
     }
+    #: the programs' file (relative to the model root) and (1-based line, source) of every step (/maa/program_steps)
+    FILE = "toast/ArmController.arc"
+    SOURCES: ClassVar[Mapping[str, tuple[tuple[int, str], ...]]] = {
+        "LoadBread": (
+            (22, "move top;"),
+            (22, "open;"),
+            (22, "move aboveBreadbox;"),
+            (22, "move breadbox;"),
+            (22, "close;"),
+            (22, "move top;"),
+            (23, "move aboveToaster;"),
+            (23, "move toaster;"),
+            (23, "open;"),
+            (23, "move top;"),
+        ),
+        "PickupAndDeploy": (
+            (29, "move top;"),
+            (29, "open;"),
+            (29, "move aboveToaster;"),
+            (29, "move toaster;"),
+            (29, "close;"),
+            (29, "move top;"),
+            (30, "move angle 30cm;"),
+            (30, "move angle height;"),
+            (30, "open;"),
+            (30, "move top;"),
+        ),
+    }
     COMMANDS: ClassVar[Mapping[str, str]] = {
         "LOAD_BREAD": "LoadBread",
         "PICKUP_AND_DEPLOY": "PickupAndDeploy",

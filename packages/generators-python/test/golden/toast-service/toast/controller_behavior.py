@@ -66,12 +66,14 @@ class ControllerBehavior(Behavior):
             self._emit("arm", ArmProgram.LOAD_BREAD)
             self._entry("Loading")
             self._state = "Loading"
+            self._taken(0, state)
             return True
         if state == "Loading" and (self.armStatus == ArmStatus.DONE):
             self._exit_until(None)
             self._emit("toaster", ToasterCmd.START)
             self._entry("Toasting")
             self._state = "Toasting"
+            self._taken(1, state)
             return True
         if state == "Toasting" and (self.color == ToastColor.GOLDEN):
             self._exit_until(None)
@@ -79,12 +81,14 @@ class ControllerBehavior(Behavior):
             self._emit("arm", ArmProgram.PICKUP_AND_DEPLOY)
             self._entry("Serving")
             self._state = "Serving"
+            self._taken(2, state)
             return True
         if state == "Serving" and (self.armStatus == ArmStatus.DONE):
             self._exit_until(None)
             self.served = (self.served + 1)
             self._entry("Idle")
             self._state = "Idle"
+            self._taken(3, state)
             return True
         return False
 

@@ -63,21 +63,25 @@ class ToasterControllerBehavior(Behavior):
         state = self._state
         if state == "On" and ((self.cmd != ToasterCmd.STOP) and (self.slices < self.maxSlices)):
             self.slices = (self.slices + 1)
+            self._taken(0, state)
             return True
         if state == "Off" and (self.cmd == ToasterCmd.START):
             self._exit_until(None)
             self._entry("On")
             self._state = "On"
+            self._taken(1, state)
             return True
         if state == "On" and (self.cmd == ToasterCmd.STOP):
             self._exit_until(None)
             self._entry("Off")
             self._state = "Off"
+            self._taken(2, state)
             return True
         if state == "On" and (self.slices >= self.maxSlices):
             self._exit_until(None)
             self._entry("Off")
             self._state = "Off"
+            self._taken(3, state)
             return True
         return False
 

@@ -68,12 +68,14 @@ class CtrlBehavior(Behavior):
             self.count = (self.count + 1)
             self._entry("High")
             self._state = "High"
+            self._taken(0, state)
             return True
         if state == "High" and ((self.raw * self.gain) <= self.limit):
             self._exit_until(None)
             self._emit("level", Mode.SLOW)
             self._entry("Low")
             self._state = "Low"
+            self._taken(1, state)
             return True
         return False
 
