@@ -73,7 +73,12 @@ describe('the messages between the extension and the simulate webview', () => {
 });
 
 describe('the reveal message (a selected transition → its source line and diagram highlight)', () => {
-    const highlight = { component: 'toast.Controller', instancePath: 'ctrl', state: 'Serving', transition: { from: 'Toasting', to: 'Serving', index: 3 } };
+    const highlight = {
+        component: 'toast.Controller',
+        instancePath: 'ctrl',
+        state: 'Serving',
+        transition: { from: 'Toasting', to: 'Serving', index: 3 },
+    };
 
     it('accepts a reveal with and without column and highlight, copying only its fields', () => {
         expect(parseFromWebview({ type: 'reveal', file: 'toast-service/Controller.arc', line: 12, extra: 1 })).toEqual({

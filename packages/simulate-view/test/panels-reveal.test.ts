@@ -59,6 +59,10 @@ describe('the reveal of a selected transition', () => {
     it('reveals a program step only when it names its file', () => {
         const step = { t: 1, node: '/r/arm', program: 'serve', step: 0, line: 4, text: 'open();' };
         expect(revealProgramStep(step)).toBeUndefined();
-        expect(revealProgramStep({ ...step, file: 'toast-service/serve.rap' })).toEqual({ type: 'reveal', file: 'toast-service/serve.rap', line: 4 });
+        expect(revealProgramStep({ ...step, file: 'toast-service/serve.rap' })).toEqual({
+            type: 'reveal',
+            file: 'toast-service/serve.rap',
+            line: 4,
+        });
     });
 });

@@ -66,9 +66,7 @@ export function parseAutomata(answer: unknown): AutomatonInfo[] {
             component,
             file,
             states: Array.isArray(states) ? states.map(stateOf).filter((s): s is AutomatonStateInfo => !!s) : [],
-            transitions: Array.isArray(transitions)
-                ? transitions.map(transitionOf).filter((t): t is AutomatonTransitionInfo => !!t)
-                : [],
+            transitions: Array.isArray(transitions) ? transitions.map(transitionOf).filter((t): t is AutomatonTransitionInfo => !!t) : [],
         });
     }
     return out;
