@@ -228,3 +228,18 @@ def test_cli_replay_serves_until_terminated_and_refuses_a_bad_file(
     finally:
         proc.send_signal(signal.SIGTERM)
         assert proc.wait(60) == 0
+
+
+def test_a_ros2_run_records_the_event_topics_too(toast_app_dir: Path) -> None:
+    """ROS 2 mode: no controller declares the event topics, so the recorder subscribes to them itself."""
+    from types import SimpleNamespace
+
+    from maa_sim.recorder import EVENT_TOPICS
+
+    app = SimApp(RunOptions(package=toast_app_dir, mode="ros2", rosbridge_port=None, viser_port=None))
+    app.session = SimpleNamespace(transport=object())  # type: ignore[assignment]  # only its transport is read
+    topics = dict(app._recorded_topics())
+    assert set(EVENT_TOPICS) == {"/maa/automaton_states", "/maa/transitions", "/maa/program_steps"}
+    for topic in EVENT_TOPICS:
+        assert topics[topic] == "std_msgs/msg/String"
+    assert topics["/clock"] == "rosgraph_msgs/msg/Clock"

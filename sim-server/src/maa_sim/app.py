@@ -216,7 +216,8 @@ class SimApp:
             self.session.report("warning", "supervisor", "not every node came up; starting the simulation anyway")
 
     def _recorded_topics(self) -> list[tuple[str, str]]:
-        """Every topic of the run: the simulator's, the application's port topics, the automaton states."""
+        """Every topic of the run: the simulator's, the application's port topics, its event topics
+        (automaton states, transitions, program steps)."""
         assert self.session is not None
         transport = self.session.transport
         if isinstance(transport, LocalBus):
@@ -224,7 +225,10 @@ class SimApp:
         topics = {spec.name: spec.type for spec in interface.ALL_TOPICS.values()}
         if self.deployment is not None:
             topics.update(self.deployment.topics())
-        topics[STATES_TOPIC] = "std_msgs/msg/String"
+        from .recorder import EVENT_TOPICS
+
+        for topic in EVENT_TOPICS:  # automaton states, transitions, program steps
+            topics[topic] = "std_msgs/msg/String"
         return sorted(topics.items())
 
     def _start_recording(self, path: Path) -> None:

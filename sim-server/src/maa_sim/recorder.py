@@ -28,12 +28,15 @@ from mcap_ros2.writer import Writer
 from .interface import time_message
 from .messages import JsonMessage, MessageError, normalize_type
 from .msgdefs import message_definition
-from .protocol import SimulatorRecording
+from .protocol import AUTOMATON_STATES_TOPIC, PROGRAM_STEPS_TOPIC, TRANSITIONS_TOPIC, SimulatorRecording
 from .world import ToastKitchen, classify_toast
 
 #: The scene state topic and its type (maa_sim/msg/SceneState.msg)
 SCENE_TOPIC = "/sim/scene"
 SCENE_TYPE = "maa_sim/msg/SceneState"
+#: The application's event topics (std_msgs/msg/String, JSON in `data`): recorded in ROS 2 mode
+#: too, where no controller declares them (docs/simulation.md "Recording")
+EVENT_TOPICS = (AUTOMATON_STATES_TOPIC, TRANSITIONS_TOPIC, PROGRAM_STEPS_TOPIC)
 #: At most a second of a run stays in memory: then the chunk in progress is completed and written.
 FLUSH_SECONDS = 1.0
 
