@@ -70,3 +70,19 @@ def test_bodies_and_toast_color_follow_the_simulation(view: SceneView) -> None:
     lift_body = view.frames[2]
     assert abs(float(lift_body.position[2]) - view.world.data.xpos[2][2]) < 1e-6
     assert "sim time" in view.hud.content
+
+
+def test_run_controls_standalone_and_none_when_the_ide_drives_the_run() -> None:
+    """Standalone (`maa-sim run`) the panel offers pause/resume/step/reset/speed; the IDE starts it
+    with `--viser-controls off`: then only the HUD and the camera presets, one set of controls."""
+    _, runner = lockstep_session(create_controller({}))
+    standalone = SceneView(runner, port=_free_port())
+    embedded = SceneView(runner, port=_free_port(), controls=False)
+    try:
+        assert [h.label for h in standalone.run_controls] == ["Pause", "Resume", "Step", "Reset", "Speed"]
+        assert embedded.run_controls == []
+        assert "sim time" in embedded.hud.content
+        embedded.look("Plate")  # the camera presets still work
+    finally:
+        standalone.stop()
+        embedded.stop()

@@ -5,6 +5,10 @@ commands received since the last period, steps the physics and publishes the sen
 `Runner` drives a session in a thread, paced to real time times a speed factor (or as fast as
 possible), and implements the control services: pause, resume, step, reset, speed. With a
 lock-step controller the runner calls it once per period, in the loop, synchronously.
+
+Two times: `clock`, the simulated time the application sees (`/clock`), which a reset sets back
+to 0 (a fresh run), and `elapsed`, the simulated time since the session began, which never goes
+back (pacing, the real-time factor, and the time stamps of a recording, which must not jump back).
 """
 
 from __future__ import annotations
@@ -68,13 +72,15 @@ class SimSession:
         self.steps_per_period = steps
         self.publish_outputs = publish_outputs
         self.lock = threading.RLock()
-        self.clock_offset = 0.0
+        #: the simulated time of the runs before the last reset (elapsed = this + the world's time)
+        self.elapsed_before_reset = 0.0
         self.periods = 0
         self._pending: list[tuple[str, JsonMessage]] = []
         self._pending_lock = threading.Lock()
         self.events: deque[SimEvent] = deque(maxlen=200)
         self.event_listeners: list[Callable[[SimEvent], None]] = []
-        #: called after every period with the world and the clock, under the session lock (the recorder)
+        #: called after every period with the world and the elapsed time, under the session lock
+        #: (the recorder: its time stamps must not go back at a reset)
         self.period_listeners: list[Callable[[ToastKitchen, float], None]] = []
         if isinstance(transport, LocalBus):
             for spec in (*interface.SIM_OUTPUTS, *interface.SIM_INPUTS):
@@ -87,8 +93,13 @@ class SimSession:
 
     @property
     def clock(self) -> float:
-        """The published simulation time: monotonic across resets."""
-        return self.clock_offset + self.world.time
+        """The published simulation time (`/clock`): 0 at the start and again after a reset."""
+        return self.world.time
+
+    @property
+    def elapsed(self) -> float:
+        """The simulated time since the session began: monotonic across resets."""
+        return self.elapsed_before_reset + self.world.time
 
     def report(self, level: str, source: str, message: str, **details: Any) -> SimEvent:
         event = SimEvent(self.clock, level, source, message, details)
@@ -127,7 +138,7 @@ class SimSession:
             self.periods += 1
             outputs = self.observe()
             for listener in self.period_listeners:
-                listener(self.world, self.clock)
+                listener(self.world, self.elapsed)
         if self.publish_outputs:
             self.publish(outputs)
         return outputs
@@ -141,12 +152,42 @@ class SimSession:
             transport.publish(topic, msg)
 
     def reset(self, seed: int | None = None) -> None:
-        """Back to the initial scene; the clock keeps running forward."""
+        """Back to the initial scene; the clock starts again at 0 (`elapsed` keeps counting)."""
         with self.lock:
-            self.clock_offset += self.world.time
+            self.elapsed_before_reset += self.world.time
             with self._pending_lock:
                 self._pending.clear()
             self.world.reset(seed)
+
+
+class LastValues:
+    """The last message of each topic the application sent since the start or the last reset.
+
+    A port is written when its value changes (a timesync build sends nothing in a slice without a
+    message), so a client that subscribes later, or while the run is paused, would see nothing
+    until the next change: the rosbridge endpoint sends it this message at once (docs/simulation.md).
+    Written by the loop (lock-step: the controller's outputs of each slice; ROS 2: the port topics
+    received over DDS), read by the endpoint's threads: single-key reads and writes of a dict are
+    atomic in CPython, so no lock is taken in the loop's hot path.
+    """
+
+    def __init__(self) -> None:
+        self._last: dict[str, JsonMessage] = {}
+
+    def note(self, topic: str, msg: JsonMessage) -> None:
+        self._last[topic] = msg
+
+    def note_all(self, outputs: Mapping[str, list[JsonMessage]]) -> None:
+        last = self._last
+        for topic, messages in outputs.items():
+            if messages:
+                last[topic] = messages[-1]
+
+    def get(self, topic: str) -> JsonMessage | None:
+        return self._last.get(topic)
+
+    def clear(self) -> None:
+        self._last = {}
 
 
 def _snapshot(controller: object) -> dict[str, Any] | None:
@@ -202,6 +243,8 @@ class Runner:
         #: (periods done, periods asked) of the step in progress, None when none is
         self.stepping: tuple[int, int] | None = None
         self._step_interrupted = ""
+        #: the last message of every topic the application sent, for clients that subscribe later
+        self.last_values = LastValues()
 
     # ----------------------------------------------------------------------------- one period
 
@@ -214,11 +257,12 @@ class Runner:
                 with self._injected_lock:
                     injected, self.injected = self.injected, {}
                 outputs = self._controller_step(self.controller, inputs, injected)
+                self.last_values.note_all(outputs)
                 self._emit_all(outputs)
                 self._inputs = session.advance()
         else:
             session.advance()
-        self._rtf_window.append((time.perf_counter(), session.clock))
+        self._rtf_window.append((time.perf_counter(), session.elapsed))
         if self.stop_when is not None and self.stop_when(session):
             self.finish("goal reached")
         elif self.max_sim_time is not None and session.world.time >= self.max_sim_time - 1e-9:
@@ -299,13 +343,13 @@ class Runner:
     def _loop(self) -> None:
         period = self.session.period
         start_wall = time.perf_counter()
-        start_sim = self.session.clock
+        start_sim = self.session.elapsed
         try:
             while True:
                 with self._wake:
                     while self.paused and not self._stop:
                         self._wake.wait()
-                        start_wall, start_sim = time.perf_counter(), self.session.clock
+                        start_wall, start_sim = time.perf_counter(), self.session.elapsed
                     if self._stop:
                         break
                     speed = self.speed
@@ -314,7 +358,7 @@ class Runner:
                         continue
                     self.cycle()
                 if speed > 0:
-                    due = start_wall + (self.session.clock - start_sim) / speed
+                    due = start_wall + (self.session.elapsed - start_sim) / speed
                     now = time.perf_counter()
                     if due > now:
                         time.sleep(due - now)
@@ -323,7 +367,7 @@ class Runner:
                     self.lateness.append(late)
                     if late > max(0.5, 10 * period / speed):
                         # fell far behind (machine too slow for this speed): do not race to catch up
-                        start_wall, start_sim = now, self.session.clock
+                        start_wall, start_sim = now, self.session.elapsed
         except Exception as exc:  # noqa: BLE001 - reported, the servers stay up
             self.session.report("error", "runner", f"simulation stopped: {exc!r}")
             self.finish(f"error: {exc!r}")
@@ -389,6 +433,7 @@ class Runner:
             self._interrupt_step("a reset")
         with self.session.lock:
             self.session.reset(seed)
+            self.last_values.clear()
             self._inputs = None
             reset = getattr(self.controller, "reset", None)
             if callable(reset):

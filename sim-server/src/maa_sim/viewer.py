@@ -3,8 +3,10 @@
 Every body becomes a frame node `/world/<body>`, every visible geom a primitive under it
 (boxes, cylinders, spheres, capsules, planes; meshes as triangle meshes), so an update only
 moves the frames. The bread's colour follows its toast level. A HUD shows the simulation time,
-the real-time factor and the toast; buttons pause, resume, step and reset the simulation; camera
-presets look at the whole kitchen, the toaster, the plate or the bread. viser serves its own
+the real-time factor and the toast; camera presets look at the whole kitchen, the toaster, the
+plate or the bread. Run controls (pause, resume, step, reset, speed) are offered for standalone
+use (`maa-sim run`); the IDE, which has its own, turns them off (`--viser-controls off`), so a
+run has one set of controls. viser serves its own
 web client (shipped in the wheel), which can be embedded in an iframe.
 
 viser itself listens on an internal loopback port; the public port is a `Gate` (gate.py) that
@@ -55,8 +57,13 @@ class SceneView:
         port: int = 8080,
         fps: float = FPS,
         access: AccessPolicy | None = None,
+        controls: bool = True,
     ) -> None:
         self.runner = runner
+        #: whether the panel offers the run controls (False: the HUD and the camera presets only)
+        self.controls = controls
+        #: the run controls' GUI handles (empty without them)
+        self.run_controls: list[Any] = []
         self.session = runner.session
         self.world = runner.session.world
         self.fps = fps
@@ -210,6 +217,12 @@ class SceneView:
     def _build_gui(self) -> None:
         gui = self.server.gui
         self.hud = gui.add_markdown(self._hud_text())
+        if self.controls:
+            self._build_run_controls()
+        self._build_camera_folder()
+
+    def _build_run_controls(self) -> None:
+        gui = self.server.gui
         with gui.add_folder("Simulation"):
             pause = gui.add_button("Pause")
             resume = gui.add_button("Resume")
@@ -218,11 +231,15 @@ class SceneView:
             speed = gui.add_slider(
                 "Speed", min=0.1, max=10.0, step=0.1, initial_value=max(0.1, self.runner.speed or 1.0)
             )
+        self.run_controls = [pause, resume, step, reset, speed]
         pause.on_click(lambda _e: self.runner.pause())
         resume.on_click(lambda _e: self.runner.resume())
         step.on_click(lambda _e: self._guard(lambda: self.runner.step(1)))
         reset.on_click(lambda _e: self._guard(self.runner.reset))
         speed.on_update(lambda _e: self._guard(lambda: self.runner.set_speed(float(speed.value))))
+
+    def _build_camera_folder(self) -> None:
+        gui = self.server.gui
         with gui.add_folder("Camera"):
             for name in CAMERA_PRESETS:
                 button = gui.add_button(name)
