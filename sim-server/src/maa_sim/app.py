@@ -45,6 +45,8 @@ class RunOptions:
     host: str = "127.0.0.1"
     rosbridge_port: int | None = 9090  # None: no rosbridge endpoint
     viser_port: int | None = 8080  # None: no viser panel
+    #: the viser panel's own run controls (pause, resume, step, reset, speed); off when the IDE drives the run
+    viser_controls: bool = True
     max_sim_time: float | None = None
     until_goal: bool = False
     paused: bool = False
@@ -125,7 +127,11 @@ class SimApp:
                 from .viewer import SceneView
 
                 self.viewer = SceneView(
-                    self.runner, host=self.options.host, port=self.options.viser_port, access=self._access()
+                    self.runner,
+                    host=self.options.host,
+                    port=self.options.viser_port,
+                    access=self._access(),
+                    controls=self.options.viser_controls,
                 )
                 self.viewer.start()
             if self.options.paused:
@@ -209,11 +215,24 @@ class SimApp:
             hang_timeout=self.options.hang_timeout,
             on_failure=self._on_node_failure,
         )
+        self._keep_last_values(deployment)
         # The clock starts once every node answers (so no node misses the first commands).
         self.session.publish(self.session.observe())
         self.supervisor.start()
         if not self.supervisor.wait_ready(self.options.startup_timeout):
             self.session.report("warning", "supervisor", "not every node came up; starting the simulation anyway")
+
+    def _keep_last_values(self, deployment: Deployment) -> None:
+        """ROS 2 mode: the last message of every port topic, for rosbridge clients that subscribe
+        later (Runner.last_values; lock-step mode keeps the controller's outputs). Subscribed
+        before the nodes start, so their first messages are kept too."""
+        assert self.runner is not None and self.transport is not None
+        note = self.runner.last_values.note
+        for topic, type_name in sorted(deployment.topics().items()):
+            if topic == STATES_TOPIC or topic in interface.ALL_TOPICS:
+                continue  # latched on their own / the simulator's topics
+            with contextlib.suppress(MessageError):  # a type the simulator cannot import: not kept
+                self.transport.subscribe(topic, type_name, note)
 
     def _recorded_topics(self) -> list[tuple[str, str]]:
         """Every topic of the run: the simulator's, the application's port topics, its event topics
@@ -245,7 +264,10 @@ class SimApp:
         def warn(text: str) -> None:
             session.report("warning", "recorder", text)
 
-        record_topics(self.recorder, self._recorded_topics(), session.transport.subscribe, lambda: session.clock, warn)
+        # stamped with the elapsed time, which a reset does not turn back (session.py)
+        record_topics(
+            self.recorder, self._recorded_topics(), session.transport.subscribe, lambda: session.elapsed, warn
+        )
         session.period_listeners.append(record_scene(self.recorder))
 
     def _watch_states(self) -> None:
@@ -280,8 +302,10 @@ class SimApp:
             self.automaton_states.clear()
 
     def _latched(self, topic: str) -> JsonMessage | None:
+        """What a client that subscribes gets at once: the automata's states, or the last message
+        of a topic the application sent (a port written before the client subscribed)."""
         if topic != STATES_TOPIC:
-            return None
+            return self.runner.last_values.get(topic) if self.runner is not None else None
         with self._states_lock:
             return {"data": json.dumps(self.automaton_states)} if self.automaton_states else None
 

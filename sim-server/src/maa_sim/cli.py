@@ -105,6 +105,13 @@ def _add_run_options(commands: argparse._SubParsersAction[argparse.ArgumentParse
         help="viser panel HTTP port (default: %(default)s)",
     )
     run.add_argument(
+        "--viser-controls",
+        choices=("on", "off"),
+        default="on",
+        help="the viser panel's run controls: pause, resume, step, reset, speed (default: %(default)s; "
+        "the IDE turns them off, its simulate view has its own)",
+    )
+    run.add_argument(
         "--max-time", type=_positive_float, default=None, metavar="SECONDS", help="stop after this much simulated time"
     )
     run.add_argument(
@@ -262,6 +269,7 @@ def _options(args: argparse.Namespace, config: WorldConfig) -> RunOptions:
         host=args.host,
         rosbridge_port=args.rosbridge_port,
         viser_port=args.viser_port,
+        viser_controls=args.viser_controls == "on",
         max_sim_time=args.max_time,
         until_goal=args.until_goal,
         paused=args.paused,
