@@ -369,6 +369,9 @@ function maaSimArgs(request: SimStartRequest, packageDir: string): string[] {
         '0',
         '--viser-port',
         '0',
+        // the simulate view has the run controls: viser's panel keeps only its HUD and camera presets
+        '--viser-controls',
+        'off',
         '--host',
         '127.0.0.1',
         '--status-json',

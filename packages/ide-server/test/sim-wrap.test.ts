@@ -74,6 +74,9 @@ describe('simulation sessions with a command wrapper', () => {
             expect(launches).toHaveLength(1);
             expect(launches[0]).toMatchObject({ command: maaSim, cwd: platformDir, request: { mode: 'lockstep' } });
             expect(launches[0]!.args.slice(0, 3)).toEqual(['run', '--package', platformDir]);
+            // one set of run controls: the simulate view's (viser's panel without its own)
+            const controls = launches[0]!.args.indexOf('--viser-controls');
+            expect(launches[0]!.args[controls + 1]).toBe('off');
             expect(readFileSync(seen, 'utf8').split('\n').slice(0, 3)).toEqual(['--', maaSim, 'run']);
             await sims.stop();
             // maa-sim got the stop's SIGTERM (through the wrapper) and ended gracefully in its package folder
