@@ -4,7 +4,6 @@ import type { ComponentNode } from './model.js';
 import { modeActivity } from './schema.js';
 import {
     BADGE_TEXT,
-    boxedText,
     declaringMode,
     hasBadgeLabel,
     hasOwnLabels,
@@ -99,12 +98,9 @@ export function componentView(state: ViewState): new () => ShapeView {
             const parts = bodyParts(node, w, h);
             const badge = badgePart(node, kind, w);
             if (badge) parts.push(badge);
-            const active = kind === 'automaton' ? state.activeStateOf(node.instancePath) : undefined;
-            if (active) parts.push(boxedText({ x: w / 2, y: h - 10 }, `▶ ${active}`, 'maa-current-state', 'maa-state-active'));
+            // The current state or mode is drawn in the room the server's layout keeps for it (label-view.ts, `label:chip`).
             // A decomposed component's live state is its current mode (mode automata).
             const currentMode = node.composed ? state.activeStateOf(node.instancePath) : undefined;
-            if (currentMode)
-                parts.push(boxedText({ x: w / 2, y: h - 10 }, `▶ mode ${currentMode}`, 'maa-current-mode', 'maa-mode-current'));
             if (node.composed && !isRoot && node.instancePath) parts.push(expandToggle(node.instancePath, !!node.expanded, w, state));
             const inMode = modeActivity(node.mode, node.mode ? declaringMode(state, node.parent) : undefined);
             const vnode = svg(

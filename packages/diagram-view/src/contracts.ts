@@ -5,6 +5,9 @@
  */
 import type { Position, Range } from '@maa/protocol';
 import type { ActionMessage } from 'sprotty-protocol';
+import type { DiagramHighlight } from './highlight.js';
+
+export type { DiagramHighlight } from './highlight.js';
 
 /** Something that can be undone/removed. */
 export interface Disposable {
@@ -56,8 +59,13 @@ export interface DiagramLiveLayer {
     onSelect(handler: (traces: string[]) => void): Disposable;
 }
 
+/** Highlights a point of a run's trace: a state and the transition taken (`undefined` clears). */
+export interface DiagramHighlighter {
+    highlight(highlight: DiagramHighlight | undefined): void;
+}
+
 /** The mounted diagram, as the front end drives it (a simulation only through {@link DiagramLiveLayer}). */
-export interface DiagramView extends Disposable, DiagramLiveLayer {
+export interface DiagramView extends Disposable, DiagramLiveLayer, DiagramHighlighter {
     /** Shows (or switches to) a diagram; later edits of the model update it. */
     show(target: DiagramTarget): void;
     /** Selects the innermost element whose trace contains the position (editor → diagram). */

@@ -1,5 +1,5 @@
 /** The views of connectors (live values at their middle), transitions and other edges. */
-import { PolylineEdgeView, setClass, svg, type IViewArgs, type RenderingContext, type SEdgeImpl } from 'sprotty';
+import { PolylineEdgeView, setAttr, setClass, svg, type IViewArgs, type RenderingContext, type SEdgeImpl } from 'sprotty';
 import type { ConnectorEdge, TransitionEdge } from './model.js';
 import { modeActivity } from './schema.js';
 import {
@@ -9,7 +9,6 @@ import {
     hasOwnLabels,
     polylineMidpoint,
     severityClasses,
-    textWidth,
     type Point,
     type VNode,
     type ViewState,
@@ -30,40 +29,23 @@ export function connectorView(state: ViewState): new () => PolylineEdgeView {
             return vnode;
         }
 
-        protected override renderAdditionals(edge: SEdgeImpl, segments: Point[], _context: RenderingContext): VNode[] {
-            const out = arrowHead(segments, 'maa-arrow');
-            const value = connectorValue(state, edge as ConnectorEdge);
-            if (value !== undefined) {
-                const mid = polylineMidpoint(segments);
-                if (mid) {
-                    out.push(
-                        svg(
-                            'g',
-                            { class: { 'maa-value-label': true }, transform: `translate(${mid.p.x},${mid.p.y - 9})` },
-                            svg('rect', {
-                                x: -(textWidth(value, 6.2) + 8) / 2,
-                                y: -7,
-                                width: textWidth(value, 6.2) + 8,
-                                height: 14,
-                                rx: 3,
-                                ry: 3,
-                            }),
-                            svg('text', { class: { 'maa-value': true }, x: 0, y: 4, 'text-anchor': 'middle' }, value),
-                        ),
-                    );
-                }
-            }
-            return out;
+        protected override renderAdditionals(_edge: SEdgeImpl, segments: Point[], _context: RenderingContext): VNode[] {
+            // The value a connector carries is drawn beside its source port (label-view.ts, `label:value`).
+            return arrowHead(segments, 'maa-arrow');
         }
     };
 }
 
-export function transitionView(): new () => PolylineEdgeView {
+export function transitionView(state: ViewState): new () => PolylineEdgeView {
     return class TransitionView extends PolylineEdgeView {
         override render(edge: Readonly<TransitionEdge>, context: RenderingContext, args?: IViewArgs): VNode | undefined {
             const vnode = super.render(edge, context, args);
             if (vnode) {
                 setClass(vnode, 'maa-transition', true);
+                // The transition a highlighted trace point took (its index in allTransitions order).
+                const taken = state.automatonHighlight()?.transition;
+                setClass(vnode, 'maa-transition-highlight', taken !== undefined && taken.index === edge.transitionIndex);
+                if (edge.transitionIndex !== undefined) setAttr(vnode, 'data-transition-index', edge.transitionIndex);
                 severityClasses(vnode, edge.severity);
             }
             return vnode;

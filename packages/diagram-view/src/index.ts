@@ -26,6 +26,8 @@ export { MaaDiagramProxy } from './proxy.js';
 export { standaloneSvg, svgFileName } from './svg-export.js';
 export { ClearHiddenCommand, RedrawCommand } from './commands.js';
 export type { MaaDiagramView } from './mounted-diagram.js';
+export { parseHighlight, type DiagramHighlight } from './highlight.js';
+export type { DiagramHighlighter } from './contracts.js';
 export type { DiagramHost, DiagramLiveLayer, DiagramTarget, DiagramView, Disposable, TextPosition, TextRange } from './contracts.js';
 
 /** Mounts the diagram into `container`; the front end calls `show` with what to display. */

@@ -5,12 +5,14 @@
  * application (its paths are then relative to its instance path) and find the instance whose
  * automaton an automaton view shows. Pure: no Sprotty, no DOM.
  */
+import type { DiagramHighlight } from './highlight.js';
 import { activeStateForType, instancePrefix, instanceTypesOf, lookupLiveValue, snakePath, type SchemaElement } from './schema.js';
 
 export class LiveLayer {
     private values: ReadonlyMap<string, string> = new Map();
     private valuesBySnake: ReadonlyMap<string, string> = new Map();
     private states: ReadonlyMap<string, string> = new Map();
+    private highlighted: DiagramHighlight | undefined;
     /** Instance types of every C&C diagram seen, by shown component. */
     private readonly typeMaps = new Map<string, Map<string, string>>();
     /** The instance path of the shown component in another known diagram (see `instancePrefix`). */
@@ -30,6 +32,25 @@ export class LiveLayer {
 
     setActiveStates(states: ReadonlyMap<string, string>): void {
         this.states = new Map(states);
+    }
+
+    /** The trace point to highlight (`undefined` clears). */
+    setHighlight(highlight: DiagramHighlight | undefined): void {
+        this.highlighted = highlight;
+    }
+
+    /** The highlight of an instance of the shown C&C diagram (`""`: the shown component), relative to the prefix too. */
+    highlightOf(instancePath: string | undefined): DiagramHighlight | undefined {
+        const h = this.highlighted;
+        if (!h || instancePath === undefined) return undefined;
+        if (h.instancePath === instancePath) return h;
+        const prefixed = this.prefix === undefined ? undefined : instancePath ? `${this.prefix}.${instancePath}` : this.prefix;
+        return prefixed !== undefined && h.instancePath === prefixed ? h : undefined;
+    }
+
+    /** The highlight of the automaton of `componentType` (the automaton view), if it is that component's. */
+    highlightForType(componentType: string | undefined): DiagramHighlight | undefined {
+        return componentType !== undefined && this.highlighted?.component === componentType ? this.highlighted : undefined;
     }
 
     /** The live value of a port path of the shown diagram (any spelling; relative to the prefix too). */

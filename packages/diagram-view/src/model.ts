@@ -57,6 +57,8 @@ export class StateNode extends SNodeImpl {
 
 export class TransitionEdge extends SEdgeImpl {
     declare label?: string;
+    /** The transition's position in allTransitions order (the index of a run's transition events). */
+    declare transitionIndex?: number;
     declare severity?: Severity;
     declare trace?: string;
 }

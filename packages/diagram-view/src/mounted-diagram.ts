@@ -18,6 +18,7 @@ import { ClearHiddenCommand, RedrawCommand } from './commands.js';
 import { featuresOption, graphFeatureInfo, type FeatureSelection } from './configuration.js';
 import { createDiagramContainer } from './container.js';
 import { FeatureBar } from './feature-bar.js';
+import type { DiagramHighlight } from './highlight.js';
 import { LiveLayer } from './live-layer.js';
 import type { MaaDiagramProxy } from './proxy.js';
 import type { SchemaElement } from './schema.js';
@@ -130,6 +131,11 @@ export class MountedDiagram implements MaaDiagramView {
         this.scheduleRedraw();
     }
 
+    highlight(highlight: DiagramHighlight | undefined): void {
+        this.live.setHighlight(highlight);
+        this.scheduleRedraw();
+    }
+
     onSelect(handler: (traces: string[]) => void): Disposable {
         this.selectHandlers.add(handler);
         return { dispose: () => this.selectHandlers.delete(handler) };
@@ -170,6 +176,11 @@ export class MountedDiagram implements MaaDiagramView {
             automatonActiveState: () =>
                 this.current?.diagramType === 'maa-automaton'
                     ? this.live.activeStateForType((this.schema?.['component'] as string | undefined) ?? this.current.component)
+                    : undefined,
+            highlightOf: (p) => this.live.highlightOf(p),
+            automatonHighlight: () =>
+                this.current?.diagramType === 'maa-automaton'
+                    ? this.live.highlightForType((this.schema?.['component'] as string | undefined) ?? this.current.component)
                     : undefined,
             toggleExpanded: (path) => {
                 if (!this.current) return;

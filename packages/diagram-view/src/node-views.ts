@@ -54,6 +54,7 @@ export function stateView(state: ViewState): new () => ShapeView {
             const w = node.size.width;
             const h = node.size.height;
             const activity = stateActivity(node.statePath ?? node.name, state.automatonActiveState());
+            const highlighted = stateActivity(node.statePath ?? node.name, state.automatonHighlight()?.state) === 'active';
             const parts: VNode[] = [
                 svg('title', {}, node.statePath ?? node.name ?? ''),
                 svg('rect', { class: { 'maa-state-body': true }, x: 0, y: 0, width: w, height: h, rx: 10, ry: 10 }),
@@ -79,6 +80,7 @@ export function stateView(state: ViewState): new () => ShapeView {
                         'maa-state-initial': !!node.initial,
                         'maa-state-active': activity === 'active',
                         'maa-state-active-parent': activity === 'ancestor',
+                        'maa-state-highlight': highlighted,
                         selected: node.selected,
                         mouseover: node.hoverFeedback,
                     },

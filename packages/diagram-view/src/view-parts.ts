@@ -4,6 +4,7 @@
  * "DOM hooks".
  */
 import { setClass, svg, type SModelElementImpl, type SParentElementImpl } from 'sprotty';
+import type { DiagramHighlight } from './highlight.js';
 import type { ComponentNode, ConnectorEdge, MaaPort } from './model.js';
 
 export type VNode = ReturnType<typeof svg>;
@@ -19,6 +20,10 @@ export interface ViewState {
     activeStateOf(instancePath: string | undefined): string | undefined;
     /** Active state path of the automaton shown in the automaton view. */
     automatonActiveState(): string | undefined;
+    /** The highlighted trace point of an instance (C&C view: its state chip). */
+    highlightOf(instancePath: string | undefined): DiagramHighlight | undefined;
+    /** The highlighted trace point of the automaton shown in the automaton view. */
+    automatonHighlight(): DiagramHighlight | undefined;
     toggleExpanded(instancePath: string): void;
     openAutomaton(componentType: string): void;
 }
@@ -38,6 +43,12 @@ export function severityClasses(vnode: VNode, severity: unknown): void {
 
 export function textWidth(text: string, charWidth = 6): number {
     return Math.ceil(text.length * charWidth);
+}
+
+/** `text` cut short with `…` so that it takes at most `width` pixels at `charWidth` a character. */
+export function fitText(text: string, width: number, charWidth: number): string {
+    const max = Math.max(1, Math.floor(width / charWidth));
+    return text.length <= max ? text : `${text.slice(0, Math.max(0, max - 1))}…`;
 }
 
 export function isLabelType(el: SModelElementImpl): boolean {

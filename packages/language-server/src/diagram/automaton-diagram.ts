@@ -55,7 +55,8 @@ export function buildAutomatonDiagram(component: adl.ComponentType, ctx: BuildCo
     graph.children.push(...top);
 
     const pairs = new Map<string, number>();
-    for (const t of allTransitions(automaton)) {
+    // `index`: the position in allTransitions order, counted over every transition (a run's transition events name it).
+    for (const [index, t] of allTransitions(automaton).entries()) {
         const source = sourceOf(t);
         const target = targetOf(t);
         const from = source && nodes.get(source);
@@ -66,7 +67,15 @@ export function buildAutomatonDiagram(component: adl.ComponentType, ctx: BuildCo
         pairs.set(base, n + 1);
         const text = transitionLabel(t);
         const id = ctx.id(n === 0 ? base : `${base}#${n}`, t);
-        const edge: TransitionEdge = { type: TYPES.transition, id, sourceId: from.id, targetId: to.id, label: text, children: [] };
+        const edge: TransitionEdge = {
+            type: TYPES.transition,
+            id,
+            sourceId: from.id,
+            targetId: to.id,
+            label: text,
+            transitionIndex: index,
+            children: [],
+        };
         if (text) {
             // A long label is shortened (its full text is the edge's `label` and the label's `fullText`).
             const l = label(TYPES.transitionLabel, labelId(id, 'label'), shortenTransitionLabel(text), t);

@@ -18,6 +18,7 @@ import type { BuildContext } from './context.js';
 import { connectorId, instanceId, labelId, portId } from './ids.js';
 import { TYPES, type ComponentNode, type ConnectorEdge, type MaaGraph, type MaaLabel, type PortNode } from './model.js';
 import { PORT_SIZE, labelSize } from './sizes.js';
+import { behaviorLines, chipStates, widestState } from './behavior-summary.js';
 import { atomicSourcePath, connectorsOf, type NamedConnector, type PortName } from './source-ports.js';
 
 type ComponentType = ast.ComponentType;
@@ -65,7 +66,20 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
             label(TYPES.typeLabel, labelId(id, 'type'), decl ? type.name : componentType, type),
             label(TYPES.badgeLabel, labelId(id, 'badge'), node.behaviorKind, type),
         );
-        for (const p of allPorts(type)) node.children!.push(portNode(p, path));
+        // Own ports of an atomic component shown on its own name their types too (its interface).
+        const alone = path.length === 0 && !composed;
+        for (const p of allPorts(type))
+            node.children!.push(portNode(p, path, valueSlot(p.direction, path.length === 0, composed && open), alone));
+        // Room for the current state (automaton) or mode during a run.
+        const widest = widestState(chipStates(type));
+        if (widest !== undefined) node.children!.push(label(TYPES.chipLabel, labelId(id, 'chip'), widest, type));
+        if (alone) {
+            for (const [i, line] of behaviorLines(type).entries()) {
+                const l = label(TYPES.behaviorLabel, labelId(id, `behavior${i}`), line.text, line.source);
+                if (line.opens) l.opens = line.opens;
+                node.children!.push(l);
+            }
+        }
         if (composed && open) {
             for (const sub of subcomponentsOf(type)) {
                 const subType = subcomponentType(sub).decl;
@@ -104,7 +118,7 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
         return node;
     }
 
-    function portNode(p: PortInfo, path: string[]): PortNode {
+    function portNode(p: PortInfo, path: string[], slot: boolean, typed: boolean): PortNode {
         const id = ctx.id(portId(path, p.name));
         ports.add(id);
         const node: PortNode = {
@@ -115,8 +129,9 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
             portType: printType(p.type),
             portPath: [...path, p.name].join('.'),
             size: { width: PORT_SIZE, height: PORT_SIZE },
-            children: [label(TYPES.portLabel, labelId(id, 'name'), p.name, p.port)],
+            children: [label(TYPES.portLabel, labelId(id, 'name'), typed ? `${p.name}: ${printType(p.type)}` : p.name, p.port)],
         };
+        if (slot) node.children!.push(label(TYPES.valueLabel, labelId(id, 'value'), '', p.port));
         const severity = ctx.severity(p.port);
         if (severity) node.severity = severity;
         const condition = variationCondition(p.port);
@@ -158,6 +173,17 @@ export function buildComponentDiagram(root: ComponentType, expanded: ReadonlySet
         ctx.trace(l, source);
         return l;
     }
+}
+
+/**
+ * Whether a port gets room for its live value: the ports values flow out of in the view, i.e.
+ * the out ports of a subcomponent (opened or not: ids do not depend on what is open) and the in
+ * ports of the shown component (fed from outside), and every port of an atomic component shown
+ * on its own.
+ */
+function valueSlot(direction: 'in' | 'out', isRoot: boolean, open: boolean): boolean {
+    if (isRoot) return direction === 'in' || !open;
+    return direction === 'out';
 }
 
 function endpointId(scope: readonly string[], p: PortName): string {

@@ -78,6 +78,14 @@ const HEADER = 40;
 const PORT_GAP = 8;
 /** Gap between a port and its label, inside the node. */
 const PORT_LABEL_GAP = 3;
+/** Gap between a port's label and the room of its live value. */
+const VALUE_GAP = 4;
+/** Room between the labels of in ports and those of out ports. */
+const SIDE_GAP = 20;
+/** The row of the current-state chip at the bottom of a component: the chip and a gap above it. */
+const CHIP_ROW = 14 + 6;
+/** The height of a behavior line (atomic component shown on its own). */
+const LINE_STEP = 16;
 /** Node widths are multiples of this. */
 const WIDTH_GRID = 10;
 /** Height of a state without substates; room above substates for the state's name. */
@@ -90,8 +98,14 @@ const childOf = (n: SModelElement, type: string): SLabel | undefined =>
 const childrenOf = (n: SModelElement, type: string): SModelElement[] => (n.children ?? []).filter((c) => c.type === type);
 const portsOf = (n: SModelElement, direction: 'in' | 'out'): PortNode[] =>
     childrenOf(n, TYPES.port).filter((p) => (p as PortNode).direction === direction) as PortNode[];
-const maxLabel = (ports: PortNode[]): number => Math.max(0, ...ports.map((p) => width(childOf(p, TYPES.portLabel))));
+/** The width a port's texts take inside its node: its name and the room of its live value. */
+const portTextWidth = (p: PortNode): number => {
+    const value = childOf(p, TYPES.valueLabel);
+    return width(childOf(p, TYPES.portLabel)) + (value ? VALUE_GAP + width(value) : 0);
+};
+const maxLabel = (ports: PortNode[]): number => Math.max(0, ...ports.map(portTextWidth));
 const hasNodes = (n: SModelElement): boolean => (n.children ?? []).some((c) => c.type === TYPES.component || c.type === TYPES.state);
+const behaviorLinesOf = (n: SModelElement): SLabel[] => childrenOf(n, TYPES.behaviorLabel) as SLabel[];
 
 /** Room the client's expand/collapse button of a composed subcomponent takes right of the type. */
 export const EXPAND_TOGGLE_ROOM = 22;
@@ -106,6 +120,17 @@ function headerWidth(node: SModelElement): number {
     );
 }
 
+/** Height below a component's ports: its behavior lines and the row of its current-state chip. */
+function footerHeight(node: SModelElement): number {
+    const lines = behaviorLinesOf(node).length;
+    return (lines > 0 ? lines * LINE_STEP + 4 : 0) + (childOf(node, TYPES.chipLabel) ? CHIP_ROW : 0);
+}
+
+/** Width the footer's texts need (behavior lines, the chip) with the node's margins. */
+function footerWidth(node: SModelElement): number {
+    return 2 * PAD + Math.max(0, width(childOf(node, TYPES.chipLabel)), ...behaviorLinesOf(node).map(width));
+}
+
 /** The size of a component without shown children, and of a state, from their texts. */
 export function nodeSize(node: SModelElement): Dimension {
     if (node.type === TYPES.state) {
@@ -116,44 +141,77 @@ export function nodeSize(node: SModelElement): Dimension {
     const outs = portsOf(node, 'out');
     const rows = Math.max(1, ins.length, outs.length);
     const inner = PORT_SIZE / 2 + PORT_LABEL_GAP;
-    const portsWidth = inner + maxLabel(ins) + (ins.length && outs.length ? 20 : 0) + maxLabel(outs) + inner;
+    const portsWidth = inner + maxLabel(ins) + (ins.length && outs.length ? SIDE_GAP : 0) + maxLabel(outs) + inner;
     return {
         // Rounded up to a grid, so a slightly longer or shorter name leaves the layout as it was.
-        width: Math.ceil(Math.max(90, 2 * PAD + headerWidth(node), portsWidth) / WIDTH_GRID) * WIDTH_GRID,
-        height: HEADER + rows * PORT_SIZE + (rows - 1) * PORT_GAP + PAD,
+        width: Math.ceil(Math.max(90, 2 * PAD + headerWidth(node), portsWidth, footerWidth(node)) / WIDTH_GRID) * WIDTH_GRID,
+        height: HEADER + rows * PORT_SIZE + (rows - 1) * PORT_GAP + PAD + footerHeight(node),
     };
 }
 
-/** Sets the sizes of nodes without children, which ELK keeps (those with children get minimum sizes). */
+/**
+ * Sets the sizes of nodes without children, which ELK keeps (those with children get minimum
+ * sizes), and the places of such a component's ports: one row each below the header, in
+ * declaration order from the top, centred on the west (in) and east (out) border. (ELK's own
+ * port placement centres the ports in the whole height, over the header and the footer.)
+ */
 function sizeNodes(element: SModelElement): void {
     if (element.type !== TYPES.component && element.type !== TYPES.state) return;
-    if (!hasNodes(element)) (element as SNode).size = nodeSize(element);
+    if (!hasNodes(element)) {
+        const size = nodeSize(element);
+        (element as SNode).size = size;
+        if (element.type === TYPES.component) {
+            for (const direction of ['in', 'out'] as const) {
+                portsOf(element, direction).forEach((p, i) => {
+                    const w = p.size?.width ?? PORT_SIZE;
+                    p.position = { x: direction === 'in' ? -w / 2 : size.width - w / 2, y: HEADER + i * (PORT_SIZE + PORT_GAP) };
+                });
+            }
+        }
+    }
     for (const child of element.children ?? []) sizeNodes(child);
+}
+
+/** A port's name beside it and the room of its live value beside the name, inside the node. */
+function placePortLabels(port: PortNode, open: boolean): void {
+    const portLabel = childOf(port, TYPES.portLabel);
+    if (!portLabel) return;
+    const value = childOf(port, TYPES.valueLabel);
+    // Beside the port; in an open node, whose ports have connectors inside too, above their line.
+    const height = portLabel.size?.height ?? 14;
+    const y = open ? -height + 2 : ((port.size?.height ?? PORT_SIZE) - height) / 2;
+    if (port.direction === 'out') {
+        portLabel.position = { x: -PORT_LABEL_GAP - width(portLabel), y };
+        if (value) value.position = { x: portLabel.position.x - VALUE_GAP - width(value), y };
+    } else {
+        portLabel.position = { x: (port.size?.width ?? PORT_SIZE) + PORT_LABEL_GAP, y };
+        if (value) value.position = { x: portLabel.position.x + width(portLabel) + VALUE_GAP, y };
+    }
 }
 
 /** Node and port labels at their fixed places (ELK sees only edge labels). */
 function placeLabels(element: SModelElement): void {
     const node = element as SNode;
     const w = node.size?.width ?? 0;
+    const h = node.size?.height ?? 0;
     if (element.type === TYPES.component) {
         const open = hasNodes(element);
+        const lines = behaviorLinesOf(element);
+        const chip = childOf(element, TYPES.chipLabel);
+        // The footer from the bottom up: the chip (as wide as the node allows), the behavior lines above it.
+        let bottom = h - PAD;
+        if (chip) {
+            chip.size = { width: w - 2 * PAD, height: chip.size?.height ?? 14 };
+            chip.position = { x: PAD, y: bottom - chip.size.height };
+            bottom -= CHIP_ROW;
+        }
+        for (const [i, l] of lines.entries()) l.position = { x: PAD, y: bottom - (lines.length - i) * LINE_STEP };
         for (const label of node.children ?? []) {
             const l = label as SLabel;
             if (l.type === TYPES.nameLabel) l.position = { x: PAD, y: 4 };
             else if (l.type === TYPES.typeLabel) l.position = { x: PAD, y: 20 };
             else if (l.type === TYPES.badgeLabel) l.position = { x: w - PAD - width(l), y: 5 };
-            else if (l.type === TYPES.port) {
-                const port = l as unknown as PortNode;
-                const portLabel = childOf(port, TYPES.portLabel);
-                if (!portLabel) continue;
-                // Beside the port; in an open node, whose ports have connectors inside too, above their line.
-                const height = portLabel.size?.height ?? 14;
-                const y = open ? -height + 2 : ((port.size?.height ?? PORT_SIZE) - height) / 2;
-                portLabel.position =
-                    port.direction === 'out'
-                        ? { x: -PORT_LABEL_GAP - width(portLabel), y }
-                        : { x: (port.size?.width ?? PORT_SIZE) + PORT_LABEL_GAP, y };
-            }
+            else if (l.type === TYPES.port) placePortLabels(l as unknown as PortNode, open);
         }
     } else if (element.type === TYPES.state) {
         const label = childOf(element, TYPES.stateLabel);
@@ -233,27 +291,31 @@ class MaaLayoutConfigurator extends DefaultLayoutConfigurator {
         }
         const open = hasNodes(node);
         const inner = PORT_SIZE / 2 + PORT_LABEL_GAP + 12;
+        const footer = footerHeight(node);
         return {
             ...CC,
-            'org.eclipse.elk.portConstraints': 'FIXED_SIDE',
+            // Ports in declaration order: placed by sizeNodes in a closed node, numbered by portOptions in an open one.
+            'org.eclipse.elk.portConstraints': open ? 'FIXED_ORDER' : 'FIXED_POS',
             'org.eclipse.elk.portAlignment.default': 'CENTER',
             'org.eclipse.elk.spacing.portPort': `${PORT_GAP}`,
-            'org.eclipse.elk.spacing.portsSurrounding': `[top=${HEADER},left=0,bottom=${PAD},right=0]`,
+            // Ports below the header and above the footer (behavior lines, state chip).
+            'org.eclipse.elk.spacing.portsSurrounding': `[top=${HEADER},left=0,bottom=${PAD + footer},right=0]`,
             'org.eclipse.elk.nodeSize.constraints': '[PORTS, MINIMUM_SIZE]',
             'org.eclipse.elk.nodeSize.minimum': open
-                ? `(${Math.ceil(2 * PAD + headerWidth(node))}, ${HEADER + 20})`
+                ? `(${Math.ceil(Math.max(2 * PAD + headerWidth(node), footerWidth(node)))}, ${HEADER + 20 + footer})`
                 : `(${size.width}, ${size.height})`,
-            // Children below the header; the labels of the node's own ports beside them.
+            // Children below the header and above the footer; the labels of the node's own ports beside them.
             'org.eclipse.elk.padding': open
-                ? `[top=${HEADER + 16},left=${Math.max(20, inner + maxLabel(portsOf(node, 'in')))},bottom=16,right=${Math.max(20, inner + maxLabel(portsOf(node, 'out')))}]`
+                ? `[top=${HEADER + 16},left=${Math.max(20, inner + maxLabel(portsOf(node, 'in')))},bottom=${16 + footer},right=${Math.max(20, inner + maxLabel(portsOf(node, 'out')))}]`
                 : `[top=${PAD},left=${PAD},bottom=${PAD},right=${PAD}]`,
         };
     }
 
-    protected override portOptions(port: SPort, _index: SModelIndex): LayoutOptions {
+    protected override portOptions(port: SPort, index: SModelIndex): LayoutOptions {
         const direction = (port as Partial<PortNode>).direction;
         return {
             'org.eclipse.elk.port.side': direction === 'out' ? 'EAST' : 'WEST',
+            'org.eclipse.elk.port.index': `${portIndex(port, index)}`,
             'org.eclipse.elk.port.borderOffset': `${-(port.size?.width ?? 0) / 2}`,
         };
     }
@@ -262,6 +324,23 @@ class MaaLayoutConfigurator extends DefaultLayoutConfigurator {
         if (label.type !== TYPES.transitionLabel) return undefined;
         return { 'org.eclipse.elk.edgeLabels.placement': 'CENTER', 'org.eclipse.elk.edgeLabels.inline': 'false' };
     }
+}
+
+/**
+ * A port's place in ELK's fixed order, which runs clockwise from the top left: down the east
+ * side, then up the west side. Out ports (east) and in ports (west) are numbered so that both
+ * sides read top to bottom in declaration order.
+ */
+function portIndex(port: SPort, index: SModelIndex): number {
+    const parent = index.getParent(port.id);
+    const direction = (port as Partial<PortNode>).direction === 'out' ? 'out' : 'in';
+    const side = parent ? portsOf(parent, direction) : [];
+    const at = Math.max(
+        0,
+        side.findIndex((p) => p.id === port.id),
+    );
+    const all = parent ? childrenOf(parent, TYPES.port).length : 0;
+    return direction === 'out' ? at : 2 * all - at;
 }
 
 /**

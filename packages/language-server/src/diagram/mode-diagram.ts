@@ -34,7 +34,7 @@ export function addModeAutomaton(component: adl.ComponentType, graph: MaaGraph, 
         graph.children.push(node);
     }
     const pairs = new Map<string, number>();
-    for (const t of view.transitions) {
+    for (const [index, t] of view.transitions.entries()) {
         const from = nodes.get(t.source);
         const to = nodes.get(t.target);
         if (!from || !to) continue;
@@ -43,7 +43,15 @@ export function addModeAutomaton(component: adl.ComponentType, graph: MaaGraph, 
         pairs.set(base, n + 1);
         const text = modeTransitionLabel(t.trigger, t.guard);
         const id = ctx.id(n === 0 ? base : `${base}#${n}`, t.node);
-        const edge: TransitionEdge = { type: TYPES.transition, id, sourceId: from.id, targetId: to.id, label: text, children: [] };
+        const edge: TransitionEdge = {
+            type: TYPES.transition,
+            id,
+            sourceId: from.id,
+            targetId: to.id,
+            label: text,
+            transitionIndex: index,
+            children: [],
+        };
         if (text) {
             const l = label(TYPES.transitionLabel, labelId(id, 'label'), shortenTransitionLabel(text), t.node);
             if (l.text !== text) l.fullText = text;

@@ -43,6 +43,12 @@ export const TYPES = {
     portLabel: 'label:port',
     stateLabel: 'label:state',
     transitionLabel: 'label:transition',
+    /** The room a live value takes beside a port (empty text; the client draws a run's value in it). */
+    valueLabel: 'label:value',
+    /** The room the current-state chip of an automaton or mode automaton takes (empty text; drawn during a run). */
+    chipLabel: 'label:chip',
+    /** A line about the behavior of an atomic component shown on its own (its automaton, its RobotArm programs). */
+    behaviorLabel: 'label:behavior',
 } as const;
 
 interface Traced {
@@ -119,9 +125,17 @@ export interface TransitionEdge extends SEdge, Traced {
     type: typeof TYPES.transition;
     /** `trigger [guard] / action` as written (whitespace collapsed). */
     label: string;
+    /**
+     * The transition's 0-based position in `allTransitions(automaton)` order (@maa/language-automata;
+     * for a mode automaton, in the order of its transitions): the index a run's transition events carry.
+     * (Not `index`: Sprotty's client elements have an `index`, their model index.)
+     */
+    transitionIndex: number;
 }
 
 export interface MaaLabel extends SLabel, Traced {
     /** The whole text of a label shown shortened (a long transition label), for a tooltip. */
     fullText?: string;
+    /** A behavior line the client makes a link: `automaton` opens the component's automaton view. */
+    opens?: 'automaton';
 }

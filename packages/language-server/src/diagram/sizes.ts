@@ -73,9 +73,31 @@ export function labelSize(type: string, text: string): Dimension {
             return textSize(text, FONTS.state);
         case TYPES.transitionLabel:
             return textSize(text, FONTS.transition);
+        case TYPES.valueLabel:
+            return { ...VALUE_SIZE };
+        case TYPES.chipLabel:
+            return chipSize(text);
+        case TYPES.behaviorLabel:
+            return textSize(text, FONTS.port);
         default:
             return textSize(text, FONTS.type);
     }
+}
+
+/**
+ * The room of a live value beside a port: the client's value pill (monospace 10.5px, about 6.3px
+ * a character) holds about nine characters; a longer value is cut short there, whole in its tooltip.
+ */
+export const VALUE_SIZE: Dimension = { width: 64, height: 14 };
+
+/** The text of the current-state chip the client draws during a run (`▶ ` and the state's path). */
+export function chipText(state: string): string {
+    return `▶ ${state}`;
+}
+
+/** The room of the current-state chip: the widest state's chip (`text` is that state's path), 10.5px with padding. */
+export function chipSize(text: string): Dimension {
+    return { width: Math.max(48, Math.ceil(textWidth(chipText(text), FONTS.transition)) + 12), height: 14 };
 }
 
 /** The text the client shows in a badge (its BADGE_TEXT). */

@@ -67,6 +67,9 @@ function renderElement(element: SModelElement, ctx: ViewContext): XmlNode | unde
         case TYPES.connector:
         case TYPES.transition:
             return edgeView(element as SEdge, ctx);
+        case TYPES.valueLabel:
+        case TYPES.chipLabel:
+            return undefined; // the room of a run's live value and current state: empty without a run
         default:
             return element.type.startsWith('label') ? labelView(element as SLabel, ctx) : genericView(element, ctx);
     }

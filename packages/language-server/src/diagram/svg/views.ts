@@ -165,6 +165,9 @@ export function edgeView(edge: ConnectorEdge | TransitionEdge | SEdge, ctx: View
         'g',
         {
             id: ctx.idPrefix + edge.id,
+            ...(edge.type === 'edge:transition' && typeof (edge as Partial<TransitionEdge>).transitionIndex === 'number'
+                ? { 'data-transition-index': (edge as TransitionEdge).transitionIndex }
+                : {}),
             class: classes({
                 'sprotty-edge': true,
                 ...(kind ? { [kind]: true } : {}),
@@ -202,6 +205,14 @@ export function labelView(label: SLabel & Partial<MaaLabel>, ctx: ViewContext): 
         );
     }
     const full = typeof label.fullText === 'string' && label.fullText !== label.text ? label.fullText : undefined;
+    // A behavior line that opens the automaton view is a link in the IDE (label-view.ts behaviorLink).
+    if (label.opens === 'automaton')
+        return el(
+            'text',
+            { ...common, class: `sprotty-label maa-label ${cls} maa-behavior-link text`, y },
+            el('title', {}, 'open the automaton view'),
+            label.text,
+        );
     if (full === undefined) return el('text', { ...common, class: `sprotty-label maa-label ${cls} text`, y }, label.text);
     return el(
         'text',
