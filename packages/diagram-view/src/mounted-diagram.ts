@@ -25,6 +25,7 @@ import type { SchemaElement } from './schema.js';
 import { elementAt, selectionHandler } from './selection.js';
 import { downloadText, standaloneSvg, svgFileName } from './svg-export.js';
 import { TargetMemory, targetKey } from './target-memory.js';
+import { READABLE_ZOOM } from './viewport.js';
 import { Toolbar, shownComponent } from './toolbar.js';
 import { createViews, type ViewState } from './views.js';
 
@@ -275,7 +276,7 @@ export class MountedDiagram implements MaaDiagramView {
                 this.fitPending = false;
                 this.camera.forget();
                 // A new diagram opens readable (a huge one from its top); the Fit button shows it all.
-                void this.camera.fit(root, 1.5, false, 0.3);
+                void this.camera.fit(root, 1.5, false, READABLE_ZOOM);
             } else {
                 this.camera.restore(root);
             }

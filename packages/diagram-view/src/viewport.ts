@@ -7,6 +7,16 @@
  */
 import type { Bounds } from './schema.js';
 
+/**
+ * The zoom a new diagram opens at least with (when it does not fit at that zoom, from its top
+ * left, ready to scroll): the smallest texts (port names, transition labels, live values: 10.5px)
+ * are then drawn at 7px or more, readable. Fit (the tool bar) shows the whole diagram at any zoom.
+ */
+export const READABLE_ZOOM = 0.7;
+
+/** The smallest font of the diagram's texts, px (sizes.ts of the language server: ports, transitions, values). */
+export const SMALLEST_FONT = 10.5;
+
 export interface FitOptions {
     padding: number;
     maxZoom: number;

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { fitViewport, unionBounds } from '../src/viewport.js';
+import { fitViewport, READABLE_ZOOM, SMALLEST_FONT, unionBounds } from '../src/viewport.js';
 
 const canvas = { width: 600, height: 400 };
 const options = { padding: 20, maxZoom: 1.5, minZoom: 0.02 };
@@ -55,6 +55,17 @@ describe('fitViewport', () => {
         // A diagram that fits at a readable zoom is fitted as without the option.
         const small = { x: 0, y: 0, width: 1000, height: 600 };
         expect(fitViewport(small, canvas, { ...options, readableZoom: 0.3 })).toEqual(fitViewport(small, canvas, options));
+    });
+
+    it('opens the example-sized diagram (wider than the pane) readable: the smallest text at 7px or more, from its left', () => {
+        const content = { x: 0, y: 0, width: 1100, height: 500 };
+        const v = fitViewport(content, canvas, { ...options, readableZoom: READABLE_ZOOM });
+        expect(v.zoom).toBeCloseTo(READABLE_ZOOM);
+        expect(v.zoom * SMALLEST_FONT).toBeGreaterThanOrEqual(7);
+        expect(onCanvas(content, v).x).toBeCloseTo(20);
+        // A diagram that fits at a readable zoom is shown whole, as large as allowed.
+        const small = fitViewport({ x: 0, y: 0, width: 500, height: 300 }, canvas, { ...options, readableZoom: READABLE_ZOOM });
+        expect(small.zoom).toBeGreaterThanOrEqual(READABLE_ZOOM);
     });
 
     it('survives an empty content box and a hidden (zero-size) canvas', () => {

@@ -37,7 +37,7 @@ import {
 import { contributions } from '../src/contributions.js';
 import { iconFiles, languageIconOf } from '../src/diagram/contributions.js';
 import { contentSecurityPolicy, newNonce, webviewHtml } from '../src/diagram/html.js';
-import { parseFromWebview } from '../src/diagram/protocol.js';
+import { highlightMessage, parseFromWebview } from '../src/diagram/protocol.js';
 import { DiagramRelay } from '../src/diagram/relay.js';
 import { componentAt, inAutomaton, packageOf, selectionSource, type SymbolNode, targetAt } from '../src/diagram/selection.js';
 
@@ -274,6 +274,19 @@ describe('the webview messages and page', () => {
         ]) {
             expect(parseFromWebview(bad)).toBeUndefined();
         }
+    });
+
+    it('turns the argument of maa.diagram.highlightTrace into the highlight message, undefined into clear, and rejects others', () => {
+        const point = {
+            component: 'toast.Controller',
+            instancePath: 'ctrl',
+            state: 'Serving',
+            transition: { from: 'Toasting', to: 'Serving', index: 3 },
+        };
+        expect(highlightMessage(point)).toEqual({ type: 'highlight', highlight: point });
+        expect(highlightMessage(undefined)).toEqual({ type: 'highlight' });
+        expect(() => highlightMessage({ instancePath: 'ctrl' })).toThrow(/component/);
+        expect(() => highlightMessage({ ...point, transition: { from: 'A', to: 'B', index: '3' } })).toThrow(/index/);
     });
 
     it('has a strict CSP: nothing by default, the script only with the nonce, no inline code', () => {

@@ -10,6 +10,7 @@ import type { ActionMessage } from 'sprotty-protocol';
 import * as vscode from 'vscode';
 import { openOnStart } from './contributions.js';
 import { type DiagramChannel, DiagramPanel } from './panel.js';
+import { highlightMessage, type ToWebview } from './protocol.js';
 import { DiagramRelay } from './relay.js';
 import { inAutomaton, type SymbolNode, targetAt } from './selection.js';
 
@@ -27,6 +28,8 @@ const DIAGRAM_OPEN = 'maa.diagramOpen';
 
 const relay = new DiagramRelay();
 let panel: DiagramPanel | undefined;
+/** The trace point highlighted last (a diagram opened later shows it too). */
+let highlighted: Extract<ToWebview, { type: 'highlight' }> = { type: 'highlight' };
 
 /** Values as a list of pairs, from a map or a plain object. */
 function entries(values: ReadonlyMap<string, string> | Readonly<Record<string, string>>): Array<[string, string]> {
@@ -39,6 +42,18 @@ function entries(values: ReadonlyMap<string, string> | Readonly<Record<string, s
  */
 export function showLiveValues(values: ReadonlyMap<string, string> | Readonly<Record<string, string>>): boolean {
     panel?.post({ type: 'liveValues', values: entries(values) });
+    return panel !== undefined;
+}
+
+/**
+ * The command `maa.diagram.highlightTrace`: highlights a run's trace point in the open diagram
+ * until the next one (`undefined` clears): the state and the transition taken in the automaton
+ * view of `component`, the state chip of `instancePath` in C&C views (docs/vscode.md). Throws on
+ * an argument that is not a highlight. Returns false when no diagram is open.
+ */
+export function highlightTrace(argument: unknown): boolean {
+    highlighted = highlightMessage(argument);
+    panel?.post(highlighted);
     return panel !== undefined;
 }
 
@@ -82,6 +97,7 @@ function openPanel(context: vscode.ExtensionContext, client: DiagramClient): Dia
             void vscode.commands.executeCommand('setContext', DIAGRAM_OPEN, false);
         });
         void vscode.commands.executeCommand('setContext', DIAGRAM_OPEN, true);
+        if (highlighted.highlight) panel.post(highlighted);
     }
     return panel;
 }
@@ -145,6 +161,7 @@ export function registerDiagram(context: vscode.ExtensionContext, client: Diagra
         client.onNotification('diagram/accept', (message) => relay.fromServer(message)),
         vscode.commands.registerCommand('maa.openDiagram', (uri?: vscode.Uri) => openDiagram(context, client, false, uri)),
         vscode.commands.registerCommand('maa.openAutomatonView', (uri?: vscode.Uri) => openDiagram(context, client, true, uri)),
+        vscode.commands.registerCommand('maa.diagram.highlightTrace', (argument?: unknown) => highlightTrace(argument)),
         vscode.commands.registerCommand('maa.exportDiagramSvg', () => {
             if (panel) panel.post({ type: 'exportSvg' });
             else void vscode.window.showInformationMessage('MontiArc: no diagram is open (MontiArc: Open Diagram).');

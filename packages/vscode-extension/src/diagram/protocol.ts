@@ -4,7 +4,8 @@
  * the extension relays them between the webview and the language server's `diagram/accept`
  * notifications (relay.ts).
  */
-import type { DiagramTarget, TextPosition } from '@maa/diagram-view/contracts';
+import type { DiagramHighlight, DiagramTarget, TextPosition } from '@maa/diagram-view/contracts';
+import { parseHighlight } from '@maa/diagram-view/highlight';
 import type { ActionMessage } from 'sprotty-protocol';
 
 /** Webview → extension. */
@@ -31,7 +32,18 @@ export type ToWebview =
     /** Active automaton state or mode by instance path (`"ctrl"` → `"Toasting"`); an empty list clears them. */
     | { readonly type: 'activeStates'; readonly states: ReadonlyArray<readonly [string, string]> }
     /** Export the shown diagram (the webview answers with `saveSvg`). */
-    | { readonly type: 'exportSvg' };
+    | { readonly type: 'exportSvg' }
+    /** Highlight a run's trace point (a state, the transition taken) until the next one; without `highlight`: clear. */
+    | { readonly type: 'highlight'; readonly highlight?: DiagramHighlight };
+
+/**
+ * The webview message of the command `maa.diagram.highlightTrace`'s argument (checked: it comes
+ * from another part of the extension, maybe from a webview); throws with what is wrong.
+ */
+export function highlightMessage(argument: unknown): Extract<ToWebview, { type: 'highlight' }> {
+    const highlight = parseHighlight(argument);
+    return highlight ? { type: 'highlight', highlight } : { type: 'highlight' };
+}
 
 function isRecord(value: unknown): value is Record<string, unknown> {
     return typeof value === 'object' && value !== null;

@@ -63,6 +63,9 @@ window.addEventListener('message', (event: MessageEvent<ToWebview>) => {
         case 'exportSvg':
             void exportSvg();
             break;
+        case 'highlight':
+            view.highlight(message.highlight);
+            break;
     }
 });
 vscode.postMessage({ type: 'ready' });
