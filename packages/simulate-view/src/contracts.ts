@@ -26,6 +26,15 @@ export interface DiagramLiveLayer {
 /** One application configuration of the workspace (`GET /api/apps`, @maa/protocol). */
 export type { AppInfo };
 
+/**
+ * State the host keeps for the panel across a reload of the page or webview (VS Code: the
+ * webview's getState/setState). Values are JSON; each part of the panel uses a key of its own.
+ */
+export interface ViewState {
+    get(key: string): unknown;
+    set(key: string, value: unknown): void;
+}
+
 /** What the front end gives the simulate panel. */
 export interface SimulateHost {
     /** The diagram's live layer, for live values and active states during a run. */
@@ -40,4 +49,6 @@ export interface SimulateHost {
      * relay, whose path carries the capability).
      */
     backendBase?: string;
+    /** Where the panel keeps its layout (the 3D view's size); absent: not kept. */
+    viewState?: ViewState;
 }

@@ -10,9 +10,10 @@ import type { Controls } from './controls.js';
 import { errorText } from './dom.js';
 import type { Inspector } from './inspector.js';
 import { LiveRun } from './live-run.js';
-import { preparingLine } from './logic.js';
+import { lastRunNote, preparingLine, type RunEnd } from './logic.js';
 import { INITIAL_SESSION, idleStatusText, transition, type SessionEvent, type SessionState } from './session.js';
 import type { StatusView } from './status-view.js';
+import type { LiveTimeline } from './timeline/feed.js';
 import type { Viewer } from './viewer.js';
 
 /** Polling `/api/sim/status` while a start request is open (ROS 2: interface build, minutes). */
@@ -30,6 +31,8 @@ export interface ControllerParts {
     api: SimApi;
     /** The rosbridge WebSocket URL (endpoints.ts). */
     rosbridge: string;
+    /** The session's timeline (store and panels) a run feeds. */
+    timeline?: LiveTimeline;
 }
 
 export class SimulationController implements Disposable {
@@ -175,6 +178,8 @@ export class SimulationController implements Disposable {
     async stop(): Promise<void> {
         const { status, host } = this.parts;
         if (!this.dispatch({ type: 'stop' })) return;
+        // the table keeps the values as they are now (ROS 2 nodes leave their topics while they stop)
+        this.freezeInspector('stopped');
         try {
             await this.parts.api.stop();
             host.notify('info', 'Simulation stopped');
@@ -261,6 +266,7 @@ export class SimulationController implements Disposable {
     private attach(app: string, platform: string): void {
         const { host, inspector, status, viewer } = this.parts;
         this.detach();
+        inspector.clear(); // the last run's values go
         viewer.show();
         this.run = new LiveRun({
             app,
@@ -273,19 +279,28 @@ export class SimulationController implements Disposable {
             running: () => this.session.kind === 'running',
             changed: () => this.render(),
             notify: (severity, message) => host.notify(severity, message),
+            ...(this.parts.timeline ? { timeline: this.parts.timeline } : {}),
         });
         this.backendPoll = setInterval(() => void this.pollBackend(), BACKEND_POLL_MS);
         this.render();
     }
 
-    /** Disconnects and clears everything a run showed. */
-    private detach(): void {
+    /** Disconnects and clears everything a run showed but the port table's last values (marked as such). */
+    private detach(end: RunEnd = 'over'): void {
         if (this.backendPoll !== undefined) clearInterval(this.backendPoll);
         this.backendPoll = undefined;
+        this.freezeInspector(end);
         this.run?.dispose();
         this.run = undefined;
         this.parts.viewer.hide();
         this.render();
+    }
+
+    /** Marks the port table as the last run's (once per run: a stop freezes it before the detach). */
+    private freezeInspector(end: RunEnd): void {
+        const { inspector } = this.parts;
+        if (!this.run || inspector.stale) return;
+        inspector.freeze(lastRunNote(end, this.run.clockSeconds));
     }
 
     /** A session that ended on its own (the simulator exited): its exit code and log are shown. */
@@ -298,7 +313,7 @@ export class SimulationController implements Disposable {
             return;
         }
         if (st.running || this.session.kind !== 'running') return;
-        this.detach();
+        this.detach('ended');
         this.dispatch({ type: 'ended', exitCode: st.exitCode });
         if (st.exitCode) this.parts.status.showError(`The simulation ended with exit code ${st.exitCode}`, st.log ?? []);
     }

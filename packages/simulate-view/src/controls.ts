@@ -6,7 +6,7 @@
 import type { AppInfo } from './contracts.js';
 import { el } from './dom.js';
 import { defaultPlatform, platformMode, type SimMode } from './logic.js';
-import { accepts, isBusy, type SessionState } from './session.js';
+import { toolbarState, type SessionState } from './session.js';
 
 const SPEEDS = [0.1, 0.25, 0.5, 1, 2, 5, 10, 0];
 
@@ -132,20 +132,24 @@ export class Controls {
         return Math.min(100000, Math.max(1, Math.round(Number(this.stepsInput.value) || 1)));
     }
 
-    /** Enables what the session state and the connection allow. */
+    /** Enables what the session state and the connection allow (session.ts, toolbarState). */
     render(ctx: ControlsContext): void {
         const mode = this.selectedMode();
-        const busy = isBusy(ctx.session);
-        this.startBtn.disabled = !accepts(ctx.session, 'start') || !mode;
-        this.stopBtn.disabled = !accepts(ctx.session, 'stop');
-        for (const b of [this.pauseBtn, this.resumeBtn, this.stepBtn, this.resetBtn])
-            b.disabled = ctx.session.kind !== 'running' || !ctx.connected;
-        this.reloadViewBtn.disabled = !ctx.viewShown;
-        this.speedSelect.disabled = busy;
-        this.appSelect.disabled = busy;
-        this.platformSelect.disabled = busy;
+        const state = toolbarState(ctx.session, { canRun: !!mode, connected: ctx.connected, paused: ctx.paused, viewShown: ctx.viewShown });
+        this.startBtn.disabled = !state.start;
+        this.startBtn.title = state.start
+            ? 'Generate the platform and start the simulation'
+            : ctx.session.kind === 'idle'
+              ? 'Choose an application and a platform that can run'
+              : 'A simulation is starting or running: stop it first';
+        this.stopBtn.disabled = !state.stop;
+        for (const b of [this.pauseBtn, this.resumeBtn, this.stepBtn, this.resetBtn]) b.disabled = !state.run;
+        this.reloadViewBtn.disabled = !state.reloadView;
+        this.speedSelect.disabled = !state.choice;
+        this.appSelect.disabled = !state.choice;
+        this.platformSelect.disabled = !state.choice;
         this.modeLabel.textContent = mode ? modeName(mode) : '';
-        this.pauseBtn.hidden = ctx.paused;
-        this.resumeBtn.hidden = !ctx.paused;
+        this.pauseBtn.hidden = state.showResume;
+        this.resumeBtn.hidden = !state.showResume;
     }
 }

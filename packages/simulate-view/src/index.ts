@@ -7,18 +7,18 @@
  * live layer).
  *
  * The parts: the tool bar (controls.ts), the status line (status-view.ts), the 3D view
- * (viewer.ts), the port inspector (inspector.ts, its rows, plots and injection), and the
- * controller (controller.ts) with the session's state machine (session.ts) and the live
- * connection of a run (live-run.ts).
+ * (viewer.ts) with a drag handle between it and the port table (layout.ts), the port inspector
+ * (inspector.ts, its rows, plots and injection), and the controller (controller.ts) with the
+ * session's state machine (session.ts) and the live connection of a run (live-run.ts).
  */
 import './simulate.css';
 import type { Disposable, SimulateHost } from './contracts.js';
 import { Controls } from './controls.js';
 import { SimulationController } from './controller.js';
-import { el } from './dom.js';
 import { simEndpoints } from './endpoints.js';
 import { createSimApi } from './backend.js';
 import { Inspector } from './inspector.js';
+import { SplitLayout } from './layout.js';
 import { StatusView } from './status-view.js';
 import { Viewer } from './viewer.js';
 import { createReplayApi } from './replay/api.js';
@@ -53,13 +53,14 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
         valuesChanged: () => controller?.pushValues(),
         notify: (severity, message) => host.notify(severity, message),
     });
+    const layout = new SplitLayout(viewer.element, inspector.element, host.viewState);
     container.replaceChildren(
         controls.element,
         status.bar,
         replayBar.element,
         status.errorBox,
         status.progressBox,
-        el('div', { class: 'maa-sim-body' }, viewer.element, inspector.element),
+        layout.element,
     );
     const simApi = createSimApi(endpoints.api);
     controller = new SimulationController({
@@ -100,6 +101,8 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
             replay.dispose();
             controller.dispose();
             controller = undefined;
+            viewer.dispose();
+            layout.dispose();
             container.replaceChildren();
             container.classList.remove('maa-simulate');
         },

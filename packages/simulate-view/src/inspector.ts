@@ -1,7 +1,8 @@
 /**
  * The port inspector: a row per topic of the run (ports first, platform topics on request), a
  * filter, the live value of each and, for watched rows, a plot. It decides which topics are
- * subscribed and hands the port values to the diagram.
+ * subscribed and hands the port values to the diagram. When the run ends the rows stay with their
+ * last values, marked as the last run's ({@link Inspector.freeze}), until the next run starts.
  */
 import type { RosConnection, TopicInfo } from './ros/index.js';
 import { el } from './dom.js';
@@ -36,6 +37,10 @@ export class Inspector {
     private readonly showPlatform = el('input', { type: 'checkbox', 'data-testid': 'show-platform-topics' });
     private readonly tbody = el('tbody');
     private readonly empty = el('div', { class: 'maa-inspector-empty' }, 'Port topics appear here during a run.');
+    /** Says that the rows are the last run's (hidden during a run). */
+    private readonly staleNote = el('div', { class: 'maa-inspector-stale-note', 'data-testid': 'port-stale', hidden: '' });
+    /** The run is over: the rows keep their last values, nothing is subscribed or updated. */
+    private frozen = false;
     private readonly rows = new Map<string, InspectorRow>();
     private readonly enums = new EnumLiterals();
     private conn: RosConnection | undefined;
@@ -80,6 +85,7 @@ export class Inspector {
                     ' platform topics',
                 ),
             ),
+            this.staleNote,
             this.empty,
             table,
         );
@@ -99,8 +105,13 @@ export class Inspector {
         this.conn = conn;
     }
 
-    /** The run's topics: new rows for new topics, gone ones removed; `ports` says which topic carries which port. */
+    /**
+     * The run's topics: new rows for new topics; `ports` says which topic carries which port. A
+     * port's row stays when its topic leaves the list (ROS 2 nodes restarting at a reset, or
+     * ending at a stop), with its last value; other topics that left are removed.
+     */
     update(list: readonly TopicInfo[], ports: PortMap): void {
+        if (this.frozen) return;
         this.ports = ports;
         const seen = new Set<string>();
         for (const info of list) {
@@ -124,7 +135,7 @@ export class Inspector {
             );
         }
         for (const [topic, r] of this.rows) {
-            if (!seen.has(topic)) {
+            if (!seen.has(topic) && !r.port) {
                 r.sub?.dispose();
                 r.tr.remove();
                 this.rows.delete(topic);
@@ -158,14 +169,40 @@ export class Inspector {
         for (const r of this.rows.values()) r.plot.samples.clear();
     }
 
-    /** Removes every row and subscription (the run is over). */
+    /** Removes every row and subscription (a new run starts). */
     clear(): void {
         for (const r of this.rows.values()) r.sub?.dispose();
         this.rows.clear();
         this.tbody.replaceChildren();
-        this.empty.hidden = false;
         this.conn = undefined;
         this.ports = undefined;
+        this.frozen = false;
+        this.element.classList.remove('maa-inspector-stale');
+        this.staleNote.hidden = true;
+        this.render();
+    }
+
+    /**
+     * The run is over (stopped or ended): every subscription ends, the rows keep their last
+     * values, and a note says whose they are (`note`: "Last values of the stopped run (t 12.34 s)").
+     */
+    freeze(note: string): void {
+        for (const r of this.rows.values()) {
+            r.sub?.dispose();
+            r.sub = undefined;
+            r.flush(this.enums); // values that arrived since the last tick
+        }
+        this.conn = undefined;
+        this.frozen = true;
+        this.element.classList.add('maa-inspector-stale');
+        this.staleNote.textContent = note;
+        this.staleNote.hidden = this.rows.size === 0;
+        this.render();
+    }
+
+    /** The rows are the last run's (see {@link freeze}). */
+    get stale(): boolean {
+        return this.frozen;
     }
 
     private watchChanged(row: InspectorRow): void {
@@ -178,6 +215,7 @@ export class Inspector {
 
     private inject(row: InspectorRow, text: string): void {
         const conn = this.conn;
+        if (this.frozen) return;
         if (!conn || this.rows.get(row.info.topic) !== row) return;
         void inject(conn, { topic: row.info.topic, type: row.info.type, label: row.label }, text, this.enums, (severity, message) =>
             this.host.notify(severity, message),
@@ -195,13 +233,13 @@ export class Inspector {
         const visible = sorted.filter((r) => this.visible(r));
         this.tbody.replaceChildren(...visible.map((r) => r.tr));
         this.empty.hidden = visible.length > 0;
-        this.empty.textContent = this.rows.size === 0 ? 'Port topics appear here during a run.' : 'No topic matches.';
+        this.empty.textContent = emptyText(this.rows.size, this.filterInput.value);
     }
 
     /** Subscribed: watched rows, port rows when all values go to the diagram or the row is visible, platform rows when listed. */
     private updateSubscriptions(): void {
         const conn = this.conn;
-        if (!conn) return;
+        if (!conn || this.frozen) return;
         for (const r of this.rows.values()) {
             const want =
                 r.watched ||
@@ -225,4 +263,11 @@ export class Inspector {
             });
         }
     }
+}
+
+/** What the table says when it shows no row: nothing yet, nothing matches the filter, or only platform topics. */
+export function emptyText(rows: number, filter: string): string {
+    if (rows === 0) return 'Port topics appear here during a run.';
+    if (filter.trim() !== '') return 'No topic matches the filter.';
+    return 'No port topics yet ("platform topics" lists the simulator\'s).';
 }

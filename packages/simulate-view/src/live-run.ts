@@ -84,6 +84,8 @@ export class LiveRun implements Disposable {
         try {
             const res = await conn.callService<SimServiceResponse>(service, args, service === '/sim/reset' ? 60_000 : 10_000);
             if (res && res.success === false) this.host.notify('warning', `${service}: ${res.message ?? 'failed'}`);
+            // a reset starts the clock at 0 again: the answer's time counts until /clock sends the next one
+            if (service === '/sim/reset' && res?.success !== false) this.clock = undefined;
             const st = res?.status;
             if (st && typeof st === 'object') this.simStatus = unwrapStatus(st);
             await this.pollStatus();
@@ -105,13 +107,15 @@ export class LiveRun implements Disposable {
             this.host.status.set(statusLine(this.simStatus, this.clock));
     }
 
-    /** Disconnects and clears the inspector and the diagram's live decorations. */
+    /**
+     * Disconnects and clears the diagram's live decorations; the inspector keeps the run's last
+     * values (the controller marks them as the last run's, and clears them when a run starts).
+     */
     dispose(): void {
         if (this.disposed) return;
         this.disposed = true;
         for (const t of this.timers.splice(0)) clearInterval(t);
         for (const s of this.subs.splice(0)) s.dispose();
-        this.host.inspector.clear();
         this.ros?.dispose();
         this.ros = undefined;
         try {

@@ -95,3 +95,13 @@ export function backendError(status: number, body: unknown): { message: string; 
     }
     return { message, log };
 }
+
+/** How a run's connection ended: stopped by the user, ended by the simulator, or replaced. */
+export type RunEnd = 'stopped' | 'ended' | 'over';
+
+/** The note over the port table once a run is over: whose values these are, and when they were sent. */
+export function lastRunNote(end: RunEnd, clock?: number): string {
+    const run = end === 'stopped' ? 'the stopped run' : end === 'ended' ? 'the run that ended' : 'the last run';
+    const at = typeof clock === 'number' && Number.isFinite(clock) ? ` (t ${clock.toFixed(2)} s)` : '';
+    return `Last values of ${run}${at}: they update again when a simulation runs.`;
+}

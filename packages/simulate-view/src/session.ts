@@ -122,3 +122,43 @@ export function idleStatusText(state: SessionState & { kind: 'idle' }): string {
             return `Simulation ended${state.exitCode !== undefined && state.exitCode !== null ? ` (exit code ${state.exitCode})` : ''}`;
     }
 }
+
+/** What the tool bar's buttons depend on besides the session. */
+export interface ToolbarContext {
+    /** A runnable platform is chosen (its mode is known). */
+    readonly canRun: boolean;
+    /** A rosbridge connection to the running simulator exists. */
+    readonly connected: boolean;
+    /** The simulator reports itself paused. */
+    readonly paused: boolean;
+    /** The 3D view is shown. */
+    readonly viewShown: boolean;
+}
+
+/** Which tool bar controls are enabled (and whether Pause or Resume shows). */
+export interface ToolbarState {
+    readonly start: boolean;
+    readonly stop: boolean;
+    /** Pause/Resume, Step and Reset: a connected running session. */
+    readonly run: boolean;
+    readonly reloadView: boolean;
+    /** The app, platform and speed choice. */
+    readonly choice: boolean;
+    readonly showResume: boolean;
+}
+
+/**
+ * The tool bar for a session: Start only when no session is starting, running or stopping (a
+ * second click cannot start a second run, or restart the one that runs: Stop first); Stop while a
+ * start is open or a session runs.
+ */
+export function toolbarState(session: SessionState, ctx: ToolbarContext): ToolbarState {
+    return {
+        start: session.kind === 'idle' && ctx.canRun,
+        stop: accepts(session, 'stop'),
+        run: session.kind === 'running' && ctx.connected,
+        reloadView: ctx.viewShown,
+        choice: !isBusy(session),
+        showResume: ctx.paused,
+    };
+}

@@ -7,13 +7,15 @@
  */
 import './vscode-webview.css';
 import { createSimApi } from './backend.js';
-import type { DiagramLiveLayer, Disposable } from './contracts.js';
+import type { DiagramLiveLayer, Disposable, ViewState } from './contracts.js';
 import { simEndpoints } from './endpoints.js';
 import { type FromWebview, parseToWebview, type ToWebview } from './host-messages.js';
 import { mountSimulatePanel, type SimulatePanel } from './index.js';
 
 interface VsCodeApi {
     postMessage(message: FromWebview): void;
+    getState(): unknown;
+    setState(state: unknown): void;
 }
 
 declare function acquireVsCodeApi(): VsCodeApi;
@@ -27,6 +29,18 @@ const postingLayer: DiagramLiveLayer = {
     onSelect: (): Disposable => ({ dispose: () => undefined }),
 };
 
+/** The webview's state (kept by VS Code while the view is hidden or reloaded): one object, a key per part. */
+const viewState: ViewState = {
+    get: (key) => {
+        const state = vscode.getState();
+        return state && typeof state === 'object' ? (state as Record<string, unknown>)[key] : undefined;
+    },
+    set: (key, value) => {
+        const state = vscode.getState();
+        vscode.setState({ ...(state && typeof state === 'object' ? state : {}), [key]: value });
+    },
+};
+
 let panel: SimulatePanel | undefined;
 
 function mount(backendBase: string): void {
@@ -36,6 +50,7 @@ function mount(backendBase: string): void {
     const api = createSimApi(simEndpoints(backendBase, window.location).api);
     panel = mountSimulatePanel(container, {
         backendBase,
+        viewState,
         diagram: postingLayer,
         apps: () => api.apps(),
         notify: (severity, message) => vscode.postMessage({ type: 'notify', severity, message }),
