@@ -219,6 +219,12 @@ class SceneView:
         self.hud = gui.add_markdown(self._hud_text())
         if self.controls:
             self._build_run_controls()
+        else:
+            # embedded in the IDE, whose status line shows the time and the toast: a small panel,
+            # folded at first (its button opens the HUD and the camera presets), so the 3D view
+            # keeps the room
+            gui.configure_theme(control_width="small", show_share_button=False)
+            gui.main_panel.minimize()
         self._build_camera_folder()
 
     def _build_run_controls(self) -> None:
