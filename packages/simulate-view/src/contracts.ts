@@ -4,6 +4,7 @@
  * IDE's diagram view (a DiagramLiveLayer with more) fits as it is.
  */
 import type { AppInfo } from '@maa/protocol';
+import type { RevealMessage } from './host-messages.js';
 
 /** Something that can be undone/removed. */
 export interface Disposable {
@@ -51,4 +52,9 @@ export interface SimulateHost {
     backendBase?: string;
     /** Where the panel keeps its layout (the 3D view's size); absent: not kept. */
     viewState?: ViewState;
+    /**
+     * Shows a transition or program step selected in the panels in the model: its source line
+     * and the diagram highlight (VS Code: the extension, host-messages.ts); absent: not shown.
+     */
+    reveal?(message: RevealMessage): void;
 }

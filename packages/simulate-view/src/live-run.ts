@@ -14,6 +14,8 @@ import type { SimApi } from './backend.js';
 import { PortMap } from './port-map.js';
 import { parseAutomatonStates } from './states.js';
 import type { StatusView } from './status-view.js';
+import { TimelineFeed, type LiveTimeline } from './timeline/feed.js';
+import { activeStatesAt, diagramValuesAt } from './replay/logic.js';
 
 const AUTOMATON_STATES = '/maa/automaton_states';
 const DIAGRAM_PERIOD_MS = 100; // 10 Hz
@@ -36,6 +38,8 @@ export interface LiveRunHost {
     /** The connection or the simulator's status changed: the controls render again. */
     changed(): void;
     notify(severity: 'info' | 'warning' | 'error', message: string): void;
+    /** The session's timeline: the run's messages go to its store (panels, docs/ide.md "Panels"). */
+    timeline?: LiveTimeline;
 }
 
 export class LiveRun implements Disposable {
@@ -51,9 +55,13 @@ export class LiveRun implements Disposable {
     private statesDirty = false;
     private disposed = false;
     private readonly subs: Disposable[] = [];
+    private feed: TimelineFeed | undefined;
+    /** The cursor time the diagram shows (`undefined`: the newest values). */
+    private shownCursor: number | undefined;
     private readonly timers: ReturnType<typeof setInterval>[] = [];
 
     constructor(private readonly host: LiveRunHost) {
+        host.timeline?.runStarted();
         const url = host.rosbridge;
         this.connect(url, 1).catch((e: unknown) => {
             if (!this.disposed) host.status.showError(`Could not connect to the simulator's rosbridge at ${url}: ${errorText(e)}`);
@@ -86,6 +94,11 @@ export class LiveRun implements Disposable {
             if (res && res.success === false) this.host.notify('warning', `${service}: ${res.message ?? 'failed'}`);
             // a reset starts the clock at 0 again: the answer's time counts until /clock sends the next one
             if (service === '/sim/reset' && res?.success !== false) this.clock = undefined;
+            if (service === '/sim/reset' && res?.success !== false) {
+                // the timeline starts over with the simulation's time
+                this.feed?.restart();
+                this.host.timeline?.runStarted();
+            }
             const st = res?.status;
             if (st && typeof st === 'object') this.simStatus = unwrapStatus(st);
             await this.pollStatus();
@@ -98,6 +111,7 @@ export class LiveRun implements Disposable {
     tick(force = false): void {
         const { inspector, diagram } = this.host;
         const valuesChanged = inspector.flush() || force;
+        if (this.showCursor()) return;
         if (valuesChanged) diagram.setLiveValues(inspector.diagramValues());
         if (this.statesDirty) {
             this.statesDirty = false;
@@ -105,6 +119,31 @@ export class LiveRun implements Disposable {
         }
         if (this.clock !== undefined && this.host.running() && this.ros?.connectionState === 'connected')
             this.host.status.set(statusLine(this.simStatus, this.clock));
+    }
+
+    /**
+     * While the panels' time cursor is set, the diagram shows the values and states at the cursor
+     * (from the timeline store) instead of the newest; true then. When the cursor is cleared, the
+     * newest values and states are sent again.
+     */
+    private showCursor(): boolean {
+        const cursor = this.host.timeline?.store.cursor;
+        const ports = this.ports;
+        if (cursor === undefined || !ports || !this.host.timeline) {
+            if (this.shownCursor !== undefined) {
+                this.shownCursor = undefined;
+                this.statesDirty = true;
+                this.host.diagram.setLiveValues(this.host.inspector.diagramValues());
+            }
+            return false;
+        }
+        if (cursor !== this.shownCursor) {
+            const { store } = this.host.timeline;
+            this.shownCursor = cursor;
+            this.host.diagram.setLiveValues(diagramValuesAt(store, ports, cursor));
+            this.host.diagram.setActiveStates(activeStatesAt(store, ports, cursor));
+        }
+        return true;
     }
 
     /**
@@ -116,6 +155,8 @@ export class LiveRun implements Disposable {
         this.disposed = true;
         for (const t of this.timers.splice(0)) clearInterval(t);
         for (const s of this.subs.splice(0)) s.dispose();
+        this.feed?.dispose();
+        this.feed = undefined;
         this.ros?.dispose();
         this.ros = undefined;
         try {
@@ -151,6 +192,7 @@ export class LiveRun implements Disposable {
         this.host.inspector.connect(conn);
         this.host.changed();
         this.subscribe(conn);
+        if (this.host.timeline) this.feed = new TimelineFeed(conn, this.host.timeline.store);
         void this.refreshTopics();
         void this.pollStatus();
     }
@@ -207,6 +249,7 @@ export class LiveRun implements Disposable {
         const ports = this.ports ?? (await this.loadPorts());
         if (conn !== this.ros || !ports) return;
         this.host.inspector.update(list, ports);
+        this.feed?.follow(list, (topic) => ports.portOf(topic) !== undefined);
     }
 
     /** The last `/maa/automaton_states` message by instance path, once the port map is there. */
@@ -222,8 +265,11 @@ export class LiveRun implements Disposable {
         if (this.portsLoading) return undefined;
         this.portsLoading = true;
         try {
-            this.ports = new PortMap(await this.host.api.topics(this.host.app, this.host.platform));
+            const answer = await this.host.api.topics(this.host.app, this.host.platform);
+            const ports = new PortMap(answer);
+            this.ports = ports;
             this.mapStates(); // states that arrived before the map
+            if (!this.disposed) this.host.timeline?.runInfo(answer, (node) => ports.instanceOf(node));
         } catch (e) {
             // asked again at the next topic refresh
             console.warn(`port topics of ${this.host.app} on ${this.host.platform}: ${errorText(e)}`);

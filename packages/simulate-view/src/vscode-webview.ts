@@ -54,6 +54,7 @@ function mount(backendBase: string): void {
         diagram: postingLayer,
         apps: () => api.apps(),
         notify: (severity, message) => vscode.postMessage({ type: 'notify', severity, message }),
+        reveal: (message) => vscode.postMessage(message),
     });
 }
 

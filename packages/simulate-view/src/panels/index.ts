@@ -44,6 +44,11 @@ export class Panels implements Disposable {
         { type: 'button', 'data-testid': 'panels-live', title: 'Follow the newest data (clears the cursor)' },
         'Live',
     );
+    private readonly fitBtn = el(
+        'button',
+        { type: 'button', 'data-testid': 'panels-fit', title: 'Show the whole run in the time window' },
+        'All',
+    );
     private frame: number | undefined;
     private dataTimer: ReturnType<typeof setTimeout> | undefined;
     private readonly sub: Disposable;
@@ -68,10 +73,24 @@ export class Panels implements Disposable {
             this.window.follow();
             this.redraw();
         });
+        this.fitBtn.addEventListener('click', () => {
+            const { start, end } = store;
+            if (start === undefined || end === undefined) return;
+            this.window.set({ t0: start, t1: Math.max(end, start + 1) });
+            this.redraw();
+        });
         this.element = el(
             'div',
             { class: 'maa-panels', 'data-testid': 'sim-panels' },
-            el('div', { class: 'maa-panels-bar' }, tabBar, el('span', { class: 'maa-panels-spacer' }), this.timeLabel, this.liveBtn),
+            el(
+                'div',
+                { class: 'maa-panels-bar' },
+                tabBar,
+                el('span', { class: 'maa-panels-spacer' }),
+                this.timeLabel,
+                this.fitBtn,
+                this.liveBtn,
+            ),
             ...this.panels.map((p) => p.element),
         );
         this.sub = store.onChange((what) => {

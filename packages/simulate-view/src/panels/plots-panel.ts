@@ -30,6 +30,13 @@ function setOptions(select: HTMLSelectElement, values: readonly string[], labels
     if (values.includes(chosen)) select.value = chosen;
 }
 
+/** A series' colour in the legend (set through the CSSOM: the webview's CSP refuses style attributes). */
+function swatch(color: string): HTMLElement {
+    const s = el('span', { class: 'maa-plot-swatch' });
+    s.style.background = color;
+    return s;
+}
+
 class Plot {
     readonly series: SeriesKey[] = [];
     readonly element: HTMLElement;
@@ -128,7 +135,7 @@ class Plot {
                 return el(
                     'span',
                     { class: 'maa-plot-series', 'data-testid': 'plot-series' },
-                    el('span', { class: 'maa-plot-swatch', style: `background:${COLORS[i % COLORS.length]}` }),
+                    swatch(COLORS[i % COLORS.length]!),
                     `${s.topic}${s.field ? ` ${s.field}` : ''} = `,
                     el('b', { 'data-testid': 'plot-series-value' }, v === undefined ? '–' : String(Number(v.toPrecision(6)))),
                     remove,

@@ -131,10 +131,13 @@ export class StatesPanel implements Panel {
                     class: 'maa-states-band',
                     'data-testid': 'state-band',
                     title: `${b.state}: ${formatTime(b.t0, w)} – ${b.t1 === undefined ? 'now' : formatTime(b.t1, w)}`,
-                    style: `left:${left}%;width:${Math.max(0, pct(t1) - left)}%;background:hsl(${bandHue(b.state)} 60% 80%)`,
                 },
                 b.state,
             );
+            // through the CSSOM: the webview's CSP refuses style attributes
+            band.style.left = `${left}%`;
+            band.style.width = `${Math.max(0, pct(t1) - left)}%`;
+            band.style.background = `hsl(${bandHue(b.state)} 60% 80%)`;
             band.dataset['state'] = b.state;
             parts.push(band);
         }
@@ -148,12 +151,15 @@ export class StatesPanel implements Panel {
                 'data-from': t.from,
                 'data-to': t.to,
                 title: transitionTitle(ctx, t),
-                style: `left:${pct(t.t)}%`,
             });
+            mark.style.left = `${pct(t.t)}%`;
             parts.push(mark);
         });
-        if (ctx.store.cursor !== undefined && ctx.store.cursor >= span.t0 && ctx.store.cursor <= span.t1)
-            parts.push(el('div', { class: 'maa-states-cursor', style: `left:${pct(ctx.store.cursor)}%` }));
+        if (ctx.store.cursor !== undefined && ctx.store.cursor >= span.t0 && ctx.store.cursor <= span.t1) {
+            const cursor = el('div', { class: 'maa-states-cursor' });
+            cursor.style.left = `${pct(ctx.store.cursor)}%`;
+            parts.push(cursor);
+        }
         track.replaceChildren(...parts);
     }
 }
