@@ -5,9 +5,11 @@
 // Code's acquireVsCodeApi relays the page's messages to the built language server over stdio
 // (as src/diagram/panel.ts does through the LanguageClient). Checks: the C&C diagram of a model
 // renders without a CSP violation, a click posts the element's trace, the editor's cursor selects
-// the element, the command's Export SVG posts a standalone SVG named after the component, the
-// automaton view shows the active state pushed by showActiveStates, and an edit updates the
-// diagram. Exit code 0 when all pass.
+// the element, a run's live value and state chip cover no text, the palette follows the editor's
+// theme, the command's Export SVG posts a standalone SVG named after the component, the automaton
+// line opens the automaton view, which shows the active state pushed by showActiveStates and a
+// highlighted trace point (maa.diagram.highlightTrace), and an edit updates the diagram. Exit code
+// 0 when all pass.
 //
 //   flock /tmp/e2e.lock node e2e/vscode-diagram-webview.mjs   (needs the language server built)
 import { spawn } from 'node:child_process';
@@ -18,7 +20,7 @@ import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { build } from 'esbuild';
 import { createProtocolConnection, StreamMessageReader, StreamMessageWriter } from 'vscode-languageserver-protocol/node.js';
-import { launchBrowser, repo } from './lib.mjs';
+import { launchBrowser, repo, screenshot } from './lib.mjs';
 
 const extPkg = path.join(repo, 'packages', 'vscode-extension');
 const tmp = mkdtempSync(path.join(tmpdir(), 'maa-diagram-webview-'));
@@ -160,6 +162,46 @@ async function main() {
     await page.waitForSelector('#maa-diagram-root svg [id$="root:color"].selected', { timeout: 10_000 });
     check('the cursor selects the element there', true);
 
+    // A run's decorations in the C&C view: a live value beside its port and the current-state chip, covering no other text
+    // (the browser's own text boxes); the atomic component shown on its own lists its port types and its automaton.
+    await toPage({ type: 'liveValues', values: [['distance', '12345678901234567890']] });
+    await toPage({ type: 'activeStates', states: [['', 'Toasting']] });
+    await page.waitForSelector('#maa-diagram-root svg .maa-value', { timeout: 10_000 });
+    await page.waitForSelector('#maa-diagram-root svg .maa-current-state', { timeout: 10_000 });
+    const covered = await page.evaluate(() => {
+        const boxes = [
+            ...document.querySelectorAll(
+                '#maa-diagram-root svg text, #maa-diagram-root svg .maa-value-label rect, #maa-diagram-root svg .maa-current-state rect, #maa-diagram-root svg .maa-badge rect',
+            ),
+        ]
+            .filter((e) => !e.closest('.maa-value-label, .maa-current-state, .maa-badge') || e.tagName === 'rect')
+            .map((e) => ({ what: `${e.getAttribute('class') ?? e.tagName}:${e.textContent ?? ''}`, r: e.getBoundingClientRect() }));
+        const out = [];
+        for (let i = 0; i < boxes.length; i++)
+            for (let j = i + 1; j < boxes.length; j++) {
+                const a = boxes[i].r;
+                const b = boxes[j].r;
+                if (a.right - 1 > b.left && b.right - 1 > a.left && a.bottom - 1 > b.top && b.bottom - 1 > a.top)
+                    out.push(`${boxes[i].what} / ${boxes[j].what}`);
+            }
+        return out;
+    });
+    await screenshot(page, 'vscode-diagram-live');
+    check('live values and the state chip cover no text (browser text boxes)', covered.length === 0, covered.slice(0, 3).join('; '));
+    const portText = await page.textContent('#maa-diagram-root svg [id$="root:distance#name"]');
+    check('the atomic component shown alone names its port types', portText === 'distance: int', portText ?? '');
+    await toPage({ type: 'liveValues', values: [] });
+    await toPage({ type: 'activeStates', states: [] });
+
+    // The palette follows the editor's theme (VS Code's body classes).
+    const rootFill = () =>
+        page.evaluate(() => getComputedStyle(document.querySelector('#maa-diagram-root svg .maa-root > .maa-component-body')).fill);
+    await page.evaluate(() => document.body.classList.add('vscode-light'));
+    const light = await rootFill();
+    await page.evaluate(() => document.body.classList.replace('vscode-light', 'vscode-dark'));
+    const dark = await rootFill();
+    check('the theme switch changes the palette (light, then dark)', light !== dark && dark === 'rgb(36, 51, 42)', `${light} -> ${dark}`);
+
     const exportFrom = posted.length;
     await toPage({ type: 'exportSvg' });
     const saved = await next('saveSvg', exportFrom);
@@ -169,9 +211,44 @@ async function main() {
         saved.fileName,
     );
 
+    // The automaton line of the atomic component opens its automaton view.
+    await page.click('#maa-diagram-root svg .maa-behavior-link', { force: true });
+    await page.waitForSelector('#maa-diagram-root svg .maa-state', { timeout: 60_000 });
+    check('the automaton line opens the automaton view', true);
     await toPage({ type: 'show', target: { uri, component: 'toast.Controller', diagramType: 'maa-automaton' } });
     // The title follows the target at once; the states come with the server's model.
     await page.waitForSelector('#maa-diagram-root svg .maa-state', { timeout: 60_000 });
+
+    // maa.diagram.highlightTrace: the state and the transition taken (by its allTransitions index), then cleared.
+    const index = Number(await page.getAttribute('#maa-diagram-root svg [id$="tr:Toasting->Serving"]', 'data-transition-index'));
+    await toPage({
+        type: 'highlight',
+        highlight: {
+            component: 'toast.Controller',
+            instancePath: 'ctrl',
+            state: 'Serving',
+            transition: { from: 'Toasting', to: 'Serving', index },
+        },
+    });
+    await page.waitForSelector('#maa-diagram-root svg .maa-transition-highlight', { timeout: 10_000 });
+    const lit = await page.evaluate(() =>
+        [...document.querySelectorAll('#maa-diagram-root svg .maa-state-highlight, #maa-diagram-root svg .maa-transition-highlight')].map(
+            (e) => e.id,
+        ),
+    );
+    check(
+        'a highlighted trace point marks its state and its transition',
+        Number.isInteger(index) &&
+            lit.length === 2 &&
+            lit.some((id) => id.endsWith('state:Serving')) &&
+            lit.some((id) => id.endsWith('tr:Toasting->Serving')),
+        lit.join(', '),
+    );
+    await toPage({ type: 'highlight' });
+    await page.waitForFunction(() => !document.querySelector('#maa-diagram-root svg .maa-transition-highlight'), undefined, {
+        timeout: 10_000,
+    });
+    check('clearing the highlight unmarks them', true);
     await toPage({ type: 'activeStates', states: [['', 'Toasting']] });
     await page.waitForSelector('#maa-diagram-root svg .maa-state-active', { timeout: 10_000 });
     const active = await page.evaluate(() => [...document.querySelectorAll('#maa-diagram-root svg .maa-state-active')].map((e) => e.id));
