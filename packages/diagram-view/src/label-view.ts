@@ -26,9 +26,25 @@ function pill(w: number, h: number, text: string, charWidth: number, boxClass: s
 /** A port's live value in its room beside the port's name. */
 function valueView(label: Readonly<SLabelImpl>, state: ViewState, w: number, h: number): VNode | undefined {
     const port = label.parent as unknown as MaaPort | undefined;
-    const value = state.liveValue(port?.portPath);
+    const value = port ? portValue(port, state) : undefined;
     if (value === undefined) return undefined;
     return pill(w, h, value, VALUE_CHAR, 'maa-value-label', 'maa-value', `${port?.name ?? ''} = ${value}`);
+}
+
+/**
+ * The live value of a port; for an in port of the shown component without one of its own, that
+ * of a port its connectors feed (on ROS 2 the topic map names the in ports that read a topic fed
+ * from outside, not the root's port).
+ */
+function portValue(port: MaaPort, state: ViewState): string | undefined {
+    const own = state.liveValue(port.portPath);
+    if (own !== undefined || port.direction !== 'in') return own;
+    for (const edge of port.outgoingEdges) {
+        const target = edge.target as MaaPort | undefined;
+        const value = target?.type === 'port' ? state.liveValue(target.portPath) : undefined;
+        if (value !== undefined) return value;
+    }
+    return undefined;
 }
 
 /** A component's current state or mode (or a highlighted trace point's state) in its room at the bottom. */
