@@ -58,8 +58,8 @@ function chipView(label: Readonly<SLabelImpl>, state: ViewState, w: number, h: n
     const vnode = mode
         ? pill(w, h, text, CHIP_CHAR, 'maa-current-mode', 'maa-mode-current', text)
         : pill(w, h, text, CHIP_CHAR, 'maa-current-state', 'maa-state-active', text);
-    const highlighted = highlight?.state !== undefined && highlight.state === current;
-    if (highlighted && vnode.data?.class) vnode.data.class['maa-chip-highlight'] = true;
+    // The instance of a highlighted trace point: its chip is marked (showing the run's state at the cursor, else the highlighted one).
+    if (highlight && vnode.data?.class) vnode.data.class['maa-chip-highlight'] = true;
     return vnode;
 }
 
