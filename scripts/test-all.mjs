@@ -10,10 +10,11 @@
 // that did not run, failed hooks, setups, linters, runners that wrote no report), and the exit
 // code is 0 exactly when that number is 0 and some test passed.
 // Installs no npm packages: run `npm ci` first (the README's test command does).
-// Two lanes run side by side to use both cores of a small machine: the main lane builds, then runs
-// Vitest (two workers, or one less than the cores on a bigger machine) and the e2e suite, printing
-// as it goes; the side lane sets up the venvs and the Debian packages and runs the linters while
-// the build runs, then the Python suites and the pack-and-install test beside Vitest (each stage's
+// Two lanes run side by side to use both cores of a small machine: the main lane builds (two
+// workspaces at a time in the order of their dependencies, scripts/build-graph.mjs), then runs
+// Vitest (two workers, or one less than the cores on a bigger machine), printing as it goes; the
+// side lane sets up the venvs and the Debian packages and runs the linters while the build runs,
+// then the Python suites, the pack-and-install test and the e2e suite beside Vitest (each stage's
 // output is printed when it ends). MAA_TEST_SERIAL=1 runs every stage one after the other.
 // Extra arguments go to Vitest, e.g. `npm test -- packages/cli`; MAA_TEST_PYTHON=0 skips the
 // Python suites except ROS 2, MAA_TEST_ROS2=0 skips ROS 2, MAA_TEST_E2E=0 the browser tests,
@@ -24,6 +25,7 @@ import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:f
 import { availableParallelism, tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { runGraph, workspaceGraph } from './build-graph.mjs';
 import { junitCounts, parseTimes, stageTable, Tally } from './test-summary.mjs';
 
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
@@ -44,43 +46,116 @@ const stages = [];
 const TIMED = '"$@"; status=$?; times >&3; exit $status';
 
 /**
- * Runs one stage and resolves to its exit status. The main lane's output goes straight to the
- * terminal; a side stage's (`side: true`) is kept and printed in one piece when it ends, so that
- * the two lanes do not interleave line by line.
+ * Runs a command under bash's `times` and resolves to its exit status, its CPU time and, with
+ * `capture`, its output (else it goes to this process's stdout and stderr).
  */
-function step(title, command, args, { cwd = repo, env = process.env, side = false } = {}) {
-    const banner = `\n=== ${title}: ${[command, ...args].join(' ')}\n`;
-    if (!side) process.stdout.write(banner);
-    const begun = Date.now();
+function runTimed(command, args, { cwd = repo, env = process.env, capture = false } = {}) {
     return new Promise((resolve) => {
         const output = [];
         const times = [];
         const child = spawn('bash', ['-c', TIMED, 'bash', command, ...args], {
             cwd,
             env,
-            stdio: [side ? 'ignore' : 'inherit', side ? 'pipe' : 'inherit', side ? 'pipe' : 'inherit', 'pipe'],
+            stdio: [capture ? 'ignore' : 'inherit', capture ? 'pipe' : 'inherit', capture ? 'pipe' : 'inherit', 'pipe'],
         });
-        if (side) {
+        if (capture) {
             child.stdout.on('data', (chunk) => output.push(chunk));
             child.stderr.on('data', (chunk) => output.push(chunk));
         }
         child.stdio[3].on('data', (chunk) => times.push(chunk));
         child.on('error', (error) => output.push(Buffer.from(`test-all: could not start ${command}: ${error.message}\n`)));
-        child.on('close', (code) => {
-            const stage = {
-                title,
-                startMs: begun - started,
-                wallMs: Date.now() - begun,
-                cpuMs: parseTimes(Buffer.concat(times).toString()),
-            };
-            stages.push(stage);
-            const cpu = stage.cpuMs === undefined ? '' : `, ${(stage.cpuMs / 1000).toFixed(1)} s CPU`;
-            const done = `=== ${title}: exit ${code ?? 1} after ${(stage.wallMs / 1000).toFixed(1)} s${cpu}\n`;
-            if (side) process.stdout.write(`${banner}${Buffer.concat(output).toString()}${done}`);
-            else process.stdout.write(`${Buffer.concat(output).toString()}${done}`);
-            resolve(code ?? 1);
-        });
+        child.on('close', (code) =>
+            resolve({ code: code ?? 1, output: Buffer.concat(output).toString(), cpuMs: parseTimes(Buffer.concat(times).toString()) }),
+        );
     });
+}
+
+/** Records a stage for the closing table and prints its closing line. */
+function stageDone(title, begun, code, cpuMs) {
+    const stage = { title, startMs: begun - started, wallMs: Date.now() - begun, cpuMs };
+    stages.push(stage);
+    const cpu = cpuMs === undefined ? '' : `, ${(cpuMs / 1000).toFixed(1)} s CPU`;
+    return `=== ${title}: exit ${code} after ${(stage.wallMs / 1000).toFixed(1)} s${cpu}\n`;
+}
+
+/**
+ * Runs one stage and resolves to its exit status. The main lane's output goes straight to the
+ * terminal; a side stage's (`side: true`) is kept and printed in one piece when it ends, so that
+ * the two lanes do not interleave line by line.
+ */
+async function step(title, command, args, { cwd = repo, env = process.env, side = false } = {}) {
+    const banner = `\n=== ${title}: ${[command, ...args].join(' ')}\n`;
+    if (!side) process.stdout.write(banner);
+    const begun = Date.now();
+    const { code, output, cpuMs } = await runTimed(command, args, { cwd, env, capture: side });
+    const done = stageDone(title, begun, code, cpuMs);
+    process.stdout.write(side ? `${banner}${output}${done}` : `${output}${done}`);
+    return code;
+}
+
+/** The workspaces built so far, and who waits for one (whenBuilt). */
+const built = { dirs: new Set(), over: false, waiting: [] };
+
+/**
+ * Resolves to true once `dir` is built (without `dir`: once the whole build succeeded), to false
+ * when the build ended without it; true at once when MAA_TEST_BUILD=0.
+ */
+function whenBuilt(dir) {
+    const ready = () => (dir === undefined ? built.over && buildStatus === 0 : built.dirs.has(dir));
+    if (!enabled('MAA_TEST_BUILD') || ready()) return Promise.resolve(true);
+    if (built.over) return Promise.resolve(false);
+    return new Promise((resolve) => built.waiting.push({ ready, resolve }));
+}
+
+/** Wakes the waiters of whenBuilt after a workspace was built, or the build ended. */
+function wakeBuildWaiters() {
+    built.waiting = built.waiting.filter(({ ready, resolve }) => {
+        if (ready()) resolve(true);
+        else if (built.over) resolve(false);
+        else return true;
+        return false;
+    });
+}
+
+/**
+ * The build: each workspace's `npm run build` as soon as those it depends on are built, as many
+ * at once as there are cores (scripts/build-graph.mjs; one at a time with MAA_TEST_SERIAL=1).
+ * Each workspace's output is printed when its build ends; the stage's CPU time is their sum.
+ */
+async function buildStage() {
+    const jobs = serial ? 1 : Math.max(2, availableParallelism());
+    process.stdout.write(`\n=== build: npm run build -w <workspace>, ${jobs} at a time in the order of their dependencies\n`);
+    const begun = Date.now();
+    let cpuMs = 0;
+    let status;
+    try {
+        status = await runGraph(workspaceGraph(repo), {
+            jobs,
+            run: async (dir) => {
+                const from = Date.now();
+                const r = await runTimed(npm, ['run', 'build', '-w', dir], { capture: true });
+                cpuMs += r.cpuMs ?? 0;
+                if (r.code === 0) {
+                    built.dirs.add(dir);
+                    wakeBuildWaiters();
+                }
+                const cpu = r.cpuMs === undefined ? '' : `, ${(r.cpuMs / 1000).toFixed(1)} s CPU`;
+                process.stdout.write(
+                    `\n--- build ${dir}\n${r.output}--- build ${dir}: exit ${r.code} after ${((Date.now() - from) / 1000).toFixed(1)} s${cpu}\n`,
+                );
+                return r.code;
+            },
+        });
+    } catch (error) {
+        // a workspace that depends on itself or on no workspace: no build started
+        process.stdout.write(`test-all: cannot order the build: ${error.message}\n`);
+        status = 1;
+    }
+    process.stdout.write(stageDone('build', begun, status, cpuMs));
+    buildStatus = status; // before waking the waiters of the whole build
+    built.over = true;
+    wakeBuildWaiters();
+    return status;
 }
 
 /** Prints what failed, by kind, and the closing line, and exits with the code that agrees with it. */
@@ -164,48 +239,77 @@ const PYTHON_SUITES = [
     },
 ];
 
-// Phase 1: the build beside the setups. The venv setups run one after the other (sim-server's and
-// the ROS 2 one both install sim-server editable, which writes into its source folder), as do the
-// Debian packages (apt-get takes a lock).
+// The build beside the setups, then the tests. The venv setups run one after the other
+// (sim-server's and the ROS 2 one both install sim-server editable, which writes into its source
+// folder), as do the Debian packages (apt-get takes a lock). Vitest starts when the build and the
+// setups are done; the Python suites need only maa-gen (packages/cli) built and start as soon as
+// it is, beside the rest of the build; the pack-and-install test and the e2e suite need the whole
+// build. A failed build or setup stops the run there: no further test starts.
 let buildStatus = 0;
 /** The exit status of ensure-chromium (run with the setups). */
 let chromiumStatus = 0;
 let setupsOk = true;
-await lanes(
-    async () => {
-        if (enabled('MAA_TEST_BUILD')) buildStatus = await step('build', npm, ['run', 'build']);
-    },
-    async () => {
-        setupsOk = await setups();
-        // The house rules (scripts/lint.mjs: Biome for TypeScript/JavaScript, ruff for Python, lint
-        // and formatting); a finding counts as one failure, and the tests run anyway.
-        if (enabled('MAA_TEST_LINT')) {
-            const lintStatus = await step('lint', process.execPath, [path.join(repo, 'scripts', 'lint.mjs')], { side: !serial });
-            if (lintStatus !== 0) tally.fail('linters that failed', `npm run lint exited with ${lintStatus}`);
-        }
-    },
-);
-if (buildStatus !== 0) tally.fail('setups that failed', `the build exited with ${buildStatus}; no test was run`);
-if (buildStatus !== 0 || !setupsOk) finish();
-
-// Phase 2: Vitest and the e2e suite in the main lane; the Python suites and the pack-and-install
-// test beside them (they use their own venvs, ROS domains leased per process, and free ports).
-await lanes(
-    async () => {
+const setupsDone = deferred();
+if (serial) {
+    if (enabled('MAA_TEST_BUILD')) buildStatus = await buildStage();
+    setupsOk = await setupsAndLint();
+    if (buildStatus === 0 && setupsOk) {
         await vitestSuite(process.argv.slice(2));
-        // The browser end-to-end suite (e2e/run.mjs): maa-ide with the built app on a fresh copy of
-        // examples/, driven through playwright-core in Debian's chromium. Its results (one per
-        // scenario) are in e2e/artifacts/results.json, screenshots beside them.
-        if (enabled('MAA_TEST_E2E')) await e2eSuite();
-    },
-    async () => {
-        for (const suite of PYTHON_SUITES.filter((x) => x.enabled)) await pythonSuite(suite);
-        // The pack-and-install test (scripts/pack-install.mjs): the public packages packed, installed
-        // into an empty folder outside the repository, and used there as a user would (one result per step).
-        if (enabled('MAA_TEST_PACK')) await packInstallSuite();
-    },
-);
+        await pythonSuites();
+        await wholeBuildSuites();
+    }
+} else {
+    await lanes(
+        async () => {
+            if (enabled('MAA_TEST_BUILD')) buildStatus = await buildStage();
+            if (buildStatus === 0 && (await setupsDone.promise)) await vitestSuite(process.argv.slice(2));
+        },
+        async () => {
+            setupsOk = await setupsAndLint();
+            setupsDone.resolve(setupsOk);
+            if (!setupsOk) return;
+            if (await whenBuilt('packages/cli')) await pythonSuites();
+            if (await whenBuilt()) await wholeBuildSuites();
+        },
+    );
+}
+if (buildStatus !== 0) tally.fail('setups that failed', `the build exited with ${buildStatus}; the tests that need it did not run`);
 finish();
+
+/** A promise with its resolve function. */
+function deferred() {
+    let resolve;
+    const promise = new Promise((r) => {
+        resolve = r;
+    });
+    return { promise, resolve };
+}
+
+/** The venv and Debian package setups, then the linters (a finding counts as one failure, the tests run anyway); false when a setup failed. */
+async function setupsAndLint() {
+    const ok = await setups();
+    // The house rules (scripts/lint.mjs: Biome for TypeScript/JavaScript, ruff for Python, lint and formatting).
+    if (enabled('MAA_TEST_LINT')) {
+        const lintStatus = await step('lint', process.execPath, [path.join(repo, 'scripts', 'lint.mjs')], { side: !serial });
+        if (lintStatus !== 0) tally.fail('linters that failed', `npm run lint exited with ${lintStatus}`);
+    }
+    return ok;
+}
+
+async function pythonSuites() {
+    for (const suite of PYTHON_SUITES.filter((x) => x.enabled)) await pythonSuite(suite);
+}
+
+/** The suites that use the whole build: the pack-and-install test and the e2e suite. */
+async function wholeBuildSuites() {
+    // The pack-and-install test (scripts/pack-install.mjs): the public packages packed, installed
+    // into an empty folder outside the repository, and used there as a user would (one result per step).
+    if (enabled('MAA_TEST_PACK')) await packInstallSuite();
+    // The browser end-to-end suite (e2e/run.mjs): maa-ide with the built app on a fresh copy of
+    // examples/, driven through playwright-core in Debian's chromium. Its results (one per
+    // scenario) are in e2e/artifacts/results.json, screenshots beside them.
+    if (enabled('MAA_TEST_E2E')) await e2eSuite();
+}
 
 /**
  * The venvs (Vitest uses sim-server's and the ROS 2 one too: the generated example runs in the
@@ -371,7 +475,7 @@ async function e2eSuite() {
     }
     const resultsFile = path.join(repo, 'e2e', 'artifacts', 'results.json');
     rmSync(resultsFile, { force: true });
-    const status = await step('e2e', process.execPath, [path.join(repo, 'e2e', 'run.mjs')]);
+    const status = await step('e2e', process.execPath, [path.join(repo, 'e2e', 'run.mjs')], { side: !serial });
     let results;
     try {
         results = JSON.parse(readFileSync(resultsFile, 'utf8'));
@@ -387,7 +491,7 @@ async function e2eSuite() {
     // the e2e checks that run on their own pages, outside the IDE's scenario runner (e2e/run.mjs)
     for (const script of ['vscode-diagram-webview.mjs', 'vscode-simulate.mjs', 'lab-dashboard.mjs', 'lab-ide.mjs']) {
         // each is one test: it prints its checks and exits 0 only when all pass
-        if ((await step(`e2e: ${script}`, process.execPath, [path.join(repo, 'e2e', script)])) === 0) tally.passed += 1;
+        if ((await step(`e2e: ${script}`, process.execPath, [path.join(repo, 'e2e', script)], { side: !serial })) === 0) tally.passed += 1;
         else tally.fail('failed tests', `e2e: ${script} (its checks are printed above)`);
     }
 }
