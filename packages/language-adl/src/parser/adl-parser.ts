@@ -2,7 +2,6 @@ import {
     CompositeCstNodeImpl,
     AstUtils,
     CstNodeBuilder,
-    CstUtils,
     LeafCstNodeImpl,
     LangiumParser,
     createParser,
@@ -12,11 +11,13 @@ import {
     type LangiumCoreServices,
     type LeafCstNode,
     type AstNode,
+    type AstReflection,
     type Lexer,
     type LexerResult,
     type Mutable,
     type ParseResult,
 } from 'langium';
+import type { Range } from 'vscode-languageserver-types';
 
 type ParserOptions = Parameters<LangiumParser['parse']>[1] & {};
 
@@ -42,6 +43,7 @@ export function createAdlParser(services: LangiumCoreServices): LangiumParser {
 /** The members of Langium's parser that the overrides below use (private in its typings). */
 interface LangiumParserInternals {
     nodeBuilder: CstNodeBuilder;
+    astReflection: AstReflection;
     lexer: Lexer;
     wrapper: { input: LexerResult['tokens']; errors: ParseResult['parserErrors'] };
     lexerResult: LexerResult | undefined;
@@ -54,7 +56,9 @@ interface LangiumParserInternals {
 export class AdlParser extends LangiumParser {
     constructor(services: LangiumCoreServices) {
         super(services);
-        (this as unknown as LangiumParserInternals).nodeBuilder = new AdlCstNodeBuilder();
+        const self = this as unknown as LangiumParserInternals;
+        self.nodeBuilder = new AdlCstNodeBuilder();
+        self.astReflection = withDefaultsOnly(self.astReflection);
     }
 
     /**
@@ -83,6 +87,33 @@ export class AdlParser extends LangiumParser {
             parserErrors: self.wrapper.errors,
         };
     }
+}
+
+type TypeMetaData = ReturnType<AstReflection['getTypeMetaData']>;
+
+/**
+ * The reflection as the parser's `construct` sees it: each type's metadata with only the
+ * properties that have a default value. Langium's `assignMandatoryProperties`, the parser's one
+ * use of it, runs once per rule call (16 times for an expression operand) over every property of
+ * the node's type to find those; it finds the same ones here.
+ */
+function withDefaultsOnly(reflection: AstReflection): AstReflection {
+    const cache = new Map<string, TypeMetaData>();
+    const view = Object.create(reflection) as AstReflection;
+    view.getTypeMetaData = (type: string): TypeMetaData => {
+        let meta = cache.get(type);
+        if (meta === undefined) {
+            const full = reflection.getTypeMetaData(type);
+            const properties: TypeMetaData['properties'] = {};
+            for (const [name, property] of Object.entries(full.properties)) {
+                if (property.defaultValue !== undefined) properties[name] = property;
+            }
+            meta = { ...full, properties };
+            cache.set(type, meta);
+        }
+        return meta;
+    };
+    return view;
 }
 
 function isNode(value: unknown): value is AstNode {
@@ -196,18 +227,38 @@ export class AdlCstNodeBuilder extends CstNodeBuilder {
     }
 
     override buildLeafNode(token: LexerResult['tokens'][number], feature?: GrammarAST.AbstractElement): LeafCstNode {
-        const leafNode = new LeafCstNodeImpl(
-            token.startOffset,
-            token.image.length,
-            CstUtils.tokenToRange(token),
-            token.tokenType,
-            !feature,
-        );
+        const leafNode = new AdlLeafCstNode(token, !feature);
         leafNode.grammarSource = feature;
         const current = this.current;
         leafNode.root = current.root;
         append(current, leafNode);
         return leafNode;
+    }
+
+    /**
+     * Ends the current node as Langium does, then lets it take over the content of a
+     * pass-through child (see `isPassThrough`): the expression grammar's operand `x` was 16
+     * composite nodes nested one in the other, each kept as long as the document (the AST node
+     * points to the outermost); now it is one. Offsets, ranges, texts, AST links and the leaves
+     * stay the same; only the composite nodes of rule calls without assignment that cover exactly
+     * what their caller covers are gone.
+     */
+    override construct(item: Parameters<CstNodeBuilder['construct']>[0]): void {
+        const node = this.current as CompositeCstNode;
+        super.construct(item);
+        const content = node.content;
+        if (content.length === 1) {
+            const child = content[0] as CompositeCstNode;
+            if (isPassThrough(child)) {
+                const inner = child.content;
+                content.length = 0;
+                for (let i = 0; i < inner.length; i++) {
+                    const grandchild = inner[i]!;
+                    (grandchild as { container?: CompositeCstNode }).container = node;
+                    content[i] = grandchild;
+                }
+            }
+        }
     }
 
     /** Adding no hidden tokens changes nothing: skip the search for where they would go. */
@@ -223,6 +274,58 @@ export class AdlCstNodeBuilder extends CstNodeBuilder {
         if (index < 0) return;
         for (let i = index + 1; i < content.length; i++) content[i - 1] = content[i]!;
         content.length--;
+    }
+}
+
+/** Whether each grammar element is a rule call outside any assignment (cached per element). */
+const unassignedRuleCalls = new WeakMap<object, boolean>();
+
+/**
+ * Whether a child composite node may be dissolved into its parent, its only child: it is the node
+ * of a rule call without assignment (nothing but the CST points to it: an assigned call's node
+ * may be a reference's `$refNode` or an AST node's `$cstNode`) and it has no AST node of its own
+ * (Langium detaches it when the called rule's node merges into the caller's).
+ */
+function isPassThrough(child: CstNode): boolean {
+    if (!(child instanceof CompositeCstNodeImpl)) return false;
+    if ((child as unknown as { _astNode?: unknown })._astNode !== undefined) return false;
+    const feature = child.grammarSource;
+    if (feature === undefined) return false;
+    let unassigned = unassignedRuleCalls.get(feature);
+    if (unassigned === undefined) {
+        unassigned = GrammarAST.isRuleCall(feature) && AstUtils.getContainerOfType(feature, GrammarAST.isAssignment) === undefined;
+        unassignedRuleCalls.set(feature, unassigned);
+    }
+    return unassigned;
+}
+
+/**
+ * A leaf CST node that keeps its token's line and column numbers and builds its range (three
+ * objects, as `CstUtils.tokenToRange` does) when it is first asked for: most ranges never are,
+ * and every leaf lives as long as its document.
+ */
+export class AdlLeafCstNode extends LeafCstNodeImpl {
+    private readonly startLine: number;
+    private readonly startColumn: number;
+    private readonly endLine: number;
+    private readonly endColumn: number;
+
+    constructor(token: LexerResult['tokens'][number], hidden: boolean) {
+        // The range argument is left out: the getter below computes it.
+        super(token.startOffset, token.image.length, undefined as unknown as Range, token.tokenType, hidden);
+        this.startLine = token.startLine!;
+        this.startColumn = token.startColumn!;
+        this.endLine = token.endLine!;
+        this.endColumn = token.endColumn!;
+    }
+
+    override get range(): Range {
+        const self = this as unknown as { _range?: Range };
+        // Chevrotain's lines and columns are 1-based, the end column inclusive (CstUtils.tokenToRange).
+        return (self._range ??= {
+            start: { character: this.startColumn - 1, line: this.startLine - 1 },
+            end: { character: this.endColumn, line: this.endLine - 1 },
+        });
     }
 }
 
