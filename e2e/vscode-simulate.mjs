@@ -100,7 +100,7 @@ try {
         nonce,
     }).replace(
         '<div id="simulate-root"></div>',
-        `<div id="simulate-root"></div>\n<script nonce="${nonce}">window.__posted = []; window.__cspViolations = []; document.addEventListener('securitypolicyviolation', (e) => window.__cspViolations.push(e.violatedDirective + ' ' + e.blockedURI)); window.acquireVsCodeApi = () => ({ postMessage: (m) => window.__posted.push(m) });</script>`,
+        `<div id="simulate-root"></div>\n<script nonce="${nonce}">window.__posted = []; window.__cspViolations = []; document.addEventListener('securitypolicyviolation', (e) => window.__cspViolations.push(e.violatedDirective + ' ' + e.blockedURI)); window.__state = undefined; window.acquireVsCodeApi = () => ({ postMessage: (m) => window.__posted.push(m), getState: () => window.__state, setState: (s) => { window.__state = s; } });</script>`,
     );
     writeFileSync(path.join(appDir, 'index.html'), html);
     browser = await launchBrowser();
@@ -121,6 +121,12 @@ try {
     const sizes = await viser.locator('canvas').evaluateAll((cs) => cs.map((c) => [c.width, c.height]));
     if (!sizes.some(([w, h]) => w >= 10 && h >= 10)) fail(`no viser canvas has a size: ${JSON.stringify(sizes)}`);
     await screenshot(page, 'vscode-simulate-running');
+    // the 3D view's size (its drag handle, by keyboard) is kept in the webview's state
+    await page.locator('[data-testid=sim-split]').focus();
+    await page.keyboard.press('ArrowLeft');
+    const kept = await page.evaluate(() => window.__state?.['simulate.layout']?.viewFraction);
+    if (typeof kept !== 'number' || Math.abs(kept - 0.5) > 1e-9)
+        fail(`the webview state keeps the 3D view's size as ${kept}, expected 0.5`);
     await page.evaluate(() => window.postMessage({ type: 'reset' }, '*'));
     await waitPosted(page, 'done', 'reset', 30_000);
     if (!(await posted(page)).some((m) => m.type === 'done' && m.command === 'reset' && m.ok))

@@ -14,8 +14,9 @@ import { mountSimulatePanel, type SimulatePanel } from './index.js';
 
 interface VsCodeApi {
     postMessage(message: FromWebview): void;
-    getState(): unknown;
-    setState(state: unknown): void;
+    /** VS Code's webview state (optional here: a stand-in of the API may lack it; nothing is kept then). */
+    getState?(): unknown;
+    setState?(state: unknown): void;
 }
 
 declare function acquireVsCodeApi(): VsCodeApi;
@@ -32,12 +33,12 @@ const postingLayer: DiagramLiveLayer = {
 /** The webview's state (kept by VS Code while the view is hidden or reloaded): one object, a key per part. */
 const viewState: ViewState = {
     get: (key) => {
-        const state = vscode.getState();
+        const state = vscode.getState?.();
         return state && typeof state === 'object' ? (state as Record<string, unknown>)[key] : undefined;
     },
     set: (key, value) => {
-        const state = vscode.getState();
-        vscode.setState({ ...(state && typeof state === 'object' ? state : {}), [key]: value });
+        const state = vscode.getState?.();
+        vscode.setState?.({ ...(state && typeof state === 'object' ? state : {}), [key]: value });
     },
 };
 
