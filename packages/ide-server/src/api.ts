@@ -176,7 +176,9 @@ async function platformTopics({ workspace, generation }: ApiOptions, appPath: st
         throw new HttpError(400, `'${platformName}' is a ${platform.kind || 'unknown'} platform, which does not run in the simulator`);
     generation.platformRoot(appPath, platformName); // checks the app path and the platform name
     const platformDir = path.join(generation.appOutDir(appPath), platformName);
-    return topicMap(platformDir, appPath, platformName, mode);
+    // the automata table names model files relative to the model root; the IDE opens them in the workspace
+    const modelRoot = path.relative(workspace.root, generation.modelRootOf(await workspace.confined.resolve(appPath, 'app')));
+    return topicMap(platformDir, appPath, platformName, mode, modelRoot.split(path.sep).join('/'));
 }
 
 /** The platform `platformName` of the application `appPath` (400 if there is none). */

@@ -107,14 +107,23 @@ async function readJson(file: string): Promise<unknown> {
     }
 }
 
-/** The topic map of a generated platform folder for a mode (409 when the platform lacks the file of the mode). */
-export async function topicMap(platformDir: string, app: string, platform: string, mode: SimMode): Promise<TopicMapAnswer> {
+/** The automata table with its files relative to the workspace (`modelRoot`: the model root's path in it, `""` for its top). */
+export function inWorkspace(automata: readonly AutomatonEntry[], modelRoot: string): AutomatonEntry[] {
+    return automata.map((a) => ({ ...a, file: modelRoot ? path.posix.join(modelRoot, a.file) : a.file }));
+}
+
+/**
+ * The topic map of a generated platform folder for a mode (409 when the platform lacks the file of
+ * the mode); `modelRoot` is the application's model root relative to the workspace.
+ */
+export async function topicMap(platformDir: string, app: string, platform: string, mode: SimMode, modelRoot = ''): Promise<TopicMapAnswer> {
     const file = mode === 'ros2' ? DEPLOYMENT_FILE_NAME : 'lockstep.json';
     const dir = findPackageDir(platformDir, file);
     if (!dir) throw new HttpError(409, `the generated platform ${platform} has no ${file} (generate it first)`);
     if (mode === 'ros2') {
         const deployment = deploymentContract.parse(await readJson(path.join(dir, file)), `${platform}/${file}`);
-        return { app, platform, mode, ...fromDeployment(deployment) };
+        const map = fromDeployment(deployment);
+        return { app, platform, mode, ...map, automata: inWorkspace(map.automata, modelRoot) };
     }
     const lockstep = (await readJson(path.join(dir, file))) as { factory?: unknown };
     const module = typeof lockstep.factory === 'string' ? lockstep.factory.split(':')[0] : undefined;
@@ -122,5 +131,6 @@ export async function topicMap(platformDir: string, app: string, platform: strin
     const source = await readFile(`${path.join(dir, ...module.split('.'))}.py`, 'utf8').catch(() => {
         throw new HttpError(409, `the generated app module ${module} of ${platform} is missing`);
     });
-    return { app, platform, mode, ...fromAppModule(source) };
+    const map = fromAppModule(source);
+    return { app, platform, mode, ...map, automata: inWorkspace(map.automata, modelRoot) };
 }

@@ -80,6 +80,17 @@ describe('HTTP API contract (@maa/protocol) on a copy of examples/', () => {
         expect(outs(ros2)).toEqual(expect.arrayContaining(outs(lockstep)));
         expect(lockstep.nodes).toContainEqual({ instancePath: 'ctrl', node: '/toast_service_robot/ctrl' });
         expect(ros2.nodes.map((n) => n.node)).toEqual(expect.arrayContaining(lockstep.nodes.map((n) => n.node)));
+        // the automata table: the same on both platforms, files relative to the workspace
+        expect(ros2.automata).toEqual(lockstep.automata);
+        const ctrl = lockstep.automata?.find((a) => a.instancePath === 'ctrl');
+        expect(ctrl).toMatchObject({
+            node: '/toast_service_robot/ctrl',
+            component: 'toast.Controller',
+            file: 'toast-service/toast/Controller.arc',
+        });
+        expect(ctrl?.states.map((s) => s.path)).toEqual(['Idle', 'Loading', 'Toasting', 'Serving']);
+        expect(ctrl?.transitions[2]).toMatchObject({ index: 2, from: 'Toasting', to: 'Serving', line: 24, column: 5 });
+        expect((await authFetch(site.url(`/api/file?path=${encodeURIComponent(ctrl!.file)}`))).status).toBe(200);
         await expectKeeps(await topics('nosuch'), answers.error, 400);
         await expectKeeps(await authFetch(site.url('/api/sim/topics?app=..%2Fx.arcapp&platform=timesync')), answers.error, 400);
     });

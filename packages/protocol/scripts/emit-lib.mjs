@@ -98,7 +98,9 @@ class PythonTypes {
             fields.push(field(key, required.has(key) ? t : `NotRequired[${t}]`));
         }
         const doc = s.description ? `    """${s.description}"""\n\n` : '';
-        const keys = Object.entries(s.properties ?? {}).filter(([, v]) => !isNever(v)).map(([k]) => k);
+        const keys = Object.entries(s.properties ?? {})
+            .filter(([, v]) => !isNever(v))
+            .map(([k]) => k);
         if (keys.some((k) => PYTHON_KEYWORDS.has(k))) {
             // a key that is a Python keyword (`from`) cannot be a class attribute: the functional syntax
             const items = keys.map((k, i) => `    ${JSON.stringify(k)}: ${fields[i].replace(/^ {4}[^:]+: /, '')},`);
@@ -120,7 +122,43 @@ function field(key, t) {
 }
 
 /** Python's keywords: not usable as TypedDict class attributes. */
-const PYTHON_KEYWORDS = new Set(['False', 'None', 'True', 'and', 'as', 'assert', 'async', 'await', 'break', 'class', 'continue', 'def', 'del', 'elif', 'else', 'except', 'finally', 'for', 'from', 'global', 'if', 'import', 'in', 'is', 'lambda', 'nonlocal', 'not', 'or', 'pass', 'raise', 'return', 'try', 'while', 'with', 'yield']);
+const PYTHON_KEYWORDS = new Set([
+    'False',
+    'None',
+    'True',
+    'and',
+    'as',
+    'assert',
+    'async',
+    'await',
+    'break',
+    'class',
+    'continue',
+    'def',
+    'del',
+    'elif',
+    'else',
+    'except',
+    'finally',
+    'for',
+    'from',
+    'global',
+    'if',
+    'import',
+    'in',
+    'is',
+    'lambda',
+    'nonlocal',
+    'not',
+    'or',
+    'pass',
+    'raise',
+    'return',
+    'try',
+    'while',
+    'with',
+    'yield',
+]);
 
 const isNever = (s) => s && typeof s === 'object' && s.not && Object.keys(s.not).length === 0;
 

@@ -119,7 +119,7 @@ class RobotArmExecutor(Behavior):
     TIMING = "sync"
     PROGRAMS: ClassVar[Mapping[str, tuple[Step, ...]]] = {}
     COMMANDS: ClassVar[Mapping[str, str]] = {}
-    #: the programs' file (relative to the model root) and (line, source) of every step (generated; empty in older builds)
+    #: the programs' file (relative to the model root) and (line, source) of every step (generated)
     FILE: ClassVar[str] = ""
     SOURCES: ClassVar[Mapping[str, tuple[tuple[int, str], ...]]] = {}
     STATUS: ClassVar[type[Enum] | None] = None

@@ -88,7 +88,14 @@ export function automatonClassView(automaton: Automaton, spec: ClassSpec, import
         }
         if (t.guard) conditions.push(tr.expr(t.guard));
         if (t.$type === 'InternalTransition') {
-            transitions.push({ index, conditions, internal: true, exitUntil: null, action: t.action ? tr.stmt(t.action) : [], entered: [] });
+            transitions.push({
+                index,
+                conditions,
+                internal: true,
+                exitUntil: null,
+                action: t.action ? tr.stmt(t.action) : [],
+                entered: [],
+            });
             continue;
         }
         const sp = statePath(source);

@@ -80,6 +80,9 @@ def test_generated_robot_serves_a_toast_in_the_simulator(installed: Installed, t
         # a port topic of a generated message type, carried by the simulator's rosbridge endpoint
         client.send({"op": "subscribe", "topic": "/toast_service_robot/ctrl/arm"})
         client.send({"op": "subscribe", "topic": "/maa/automaton_states", "type": "std_msgs/msg/String"})
+        # the trace topics: transitions taken, RobotArm statements started
+        client.send({"op": "subscribe", "topic": "/maa/transitions", "type": "std_msgs/msg/String"})
+        client.send({"op": "subscribe", "topic": "/maa/program_steps", "type": "std_msgs/msg/String"})
         time.sleep(1.0)  # let the subscriptions match the nodes' publishers
         assert client.call("/sim/resume")["result"] is True
         finished = app.wait(timeout=WALL_TIMEOUT)
@@ -104,6 +107,21 @@ def test_generated_robot_serves_a_toast_in_the_simulator(installed: Installed, t
                 for node, state in json.loads(m["msg"]["data"]).items():
                     states_seen.setdefault(node, []).append(state)
         assert "Toasting" in states_seen.get("/toast_service_robot/ctrl", []), states_seen
+        taken = [json.loads(m["msg"]["data"]) for m in messages if m.get("topic") == "/maa/transitions"]
+        ctrl = [(t["from"], t["to"], t["index"]) for t in taken if t["node"] == "/toast_service_robot/ctrl"]
+        assert ctrl[:3] == [("Idle", "Loading", 0), ("Loading", "Toasting", 1), ("Toasting", "Serving", 2)], taken
+        steps = [json.loads(m["msg"]["data"]) for m in messages if m.get("topic") == "/maa/program_steps"]
+        load = [s for s in steps if s["program"] == "LoadBread"]
+        assert [s["step"] for s in load] == list(range(10)), steps
+        assert load[0] == {
+            "node": "/toast_service_robot/arm",
+            "program": "LoadBread",
+            "step": 0,
+            "line": 22,
+            "text": "move top;",
+            "file": "toast/ArmController.arc",
+        }
+        assert any(s["program"] == "PickupAndDeploy" for s in steps), steps
         # every automaton node's current state, latched by the simulator (late subscribers, get_status)
         status_states = client.call("/sim/get_status")["values"]["automaton_states"]
         assert status_states["/toast_service_robot/ctrl"] in ("Serving", "Idle")  # Idle once the arm is DONE
