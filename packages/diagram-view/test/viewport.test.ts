@@ -57,15 +57,17 @@ describe('fitViewport', () => {
         expect(fitViewport(small, canvas, { ...options, readableZoom: 0.3 })).toEqual(fitViewport(small, canvas, options));
     });
 
-    it('opens the example-sized diagram (wider than the pane) readable: the smallest text at 7px or more, from its left', () => {
-        const content = { x: 0, y: 0, width: 1100, height: 500 };
+    it('opens a diagram wider than the pane readable: the smallest text at 6px or more, from its left', () => {
+        const content = { x: 0, y: 0, width: 1300, height: 500 };
         const v = fitViewport(content, canvas, { ...options, readableZoom: READABLE_ZOOM });
         expect(v.zoom).toBeCloseTo(READABLE_ZOOM);
-        expect(v.zoom * SMALLEST_FONT).toBeGreaterThanOrEqual(7);
+        expect(v.zoom * SMALLEST_FONT).toBeGreaterThanOrEqual(6);
         expect(onCanvas(content, v).x).toBeCloseTo(20);
-        // A diagram that fits at a readable zoom is shown whole, as large as allowed.
-        const small = fitViewport({ x: 0, y: 0, width: 500, height: 300 }, canvas, { ...options, readableZoom: READABLE_ZOOM });
-        expect(small.zoom).toBeGreaterThanOrEqual(READABLE_ZOOM);
+        // The example's architecture (912 px wide) in a side pane of 620 px is shown whole, readable.
+        const example = { x: 0, y: 0, width: 912, height: 360 };
+        const pane = fitViewport(example, { width: 620, height: 700 }, { ...options, readableZoom: READABLE_ZOOM });
+        expect(pane.zoom).toBeGreaterThanOrEqual(READABLE_ZOOM);
+        expect(onCanvas(example, pane).width).toBeLessThanOrEqual(620);
     });
 
     it('survives an empty content box and a hidden (zero-size) canvas', () => {

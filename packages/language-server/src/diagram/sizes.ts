@@ -85,10 +85,11 @@ export function labelSize(type: string, text: string): Dimension {
 }
 
 /**
- * The room of a live value beside a port: the client's value pill (monospace 10.5px, about 6.3px
- * a character) holds about nine characters; a longer value is cut short there, whole in its tooltip.
+ * The room of a live value beside a port: the client's value pill (monospace 10.5px, about 6.4px
+ * a character) holds seven characters (`-12.345`, `GOLDEN`); a longer value is cut short there,
+ * whole in its tooltip. Narrow, so that the example's architecture still fits a side pane.
  */
-export const VALUE_SIZE: Dimension = { width: 64, height: 14 };
+export const VALUE_SIZE: Dimension = { width: 52, height: 14 };
 
 /** The text of the current-state chip the client draws during a run (`▶ ` and the state's path). */
 export function chipText(state: string): string {
