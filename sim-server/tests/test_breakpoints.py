@@ -72,7 +72,7 @@ def test_requests_are_checked_against_the_contract() -> None:
 
 @pytest.fixture(scope="module")
 def toast_build(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    return generate(TOAST_MODEL, tmp_path_factory.mktemp("toast-breakpoints"))
+    return Path(generate(TOAST_MODEL, tmp_path_factory.mktemp("toast-breakpoints")))
 
 
 @pytest.fixture

@@ -58,8 +58,7 @@ def reached(breakpoint: Breakpoint, event: dict[str, Any]) -> bool:
     if "state" in breakpoint:
         state = cast(SetBreakpointsBreakpointsItem0, breakpoint)["state"]
         return within(target, state) and not within(source, state)
-    transition = cast(SetBreakpointsBreakpointsItem1, breakpoint)
-    return within(source, transition["from"]) and within(target, transition["to"])
+    return within(source, breakpoint["from"]) and within(target, breakpoint["to"])
 
 
 class Breakpoints:
