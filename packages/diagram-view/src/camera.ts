@@ -37,17 +37,23 @@ export class Camera {
         this.remembered = undefined;
     }
 
-    /** Fits the diagram into the canvas (viewport.ts: also diagrams too large for the minimum zoom). */
-    async fit(root: SchemaElement, maxZoom: number, animate: boolean, readableZoom?: number): Promise<void> {
+    /**
+     * Fits the diagram into the canvas (viewport.ts: also diagrams too large for the minimum zoom).
+     * False when the canvas has no size yet (a webview not laid out, a hidden pane): nothing is
+     * done then, and the caller fits again once it has one.
+     */
+    async fit(root: SchemaElement, maxZoom: number, animate: boolean, readableZoom?: number): Promise<boolean> {
         const content = unionBounds((root.children ?? []).map((c) => absoluteBounds(root, c.id)).filter((b) => b !== undefined));
-        if (!content) return;
+        if (!content) return true;
         try {
             const { canvasBounds } = await this.dispatcher.request<ViewportResult>(GetViewportAction.create());
+            if (!(canvasBounds.width > 0 && canvasBounds.height > 0)) return false;
             const viewport = fitViewport(content, canvasBounds, { padding: 20, maxZoom, minZoom: ZOOM_LIMITS.min, readableZoom });
             await this.dispatch(SetViewportAction.create(root.id, viewport, { animate }));
         } catch (e) {
             console.warn('diagram fit:', e);
         }
+        return true;
     }
 
     /** Zooms by `factor` around the middle of the canvas, within the zoom limits. */

@@ -59,6 +59,8 @@ export class MountedDiagram implements MaaDiagramView {
     private current: DiagramTarget | undefined;
     private lastCc: DiagramTarget | undefined;
     private fitPending = false;
+    /** Waits for the container to get a size, to fit a new diagram then. */
+    private sizeWatch: ResizeObserver | undefined;
     private redrawScheduled = false;
     private disposed = false;
 
@@ -159,6 +161,7 @@ export class MountedDiagram implements MaaDiagramView {
     dispose(): void {
         if (this.disposed) return;
         this.disposed = true;
+        this.sizeWatch?.disconnect();
         this.proxy.disconnect();
         this.proxy.modelListeners.clear();
         this.selectHandlers.clear();
@@ -276,12 +279,38 @@ export class MountedDiagram implements MaaDiagramView {
                 this.fitPending = false;
                 this.camera.forget();
                 // A new diagram opens readable (a huge one from its top); the Fit button shows it all.
-                void this.camera.fit(root, 1.5, false, READABLE_ZOOM);
+                this.openingFit(root);
             } else {
                 this.camera.restore(root);
             }
         }
         for (const h of [...this.modelHandlers]) h();
+    }
+
+    /**
+     * The fit of a new diagram, after Sprotty has drawn it and measured its canvas; when the canvas
+     * has no size yet (the webview not laid out), again when the container gets one.
+     */
+    private openingFit(root: SchemaElement): void {
+        this.sizeWatch?.disconnect();
+        this.sizeWatch = undefined;
+        const attempt = (): void => {
+            void this.camera.fit(root, 1.5, false, READABLE_ZOOM).then((done) => {
+                if (done || this.disposed || this.schema !== root || typeof ResizeObserver !== 'function') return;
+                const watch = new ResizeObserver(() => {
+                    if (this.container.clientWidth <= 0 || this.container.clientHeight <= 0) return;
+                    watch.disconnect();
+                    if (this.sizeWatch === watch) this.sizeWatch = undefined;
+                    // Sprotty measures the canvas on the window's resize; a pane that got its size without one is measured here.
+                    window.dispatchEvent(new Event('resize'));
+                    if (this.schema === root) requestAnimationFrame(attempt);
+                });
+                this.sizeWatch = watch;
+                watch.observe(this.container);
+            });
+        };
+        if (typeof requestAnimationFrame === 'function') requestAnimationFrame(attempt);
+        else attempt();
     }
 
     /** Live decorations are redrawn at most once per frame. */
