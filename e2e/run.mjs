@@ -4,7 +4,8 @@
 // chromium through playwright-core, one scenario after the other in one workspace, screenshots in
 // e2e/artifacts/. The scenarios: e2e/host-scenarios.mjs (open, errors, quick fix, completion,
 // rename, the diagram and its export, the test explorer, the workbench host), generation
-// (e2e/generated-scenarios.mjs), simulation (e2e/simulate-scenarios.mjs), then the large model's
+// (e2e/generated-scenarios.mjs), simulation (e2e/simulate-scenarios.mjs), record and replay
+// (e2e/replay-scenarios.mjs), then the large model's
 // (last: it adds 200 component types to the workspace).
 //
 //   node e2e/run.mjs                 all scenarios (needs packages/ide-web/dist: npm run build -w @maa/ide-web)
@@ -16,8 +17,9 @@ import { artifacts, freshWorkspace, launchBrowser, screenshot, startIde } from '
 import { generatedScenarios } from './generated-scenarios.mjs';
 import { hostScenarios, largeModelScenarios } from './host-scenarios.mjs';
 import { simulateScenarios } from './simulate-scenarios.mjs';
+import { replayScenarios } from './replay-scenarios.mjs';
 
-const scenarios = [...hostScenarios, ...generatedScenarios, ...simulateScenarios, ...largeModelScenarios];
+const scenarios = [...hostScenarios, ...generatedScenarios, ...simulateScenarios, ...replayScenarios, ...largeModelScenarios];
 
 const args = process.argv.slice(2);
 const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : undefined;

@@ -25,14 +25,14 @@ export class ReplayBar {
     );
     readonly recordingSelect = el('select', { 'data-testid': 'sim-recordings', title: 'Recordings (recordings/ in the workspace)' });
     readonly replayBtn = button(
-        '⏵ Replay',
+        'Replay',
         'sim-replay',
         'Open the chosen recording: the 3D scene, the diagram and the panels follow a time slider',
     );
     /** What goes into the tool bar. */
     readonly toolbarItems: HTMLElement[] = [el('span', { class: 'maa-sim-sep' }), this.recordLabel, this.recordingSelect, this.replayBtn];
 
-    readonly playBtn = button('⏵', 'replay-play', 'Play / pause');
+    readonly playBtn = button('▶', 'replay-play', 'Play / pause');
     readonly speedSelect = el('select', { 'data-testid': 'replay-speed', title: 'Replay speed (×simulated time)' });
     readonly slider = el('input', {
         type: 'range',
@@ -100,7 +100,7 @@ export class ReplayBar {
     }
 
     setPlaying(playing: boolean): void {
-        this.playBtn.textContent = playing ? '⏸' : '⏵';
+        this.playBtn.textContent = playing ? '❚❚' : '▶';
         this.playBtn.dataset['playing'] = String(playing);
     }
 
