@@ -100,6 +100,10 @@ def test_a_transition_breakpoint_pauses_the_run_with_its_target_active(toast_app
         watch.send({"op": "subscribe", "topic": TRANSITIONS, "type": "std_msgs/msg/String"})
         bad = control.call("/sim/set_breakpoints", {"breakpoints": [{"node": CTRL, "from": "Toasting"}]})
         assert bad["result"] is False and "/sim/set_breakpoints" in str(bad["values"]), bad
+        stranger = control.call(
+            "/sim/set_breakpoints", {"breakpoints": [{"node": "/toast_service_robot/x", "state": "A"}]}
+        )
+        assert stranger["result"] is False and "no automaton runs on /toast_service_robot/x" in str(stranger["values"])
         answer = control.call(
             "/sim/set_breakpoints", {"breakpoints": [{"node": CTRL, "from": "Toasting", "to": "Serving"}]}
         )

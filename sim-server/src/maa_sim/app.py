@@ -421,6 +421,11 @@ class SimApp:
                 breakpoints = check_request(args)
             except ValueError as exc:
                 raise ServiceError(str(exc)) from None
+            states = getattr(self._controller, "states", None)
+            known = set(states()) if callable(states) else None
+            unknown = sorted({bp["node"] for bp in breakpoints} - known) if known is not None else []
+            if unknown:
+                raise ServiceError(f"/sim/set_breakpoints: no automaton runs on {', '.join(unknown)}")
             self.breakpoints.set(breakpoints)
             return ok(f"{len(breakpoints)} breakpoint(s)")
 
