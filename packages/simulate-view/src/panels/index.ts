@@ -49,6 +49,16 @@ export class Panels implements Disposable {
         { type: 'button', 'data-testid': 'panels-fit', title: 'Show the whole run in the time window' },
         'All',
     );
+    private readonly zoomInBtn = el(
+        'button',
+        { type: 'button', 'data-testid': 'panels-zoom-in', title: 'Zoom in (around the cursor; also the mouse wheel)' },
+        '+',
+    );
+    private readonly zoomOutBtn = el(
+        'button',
+        { type: 'button', 'data-testid': 'panels-zoom-out', title: 'Zoom out (around the cursor; also the mouse wheel)' },
+        '−',
+    );
     private frame: number | undefined;
     private dataTimer: ReturnType<typeof setTimeout> | undefined;
     private readonly sub: Disposable;
@@ -79,6 +89,8 @@ export class Panels implements Disposable {
             this.window.set({ t0: start, t1: Math.max(end, start + 1) });
             this.redraw();
         });
+        this.zoomInBtn.addEventListener('click', () => this.zoomBy(0.5));
+        this.zoomOutBtn.addEventListener('click', () => this.zoomBy(2));
         this.element = el(
             'div',
             { class: 'maa-panels', 'data-testid': 'sim-panels' },
@@ -158,6 +170,9 @@ export class Panels implements Disposable {
         const t = store.shownTime;
         this.timeLabel.textContent = t === undefined ? '' : `${store.cursor === undefined ? 'live' : 'cursor'} ${formatTime(t)}`;
         this.liveBtn.disabled = store.cursor === undefined && this.window.following;
+        // the time window drawn, for scripts and the e2e tests
+        const span = this.window.span(store.start, store.end);
+        this.element.dataset['window'] = `${span.t0} ${span.t1}`;
         this.active.render();
     }
 
@@ -192,6 +207,15 @@ export class Panels implements Disposable {
         this.keepInWindow(step.t);
         const message = revealProgramStep(step);
         if (message) this.host.reveal?.(message);
+        this.redraw();
+    }
+
+    /** Zooms the time window by `factor` around the cursor (else its middle). */
+    private zoomBy(factor: number): void {
+        const span = this.window.span(this.store.start, this.store.end);
+        const cursor = this.store.cursor;
+        const anchor = cursor !== undefined && cursor >= span.t0 && cursor <= span.t1 ? cursor : (span.t0 + span.t1) / 2;
+        this.window.zoom(span, factor, anchor);
         this.redraw();
     }
 
