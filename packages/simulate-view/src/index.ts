@@ -25,6 +25,9 @@ import { createReplayApi } from './replay/api.js';
 import { ReplayBar } from './replay/bar.js';
 import { ReplayController } from './replay/session.js';
 import { TimelineStore } from './timeline/store.js';
+import { Panels } from './panels/index.js';
+import { parseAutomata } from './timeline/automata.js';
+import { BreakpointsView } from './breakpoints/index.js';
 
 /** The mounted panel: its tool bar's actions for hosts that offer them as commands too. */
 export interface SimulatePanel extends Disposable {
@@ -45,6 +48,10 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
     const viewer = new Viewer(endpoints.viser);
     // the session's timeline store (C5): a live run's messages, or a replay's recording
     const timeline = new TimelineStore();
+    // the panels over it (plots, state timeline, messages, log; docs/ide.md "Panels")
+    const panels = new Panels(timeline, host);
+    // breakpoints on the run's states and transitions (lock-step runs; docs/simulation.md "Breakpoints")
+    const breakpoints = new BreakpointsView({ notify: (severity, message) => host.notify(severity, message) });
     const replayBar = new ReplayBar();
     controls.element.append(...replayBar.toolbarItems);
     let controller: SimulationController | undefined;
@@ -61,6 +68,8 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
         status.errorBox,
         status.progressBox,
         layout.element,
+        panels.element,
+        breakpoints.element,
     );
     const simApi = createSimApi(endpoints.api);
     controller = new SimulationController({
@@ -72,6 +81,17 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
         // the Record toggle decides whether a start records
         api: { ...simApi, start: (app, platform, mode, speed) => simApi.start(app, platform, mode, speed, replayBar.recordToggle.checked) },
         rosbridge: endpoints.rosbridge,
+        timeline: {
+            store: timeline,
+            runStarted: () => {
+                timeline.clear();
+                panels.reset();
+            },
+            runInfo: (topicMap, instanceOf) => {
+                panels.setRunInfo(parseAutomata(topicMap), instanceOf);
+                breakpoints.attach(parseAutomata(topicMap), endpoints.rosbridge);
+            },
+        },
     });
     const replay = new ReplayController({
         bar: replayBar,
@@ -84,6 +104,10 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
         status,
         notify: (severity, message) => host.notify(severity, message),
         runActive: () => controller !== undefined && controller.state.kind !== 'idle',
+        timeline: {
+            runStarted: () => panels.reset(),
+            runInfo: (topicMap, instanceOf) => panels.setRunInfo(parseAutomata(topicMap), instanceOf),
+        },
     });
     // a start ends a replay session (one session at a time); a run's end lists its recording
     controls.startBtn.addEventListener('click', () => replay.leaveForRun());
@@ -101,6 +125,8 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
             replay.dispose();
             controller.dispose();
             controller = undefined;
+            panels.dispose();
+            breakpoints.dispose();
             viewer.dispose();
             layout.dispose();
             container.replaceChildren();
