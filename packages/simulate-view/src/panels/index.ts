@@ -100,6 +100,8 @@ export class Panels implements Disposable {
                 tabBar,
                 el('span', { class: 'maa-panels-spacer' }),
                 this.timeLabel,
+                this.zoomOutBtn,
+                this.zoomInBtn,
                 this.fitBtn,
                 this.liveBtn,
             ),
