@@ -249,7 +249,9 @@ export class MountedDiagram implements MaaDiagramView {
     private request(fit: boolean): void {
         const current = this.current;
         if (!current || this.disposed) return;
-        this.fitPending = fit;
+        // A fit asked for stays asked for until a new model comes (a second show of the same target
+        // before the first model, e.g. the diagram opened at start and from the title button, keeps it).
+        if (fit) this.fitPending = true;
         const options: Record<string, string | boolean | string[] | Record<string, boolean>> = {
             diagramType: current.diagramType,
             sourceUri: current.uri,
