@@ -4,8 +4,8 @@
 // chromium through playwright-core, one scenario after the other in one workspace, screenshots in
 // e2e/artifacts/. The scenarios: e2e/host-scenarios.mjs (open, errors, quick fix, completion,
 // rename, the diagram and its export, the test explorer, the workbench host), generation
-// (e2e/generated-scenarios.mjs), simulation (e2e/simulate-scenarios.mjs) and its breakpoints
-// (e2e/breakpoint-scenarios.mjs), record and replay
+// (e2e/generated-scenarios.mjs), simulation (e2e/simulate-scenarios.mjs) and its panels
+// (e2e/panels-scenarios.mjs) and breakpoints (e2e/breakpoint-scenarios.mjs), record and replay
 // (e2e/replay-scenarios.mjs), then the large model's
 // (last: it adds 200 component types to the workspace).
 //
@@ -19,6 +19,7 @@ import { generatedScenarios } from './generated-scenarios.mjs';
 import { hostScenarios, largeModelScenarios } from './host-scenarios.mjs';
 import { simulateScenarios } from './simulate-scenarios.mjs';
 import { replayScenarios } from './replay-scenarios.mjs';
+import { panelsScenarios } from './panels-scenarios.mjs';
 import { breakpointScenarios } from './breakpoint-scenarios.mjs';
 
 const scenarios = [
@@ -26,6 +27,7 @@ const scenarios = [
     ...generatedScenarios,
     ...simulateScenarios,
     ...replayScenarios,
+    ...panelsScenarios,
     ...breakpointScenarios,
     ...largeModelScenarios,
 ];
