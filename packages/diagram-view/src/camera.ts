@@ -42,7 +42,7 @@ export class Camera {
      * False when the canvas has no size yet (a webview not laid out, a hidden pane): nothing is
      * done then, and the caller fits again once it has one.
      */
-    async fit(root: SchemaElement, maxZoom: number, animate: boolean, readableZoom?: number): Promise<boolean> {
+    async fit(root: SchemaElement, maxZoom: number, animate: boolean, readableZoom?: number): Promise<boolean | Viewport> {
         const content = unionBounds((root.children ?? []).map((c) => absoluteBounds(root, c.id)).filter((b) => b !== undefined));
         if (!content) return true;
         try {
@@ -50,10 +50,26 @@ export class Camera {
             if (!(canvasBounds.width > 0 && canvasBounds.height > 0)) return false;
             const viewport = fitViewport(content, canvasBounds, { padding: 20, maxZoom, minZoom: ZOOM_LIMITS.min, readableZoom });
             await this.dispatch(SetViewportAction.create(root.id, viewport, { animate }));
+            return viewport;
         } catch (e) {
             console.warn('diagram fit:', e);
         }
         return true;
+    }
+
+    /** Whether the current viewport is (about) `expected`. */
+    async shows(expected: Viewport): Promise<boolean> {
+        try {
+            const { viewport } = await this.dispatcher.request<ViewportResult>(GetViewportAction.create());
+            const near = (a: number, b: number, d: number): boolean => Math.abs(a - b) <= d;
+            return (
+                near(viewport.zoom, expected.zoom, 0.01) &&
+                near(viewport.scroll.x, expected.scroll.x, 2) &&
+                near(viewport.scroll.y, expected.scroll.y, 2)
+            );
+        } catch {
+            return true;
+        }
     }
 
     /** Zooms by `factor` around the middle of the canvas, within the zoom limits. */

@@ -5,6 +5,7 @@
  */
 import {
     RequestExportSvgAction,
+    type Viewport,
     RequestModelAction,
     SelectAction,
     SelectAllAction,
@@ -296,9 +297,26 @@ export class MountedDiagram implements MaaDiagramView {
     private openingFit(root: SchemaElement): void {
         this.sizeWatch?.disconnect();
         this.sizeWatch = undefined;
+        let tries = 0;
+        // The model's own viewport may still replace the fit (the new root is rendered after it): watched for some frames, fitted again then.
+        const recheck = (expected: Viewport, frames: number): void => {
+            requestAnimationFrame(() => {
+                void this.camera.shows(expected).then((ok) => {
+                    if (this.disposed || this.schema !== root) return;
+                    if (!ok) {
+                        if (++tries < 10) attempt();
+                    } else if (frames < 15) recheck(expected, frames + 1);
+                });
+            });
+        };
         const attempt = (): void => {
             void this.camera.fit(root, 1.5, false, READABLE_ZOOM).then((done) => {
-                if (done || this.disposed || this.schema !== root || typeof ResizeObserver !== 'function') return;
+                if (this.disposed || this.schema !== root) return;
+                if (typeof done === 'object') {
+                    if (typeof requestAnimationFrame === 'function') recheck(done, 0);
+                    return;
+                }
+                if (done || typeof ResizeObserver !== 'function') return;
                 const watch = new ResizeObserver(() => {
                     if (this.container.clientWidth <= 0 || this.container.clientHeight <= 0) return;
                     watch.disconnect();
