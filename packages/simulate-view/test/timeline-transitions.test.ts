@@ -1,13 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { findTransition, parseAutomata, type AutomatonInfo } from '../src/timeline/automata.js';
 import { TimelineStore } from '../src/timeline/store.js';
+import { AUTOMATON_STATES_TOPIC, PROGRAM_STEPS_TOPIC, TRANSITIONS_TOPIC } from '@maa/protocol';
 import {
-    AUTOMATON_STATES_TOPIC,
-    PROGRAM_STEPS_TOPIC,
-    TRANSITIONS_TOPIC,
     TransitionIndex,
     parseProgramStep,
     parseTransitionEvent,
+    stateAt,
     stepTransition,
 } from '../src/timeline/transitions.js';
 
@@ -165,5 +164,26 @@ describe('stepping through transitions', () => {
         expect(stepTransition(list, undefined, 2.5, -1)).toBe(list[2]);
         expect(stepTransition(list, undefined, 0.5, -1)).toBeUndefined();
         expect(stepTransition([], undefined, 0, 1)).toBeUndefined();
+    });
+});
+
+describe('stateAt', () => {
+    const history = {
+        node: CTRL,
+        bands: [
+            { state: 'Toasting', t0: 1, t1: 2 },
+            { state: 'Serving', t0: 2, t1: undefined },
+        ],
+        derived: [],
+        events: [],
+    };
+
+    it('names the state entered at the newest time, whose band has no width yet', () => {
+        expect(stateAt(history, 2)).toBe('Serving');
+        expect(stateAt(history, 1.5)).toBe('Toasting');
+    });
+
+    it('names none before the first band', () => {
+        expect(stateAt(history, 0.5)).toBeUndefined();
     });
 });

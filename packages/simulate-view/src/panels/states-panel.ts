@@ -6,7 +6,7 @@
  * the panel) step through the transitions of the selected row.
  */
 import { el } from '../dom.js';
-import { stepTransition, type NodeHistory, type TakenTransition } from '../timeline/transitions.js';
+import { stateAt, stepTransition, type NodeHistory, type TakenTransition } from '../timeline/transitions.js';
 import { formatTime, xOf, type TimeSpan } from '../timeline/window.js';
 import { nodeLabel, type Panel, type PanelContext } from './context.js';
 import { attachTimeInput } from './time-input.js';
@@ -116,7 +116,11 @@ export class StatesPanel implements Panel {
         const { ctx } = this;
         const track = row.querySelector('.maa-states-track') as HTMLElement;
         const label = row.querySelector('.maa-states-label') as HTMLElement;
-        label.textContent = nodeLabel(ctx, h.node);
+        // the state held at the shown time by name: a state entered at the newest time has no width yet
+        const at = ctx.store.cursor ?? end;
+        const held = stateAt(h, at);
+        label.textContent = held ? `${nodeLabel(ctx, h.node)} · ${held}` : nodeLabel(ctx, h.node);
+        label.dataset['state'] = held ?? '';
         row.classList.toggle('maa-states-focus', (ctx.selected?.node ?? this.focusNode) === h.node);
         const w = span.t1 - span.t0;
         const pct = (t: number): number => Math.max(-1, Math.min(101, xOf(t, span, 100)));

@@ -4,11 +4,8 @@
  * nodes) and the transitions taken (the `/maa/transitions` events where a node has them, else
  * each change of its state), kept up to date incrementally as messages are appended. Pure.
  */
+import { AUTOMATON_STATES_TOPIC, PROGRAM_STEPS_TOPIC, TRANSITIONS_TOPIC } from '@maa/protocol';
 import type { TimedMessage, TimelineStore } from './store.js';
-
-export const AUTOMATON_STATES_TOPIC = '/maa/automaton_states';
-export const TRANSITIONS_TOPIC = '/maa/transitions';
-export const PROGRAM_STEPS_TOPIC = '/maa/program_steps';
 
 /** A state held from `t0` until `t1` (`undefined`: still active at the newest data). */
 export interface StateBand {
@@ -87,6 +84,15 @@ export function parseProgramStep(m: TimedMessage): ProgramStep | undefined {
         text: typeof text === 'string' ? text : '',
         ...(typeof file === 'string' ? { file } : {}),
     };
+}
+
+/** The state a node holds at time `t` (the last band begun by then), if any. */
+export function stateAt(h: NodeHistory, t: number): string | undefined {
+    for (let i = h.bands.length - 1; i >= 0; i--) {
+        const band = h.bands[i];
+        if (band && band.t0 <= t) return band.state;
+    }
+    return undefined;
 }
 
 /** Follows the store: the state bands and transitions of every node, and the program steps. */
