@@ -2,13 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { findTransition, parseAutomata, type AutomatonInfo } from '../src/timeline/automata.js';
 import { TimelineStore } from '../src/timeline/store.js';
 import { AUTOMATON_STATES_TOPIC, PROGRAM_STEPS_TOPIC, TRANSITIONS_TOPIC } from '@maa/protocol';
-import {
-    TransitionIndex,
-    parseProgramStep,
-    parseTransitionEvent,
-    stateAt,
-    stepTransition,
-} from '../src/timeline/transitions.js';
+import { TransitionIndex, parseProgramStep, parseTransitionEvent, stateAt, stepTransition } from '../src/timeline/transitions.js';
 
 const CTRL = '/toast_service_robot/ctrl';
 const ARM = '/toast_service_robot/arm';
