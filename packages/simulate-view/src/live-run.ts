@@ -4,6 +4,7 @@
  * topic list for the inspector, and the 10 Hz hand-over of values and states to the diagram.
  * One instance per attached run; `dispose` ends it and clears what it showed.
  */
+import { AUTOMATON_STATES_TOPIC } from '@maa/protocol';
 import type { DiagramLiveLayer, Disposable } from './contracts.js';
 import { RosConnection, type SimServiceResponse, type TopicInfo } from './ros/index.js';
 import { errorText } from './dom.js';
@@ -17,7 +18,6 @@ import type { StatusView } from './status-view.js';
 import { TimelineFeed, type LiveTimeline } from './timeline/feed.js';
 import { activeStatesAt, diagramValuesAt } from './replay/logic.js';
 
-const AUTOMATON_STATES = '/maa/automaton_states';
 const DIAGRAM_PERIOD_MS = 100; // 10 Hz
 const STATUS_PERIOD_MS = 1000;
 const TOPICS_PERIOD_MS = 3000;
@@ -213,7 +213,7 @@ export class LiveRun implements Disposable {
                 100,
             ),
             conn.subscribe(
-                AUTOMATON_STATES,
+                AUTOMATON_STATES_TOPIC,
                 'std_msgs/msg/String',
                 (m) => {
                     this.statesMessage = m;

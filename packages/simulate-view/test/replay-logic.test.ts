@@ -1,15 +1,8 @@
+import { AUTOMATON_STATES_TOPIC } from '@maa/protocol';
 import { describe, expect, it } from 'vitest';
 import type { TopicMapAnswer } from '../src/backend.js';
 import { PortMap } from '../src/port-map.js';
-import {
-    activeStatesAt,
-    advance,
-    AUTOMATON_STATES,
-    diagramValuesAt,
-    LatestOnly,
-    replayStatusLine,
-    timeLabel,
-} from '../src/replay/logic.js';
+import { activeStatesAt, advance, diagramValuesAt, LatestOnly, replayStatusLine, timeLabel } from '../src/replay/logic.js';
 import { TimelineStore } from '../src/timeline/store.js';
 
 const map: TopicMapAnswer = {
@@ -53,11 +46,11 @@ function recording(): TimelineStore {
         { t: 0, topic: '/tsr/distance', message: { data: 0.5 } },
         { t: 2, topic: '/tsr/distance', message: { data: 0.125 } },
         { t: 0, topic: '/joint_states', message: { name: ['a'], position: [1] } },
-        { t: 0, topic: AUTOMATON_STATES, message: states({ '/tsr/ctrl': 'Idle', '/tsr/arm': 'Ready' }) },
+        { t: 0, topic: AUTOMATON_STATES_TOPIC, message: states({ '/tsr/ctrl': 'Idle', '/tsr/arm': 'Ready' }) },
         // ROS 2: a node publishes only its own state at a switch
-        { t: 1, topic: AUTOMATON_STATES, message: states({ '/tsr/ctrl': 'Toasting' }) },
-        { t: 2, topic: AUTOMATON_STATES, message: states({ '/tsr/ctrl': 'Serving' }) },
-        { t: 3, topic: AUTOMATON_STATES, message: states({ '/tsr/arm': 'Moving' }) },
+        { t: 1, topic: AUTOMATON_STATES_TOPIC, message: states({ '/tsr/ctrl': 'Toasting' }) },
+        { t: 2, topic: AUTOMATON_STATES_TOPIC, message: states({ '/tsr/ctrl': 'Serving' }) },
+        { t: 3, topic: AUTOMATON_STATES_TOPIC, message: states({ '/tsr/arm': 'Moving' }) },
     ]);
     return store;
 }
@@ -114,8 +107,8 @@ describe('replay: what the diagram shows at the cursor', () => {
         const store = recording();
         expect(activeStatesAt(store, ports, -1).size).toBe(0);
         const bad = new TimelineStore();
-        bad.add({ t: 0, topic: AUTOMATON_STATES, message: { data: '{not json' } });
-        bad.add({ t: 1, topic: AUTOMATON_STATES, message: { data: 7 } });
+        bad.add({ t: 0, topic: AUTOMATON_STATES_TOPIC, message: { data: '{not json' } });
+        bad.add({ t: 1, topic: AUTOMATON_STATES_TOPIC, message: { data: 7 } });
         expect(activeStatesAt(bad, ports, 2).size).toBe(0);
         expect(activeStatesAt(new TimelineStore(), ports, 2).size).toBe(0);
     });

@@ -2,13 +2,13 @@
  * What a replay shows at the time cursor, computed from the timeline store (C5): the diagram's
  * port values and active states, and the playback clock that moves the cursor. Pure (no DOM).
  */
+import { AUTOMATON_STATES_TOPIC } from '@maa/protocol';
 import { formatRosValue } from '../format.js';
 import type { SimStatus } from '../logic.js';
 import type { PortMap } from '../port-map.js';
 import { parseAutomatonStates } from '../states.js';
 import type { TimedMessage, TimelineStore } from '../timeline/store.js';
 
-export const AUTOMATON_STATES = '/maa/automaton_states';
 /** The length of a value on the diagram (as a live run's, inspector.ts). */
 const DIAGRAM_VALUE_LENGTH = 28;
 
@@ -34,7 +34,7 @@ export function diagramValuesAt(store: TimelineStore, ports: PortMap, t: number)
 export function activeStatesAt(store: TimelineStore, ports: PortMap, t: number): Map<string, string> {
     const start = store.start;
     if (start === undefined) return new Map();
-    const messages: TimedMessage[] = store.range(AUTOMATON_STATES, start, t);
+    const messages: TimedMessage[] = store.range(AUTOMATON_STATES_TOPIC, start, t);
     const states = new Map<string, string>();
     const nodes = allNodes(store);
     for (let i = messages.length - 1; i >= 0; i--) {
@@ -51,11 +51,11 @@ const nodeCounts = new WeakMap<TimelineStore, { messages: number; nodes: number 
 
 /** How many nodes the store's automaton states name in all (the walk above stops once it knows them all). */
 function allNodes(store: TimelineStore): number {
-    const messages = store.count(AUTOMATON_STATES);
+    const messages = store.count(AUTOMATON_STATES_TOPIC);
     const known = nodeCounts.get(store);
     if (known?.messages === messages) return known.nodes;
     const nodes = new Set<string>();
-    for (const m of store.range(AUTOMATON_STATES, Number.NEGATIVE_INFINITY, Number.POSITIVE_INFINITY)) {
+    for (const m of store.range(AUTOMATON_STATES_TOPIC, Number.NEGATIVE_INFINITY, Number.POSITIVE_INFINITY)) {
         const data = (m.message as { data?: unknown } | undefined)?.data;
         if (typeof data !== 'string') continue;
         try {
