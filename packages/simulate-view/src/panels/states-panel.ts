@@ -11,6 +11,9 @@ import { formatTime, xOf, type TimeSpan } from '../timeline/window.js';
 import { nodeLabel, type Panel, type PanelContext } from './context.js';
 import { attachTimeInput } from './time-input.js';
 
+/** Transition marks closer than this are drawn once. */
+const MIN_MARK_GAP_PX = 4;
+
 /** Pastel fills by state name, stable across runs (a hash of the name). */
 function bandHue(state: string): number {
     let h = 0;
@@ -146,8 +149,15 @@ export class StatesPanel implements Panel {
             parts.push(band);
         }
         const transitions = ctx.index.transitions(h.node);
+        // Marks closer than a few pixels are drawn once: a self-loop taken every period (the
+        // toaster's On -> On) would otherwise paint its band black. Stepping still reaches each.
+        const minGap = (100 * MIN_MARK_GAP_PX) / Math.max(1, track.clientWidth);
+        let lastDrawn = Number.NEGATIVE_INFINITY;
         transitions.forEach((t, i) => {
             if (t.t < span.t0 || t.t > span.t1) return;
+            const x = pct(t.t);
+            if (t !== ctx.selected && x - lastDrawn < minGap) return;
+            lastDrawn = x;
             const mark = el('div', {
                 class: `maa-states-mark${t === ctx.selected ? ' maa-selected' : ''}`,
                 'data-testid': 'transition-mark',
@@ -156,7 +166,7 @@ export class StatesPanel implements Panel {
                 'data-to': t.to,
                 title: transitionTitle(ctx, t),
             });
-            mark.style.left = `${pct(t.t)}%`;
+            mark.style.left = `${x}%`;
             parts.push(mark);
         });
         if (ctx.store.cursor !== undefined && ctx.store.cursor >= span.t0 && ctx.store.cursor <= span.t1) {
