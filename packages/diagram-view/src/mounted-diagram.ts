@@ -60,6 +60,8 @@ export class MountedDiagram implements MaaDiagramView {
     private current: DiagramTarget | undefined;
     private lastCc: DiagramTarget | undefined;
     private fitPending = false;
+    /** Models asked for (RequestModel) and not come yet. */
+    private modelsAwaited = 0;
     /** Waits for the container to get a size, to fit a new diagram then. */
     private sizeWatch: ResizeObserver | undefined;
     private redrawScheduled = false;
@@ -252,7 +254,11 @@ export class MountedDiagram implements MaaDiagramView {
         if (!current || this.disposed) return;
         // A fit asked for stays asked for until a new model comes (a second show of the same target
         // before the first model, e.g. the diagram opened at start and from the title button, keeps it).
-        if (fit) this.fitPending = true;
+        if (fit) {
+            this.fitPending = true;
+            this.modelsAwaited = 0;
+        }
+        this.modelsAwaited++;
         const options: Record<string, string | boolean | string[] | Record<string, boolean>> = {
             diagramType: current.diagramType,
             sourceUri: current.uri,
@@ -278,8 +284,12 @@ export class MountedDiagram implements MaaDiagramView {
         );
         this.updateBars();
         if (kind === 'setModel') {
+            this.modelsAwaited = Math.max(0, this.modelsAwaited - 1);
             if (this.fitPending) {
-                this.fitPending = false;
+                // every model asked for since the fit was wanted is fitted: the answer to a second
+                // request (the diagram shown at start and again from the title button) replaces
+                // the first model and its viewport
+                if (this.modelsAwaited === 0) this.fitPending = false;
                 this.camera.forget();
                 // A new diagram opens readable (a huge one from its top); the Fit button shows it all.
                 this.openingFit(root);
