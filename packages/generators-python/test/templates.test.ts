@@ -36,9 +36,14 @@ describe('Python templates', () => {
             outPorts: ['status', 'x'],
             delayed,
             statusType: 'None',
+            file: 'p/Arm.arc',
             programs: [
-                { name: 'home', steps: ['Move(Fixed(0.0), Keep())', 'Gripper(close=True)'] },
-                { name: 'idle', steps: [] },
+                {
+                    name: 'home',
+                    steps: ['Move(Fixed(0.0), Keep())', 'Gripper(close=True)'],
+                    sources: ['(4, "move(0, keep)")', '(5, "close")'],
+                },
+                { name: 'idle', steps: [], sources: [] },
             ],
             commands: [{ constant: 'HOME', program: 'home' }],
         });
@@ -48,6 +53,10 @@ describe('Python templates', () => {
             '        "home": (\n            Move(Fixed(0.0), Keep()),\n            Gripper(close=True),\n        ),\n        "idle": (\n        ),\n',
         );
         expect(one).toContain('    COMMANDS: ClassVar[Mapping[str, str]] = {\n        "HOME": "home",\n    }\n');
+        expect(one).toContain('    FILE = "p/Arm.arc"\n');
+        expect(one).toContain(
+            '        "home": (\n            (4, "move(0, keep)"),\n            (5, "close"),\n        ),\n        "idle": (\n        ),\n',
+        );
         expect(one.endsWith('    }\n')).toBe(true);
         const none = renderPython('behavior/robotarm.njk', view([], ['status', 'x']));
         expect(none).toContain('    IN_PORTS = ()\n');
