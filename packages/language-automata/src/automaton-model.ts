@@ -82,6 +82,24 @@ export function statePath(s: State): State[] {
     return path;
 }
 
+/** A state's dotted path from its top state (`Outer.Inner`): how `/maa/automaton_states` and the diagrams name it. */
+export function statePathName(s: State): string {
+    return statePath(s)
+        .map((p) => p.name)
+        .join('.');
+}
+
+/** `trigger [guard] / action` as written, whitespace collapsed: the diagram's label and the automata table's. */
+export function transitionLabel(t: AnyTransition): string {
+    const text = (n: AstNode | undefined): string => (n?.$cstNode?.text ?? '').replace(/\s+/g, ' ').trim();
+    const parts: string[] = [];
+    if (t.tick) parts.push('Tick');
+    else if (t.event) parts.push(t.event.$refText);
+    if (t.guard) parts.push(`[${text(t.guard)}]`);
+    if (t.action) parts.push(`/ ${text(t.action)}`);
+    return parts.join(' ');
+}
+
 /** Every transition of an automaton, regular and internal, in declaration order. */
 export function allTransitions(a: Automaton): AnyTransition[] {
     return AstUtils.streamAllContents(a).filter(isAnyTransition).toArray();

@@ -6,27 +6,11 @@
  * (whose `index` is a transition's position here) and `/maa/automaton_states` against it.
  */
 import type { InstanceView } from '@maa/generator-core';
-import { allStates, allTransitions, ast, sourceOf, statePath, targetOf, type AnyTransition } from '@maa/language-automata';
+import { allStates, allTransitions, ast, sourceOf, statePathName, targetOf, transitionLabel } from '@maa/language-automata';
 import type { AutomatonEntry } from '@maa/protocol';
 import { AstUtils, type AstNode } from 'langium';
 
 /** A state's dotted path from its top state (`Outer.Inner`), as on `/maa/automaton_states`. */
-function pathOf(s: ast.State): string {
-    return statePath(s)
-        .map((p) => p.name)
-        .join('.');
-}
-
-/** `trigger [guard] / action` as written, whitespace collapsed (the diagram's transition label). */
-export function transitionLabel(t: AnyTransition): string {
-    const text = (n: AstNode | undefined): string => (n?.$cstNode?.text ?? '').replace(/\s+/g, ' ').trim();
-    const parts: string[] = [];
-    if (t.tick) parts.push('Tick');
-    else if (t.event) parts.push(t.event.$refText);
-    if (t.guard) parts.push(`[${text(t.guard)}]`);
-    if (t.action) parts.push(`/ ${text(t.action)}`);
-    return parts.join(' ');
-}
 
 /**
  * A model file relative to the model root: the folder of its package and its file name (MontiArc
@@ -48,11 +32,11 @@ export function automatonEntry(instance: InstanceView, node: string): AutomatonE
     const component = instance.component;
     const automaton = component.behavior?.node;
     if (!automaton || !ast.isAutomaton(automaton)) return undefined;
-    const states = allStates(automaton).map((s) => ({ path: pathOf(s), line: position(s).line }));
+    const states = allStates(automaton).map((s) => ({ path: statePathName(s), line: position(s).line }));
     const transitions = allTransitions(automaton).flatMap((t, index) => {
         const from = sourceOf(t);
         const to = targetOf(t);
-        return from && to ? [{ index, from: pathOf(from), to: pathOf(to), label: transitionLabel(t), ...position(t) }] : [];
+        return from && to ? [{ index, from: statePathName(from), to: statePathName(to), label: transitionLabel(t), ...position(t) }] : [];
     });
     return {
         instancePath: instance.path.join('.'),

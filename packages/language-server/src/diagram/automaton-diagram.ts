@@ -1,6 +1,6 @@
 import type { AstNode } from 'langium';
 import { type ast as adl, behaviorsOf } from '@maa/language-adl';
-import { allTransitions, sourceOf, statePath, substates, targetOf, type AnyTransition, type ast } from '@maa/language-automata';
+import { allTransitions, sourceOf, statePathName, substates, targetOf, transitionLabel, type ast } from '@maa/language-automata';
 import { componentQualifiedName } from '@maa/generator-core';
 import type { BuildContext } from './context.js';
 import { labelId, stateId, transitionId } from './ids.js';
@@ -30,7 +30,7 @@ export function buildAutomatonDiagram(component: adl.ComponentType, ctx: BuildCo
     const nodes = new Map<State, StateNode>();
     const addStates = (level: ast.Automaton | State, into: StateNode[]): void => {
         for (const s of substates(level)) {
-            const path = pathOf(s);
+            const path = statePathName(s);
             const id = ctx.id(stateId(path), s);
             const node: StateNode = {
                 type: TYPES.state,
@@ -110,21 +110,4 @@ function edgeContainer(from: State, to: State): State | undefined {
     for (let s = parent(from); s; s = parent(s)) above.add(s);
     for (let s = parent(to); s; s = parent(s)) if (above.has(s)) return s;
     return undefined;
-}
-
-function pathOf(s: State): string {
-    return statePath(s)
-        .map((p) => p.name)
-        .join('.');
-}
-
-/** `trigger [guard] / action` as written, whitespace collapsed. */
-export function transitionLabel(t: AnyTransition): string {
-    const text = (n: AstNode | undefined): string => (n?.$cstNode?.text ?? '').replace(/\s+/g, ' ').trim();
-    const parts: string[] = [];
-    if (t.tick) parts.push('Tick');
-    else if (t.event) parts.push(t.event.$refText);
-    if (t.guard) parts.push(`[${text(t.guard)}]`);
-    if (t.action) parts.push(`/ ${text(t.action)}`);
-    return parts.join(' ');
 }

@@ -8,7 +8,7 @@ export * from './diagram-server.js';
 export * from './diagram-generator.js';
 export * from './layout.js';
 export { buildComponentDiagram, behaviorKind, allElements } from './cc-diagram.js';
-export { buildAutomatonDiagram, transitionLabel } from './automaton-diagram.js';
+export { buildAutomatonDiagram } from './automaton-diagram.js';
 export { atomicSourcePath } from './source-ports.js';
 export {
     standaloneDiagram,
