@@ -12,10 +12,10 @@
 // Installs no npm packages: run `npm ci` first (the README's test command does).
 // Two lanes run side by side to use both cores of a small machine: the main lane builds (two
 // workspaces at a time in the order of their dependencies, scripts/build-graph.mjs), then runs
-// Vitest (two workers, or one less than the cores on a bigger machine), printing as it goes; the
-// side lane sets up the venvs and the Debian packages and runs the linters while the build runs,
-// then the Python suites, the pack-and-install test and the e2e suite beside Vitest (each stage's
-// output is printed when it ends). MAA_TEST_SERIAL=1 runs every stage one after the other.
+// Vitest (two workers, or one less than the cores on a bigger machine) and then the e2e suite,
+// printing as it goes; the side lane sets up the venvs and the Debian packages and runs the
+// linters while the build runs, then the Python suites and the pack-and-install test (each
+// stage's output is printed when it ends). MAA_TEST_SERIAL=1 runs every stage one after the other.
 // Extra arguments go to Vitest, e.g. `npm test -- packages/cli`; MAA_TEST_PYTHON=0 skips the
 // Python suites except ROS 2, MAA_TEST_ROS2=0 skips ROS 2, MAA_TEST_E2E=0 the browser tests,
 // MAA_TEST_BUILD=0 the build (for a tree that is built already), MAA_TEST_LINT=0 the linters,
@@ -242,9 +242,9 @@ const PYTHON_SUITES = [
 // The build beside the setups, then the tests. The venv setups run one after the other
 // (sim-server's and the ROS 2 one both install sim-server editable, which writes into its source
 // folder), as do the Debian packages (apt-get takes a lock). Vitest starts when the build and the
-// setups are done; the Python suites need only maa-gen (packages/cli) built and start as soon as
-// it is, beside the rest of the build; the pack-and-install test and the e2e suite need the whole
-// build. A failed build or setup stops the run there: no further test starts.
+// setups are done, the e2e suite after it; the Python suites need only maa-gen (packages/cli)
+// built and start as soon as it is, beside the rest of the build; the pack-and-install test needs
+// the whole build. A failed build or setup stops the run there: no further test starts.
 let buildStatus = 0;
 /** The exit status of ensure-chromium (run with the setups). */
 let chromiumStatus = 0;
@@ -262,14 +262,20 @@ if (serial) {
     await lanes(
         async () => {
             if (enabled('MAA_TEST_BUILD')) buildStatus = await buildStage();
-            if (buildStatus === 0 && (await setupsDone.promise)) await vitestSuite(process.argv.slice(2));
+            if (buildStatus === 0 && (await setupsDone.promise)) {
+                await vitestSuite(process.argv.slice(2));
+                // The e2e suite after Vitest, not beside it: its scenarios wait on a browser, the
+                // language server and the simulator, and beside Vitest's workers on two cores they
+                // timed out (a click, an editor opening) in a fresh-clone run.
+                if (enabled('MAA_TEST_E2E')) await e2eSuite();
+            }
         },
         async () => {
             setupsOk = await setupsAndLint();
             setupsDone.resolve(setupsOk);
             if (!setupsOk) return;
             if (await whenBuilt('packages/cli')) await pythonSuites();
-            if (await whenBuilt()) await wholeBuildSuites();
+            if ((await whenBuilt()) && enabled('MAA_TEST_PACK')) await packInstallSuite();
         },
     );
 }
@@ -475,7 +481,7 @@ async function e2eSuite() {
     }
     const resultsFile = path.join(repo, 'e2e', 'artifacts', 'results.json');
     rmSync(resultsFile, { force: true });
-    const status = await step('e2e', process.execPath, [path.join(repo, 'e2e', 'run.mjs')], { side: !serial });
+    const status = await step('e2e', process.execPath, [path.join(repo, 'e2e', 'run.mjs')]); // the main lane, after Vitest
     let results;
     try {
         results = JSON.parse(readFileSync(resultsFile, 'utf8'));
@@ -491,7 +497,7 @@ async function e2eSuite() {
     // the e2e checks that run on their own pages, outside the IDE's scenario runner (e2e/run.mjs)
     for (const script of ['vscode-diagram-webview.mjs', 'vscode-simulate.mjs', 'lab-dashboard.mjs', 'lab-ide.mjs']) {
         // each is one test: it prints its checks and exits 0 only when all pass
-        if ((await step(`e2e: ${script}`, process.execPath, [path.join(repo, 'e2e', script)], { side: !serial })) === 0) tally.passed += 1;
+        if ((await step(`e2e: ${script}`, process.execPath, [path.join(repo, 'e2e', script)])) === 0) tally.passed += 1;
         else tally.fail('failed tests', `e2e: ${script} (its checks are printed above)`);
     }
 }
