@@ -19,7 +19,6 @@ from __future__ import annotations
 import bisect
 import contextlib
 import struct
-import sys
 import threading
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
@@ -27,10 +26,8 @@ from pathlib import Path
 from typing import Any, overload
 
 import mujoco
-import viser
 
 from .access import AccessPolicy, resolve_token
-from .gate import Gate
 from .messages import JsonMessage
 from .recorder import SCENE_TOPIC
 from .transport import LocalBus
@@ -226,23 +223,7 @@ class StaticSceneView(SceneView):
         # SceneView.__init__ needs a runner; this sets what its scene building uses instead.
         self.world = world
         self.access = access
-        with contextlib.redirect_stdout(sys.stderr):
-            self.server = viser.ViserServer(host="127.0.0.1", port=0, label="maa-sim: replay", verbose=False)
-        self.gate = Gate(self.access, self.server.get_port(), host=host, port=port)
-        self._refuse_ungated_websockets()
-        try:
-            self.gate.start()
-        except RuntimeError:
-            with contextlib.suppress(Exception), contextlib.redirect_stdout(sys.stderr):
-                self.server.stop()
-            raise
-        self.port = self.gate.port
-        self.host = host
-        self.frames = {}
-        self.geoms = {}
-        self._geom_rgb = {}
-        self._stop = threading.Event()
-        self._thread = None
+        self._serve("maa-sim: replay", host, port)
         self.updates = 0
         self._build_scene()
         with self.server.gui.add_folder("Camera"):

@@ -68,11 +68,29 @@ class SceneView:
         self.world = runner.session.world
         self.fps = fps
         self.access = access if access is not None else AccessPolicy(resolve_token(), bind_host=host)
+        self._serve("maa-sim: toast kitchen", host, port)
+        self.updates = 0
+        self._build_scene()
+        self._build_gui()
+
+    @property
+    def url(self) -> str:
+        """The panel's address (without the token: see `url_with_token`)."""
+        host = f"[{self.host}]" if ":" in self.host else self.host
+        return f"http://{host}:{self.port}"
+
+    @property
+    def url_with_token(self) -> str:
+        """The address a person opens: the token in the query becomes a cookie for the page."""
+        return f"{self.url}/?token={self.access.token}"
+
+    def _serve(self, label: str, host: str, port: int) -> None:
+        """Starts viser on an internal port behind the access gate on `host:port`, with no frames yet."""
         # viser prints a banner on stdout; stdout belongs to maa-sim's own output (--status-json).
         # Port 0: viser moves on to the next port when one is taken, which must not happen to
         # an internal port that some other server might be on.
         with contextlib.redirect_stdout(sys.stderr):
-            self.server = viser.ViserServer(host="127.0.0.1", port=0, label="maa-sim: toast kitchen", verbose=False)
+            self.server = viser.ViserServer(host="127.0.0.1", port=0, label=label, verbose=False)
         self.gate = Gate(self.access, self.server.get_port(), host=host, port=port)
         self._refuse_ungated_websockets()
         try:
@@ -88,20 +106,6 @@ class SceneView:
         self._geom_rgb: dict[int, tuple[int, int, int]] = {}
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
-        self.updates = 0
-        self._build_scene()
-        self._build_gui()
-
-    @property
-    def url(self) -> str:
-        """The panel's address (without the token: see `url_with_token`)."""
-        host = f"[{self.host}]" if ":" in self.host else self.host
-        return f"http://{host}:{self.port}"
-
-    @property
-    def url_with_token(self) -> str:
-        """The address a person opens: the token in the query becomes a cookie for the page."""
-        return f"{self.url}/?token={self.access.token}"
 
     def _refuse_ungated_websockets(self) -> None:
         """Defence in depth for the internal port, which any local process or web page could find:
