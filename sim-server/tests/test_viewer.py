@@ -5,10 +5,12 @@ from __future__ import annotations
 import time
 import urllib.request
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 from toast_app.lockstep import create_controller
 
+from maa_sim.app import RunOptions, SimApp
 from maa_sim.runs import lockstep_session
 from maa_sim.viewer import CAMERA_PRESETS, SceneView
 
@@ -86,3 +88,52 @@ def test_run_controls_standalone_and_none_when_the_ide_drives_the_run() -> None:
     finally:
         standalone.stop()
         embedded.stop()
+
+
+def test_the_run_controls_call_the_actions_they_are_given() -> None:
+    """`maa-sim run` hands the panel its control services: a button does what the IDE's does."""
+    _, runner = lockstep_session(create_controller({}))
+    calls: list[tuple[str, dict[str, object]]] = []
+    services = ("sim/pause", "sim/resume", "sim/step", "sim/reset", "sim/set_speed")
+    actions = {name: (lambda args, name=name: calls.append((name, dict(args)))) for name in services}
+    view = SceneView(runner, port=_free_port(), actions=actions)
+    try:
+        for label in ("Pause", "Resume", "Step", "Reset"):
+            view.press(label).join(timeout=30)
+        assert calls == [("sim/pause", {}), ("sim/resume", {}), ("sim/step", {"steps": 1}), ("sim/reset", {})]
+        assert runner.status()["time"] == 0.0  # the runner itself was left alone
+    finally:
+        view.stop()
+
+
+def test_a_refused_run_control_is_reported_and_the_next_one_works(capsys: pytest.CaptureFixture[str]) -> None:
+    _, runner = lockstep_session(create_controller({}))
+
+    def refuse(_args: object) -> None:
+        raise ValueError("not now")
+
+    view = SceneView(runner, port=_free_port(), actions={"sim/reset": refuse, "sim/pause": lambda _a: runner.pause()})
+    try:
+        view.press("Reset").join(timeout=30)
+        assert "maa-sim: viser sim/reset: not now" in capsys.readouterr().err
+        view.press("Pause").join(timeout=30)
+        assert runner.paused
+    finally:
+        view.stop()
+
+
+def test_maa_sim_run_resets_through_its_own_reset(toast_app_dir: Path) -> None:
+    """The standalone panel's Reset is the application's (ROS 2 mode: every node restarts), not the
+    runner's alone: here a lock-step run, whose reset also forgets the automaton states."""
+    app = SimApp(RunOptions(package=toast_app_dir, mode="lockstep", rosbridge_port=None, viser_port=0, paused=True))
+    app.start()
+    try:
+        assert app.viewer is not None and app.runner is not None
+        app.runner.step(50)
+        assert app.runner.status()["time"] > 0.5
+        app.automaton_states["controller"] = "Toasting"
+        app.viewer.press("Reset").join(timeout=60)
+        assert app.runner.status()["time"] == 0.0
+        assert app._latched_states() == {}
+    finally:
+        app.stop()

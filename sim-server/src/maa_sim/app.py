@@ -132,6 +132,7 @@ class SimApp:
                     port=self.options.viser_port,
                     access=self._access(),
                     controls=self.options.viser_controls,
+                    actions=self.control_services(),
                 )
                 self.viewer.start()
             if self.options.paused:

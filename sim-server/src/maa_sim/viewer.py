@@ -20,7 +20,7 @@ import hmac
 import sys
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from typing import Any
 
 import mujoco
@@ -29,10 +29,28 @@ import viser
 
 from .access import AccessPolicy, resolve_token
 from .gate import GATE_HEADER, Gate
+from .rosbridge import ServiceError
 from .session import Runner
 from .world import PLATE_CENTER
 
 FPS = 30.0
+
+#: What a run-control button does, by the name of the service that does the same for the IDE
+#: (sim/pause, sim/resume, sim/step, sim/reset, sim/set_speed): the service's arguments in, its
+#: reply out.
+RunAction = Callable[[dict[str, Any]], object]
+
+
+def runner_actions(runner: Runner) -> dict[str, RunAction]:
+    """The run controls acting on the runner alone (a viewer without an application around it)."""
+    return {
+        "sim/pause": lambda _args: runner.pause(),
+        "sim/resume": lambda _args: runner.resume(),
+        "sim/step": lambda args: runner.step(int(args.get("steps", 1))),
+        "sim/reset": lambda _args: runner.reset(),
+        "sim/set_speed": lambda args: runner.set_speed(float(args["speed"])),
+    }
+
 
 #: Camera presets: name -> (position, look-at).
 CAMERA_PRESETS: dict[str, tuple[tuple[float, float, float], tuple[float, float, float]]] = {
@@ -58,10 +76,14 @@ class SceneView:
         fps: float = FPS,
         access: AccessPolicy | None = None,
         controls: bool = True,
+        actions: Mapping[str, RunAction] | None = None,
     ) -> None:
         self.runner = runner
         #: whether the panel offers the run controls (False: the HUD and the camera presets only)
         self.controls = controls
+        #: what the run controls do: `maa-sim run` passes its control services, so that a Reset
+        #: here restarts ROS 2 mode's nodes and a Resume goes on past a breakpoint, as from the IDE
+        self.actions: Mapping[str, RunAction] = actions if actions is not None else runner_actions(runner)
         #: the run controls' GUI handles (empty without them)
         self.run_controls: list[Any] = []
         self.session = runner.session
@@ -242,11 +264,45 @@ class SceneView:
                 "Speed", min=0.1, max=10.0, step=0.1, initial_value=max(0.1, self.runner.speed or 1.0)
             )
         self.run_controls = [pause, resume, step, reset, speed]
-        pause.on_click(lambda _e: self.runner.pause())
-        resume.on_click(lambda _e: self.runner.resume())
-        step.on_click(lambda _e: self._guard(lambda: self.runner.step(1)))
-        reset.on_click(lambda _e: self._guard(self.runner.reset))
-        speed.on_update(lambda _e: self._guard(lambda: self.runner.set_speed(float(speed.value))))
+        for button in (pause, resume, step, reset):
+            button.on_click(self._press_handler(button.label))
+
+        def set_speed(_event: Any) -> None:
+            self._act("sim/set_speed", {"speed": float(speed.value)})
+
+        speed.on_update(set_speed)
+
+    def _press_handler(self, label: str) -> Callable[[Any], None]:
+        def handler(_event: Any) -> None:
+            self.press(label)
+
+        return handler
+
+    #: the run-control buttons' services and arguments
+    _BUTTONS: dict[str, tuple[str, dict[str, Any]]] = {
+        "Pause": ("sim/pause", {}),
+        "Resume": ("sim/resume", {}),
+        "Step": ("sim/step", {"steps": 1}),
+        "Reset": ("sim/reset", {}),
+    }
+
+    def press(self, label: str) -> threading.Thread:
+        """What a click on a run-control button does; the returned thread ends when it is done."""
+        service, args = self._BUTTONS[label]
+        return self._act(service, args)
+
+    def _act(self, service: str, args: dict[str, Any]) -> threading.Thread:
+        # on a thread of its own: ROS 2 mode's reset restarts every node (seconds), and viser's
+        # callbacks should not wait for it
+        def run() -> None:
+            try:
+                self.actions[service](args)
+            except (ValueError, ServiceError) as exc:  # reported; the panel keeps serving
+                print(f"maa-sim: viser {service}: {exc}", file=sys.stderr, flush=True)
+
+        thread = threading.Thread(target=run, name=f"viser {service}", daemon=True)
+        thread.start()
+        return thread
 
     def _build_camera_folder(self) -> None:
         gui = self.server.gui
@@ -260,11 +316,6 @@ class SceneView:
             self.look(preset)
 
         return handler
-
-    @staticmethod
-    def _guard(action: Callable[[], object]) -> None:
-        with contextlib.suppress(ValueError):
-            action()
 
     def look(self, preset: str) -> None:
         position, look_at = CAMERA_PRESETS[preset]
