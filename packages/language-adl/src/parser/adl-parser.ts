@@ -18,6 +18,7 @@ import {
     type ParseResult,
 } from 'langium';
 import type { Range } from 'vscode-languageserver-types';
+import { type ChevrotainErrorHandler, cacheNoViableAltPaths } from './no-viable-alt-paths.js';
 
 type ParserOptions = Parameters<LangiumParser['parse']>[1] & {};
 
@@ -45,7 +46,7 @@ interface LangiumParserInternals {
     nodeBuilder: CstNodeBuilder;
     astReflection: AstReflection;
     lexer: Lexer;
-    wrapper: { input: LexerResult['tokens']; errors: ParseResult['parserErrors'] };
+    wrapper: { input: LexerResult['tokens']; errors: ParseResult['parserErrors'] } & ChevrotainErrorHandler;
     lexerResult: LexerResult | undefined;
     allRules: Map<string, unknown>;
     mainRule: unknown;
@@ -59,6 +60,7 @@ export class AdlParser extends LangiumParser {
         const self = this as unknown as LangiumParserInternals;
         self.nodeBuilder = new AdlCstNodeBuilder();
         self.astReflection = withDefaultsOnly(self.astReflection);
+        cacheNoViableAltPaths(self.wrapper);
     }
 
     /**
