@@ -1,38 +1,31 @@
 // The exercises under examples/lab/ are solvable: their starter (as the loader gives it: with an
 // exercise's base) has the expected diagnostics and failing stream tests, the starter with the
 // reference solution (solution/, never released) over it passes `maa-gen check` and `maa-gen test`
-// (the real CLI, on the generators-python venv).
-import { execFile } from 'node:child_process';
+// (the real CLI's main(), in a worker thread, on the generators-python venv).
 import { cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterAll, describe, expect, it } from 'vitest';
+// The CLI's own test helper: maa-gen's main() in one warm worker thread of this file instead of a
+// cold process per command (about a second of CPU each, most of it loading; docs/testing.md).
+import { requireBuiltCli, runCliInProcess } from '../../cli/test/helpers.js';
 import { loadExercise } from '../src/exercises/index.js';
 
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../..');
-const MAA_GEN = path.join(repo, 'packages/cli/bin/maa-gen.js');
 const python = path.join(repo, 'packages/generators-python/.venv/bin/python');
 const work = mkdtempSync(path.join(tmpdir(), 'maa-lab-examples-'));
 afterAll(() => rmSync(work, { recursive: true, force: true }));
+requireBuiltCli();
 
 interface Run {
     code: number;
     stdout: string;
 }
 
-function maaGen(args: string[], cwd: string): Promise<Run> {
-    return new Promise((resolve, reject) => {
-        execFile(
-            process.execPath,
-            [MAA_GEN, ...args],
-            { cwd, env: { ...process.env, NO_COLOR: '1', MAA_PYTHON: python } },
-            (error, stdout) => {
-                if (error && typeof error.code !== 'number') reject(error);
-                else resolve({ code: error ? (error.code as number) : 0, stdout });
-            },
-        );
-    });
+async function maaGen(args: string[], cwd: string): Promise<Run> {
+    const r = await runCliInProcess(args, cwd, { MAA_PYTHON: python });
+    return { code: r.code ?? -1, stdout: r.stdout };
 }
 
 interface Diagnostic {
