@@ -27,8 +27,17 @@ export class BackendError extends Error {
     }
 }
 
-/** A call whose answer is checked against its contract (a bad answer is a BackendError naming the field). */
-async function call<T extends TSchema>(method: 'GET' | 'POST', url: string, contract: Contract<T>, body?: unknown): Promise<Static<T>> {
+/**
+ * A call of the backend whose answer is checked against its contract: an error status or
+ * `ok: false` is a BackendError with the backend's message and log, a bad answer one naming the
+ * field. The one request helper of the view's backend calls (the simulation's and the replay's).
+ */
+export async function call<T extends TSchema>(
+    method: 'GET' | 'POST',
+    url: string,
+    contract: Contract<T>,
+    body?: unknown,
+): Promise<Static<T>> {
     const res = await fetch(url, {
         method,
         headers: body === undefined ? {} : { 'content-type': 'application/json' },

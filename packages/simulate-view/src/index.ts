@@ -100,6 +100,7 @@ export function mountSimulatePanel(container: HTMLElement, host: SimulateHost): 
         rosbridge: endpoints.rosbridge,
         store: timeline,
         viewer,
+        inspector,
         diagram: host.diagram,
         status,
         notify: (severity, message) => host.notify(severity, message),

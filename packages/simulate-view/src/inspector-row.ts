@@ -18,6 +18,7 @@ export class InspectorRow {
     /** The last value as the inspector shows it. */
     lastText?: string;
     private readonly valueText = el('div', { class: 'maa-port-value-text' }, '–');
+    private readonly injectCell = el('td', { class: 'maa-port-inject' });
     private dirty = false;
     private numeric = false;
 
@@ -38,7 +39,7 @@ export class InspectorRow {
             { class: 'maa-port-name', title: `${info.topic}  (${info.type || 'type unknown'})` },
             port ? port.portPath : info.topic,
         );
-        const injectCell = el('td', { class: 'maa-port-inject' });
+        const injectCell = this.injectCell;
         if (port?.external) injectCell.append(...injectControls(info.topic, info.type, (text) => onInject(this, text)));
         this.tr = el(
             'tr',
@@ -78,6 +79,22 @@ export class InspectorRow {
     /** The value must be shown again (its enum literals became known). */
     touch(): void {
         if (this.last !== undefined) this.dirty = true;
+    }
+
+    /** Removes the inject field (a replay's row: a recording takes no input). */
+    withoutInjection(): void {
+        this.injectCell.replaceChildren();
+    }
+
+    /** Shows a recorded message (a replay at its cursor); `undefined`: none recorded yet ("–"). */
+    showRecorded(m: unknown, enums: EnumLiterals): void {
+        this.last = m;
+        this.dirty = false;
+        const text = m === undefined ? undefined : formatRosValue(m, 120, enums.formatOptions(this.info.type));
+        if (text === this.lastText) return;
+        this.lastText = text;
+        this.valueText.textContent = text ?? '–';
+        this.valueText.title = text ?? 'nothing recorded yet at this time';
     }
 
     /** Shows a new value and the plot; true when the shown text of a port changed. */

@@ -3,6 +3,8 @@
  * filter, the live value of each and, for watched rows, a plot. It decides which topics are
  * subscribed and hands the port values to the diagram. When the run ends the rows stay with their
  * last values, marked as the last run's ({@link Inspector.freeze}), until the next run starts.
+ * During a replay the rows are the recording's topics and show the recorded values at the time
+ * cursor ({@link Inspector.showRecording}, {@link Inspector.showAt}).
  */
 import type { RosConnection, TopicInfo } from './ros/index.js';
 import { el } from './dom.js';
@@ -11,6 +13,7 @@ import { formatRosValue, isEnumMessage } from './format.js';
 import { inject } from './injection.js';
 import { InspectorRow } from './inspector-row.js';
 import type { PortMap } from './port-map.js';
+import type { TimelineStore } from './timeline/store.js';
 
 /** Unwatched topics arrive at most this often (the diagram's rate, 10 Hz). */
 export const THROTTLE_MS = 100;
@@ -41,6 +44,8 @@ export class Inspector {
     private readonly staleNote = el('div', { class: 'maa-inspector-stale-note', 'data-testid': 'port-stale', hidden: '' });
     /** The run is over: the rows keep their last values, nothing is subscribed or updated. */
     private frozen = false;
+    /** The recording whose values the rows show (a replay), `undefined` otherwise. */
+    private recording: string | undefined;
     private readonly rows = new Map<string, InspectorRow>();
     private readonly enums = new EnumLiterals();
     private conn: RosConnection | undefined;
@@ -110,14 +115,14 @@ export class Inspector {
      * port's row stays when its topic leaves the list (ROS 2 nodes restarting at a reset, or
      * ending at a stop), with its last value; other topics that left are removed.
      */
-    update(list: readonly TopicInfo[], ports: PortMap): void {
+    update(list: readonly TopicInfo[], ports: PortMap | undefined): void {
         if (this.frozen) return;
         this.ports = ports;
         const seen = new Set<string>();
         for (const info of list) {
             if (HIDDEN_TOPICS.some((re) => re.test(info.topic))) continue;
             seen.add(info.topic);
-            const port = ports.portOf(info.topic);
+            const port = ports?.portOf(info.topic);
             const existing = this.rows.get(info.topic);
             if (existing) {
                 existing.info = info;
@@ -177,6 +182,7 @@ export class Inspector {
         this.conn = undefined;
         this.ports = undefined;
         this.frozen = false;
+        this.recording = undefined;
         this.element.classList.remove('maa-inspector-stale');
         this.staleNote.hidden = true;
         this.render();
@@ -200,9 +206,39 @@ export class Inspector {
         this.render();
     }
 
+    /**
+     * A replay opens: a row per topic of the recording (`ports`: its platform's port topics,
+     * `undefined` for a recording from elsewhere), nothing subscribed, no injection; the rows
+     * show the recorded values at the time {@link showAt} gives.
+     */
+    showRecording(name: string, topics: readonly string[], ports: PortMap | undefined): void {
+        this.clear();
+        this.update(
+            topics.map((topic) => ({ topic, type: ports?.portOf(topic)?.type ?? '' })),
+            ports,
+        );
+        for (const r of this.rows.values()) r.withoutInjection();
+        this.recording = name;
+        this.frozen = true;
+        this.element.classList.add('maa-inspector-stale');
+    }
+
+    /** A replay's cursor moved to `t`: each row shows its topic's last recorded message at or before `t` ("–" before the first). */
+    showAt(store: TimelineStore, t: number): void {
+        if (this.recording === undefined) return;
+        for (const r of this.rows.values()) r.showRecorded(store.latestAt(r.info.topic, t)?.message, this.enums);
+        this.staleNote.textContent = `Recorded values at ${t.toFixed(2)} s (replay of ${this.recording})`;
+        this.staleNote.hidden = this.rows.size === 0;
+    }
+
+    /** The rows show a replay's recorded values (see {@link showRecording}). */
+    get replaying(): boolean {
+        return this.recording !== undefined;
+    }
+
     /** The rows are the last run's (see {@link freeze}). */
     get stale(): boolean {
-        return this.frozen;
+        return this.frozen && this.recording === undefined;
     }
 
     private watchChanged(row: InspectorRow): void {

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { nodeLabel, type PanelContext } from '../src/panels/context.js';
-import { logEntries } from '../src/panels/log-panel.js';
+import { droppedNote, logEntries } from '../src/panels/log-panel.js';
 import { messageJson } from '../src/panels/messages-panel.js';
 import { feedsTopic } from '../src/timeline/feed.js';
 import type { ProgramStep, TakenTransition } from '../src/timeline/transitions.js';
@@ -94,5 +94,16 @@ describe('node labels', () => {
                 '/other',
             ),
         ).toBe('/other');
+    });
+});
+
+describe('the note over a log that lists only its newest entries', () => {
+    it('says how many of how many it shows', () => {
+        expect(droppedNote(500, 1234)).toBe('showing the newest 500 of 1234 entries');
+    });
+
+    it('says nothing when every entry is listed', () => {
+        expect(droppedNote(12, 12)).toBe('');
+        expect(droppedNote(0, 0)).toBe('');
     });
 });

@@ -2,7 +2,7 @@ import { AUTOMATON_STATES_TOPIC } from '@maa/protocol';
 import { describe, expect, it } from 'vitest';
 import type { TopicMapAnswer } from '../src/backend.js';
 import { PortMap } from '../src/port-map.js';
-import { activeStatesAt, advance, diagramValuesAt, LatestOnly, replayStatusLine, timeLabel } from '../src/replay/logic.js';
+import { activeStatesAt, advance, arrowDirection, diagramValuesAt, LatestOnly, replayStatusLine, timeLabel } from '../src/replay/logic.js';
 import { TimelineStore } from '../src/timeline/store.js';
 
 const map: TopicMapAnswer = {
@@ -175,5 +175,18 @@ describe('replay: the status line', () => {
             'replay TR-1.mcap · t 1.00 s · toast 0.00',
         );
         expect(replayStatusLine('TR-1.mcap', {})).toBe('replay TR-1.mcap');
+    });
+});
+
+describe('replay: the arrow keys on the time slider', () => {
+    it('→ and ↑ step to the next recorded message, ← and ↓ to the previous', () => {
+        expect(arrowDirection('ArrowRight')).toBe(1);
+        expect(arrowDirection('ArrowUp')).toBe(1);
+        expect(arrowDirection('ArrowLeft')).toBe(-1);
+        expect(arrowDirection('ArrowDown')).toBe(-1);
+    });
+
+    it('other keys keep what the slider does with them (Home, End, Page Up)', () => {
+        for (const key of ['Home', 'End', 'PageUp', 'a', '']) expect(arrowDirection(key)).toBeUndefined();
     });
 });

@@ -156,3 +156,43 @@ describe('TimelineStore for readers that follow appends', () => {
         expect(s.generation).not.toBe(g2);
     });
 });
+
+describe('windows around a time and stepping between messages', () => {
+    const store = (): TimelineStore => {
+        const s = new TimelineStore();
+        s.addAll([msg(0), msg(1), msg(2), msg(3), msg(4), msg(5), msg(0.5, '/b'), msg(2.5, '/b')]);
+        return s;
+    };
+
+    it('gives the message in effect at t with a few before and after it, not the whole history', () => {
+        const s = store();
+        expect(s.around('/a', 2.5, 1, 2).map((m) => m.t)).toEqual([1, 2, 3, 4]);
+        expect(s.around('/a', 2, 1, 1).map((m) => m.t)).toEqual([1, 2, 3]);
+        // at either end: what there is
+        expect(s.around('/a', 0, 3, 1).map((m) => m.t)).toEqual([0, 1]);
+        expect(s.around('/a', 9, 2, 3).map((m) => m.t)).toEqual([3, 4, 5]);
+    });
+
+    it('gives only later messages before the first one, nothing for an unknown topic or negative counts', () => {
+        const s = store();
+        expect(s.around('/a', -1, 3, 2).map((m) => m.t)).toEqual([0, 1]);
+        expect(s.around('/nope', 1, 3, 3)).toEqual([]);
+        expect(s.around('/a', 2, -5, -5).map((m) => m.t)).toEqual([2]);
+    });
+
+    it('finds the next and previous message time of any topic', () => {
+        const s = store();
+        expect(s.adjacentTime(0, 1)).toBe(0.5);
+        expect(s.adjacentTime(0.5, 1)).toBe(1);
+        expect(s.adjacentTime(2.2, 1)).toBe(2.5);
+        expect(s.adjacentTime(2.5, -1)).toBe(2);
+        expect(s.adjacentTime(1, -1)).toBe(0.5);
+    });
+
+    it('finds none past either end or in an empty store', () => {
+        const s = store();
+        expect(s.adjacentTime(5, 1)).toBeUndefined();
+        expect(s.adjacentTime(0, -1)).toBeUndefined();
+        expect(new TimelineStore().adjacentTime(1, 1)).toBeUndefined();
+    });
+});

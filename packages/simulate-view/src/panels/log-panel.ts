@@ -9,7 +9,7 @@ import { formatTime } from '../timeline/window.js';
 import { nodeLabel, type Panel, type PanelContext } from './context.js';
 
 /** The newest entries listed (a long run's log stays light). */
-const MAX_ENTRIES = 500;
+export const MAX_ENTRIES = 500;
 
 type Entry = { kind: 'transition'; t: number; item: TakenTransition } | { kind: 'step'; t: number; item: ProgramStep };
 
@@ -23,12 +23,19 @@ export function logEntries(transitions: readonly TakenTransition[], steps: reado
     return all.slice(-max);
 }
 
+/** The note over a log that lists only its newest entries: "showing the newest 500 of 1234 entries". */
+export function droppedNote(shown: number, total: number): string {
+    return total > shown ? `showing the newest ${shown} of ${total} entries` : '';
+}
+
 export class LogPanel implements Panel {
     readonly id = 'log';
     readonly title = 'Log';
     readonly element: HTMLElement;
     private readonly body = el('tbody');
     private readonly empty = el('div', { class: 'maa-panel-empty' }, 'Transitions taken and program steps appear here during a run.');
+    /** Says that older entries are not listed ("showing the newest 500 of 1234"). */
+    private readonly dropped = el('div', { class: 'maa-log-dropped', 'data-testid': 'log-dropped', hidden: '' });
     /** What the table shows now (redrawn only when it changed). */
     private shownKey = '';
 
@@ -37,6 +44,7 @@ export class LogPanel implements Panel {
             'div',
             { class: 'maa-panel maa-log-panel', 'data-testid': 'log-panel' },
             this.empty,
+            this.dropped,
             el(
                 'table',
                 { class: 'maa-log-table' },
@@ -48,8 +56,13 @@ export class LogPanel implements Panel {
 
     render(): void {
         const { ctx } = this;
-        const entries = logEntries(ctx.index.allTransitions(), ctx.index.programSteps());
+        const transitions = ctx.index.allTransitions();
+        const steps = ctx.index.programSteps();
+        const entries = logEntries(transitions, steps);
+        const total = transitions.length + steps.length;
         this.empty.hidden = entries.length > 0;
+        this.dropped.hidden = total <= entries.length;
+        this.dropped.textContent = droppedNote(entries.length, total);
         const sel = ctx.selected;
         const key = `${entries.length}:${entries[entries.length - 1]?.t}:${sel?.t}:${sel?.node}:${sel?.to}:${ctx.store.cursor}`;
         if (key === this.shownKey) return;

@@ -4,7 +4,6 @@
  * effect at that time is marked, a click on another moves the cursor to it.
  */
 import { el } from '../dom.js';
-import type { TimedMessage } from '../timeline/store.js';
 import { formatTime } from '../timeline/window.js';
 import type { Panel, PanelContext } from './context.js';
 
@@ -72,11 +71,8 @@ export class MessagesPanel implements Panel {
             return;
         }
         const current = store.latestAt(topic, t);
-        const before = current ? store.range(topic, -Infinity, current.t) : [];
-        const shown: TimedMessage[] = [...before.slice(-(AROUND + 1))];
-        if (!current) shown.length = 0;
-        const after = store.range(topic, t, Infinity).filter((m) => m.t > t);
-        shown.push(...after.slice(0, AROUND));
+        // a window around the time, not the topic's whole history (a long run has many thousands)
+        const shown = store.around(topic, t, AROUND, AROUND);
         this.view.replaceChildren(
             el('div', { class: 'maa-messages-head' }, `${topic} at ${formatTime(t)}${current ? '' : ' (no message yet)'}`),
             ...shown.map((m) => {

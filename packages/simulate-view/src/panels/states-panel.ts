@@ -151,7 +151,8 @@ export class StatesPanel implements Panel {
         const transitions = ctx.index.transitions(h.node);
         // Marks closer than a few pixels are drawn once: a self-loop taken every period (the
         // toaster's On -> On) would otherwise paint its band black. Stepping still reaches each.
-        const minGap = (100 * MIN_MARK_GAP_PX) / Math.max(1, track.clientWidth);
+        // (a track without a layout, in a hidden tab, thins nothing: it is drawn again when shown)
+        const minGap = track.clientWidth > 0 ? (100 * MIN_MARK_GAP_PX) / track.clientWidth : 0;
         let lastDrawn = Number.NEGATIVE_INFINITY;
         transitions.forEach((t, i) => {
             if (t.t < span.t0 || t.t > span.t1) return;

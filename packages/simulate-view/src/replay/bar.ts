@@ -8,8 +8,6 @@ import type { SimRecordingInfo } from './api.js';
 import { timeLabel } from './logic.js';
 
 const SPEEDS = [0.25, 0.5, 1, 2, 4, 10];
-/** The slider's resolution in simulated seconds (one control period). */
-export const SLIDER_STEP = 0.02;
 
 function button(label: string, testid: string, title: string): HTMLButtonElement {
     return el('button', { type: 'button', 'data-testid': testid, title, class: 'maa-sim-button' }, label);
@@ -38,9 +36,11 @@ export class ReplayBar {
         type: 'range',
         min: '0',
         max: '0',
-        step: String(SLIDER_STEP),
+        // any time (the recording's own resolution); the arrow keys step from event to event (replay/session.ts)
+        step: 'any',
         value: '0',
         'data-testid': 'replay-slider',
+        title: 'Time (← →: the previous / next recorded message)',
         class: 'maa-replay-slider',
     });
     readonly timeText = el('span', { class: 'maa-replay-time', 'data-testid': 'replay-time' }, timeLabel(undefined, undefined));

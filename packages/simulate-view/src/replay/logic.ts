@@ -84,6 +84,13 @@ export function replayStatusLine(name: string, status: SimStatus): string {
     return parts.join(' · ');
 }
 
+/** The direction a key steps the replay's cursor in: → and ↑ to the next recorded message, ← and ↓ to the previous. */
+export function arrowDirection(key: string): 1 | -1 | undefined {
+    if (key === 'ArrowRight' || key === 'ArrowUp') return 1;
+    if (key === 'ArrowLeft' || key === 'ArrowDown') return -1;
+    return undefined;
+}
+
 /** `12.34 s / 30.00 s` */
 export function timeLabel(t: number | undefined, end: number | undefined): string {
     const f = (v: number | undefined): string => (v === undefined ? '–' : `${v.toFixed(2)} s`);

@@ -2,8 +2,8 @@
  * An open replay (C6): the backend starts `maa-sim replay` for a recording; over its rosbridge
  * the view loads the recording's messages into the timeline store (C5) and, whenever the store's
  * cursor moves (the time slider, playing, or a click in a panel), moves the 3D scene there
- * (`/sim/seek`, one call at a time) and hands the diagram the port values and active states
- * recorded at that time.
+ * (`/sim/seek`, one call at a time), hands the diagram the port values and active states
+ * recorded at that time and has the port table show the recorded values there.
  */
 import type { DiagramLiveLayer, Disposable } from '../contracts.js';
 import type { SimApi, TopicMapAnswer } from '../backend.js';
@@ -16,7 +16,7 @@ import type { TimedMessage, TimelineStore } from '../timeline/store.js';
 import type { Viewer } from '../viewer.js';
 import type { ReplayApi } from './api.js';
 import type { ReplayBar } from './bar.js';
-import { activeStatesAt, advance, diagramValuesAt, LatestOnly, replayStatusLine } from './logic.js';
+import { activeStatesAt, advance, arrowDirection, diagramValuesAt, LatestOnly, replayStatusLine } from './logic.js';
 
 /** How often playing moves the cursor (the replay server's scene follows at this rate at most). */
 const PLAY_PERIOD_MS = 33;
@@ -37,11 +37,20 @@ export interface ReplayParts {
     notify(severity: 'info' | 'warning' | 'error', message: string): void;
     /** A run is starting or running (no replay then). */
     runActive(): boolean;
+    /** The port table: it lists the recording's topics and shows their values at the cursor (inspector.ts). */
+    inspector?: ReplayInspector;
     /** The panels over the store (timeline/feed.ts LiveTimeline): told when a replay starts and what its platform is. */
     timeline?: {
         runStarted(): void;
         runInfo(topicMap: unknown, instanceOf: (node: string) => string | undefined): void;
     };
+}
+
+/** What a replay asks of the port table (inspector.ts Inspector). */
+export interface ReplayInspector {
+    showRecording(name: string, topics: readonly string[], ports: PortMap | undefined): void;
+    showAt(store: TimelineStore, t: number): void;
+    clear(): void;
 }
 
 /** What `/sim/replay_messages` answers (maa_sim.replay). */
@@ -84,6 +93,7 @@ export class ReplayController implements Disposable {
             this.pause();
             parts.store.cursor = Number(bar.slider.value);
         });
+        bar.slider.addEventListener('keydown', (e) => this.stepKey(e));
         this.subs.push(parts.store.onChange((what) => (what === 'cursor' ? this.showCursor() : undefined)));
     }
 
@@ -178,6 +188,17 @@ export class ReplayController implements Disposable {
         this.parts.bar.setPlaying(false);
     }
 
+    /** An arrow key on the slider: the cursor goes to the next or previous recorded message (of any topic). */
+    private stepKey(e: KeyboardEvent): void {
+        const direction = arrowDirection(e.key);
+        if (direction === undefined || !this.opened) return;
+        e.preventDefault();
+        this.pause();
+        const { store } = this.parts;
+        const next = store.adjacentTime(store.cursor ?? this.start, direction);
+        if (next !== undefined) store.cursor = Math.min(this.end, Math.max(this.start, next));
+    }
+
     private playTick(): void {
         const now = performance.now();
         const { cursor, ended } = advance(
@@ -216,6 +237,7 @@ export class ReplayController implements Disposable {
         store.clear();
         store.addAll(loaded.messages);
         if (topicMap && ports) this.parts.timeline?.runInfo(topicMap, (node) => ports.instanceOf(node));
+        this.parts.inspector?.showRecording(opened.name, store.topics(), ports);
         viewer.show();
         bar.open(opened.name, this.start, this.end);
         status.set(`Replaying ${opened.name} (${loaded.messages.length} messages, ${(this.end - this.start).toFixed(2)} s)`);
@@ -240,6 +262,7 @@ export class ReplayController implements Disposable {
         if (!this.opened || t === undefined) return;
         this.parts.bar.show(t, this.end);
         this.seeker.request(t);
+        this.parts.inspector?.showAt(this.parts.store, t);
         const ports = this.ports;
         if (!ports) return;
         const { diagram, store } = this.parts;
@@ -274,6 +297,7 @@ export class ReplayController implements Disposable {
         this.parts.bar.close();
         if (!was) return;
         this.parts.store.clear();
+        this.parts.inspector?.clear();
         this.parts.viewer.hide();
         try {
             this.parts.diagram.setLiveValues(new Map());

@@ -148,6 +148,32 @@ export class TimelineStore {
         return list.slice(lowerBound(list, t0), upperBound(list, t1));
     }
 
+    /**
+     * The messages of `topic` around `t`: up to `before` messages before the last one at or
+     * before `t`, that one, and up to `after` later ones, oldest first (a window: the topic's
+     * whole history is not copied).
+     */
+    around(topic: string, t: number, before: number, after: number): TimedMessage[] {
+        const list = this.byTopic.get(topic);
+        if (!list) return [];
+        const i = upperBound(list, t); // list[i - 1] is the one in effect at t
+        return list.slice(Math.max(0, i - 1 - Math.max(0, before)), i + Math.max(0, after));
+    }
+
+    /**
+     * The time of the nearest message of any topic after `t` (`direction` 1) or before it (-1),
+     * `undefined` when there is none: a replay's arrow keys step from event to event.
+     */
+    adjacentTime(t: number, direction: 1 | -1): number | undefined {
+        let best: number | undefined;
+        for (const list of this.byTopic.values()) {
+            const candidate = direction > 0 ? list[upperBound(list, t)]?.t : list[lowerBound(list, t) - 1]?.t;
+            if (candidate === undefined) continue;
+            if (best === undefined || (direction > 0 ? candidate < best : candidate > best)) best = candidate;
+        }
+        return best;
+    }
+
     /** How many messages of `topic` are kept. */
     count(topic: string): number {
         return this.byTopic.get(topic)?.length ?? 0;
