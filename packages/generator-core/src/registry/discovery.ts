@@ -111,8 +111,12 @@ function declaringPackage(fs: ManifestFileSystem, dir: URI): DeclaringPackage | 
     const file = UriUtils.joinPath(dir, 'package.json');
     let pkg: Record<string, unknown>;
     try {
-        if (!fs.existsSync(file)) return undefined;
-        pkg = JSON.parse(fs.readFileSync(file)) as Record<string, unknown>;
+        // A missing file throws too. Discovery reads every installed package's package.json after
+        // each workspace change (hundreds in a development checkout): only a text that names the
+        // key "maa" can declare generators, so the others are not parsed.
+        const text = fs.readFileSync(file);
+        if (!text.includes('"maa"')) return undefined;
+        pkg = JSON.parse(text) as Record<string, unknown>;
     } catch {
         return undefined;
     }
