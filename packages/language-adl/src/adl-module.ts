@@ -11,7 +11,7 @@ import {
 } from 'langium';
 import type { WorkspaceFolder } from 'vscode-languageserver-types';
 import { ModelRoots } from './model-roots.js';
-import { createAdlParser } from './parser/adl-parser.js';
+import { createAdlCompletionParser, createAdlParser } from './parser/adl-parser.js';
 import { GuardedLexer } from './parser/guarded-lexer.js';
 import { AdlScopeComputation } from './scoping/adl-scope-computation.js';
 import { AdlScopeProvider } from './scoping/adl-scope-provider.js';
@@ -82,6 +82,7 @@ export const AdlModule: Module<AdlServices, PartialLangiumCoreServices & AdlAdde
     parser: {
         Lexer: (s) => new GuardedLexer(s),
         LangiumParser: (s) => createAdlParser(s),
+        CompletionParser: (s) => createAdlCompletionParser(s),
     },
     references: {
         Linker: (s) => new AdlLinker(s),

@@ -1,4 +1,4 @@
-import { EmptyFileSystem, createLangiumParser, type LangiumParser } from 'langium';
+import { EmptyFileSystem, createCompletionParser, createLangiumParser, type LangiumParser } from 'langium';
 import { describe, expect, test } from 'vitest';
 import { createAdlServices } from '../src/index.js';
 
@@ -27,5 +27,18 @@ describe('the kept lookahead paths of syntax errors', () => {
         // twice: the first parse may fill the cache, the second uses it
         expect(errors(services.parser.LangiumParser, text)).toEqual(expected);
         expect(errors(services.parser.LangiumParser, text)).toEqual(expected);
+    });
+
+    test('the completion parser keeps them too and gives the same contexts as Langium’s', () => {
+        const plain = createCompletionParser(services);
+        const contexts = (parser: typeof plain, text: string) => {
+            const { elementStack, tokenIndex } = parser.parse(text);
+            return { stack: elementStack.map((e) => e.$type), tokenIndex };
+        };
+        expect(services.parser.CompletionParser).not.toBe(plain);
+        for (const text of [...texts, ...texts]) {
+            for (let cut = 10; cut <= text.length; cut += 7)
+                expect(contexts(services.parser.CompletionParser, text.slice(0, cut))).toEqual(contexts(plain, text.slice(0, cut)));
+        }
     });
 });

@@ -4,6 +4,7 @@ import {
     CstNodeBuilder,
     LeafCstNodeImpl,
     LangiumParser,
+    createCompletionParser,
     createParser,
     GrammarAST,
     type CompositeCstNode,
@@ -12,6 +13,7 @@ import {
     type LeafCstNode,
     type AstNode,
     type AstReflection,
+    type LangiumCompletionParser,
     type Lexer,
     type LexerResult,
     type Mutable,
@@ -38,6 +40,13 @@ export function createAdlParser(services: LangiumCoreServices): LangiumParser {
     const parser = new AdlParser(services);
     createParser(services.Grammar, parser, services.parser.Lexer.definition);
     parser.finalize();
+    return parser;
+}
+
+/** Langium's completion parser, with the lookahead paths of its syntax errors kept (no-viable-alt-paths.ts). */
+export function createAdlCompletionParser(services: LangiumCoreServices): LangiumCompletionParser {
+    const parser = createCompletionParser(services);
+    cacheNoViableAltPaths((parser as unknown as { wrapper: ChevrotainErrorHandler }).wrapper);
     return parser;
 }
 
