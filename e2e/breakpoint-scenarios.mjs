@@ -3,16 +3,8 @@
 // breakpoint on the Controller's Toasting -> Serving transition pauses the run with Serving
 // active: the view names the breakpoint, the status line says paused, the diagram's state chip of
 // ctrl shows Serving. Each gets { page, url, workspace, shot(name) } (run.mjs).
-import { fail, frameWith, openHost, ROBOT, runCommand } from './host-kit.mjs';
-
-/** Waits until `check()` holds, polling every 250 ms; fails with `what` after `ms`. */
-async function until(page, what, check, ms) {
-    const started = Date.now();
-    while (!(await check())) {
-        if (Date.now() - started > ms) await fail(what);
-        await page.waitForTimeout(250);
-    }
-}
+import { fail } from './host-kit.mjs';
+import { startLockstepRun, until } from './lib.mjs';
 
 const text = async (locator) => ((await locator.textContent().catch(() => '')) ?? '').trim();
 
@@ -21,28 +13,8 @@ export const breakpointScenarios = [
         id: 'b1-breakpoint',
         name: 'breakpoints (lock-step): a breakpoint on Toasting -> Serving pauses the run with Serving active',
         async run({ page, url, shot }) {
-            await openHost(page, url, ROBOT);
-            await runCommand(page, 'MontiArc: Open Diagram');
-            const diagram = await frameWith(page, '[data-testid=diagram] .maa-component', 'the diagram of ToastServiceRobot', 90_000);
-            await runCommand(page, 'MontiArc: Start Simulation');
-            const row = page
-                .locator('.quick-input-list .monaco-list-row', { hasText: 'toast-service/TR.arcapp' })
-                .filter({ hasText: 'timesync' })
-                .first();
-            await row.waitFor({ timeout: 30_000 });
-            await row.click();
-            const view = await frameWith(page, '[data-testid=simulate-panel]', 'the simulate panel', 60_000);
-            const error = view.locator('[data-testid=sim-error]');
+            const { view, diagram } = await startLockstepRun(page, url, { diagram: true });
             const pause = view.locator('[data-testid=sim-pause]');
-            await until(
-                page,
-                'the run did not start within 240 s',
-                async () => {
-                    if (await error.isVisible()) await fail(`the run did not start: ${(await text(error)).slice(0, 600)}`);
-                    return pause.isVisible();
-                },
-                240_000,
-            );
             // the breakpoints section appears once the run's automata table is there
             const section = view.locator('[data-testid=breakpoints]');
             await section.waitFor({ state: 'visible', timeout: 60_000 });

@@ -8,6 +8,7 @@ import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { generateModels, writeSystemComponent } from '../packages/cli/bench/generate-models.mjs';
 import { ensureChromium } from '../scripts/ensure-chromium.mjs';
+import { fail, frameWith, openHost, ROBOT, runCommand } from './host-kit.mjs';
 
 export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 /** The built app (MAA_IDE_APP_DIR overrides packages/ide-web/dist). */
@@ -165,4 +166,49 @@ export function stepRunner(results) {
             throw error;
         }
     };
+}
+
+/** Waits until `check()` holds, polling every 250 ms; fails with `what` after `ms`. */
+export async function until(page, what, check, ms = 30_000) {
+    const started = Date.now();
+    while (!(await check())) {
+        if (Date.now() - started > ms) await fail(what);
+        await page.waitForTimeout(250);
+    }
+}
+
+/**
+ * The set-up the simulate scenarios share (the IDE runs at `url`, run.mjs): the example's robot
+ * opens (with `diagram`, also its diagram), MontiArc: Start Simulation picks TR.arcapp on
+ * timesync (lock-step), and once the simulate view runs it (the 3D view and Pause shown) this
+ * resolves with `{ view, diagram }` (the frames of the simulate view and of the diagram). A start
+ * that fails fails with the view's error.
+ */
+export async function startLockstepRun(page, url, { diagram: withDiagram = false, timeout = 240_000 } = {}) {
+    await openHost(page, url, ROBOT);
+    let diagram;
+    if (withDiagram) {
+        await runCommand(page, 'MontiArc: Open Diagram');
+        diagram = await frameWith(page, '[data-testid=diagram] .maa-component', 'the diagram of ToastServiceRobot', 90_000);
+    }
+    await runCommand(page, 'MontiArc: Start Simulation');
+    const row = page
+        .locator('.quick-input-list .monaco-list-row', { hasText: 'toast-service/TR.arcapp' })
+        .filter({ hasText: 'timesync' })
+        .first();
+    await row.waitFor({ timeout: 30_000 });
+    await row.click();
+    const view = await frameWith(page, '[data-testid=simulate-panel]', 'the simulate panel', 60_000);
+    const error = view.locator('[data-testid=sim-error]');
+    // generation and the simulator take a while on a busy machine
+    await until(
+        page,
+        `the run did not start within ${timeout / 1000} s`,
+        async () => {
+            if (await error.isVisible()) await fail(`the run did not start: ${((await error.textContent()) ?? '').slice(0, 600)}`);
+            return (await view.locator('[data-testid=viser-frame]').isVisible()) && view.locator('[data-testid=sim-pause]').isVisible();
+        },
+        timeout,
+    );
+    return { view, diagram };
 }

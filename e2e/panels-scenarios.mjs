@@ -5,7 +5,8 @@
 // draws a port's values. Each gets { page, url, workspace, shot(name) } (run.mjs).
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { CONTROLLER, cursorLine, fail, frameWith, openHost, ROBOT, runCommand } from './host-kit.mjs';
+import { CONTROLLER, cursorLine, fail, frameWith, runCommand } from './host-kit.mjs';
+import { startLockstepRun, until } from './lib.mjs';
 
 const TOASTING_TO_SERVING = '[data-testid=transition-mark][data-from=Toasting][data-to=Serving]';
 
@@ -28,30 +29,62 @@ function lineOf(workspace, file, needle) {
     return i < 0 ? undefined : i + 1;
 }
 
+/** The time window the panels draw (`data-window`: "t0 t1"). */
+async function windowOf(panels) {
+    const [t0, t1] = ((await panels.getAttribute('data-window')) ?? '').split(' ').map(Number);
+    return { t0, t1, width: t1 - t0 };
+}
+
+/**
+ * The mouse over a plot, as a person uses it: the wheel zooms its time axis in around the pointer
+ * (the window narrows, the axis labels change), a drag to the left pans to later times (the window
+ * moves by about the dragged share of its width, keeping its width). Real wheel and pointer events
+ * at the plot's place in the page (the webview is an iframe in an iframe of the workbench).
+ */
+async function wheelZoomAndDragPan(page, plot, panels) {
+    const drawing = plot.locator('svg.maa-plot-svg');
+    await drawing.scrollIntoViewIfNeeded();
+    const box = await drawing.boundingBox();
+    if (!box || box.width < 100) await fail(`the plot has no room to use the mouse on (${JSON.stringify(box)})`);
+    const ticks = async () => (await plot.locator('.maa-plot-tick').allTextContents()).join(' ');
+    const before = await windowOf(panels);
+    const ticksBefore = await ticks();
+    const x = box.x + box.width / 2;
+    const y = box.y + box.height / 2;
+    await page.mouse.move(x, y);
+    await page.mouse.wheel(0, -300); // up: zoom in (by e^-1)
+    let zoomed = before;
+    await until(page, 'the wheel over the plot did not zoom in', async () => {
+        zoomed = await windowOf(panels);
+        return zoomed.width < before.width * 0.6;
+    }).catch(() => fail(`the wheel over the plot did not zoom in (window ${before.width} → ${zoomed.width} s)`));
+    // around the pointer: the time under it stays where it was (the middle of the plot)
+    const middle = (w) => (w.t0 + w.t1) / 2;
+    if (Math.abs(middle(zoomed) - middle(before)) > before.width * 0.05)
+        await fail(`the zoom did not keep the time under the pointer (${middle(before)} → ${middle(zoomed)} s)`);
+    await until(page, 'the time axis labels did not change with the zoom', async () => (await ticks()) !== ticksBefore);
+
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    await page.mouse.move(x - box.width / 4, y, { steps: 8 });
+    await page.mouse.up();
+    let panned = zoomed;
+    const expected = zoomed.t0 + zoomed.width / 4;
+    await until(page, 'dragging the plot did not pan its time window', async () => {
+        panned = await windowOf(panels);
+        return Math.abs(panned.t0 - expected) < zoomed.width * 0.05;
+    }).catch(() => fail(`dragging the plot did not pan (t0 ${zoomed.t0} → ${panned.t0} s, expected about ${expected} s)`));
+    if (Math.abs(panned.width - zoomed.width) > zoomed.width * 1e-6)
+        await fail(`panning changed the window's width (${zoomed.width} → ${panned.width} s)`);
+}
+
 export const panelsScenarios = [
     {
         id: 'p1-panels',
         name: 'simulate panels (lock-step): the state timeline shows Toasting -> Serving, clicking it reveals the source line; log, stepping and a plot',
         async run({ page, url, workspace, shot }) {
-            await openHost(page, url, ROBOT);
-            await runCommand(page, 'MontiArc: Start Simulation');
-            const row = page
-                .locator('.quick-input-list .monaco-list-row', { hasText: 'toast-service/TR.arcapp' })
-                .filter({ hasText: 'timesync' })
-                .first();
-            await row.waitFor({ timeout: 30_000 });
-            await row.click();
-            const view = await frameWith(page, '[data-testid=simulate-panel]', 'the simulate panel', 60_000);
+            const { view } = await startLockstepRun(page, url);
             await view.locator('[data-testid=sim-panels]').waitFor({ timeout: 60_000 });
-            // the run starts (generation and the simulator take a while on a busy machine), then runs faster
-            const viser = view.locator('[data-testid=viser-frame]');
-            const error = view.locator('[data-testid=sim-error]');
-            const runStarted = Date.now();
-            while (!(await viser.isVisible())) {
-                if (await error.isVisible()) await fail(`the run did not start: ${(await error.textContent())?.slice(0, 600)}`);
-                if (Date.now() - runStarted > 240_000) await fail('the run did not start within 240 s');
-                await page.waitForTimeout(500);
-            }
             const pause = view.locator('[data-testid=sim-pause]');
             await pause.waitFor({ timeout: 60_000 });
             const started = Date.now();
@@ -154,6 +187,8 @@ export const panelsScenarios = [
             const d = (await plot.locator('.maa-plot-line').first().getAttribute('d')) ?? '';
             if (!/^M [-\d.]+ [-\d.]+ .*H/.test(d)) await fail(`the plot's line is "${d}"`);
             await shot('plot');
+            await wheelZoomAndDragPan(page, plot, panels);
+            await shot('plot-zoomed');
 
             // Live clears the cursor
             await view.locator('[data-testid=panels-live]').click();

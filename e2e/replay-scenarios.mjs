@@ -8,22 +8,16 @@
 import { execFileSync } from 'node:child_process';
 import { existsSync, readdirSync } from 'node:fs';
 import path from 'node:path';
-import { fail, frameWith, openHost, ROBOT, runCommand } from './host-kit.mjs';
-import { repo } from './lib.mjs';
+import { fail } from './host-kit.mjs';
+import { repo, startLockstepRun, until } from './lib.mjs';
 
-/** Waits until `check()` holds, polling every 250 ms; fails with `what` after `ms`. */
-async function until(page, what, check, ms = 30_000) {
-    const started = Date.now();
-    while (!(await check())) {
-        if (Date.now() - started > ms) await fail(what);
-        await page.waitForTimeout(250);
-    }
-}
+/** The slider goes this long after the moment the toast reaches the plate. */
+const AFTER_GOAL = 0.01;
 
 /**
  * What the recording holds when the toast first lies on the plate, read with the mcap libraries
- * (not maa-sim's code): that time, the bread's poses around it ([t, x, y, z]), and the last message
- * of every topic then.
+ * (not maa-sim's code): that time, the bread's poses around it ([t, x, y, z]), the last message
+ * of every topic then (`last`) and at AFTER_GOAL seconds later, where the slider goes (`at`).
  */
 function recordedAtGoal(file) {
     const script = `
@@ -34,7 +28,8 @@ def plain(v):
     if isinstance(v, (bool, int, float, str)) or v is None: return v
     if isinstance(v, (list, tuple)): return [plain(x) for x in v]
     return {k: plain(getattr(v, k)) for k in getattr(type(v), "__slots__", ()) if not k.startswith("_")}
-goal, last, breads = None, {}, []
+AFTER = float(sys.argv[2])
+goal, last, at, breads = None, {}, {}, []
 with open(sys.argv[1], "rb") as f:
     for _s, ch, m, msg in make_reader(f, decoder_factories=[DecoderFactory()]).iter_decoded_messages(log_time_order=True):
         t = m.log_time / 1e9
@@ -44,12 +39,13 @@ with open(sys.argv[1], "rb") as f:
             pose = msg.body_poses[list(msg.body_names).index("bread")]
             breads = (breads + [[t, pose.position.x, pose.position.y, pose.position.z]])[-40:]
             continue
-        if goal is not None: continue
-        if hasattr(msg, "data"): last[ch.topic] = plain(msg.data)
-print(json.dumps({"goal": goal, "breads": breads, "last": last}))
+        if not hasattr(msg, "data"): continue
+        if goal is None: last[ch.topic] = plain(msg.data)
+        if goal is None or t <= goal + AFTER: at[ch.topic] = plain(msg.data)
+print(json.dumps({"goal": goal, "breads": breads, "last": last, "at": at}))
 `;
     const python = path.join(repo, 'sim-server', '.venv', 'bin', 'python');
-    return JSON.parse(execFileSync(python, ['-c', script, file], { encoding: 'utf8' }));
+    return JSON.parse(execFileSync(python, ['-c', script, file, String(AFTER_GOAL)], { encoding: 'utf8' }));
 }
 
 /** Calls a service of the running session's rosbridge (the replay server) from the page, as the view does. */
@@ -90,25 +86,53 @@ async function startRecordedRun(view, page) {
     await view.locator('[data-testid=sim-start]').click();
 }
 
+/** How the port table shows a recorded `data` value of a std_msgs message (format.ts), `undefined` for values it rounds or cuts. */
+function shownText(v) {
+    if (typeof v === 'boolean') return v ? 'true' : 'false';
+    if (Number.isInteger(v)) return String(v);
+    if (typeof v === 'string' && v.length < 100) return v;
+    return undefined;
+}
+
+/**
+ * The port table follows the slider: each port row of the application's topics shows the value
+ * the recording holds at the slider's time (at least two such rows, none showing another value).
+ */
+async function inspectorShowsRecorded(view, page, at) {
+    const wanted = Object.entries(at)
+        .filter(([topic]) => topic.startsWith('/toast_service_robot/'))
+        .map(([topic, v]) => [topic, shownText(v)])
+        .filter(([, text]) => text !== undefined);
+    const rows = async () => {
+        const found = [];
+        for (const [topic, text] of wanted) {
+            const value = view.locator(`[data-testid=port-inspector] tr[data-topic="${topic}"] .maa-port-value-text`);
+            if ((await value.count()) === 0) continue;
+            found.push({ topic, expected: text, shown: ((await value.textContent()) ?? '').trim() });
+        }
+        return found;
+    };
+    let last = [];
+    await until(
+        page,
+        `the port table does not show the recorded values at the slider's time: ${JSON.stringify(last)}`,
+        async () => {
+            last = await rows();
+            return last.length >= 2 && last.every((r) => r.shown === r.expected);
+        },
+        30_000,
+    ).catch(async () => fail(`the port table does not show the recorded values: ${JSON.stringify(last)}`));
+    const note = (await view.locator('[data-testid=port-stale]').textContent()) ?? '';
+    if (!/Recorded values at/.test(note)) await fail(`the port table's note says "${note}"`);
+}
+
 export const replayScenarios = [
     {
         id: 'r1-replay',
         name: 'record a lock-step run, replay it, scrub to the toast reaching the plate: status, diagram values and state, 3D scene as recorded',
         async run({ page, url, workspace, shot }) {
-            await openHost(page, url, ROBOT);
-            await runCommand(page, 'MontiArc: Open Diagram');
-            const diagram = await frameWith(page, '[data-testid=diagram] .maa-component', 'the diagram of ToastServiceRobot', 90_000);
-
             // The simulate view opens with a run (Start Simulation); it is stopped and started again recorded.
-            await runCommand(page, 'MontiArc: Start Simulation');
-            const row = page
-                .locator('.quick-input-list .monaco-list-row', { hasText: 'toast-service/TR.arcapp' })
-                .filter({ hasText: 'timesync' })
-                .first();
-            await row.waitFor({ timeout: 30_000 });
-            await row.click();
-            const view = await frameWith(page, '[data-testid=simulate-panel]', 'the simulate panel', 60_000);
-            await view.locator('[data-testid=viser-frame]').waitFor({ timeout: 240_000 });
+            const { view, diagram } = await startLockstepRun(page, url, { diagram: true });
             await view.locator('[data-testid=sim-stop]').click();
             await until(page, 'the first run did not stop', async () => !(await simStatus(page)).running, 60_000);
 
@@ -152,12 +176,12 @@ export const replayScenarios = [
                 async () => /t \d+\.\d+ s/.test((await status.textContent()) ?? '') && !/on plate/.test((await status.textContent()) ?? ''),
             );
             // At the moment: on the plate, in the status line and in the replay server's scene.
-            await scrub(view, goal + 0.01);
+            await scrub(view, goal + AFTER_GOAL);
             await until(page, `the status line does not say the toast is on the plate at ${goal} s`, async () =>
                 /on plate/.test((await status.textContent()) ?? ''),
             );
             const server = await callService(page, '/sim/get_status', {});
-            if (Math.abs(server.time - (goal + 0.01)) > 0.011) await fail(`the replay server shows ${server.time} s, not ${goal} s`);
+            if (Math.abs(server.time - (goal + AFTER_GOAL)) > 0.011) await fail(`the replay server shows ${server.time} s, not ${goal} s`);
             const names = server.scene.body_names;
             const pose = server.scene.body_poses[names.indexOf('bread')].position;
             const shown = [pose.x, pose.y, pose.z];
@@ -188,6 +212,7 @@ export const replayScenarios = [
             const matching = titles.filter((t) => recorded.has(t));
             if (matching.length < 2)
                 await fail(`the diagram's values ${JSON.stringify(titles)} do not show the recorded ${JSON.stringify([...recorded])}`);
+            await inspectorShowsRecorded(view, page, expected.at);
             await shot('replay-on-plate');
             await page.locator('.tabs-container .tab', { hasText: 'MontiArc Diagram' }).first().click();
             await shot('replay-diagram');

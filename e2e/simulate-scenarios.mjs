@@ -6,7 +6,8 @@
 // MontiArc: Stop Simulation stops the run. Issue 19's polish on the way: Start disabled while the
 // run runs, the 3D view resized by its drag handle and full screen, a reset starting the clock at
 // 0, the port table keeping the last values after Stop. Each gets { page, url, workspace, shot(name) } (run.mjs).
-import { fail, frameWith, openHost, ROBOT, runCommand } from './host-kit.mjs';
+import { fail, runCommand } from './host-kit.mjs';
+import { startLockstepRun, until } from './lib.mjs';
 
 /** How many different colours a PNG picture has (decoded by the browser on a blank page of its own). */
 async function colours(page, png) {
@@ -54,15 +55,6 @@ async function portValueChanges(frame, page) {
         if (now !== first && now.replace(/[–|]/g, '').length > 0) return;
     }
     await fail(`no port value changed in the inspector (values: ${first})`);
-}
-
-/** Waits until `check()` holds, polling every 250 ms; fails with `what` after `ms`. */
-async function until(page, what, check, ms = 30_000) {
-    const started = Date.now();
-    while (!(await check())) {
-        if (Date.now() - started > ms) await fail(what);
-        await page.waitForTimeout(250);
-    }
 }
 
 /**
@@ -135,31 +127,13 @@ export const simulateScenarios = [
         id: 's1-simulate',
         name: 'simulate in the workbench (lock-step): Start Simulation, a port value changes, the viser canvas renders, the diagram shows live values, Stop',
         async run({ page, url, shot }) {
-            await openHost(page, url, ROBOT);
-            // The diagram of the application's top component, open beside the run.
-            await runCommand(page, 'MontiArc: Open Diagram');
-            const diagram = await frameWith(page, '[data-testid=diagram] .maa-component', 'the diagram of ToastServiceRobot', 90_000);
-
-            await runCommand(page, 'MontiArc: Start Simulation');
-            const row = page
-                .locator('.quick-input-list .monaco-list-row', { hasText: 'toast-service/TR.arcapp' })
-                .filter({ hasText: 'timesync' })
-                .first();
-            await row.waitFor({ timeout: 30_000 });
-            await row.click();
+            // The diagram of the application's top component, open beside the run; the run in the simulate view.
+            const { view, diagram } = await startLockstepRun(page, url, { diagram: true });
             await page.locator('.tabs-container .tab', { hasText: 'MontiArc Simulation' }).first().waitFor({ timeout: 30_000 });
-            const view = await frameWith(page, '[data-testid=simulate-panel]', 'the simulate panel', 60_000);
-            // The view lists the applications, then the extension's start command selects TR on timesync.
-            const modeShown = Date.now();
-            let mode = '';
-            while (!/lock/i.test(mode)) {
-                if (Date.now() - modeShown > 60_000) await fail(`the mode for timesync is "${mode}", expected lock-step`);
-                await page.waitForTimeout(250);
-                mode = (await view.locator('[data-testid=sim-mode]').textContent()) ?? '';
-            }
-            // The run starts (generation and the simulator take a while on a busy machine).
+            // The extension's start command selected TR on timesync: the view names its mode.
+            const mode = (await view.locator('[data-testid=sim-mode]').textContent()) ?? '';
+            if (!/lock/i.test(mode)) await fail(`the mode for timesync is "${mode}", expected lock-step`);
             const viserFrame = view.locator('[data-testid=viser-frame]');
-            await viserFrame.waitFor({ timeout: 240_000 });
             await portValueChanges(view, page);
             await shot('running');
 
