@@ -10,7 +10,8 @@
 import { spawn } from 'node:child_process';
 import { stat } from 'node:fs/promises';
 import path from 'node:path';
-import { findStreamFiles, type StreamTestResult, selectStreamCases } from '@maa/generators-python';
+// The subpath, not the package's index: that would load the generators (and Langium) at every maa-ide start.
+import { findStreamFiles, type StreamTestResult, selectCases as selectStreamCases } from '@maa/generators-python/stream-tests';
 import type { IdeDiagnostic } from '@maa/protocol';
 import type { GenerationService } from './generation.js';
 import { HttpError } from './http-util.js';

@@ -5,7 +5,7 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { processAlive } from '../src/process-group.js';
-import { repo, TEST_TOKEN, until } from './helpers.js';
+import { repo, TEST_TOKEN, until } from './basics.js';
 
 // The built `maa-ide` bin as a user starts it (`npm test` builds first): the URL it prints, the
 // token options, the umask of what it writes, and its simulations ending with it.

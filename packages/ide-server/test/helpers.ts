@@ -2,14 +2,11 @@ import { request } from 'node:http';
 import { cpSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import WebSocket from 'ws';
 import { startIdeServer, type IdeServer, type IdeServerOptions } from '../src/index.js';
+import { repo, TEST_TOKEN } from './basics.js';
 
-export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..', '..');
-
-/** The token of every test server (startSite passes it; tests that start servers themselves do too). */
-export const TEST_TOKEN = 'test-token-0123456789abcdef';
+export { repo, TEST_TOKEN, until } from './basics.js';
 export const BEARER = { Authorization: `Bearer ${TEST_TOKEN}` };
 
 /** fetch with the test token as `Authorization: Bearer` (what scripts do). */
@@ -91,13 +88,4 @@ export function rawRequest(
 /** A GET with the path sent byte for byte (fetch would normalize `%2e%2e` segments away). */
 export function rawGet(base: string, rawPath: string): Promise<{ status: number; body: string }> {
     return rawRequest(base, rawPath);
-}
-
-/** Waits until `check` holds, polling; fails after a bound generous for a loaded machine. */
-export async function until(check: () => boolean | Promise<boolean>, what: string, boundMs = 60_000): Promise<void> {
-    const deadline = Date.now() + boundMs;
-    while (!(await check())) {
-        if (Date.now() > deadline) throw new Error(`not within ${boundMs / 1000} s: ${what}`);
-        await new Promise((r) => setTimeout(r, 100));
-    }
 }
