@@ -83,6 +83,65 @@ describe('the shared Nunjucks environment', () => {
         ]);
     });
 
+    test('trace marks resolve to the same lines as a plain scan of the text (nesting, leading and only line breaks, empty regions)', () => {
+        // The definition resolveTraceMarks keeps (it counts as the text comes, in one pass): a
+        // region spans from its first line with text (leading line breaks skipped) to the line
+        // its text ends on; empty regions and regions of unknown elements give no range.
+        // biome-ignore lint/suspicious/noControlCharactersInRegex: the trace marks are control characters
+        const MARK = /\u0001(\/?)(\d+)\u0002/g;
+        const reference = (marked: string, tracer: Tracer): Array<[number, number, unknown]> => {
+            let content = '';
+            const open = new Map<number, number>();
+            const ranges: Array<[number, number, unknown]> = [];
+            const lineAt = (offset: number): number => content.slice(0, offset).split('\n').length;
+            let last = 0;
+            for (const m of marked.matchAll(MARK)) {
+                content += marked.substring(last, m.index);
+                last = m.index + m[0].length;
+                const id = Number(m[2]);
+                if (m[1] !== '/') {
+                    open.set(id, content.length);
+                    continue;
+                }
+                const start = open.get(id);
+                open.delete(id);
+                const element = tracer.element(id);
+                if (start === undefined || !element || start === content.length) continue;
+                const leading = /^\n*/.exec(content.slice(start))![0].length;
+                const first = lineAt(start) + leading;
+                const lastLine = lineAt(content.length) - (content.endsWith('\n') ? 1 : 0);
+                if (lastLine >= first) ranges.push([first, lastLine, element]);
+            }
+            return ranges.sort((a, b) => a[0] - b[0] || b[1] - a[1]);
+        };
+        // Texts from pieces and marks, chosen by a small deterministic generator.
+        let seed = 7;
+        const next = (n: number): number => {
+            seed = (seed * 48271) % 2147483647;
+            return seed % n;
+        };
+        const pieces = ['', '\n', '\n\n', 'x', 'ab\n', '\ncd', 'e\nf\n'];
+        for (let round = 0; round < 300; round++) {
+            const tracer = new Tracer();
+            const open: Array<{ end: string }> = [];
+            let marked = '';
+            for (let step = 0; step < 12; step++) {
+                const choice = next(4);
+                if (choice === 0) {
+                    const region = tracer.open({ $type: 'E', name: `e${round}.${step}` } as never);
+                    open.push(region);
+                    marked += region.begin;
+                } else if (choice === 1 && open.length > 0) marked += open.pop()!.end;
+                else marked += pieces[next(pieces.length)];
+            }
+            // A close mark never opened, of an element the tracer does not know: no range.
+            marked += '\u0001/999\u0002';
+            const { content, ranges } = resolveTraceMarks(marked, tracer);
+            expect(content).toBe(marked.replace(MARK, ''));
+            expect(ranges.map((r) => [r.startLine, r.endLine, r.element])).toEqual(reference(marked, tracer));
+        }
+    });
+
     test('a renderer without a template folder renders strings only', () => {
         expect(() => createTemplateRenderer().render('x.njk', {})).toThrow(/names no templates folder/);
     });

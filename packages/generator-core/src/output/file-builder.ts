@@ -45,42 +45,68 @@ export interface FinishedFile {
     readonly traces: readonly TracedRange[];
 }
 
-/** Strips trace marks from text and returns the line ranges they enclosed. */
+/** A trace region whose close mark has not been met yet. */
+interface OpenRegion {
+    readonly startLine: number;
+    readonly startOffset: number;
+    /** Line breaks at the start of the region's text (a region starting at the end of a line starts on the next one). */
+    leading: number;
+}
+
+/**
+ * Strips trace marks from text and returns the line ranges they enclosed. One pass: the text is
+ * collected in pieces, and lines, length and the regions' leading line breaks are counted as the
+ * pieces come (no scan of the text collected so far: files with many marks stay linear).
+ */
 export function resolveTraceMarks(
     marked: string,
     tracer: Tracer,
 ): { content: string; ranges: Array<{ startLine: number; endLine: number; element: AstNode }> } {
-    let content = '';
+    const pieces: string[] = [];
+    let length = 0;
+    let endsWithNewline = false;
     let line = 1;
     let last = 0;
-    const open = new Map<number, { startLine: number; startOffset: number }>();
+    const open = new Map<number, OpenRegion>();
+    // Regions that have seen only line breaks so far.
+    const fresh = new Set<OpenRegion>();
     const ranges: Array<{ startLine: number; endLine: number; element: AstNode }> = [];
     const advance = (text: string): void => {
-        content += text;
-        for (let i = 0; i < text.length; i++) if (text.charCodeAt(i) === 10) line++;
+        if (text.length === 0) return;
+        pieces.push(text);
+        length += text.length;
+        endsWithNewline = text.charCodeAt(text.length - 1) === 10;
+        for (let i = text.indexOf('\n'); i !== -1; i = text.indexOf('\n', i + 1)) line++;
+        if (fresh.size === 0) return;
+        let breaks = 0;
+        while (breaks < text.length && text.charCodeAt(breaks) === 10) breaks++;
+        for (const region of fresh) {
+            region.leading += breaks;
+            if (breaks < text.length) fresh.delete(region);
+        }
     };
     for (const m of marked.matchAll(MARKER)) {
         advance(marked.substring(last, m.index));
         last = m.index + m[0].length;
         const id = Number(m[2]);
         if (m[1] !== '/') {
-            // A region starting at the very end of a line starts on the next one.
-            open.set(id, { startLine: line, startOffset: content.length });
+            const region: OpenRegion = { startLine: line, startOffset: length, leading: 0 };
+            open.set(id, region);
+            fresh.add(region);
             continue;
         }
         const start = open.get(id);
         open.delete(id);
+        if (start) fresh.delete(start);
         const element = tracer.element(id);
-        if (!start || !element || content.length === start.startOffset) continue;
-        const text = content.substring(start.startOffset);
-        const leading = /^\n*/.exec(text)![0].length;
-        const startLine = start.startLine + leading;
-        const endLine = content.endsWith('\n') ? line - 1 : line;
+        if (!start || !element || length === start.startOffset) continue;
+        const startLine = start.startLine + start.leading;
+        const endLine = endsWithNewline ? line - 1 : line;
         if (endLine >= startLine) ranges.push({ startLine, endLine, element });
     }
     advance(marked.substring(last));
     ranges.sort((a, b) => a.startLine - b.startLine || b.endLine - a.endLine);
-    return { content, ranges };
+    return { content: pieces.join(''), ranges };
 }
 
 class DefaultFileBuilder implements FileBuilder {

@@ -1,5 +1,5 @@
 import path from 'node:path';
-import { AstUtils, type AstNode, type LangiumDocument } from 'langium';
+import { AstUtils, type AstNode } from 'langium';
 import type { HostLanguageServices } from '@maa/language-adl';
 import type { Trace, TraceElement, TraceFile } from '@maa/protocol';
 import { TRACE_FORMAT_VERSION } from '@maa/protocol/formats';
@@ -183,18 +183,24 @@ export function traceFile(
 ): string {
     const locator = services.Arc.workspace.AstNodeLocator;
     const relRoot = path.relative(outDir, modelRoot).split(path.sep).join('/') || '.';
-    const docs = new Map<AstNode, LangiumDocument>();
-    const element = (node: AstNode): TraceElement => {
+    // Per model file (the root node of its document) its name in the trace file, computed once:
+    // a large model has thousands of traced elements in a few hundred files.
+    const modelFiles = new Map<AstNode, string>();
+    const fileOf = (node: AstNode): string => {
         const root = AstUtils.findRootNode(node);
-        let doc = docs.get(root);
-        if (!doc) {
-            doc = AstUtils.getDocument(node);
-            docs.set(root, doc);
+        let file = modelFiles.get(root);
+        if (file === undefined) {
+            const uri = AstUtils.getDocument(node).uri;
+            file = uri.scheme === 'file' ? path.relative(modelRoot, uri.fsPath).split(path.sep).join('/') : uri.toString();
+            modelFiles.set(root, file);
         }
+        return file;
+    };
+    const element = (node: AstNode): TraceElement => {
         const r = node.$cstNode?.range;
         const name = (node as { name?: unknown }).name;
         return {
-            file: doc.uri.scheme === 'file' ? path.relative(modelRoot, doc.uri.fsPath).split(path.sep).join('/') : doc.uri.toString(),
+            file: fileOf(node),
             range: r
                 ? { start: { line: r.start.line, character: r.start.character }, end: { line: r.end.line, character: r.end.character } }
                 : null,
@@ -223,7 +229,7 @@ export function traceFile(
             generator: f.generator,
             userFile: f.userFile,
             sha256: sha256(f.content),
-            lines: f.content.length === 0 ? 0 : f.content.split('\n').length - (f.content.endsWith('\n') ? 1 : 0),
+            lines: lineCount(f.content),
             // FileBuilder counts lines from 1.
             traces: f.traces.map(
                 (t): Trace => ({
@@ -235,4 +241,11 @@ export function traceFile(
         })),
     };
     return `${JSON.stringify(trace, null, 1)}\n`;
+}
+
+/** The number of lines of a text (a last line without a line break counts; an empty text has none). */
+function lineCount(text: string): number {
+    let breaks = 0;
+    for (let i = text.indexOf('\n'); i !== -1; i = text.indexOf('\n', i + 1)) breaks++;
+    return text.length === 0 ? 0 : breaks + (text.endsWith('\n') ? 0 : 1);
 }
