@@ -364,6 +364,10 @@ DEPLOYMENT_SCHEMA: Final[dict[str, Any]] = json.loads(
         }
        }
       }
+     },
+     "kind": {
+      "const": "modes",
+      "type": "string"
      }
     }
    }
@@ -2279,6 +2283,7 @@ class DeploymentAutomataItem(TypedDict):
     file: str
     states: list[DeploymentAutomataItemStatesItem]
     transitions: list[DeploymentAutomataItemTransitionsItem]
+    kind: NotRequired[Literal["modes"]]
 
 
 class Deployment(TypedDict):

@@ -46,7 +46,10 @@ export type AutomatonStateEntry = Static<typeof AutomatonStateEntry>;
 
 /** A transition of an automaton in the automata table. */
 export const AutomatonTransitionEntry = Type.Object({
-    /** 0-based position in the automaton's transitions (@maa/language-automata's allTransitions), the `index` of `/maa/transitions`. */
+    /**
+     * 0-based position in the automaton's transitions (@maa/language-automata's allTransitions; a
+     * mode automaton's mode transitions in declaration order), the `index` of `/maa/transitions`.
+     */
     index: Type.Integer({ minimum: 0 }),
     /** Path of the declared source state. */
     from: Type.String({ minLength: 1 }),
@@ -72,6 +75,11 @@ export const AutomatonEntry = Type.Object({
     file: Type.String(),
     states: Type.Array(AutomatonStateEntry),
     transitions: Type.Array(AutomatonTransitionEntry),
+    /**
+     * `modes`: a decomposed component's mode automaton (states are its modes, transitions its mode
+     * transitions in declaration order, the order the generated code tries them); absent: an automaton.
+     */
+    kind: Type.Optional(Type.Literal('modes')),
 });
 export type AutomatonEntry = Static<typeof AutomatonEntry>;
 
