@@ -9,7 +9,8 @@ forwards the messages of the connector's source topic to the target's topic whil
 modes is current.
 
 The current mode is also published on ``maa_ros2.node.STATES_TOPIC`` (the IDE's live states)
-under the instance's node path, the manager's namespace.
+under the instance's node path, the manager's namespace, and every mode transition taken on
+``maa_ros2.node.TRANSITIONS_TOPIC`` under the same node path (``{"node", "from", "to", "index"}``).
 
 - ``<<sync>>``: a message on an in port updates the port's value (primitive ports keep their
   last value, others hold it until the end of the period) and the transitions are taken with
@@ -35,15 +36,17 @@ from maa_ros2.node import (
     InPort,
     ParameterValue,
     state_message,
+    transition_publisher,
 )
 from maa_ros2.ports import PortCodec
 from rclpy.node import Node
 from rclpy.publisher import Publisher
 from std_msgs.msg import String
 
-#: ``(mode, trigger, inputs, params) -> target mode or None``; ``trigger`` is ``None`` in a sync
-#: automaton, an in port's name for a message on it and ``""`` for the end of a period.
-Transition = Callable[[str, str | None, Mapping[str, object], Mapping[str, object]], str | None]
+#: ``(mode, trigger, inputs, params) -> (index, target mode) or None``; ``trigger`` is ``None`` in a
+#: sync automaton, an in port's name for a message on it and ``""`` for the end of a period; the
+#: index is the transition's declaration order (the automata table's, ``/maa/transitions``).
+Transition = Callable[[str, str | None, Mapping[str, object], Mapping[str, object]], tuple[int, str] | None]
 
 
 @dataclass(frozen=True)
@@ -95,6 +98,8 @@ class ModeManagerNode(Node):
         # the mode is the instance's live state too (docs/ide.md, "Live values"): under the
         # instance's node path, which is the manager's namespace
         self._state_publisher = self.create_publisher(String, STATES_TOPIC, STATES_QOS)
+        # and its transitions are the instance's transitions, as an automaton node reports its own
+        self._taken = transition_publisher(self, self.get_namespace())
         self._relay_publishers: dict[str, Publisher[Any]] = {}
         topics: dict[str, tuple[Any, list[InPort], list[Relay]]] = {}
         for p in inputs:
@@ -115,9 +120,13 @@ class ModeManagerNode(Node):
         self._state_publisher.publish(state_message(self.get_namespace(), self.mode))
 
     def _switch(self, trigger: str | None, inputs: Mapping[str, object]) -> None:
-        target = self._transition(self.mode, trigger, inputs, self.params)
-        if target is not None and target != self.mode:
-            self.mode = target
+        taken = self._transition(self.mode, trigger, inputs, self.params)
+        if taken is None:
+            return
+        index, target = taken
+        source, self.mode = self.mode, target
+        self._taken(index, source, target)
+        if target != source:
             self._publish_mode()
 
     def _receiver(self, ports: Sequence[InPort], routes: Sequence[Relay]) -> Callable[[Any], None]:

@@ -75,6 +75,17 @@ def json_message(data: Mapping[str, object]) -> String:
     return msg
 
 
+def transition_publisher(owner: Node, node: str) -> Callable[[int, str, str], None]:
+    """A publisher of :data:`TRANSITIONS_TOPIC` on ``owner`` as a transition hook ``(index, source, target)``:
+    the transitions taken by the automaton (or mode automaton) of the instance at node path ``node``."""
+    transitions = owner.create_publisher(String, TRANSITIONS_TOPIC, EVENTS_QOS)
+
+    def taken(index: int, source: str, target: str) -> None:
+        transitions.publish(json_message({"node": node, "from": source, "to": target, "index": index}))
+
+    return taken
+
+
 def state_message(node: str, state: str) -> String:
     """A message of :data:`STATES_TOPIC`: the state path (or mode) of the instance at node path ``node``."""
     msg = String()
@@ -195,12 +206,7 @@ class ComponentNode(Node):
         """Publishes the automaton's transitions and the RobotArm program's steps as they happen."""
         node = self.get_fully_qualified_name()
         if getattr(type(self.behavior), "_PARENT", None) is not None:
-            transitions = self.create_publisher(String, TRANSITIONS_TOPIC, EVENTS_QOS)
-
-            def taken(index: int, source: str, target: str) -> None:
-                transitions.publish(json_message({"node": node, "from": source, "to": target, "index": index}))
-
-            self.behavior.set_transition_hook(taken)
+            self.behavior.set_transition_hook(transition_publisher(self, node))
         arm = self.behavior
         if isinstance(arm, RobotArmExecutor):
             steps = self.create_publisher(String, PROGRAM_STEPS_TOPIC, EVENTS_QOS)

@@ -13,7 +13,7 @@ from collections.abc import Callable, Mapping
 from enum import Enum
 from typing import Any
 
-from maa_behavior.behavior import Behavior
+from maa_behavior.behavior import Behavior, TransitionHook
 from maa_behavior.robotarm import Arm, RobotArmExecutor
 from maa_timesync.modes import ModeInstance
 from maa_timesync.runtime import TICK, ComponentType, System
@@ -155,11 +155,14 @@ class LockstepApp:
         parameters: Mapping[str, object] | None = None,
         port_topics: Mapping[str, tuple[str, str]] | None = None,
         node_names: Mapping[str, str] | None = None,
+        automata: Mapping[str, str] | None = None,
     ) -> None:
         self.root = root
         self.parameters = dict(parameters or {})
         self.port_topics = dict(port_topics or {})
         self.node_names = dict(node_names or {})
+        #: the automata table (``maa_app.AUTOMATA``: instance path -> AutomatonEntry as JSON)
+        self._automata_table = dict(automata or {})
         self._in_topics = {topic: port for port, (topic, _) in self.port_topics.items() if "." not in port}
         self.system: System = self._start()
 
@@ -183,8 +186,11 @@ class LockstepApp:
         self._states: dict[str, str] | None = None
         self._events: dict[str, list[JsonMessage]] = {}
         for inst in system.instances:
+            node = self.node_names.get(".".join(inst.path), ".".join(inst.path))
             if inst.behavior is not None:
-                self._observe_events(inst.behavior, self.node_names.get(".".join(inst.path), ".".join(inst.path)))
+                self._observe_events(inst.behavior, node)
+            elif isinstance(inst, ModeInstance):  # its mode transitions, as an automaton's transitions
+                inst.transition_hook = self._transition_hook(node)
         system.init()
         # live states: the state path of every automaton and the mode of every mode component
         self._automata: list[tuple[str, Callable[[], str | None]]] = []
@@ -196,19 +202,25 @@ class LockstepApp:
                 self._automata.append((node, inst.behavior.state_path))
         return system
 
-    def _observe_events(self, behavior: Behavior, node: str) -> None:
-        """Collects the behavior's transitions and program steps for the slice's result."""
+    def _transition_hook(self, node: str) -> TransitionHook:
+        """Collects the transitions taken by the automaton (or mode automaton) of ``node`` for the slice's result."""
         events = self._events
 
         def taken(index: int, source: str, target: str) -> None:
             data = {"node": node, "from": source, "to": target, "index": index}
             events.setdefault(TRANSITIONS_TOPIC, []).append({"data": json.dumps(data)})
 
+        return taken
+
+    def _observe_events(self, behavior: Behavior, node: str) -> None:
+        """Collects the behavior's transitions and program steps for the slice's result."""
+        events = self._events
+
         def started(program: str, step: int, line: int, text: str) -> None:
             data = {"node": node, "program": program, "step": step, "line": line, "text": text, "file": file}
             events.setdefault(PROGRAM_STEPS_TOPIC, []).append({"data": json.dumps(data)})
 
-        behavior.set_transition_hook(taken)
+        behavior.set_transition_hook(self._transition_hook(node))
         file = getattr(behavior, "FILE", "")
         if isinstance(behavior, RobotArmExecutor):
             behavior.set_step_hook(started)
@@ -264,6 +276,10 @@ class LockstepApp:
     def states(self) -> dict[str, str]:
         """The current state path of every automaton and mode of every mode component, by ROS 2 node name."""
         return {node: state() or "" for node, state in self._automata}
+
+    def automata(self) -> list[dict[str, Any]]:
+        """The automata table (@maa/protocol AutomatonEntry): automata and mode automata with their states and transitions."""
+        return [json.loads(entry) for entry in self._automata_table.values()]
 
     def topics(self) -> dict[str, str]:
         """The port topics this build emits (and the root's in ports it reads), with their types."""

@@ -20,6 +20,7 @@ from collections import deque
 from collections.abc import Mapping
 from typing import ClassVar
 
+from maa_behavior.behavior import TransitionHook
 from maa_timesync.runtime import TICK, ComposedComponent, Connector, Instance, Target, _Forward
 
 
@@ -37,8 +38,10 @@ class ModeComponent(ComposedComponent):
     MODE_CONNECTORS: ClassVar[Mapping[str, tuple[Connector, ...]]] = {}
 
     @classmethod
-    def mode_transition(cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]) -> str | None:
-        """The target of the first enabled transition from ``mode``, if any.
+    def mode_transition(
+        cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]
+    ) -> tuple[int, str] | None:
+        """The index (declaration order, the automata table's) and target of the first enabled transition from ``mode``, if any.
 
         ``trigger`` is ``None`` for a sync slice, an in port's name for a message on it and
         ``""`` for a tick; ``inputs`` holds the values of the in ports (``None``: no message).
@@ -80,6 +83,9 @@ class ModeInstance(Instance):
         self.named: dict[str, Instance] = {}
         self.routes: dict[str, _Routes] = {}
         self.mode_log: list[str] = []
+        #: hears of every mode transition taken (index, source mode, target mode), as an
+        #: automaton's hook does of its transitions (``/maa/transitions``); observing only
+        self.transition_hook: TransitionHook | None = None
 
     def wired(self, children: Mapping[str, Instance]) -> None:
         """Called once the subcomponents exist: computes every mode's wiring and enters the initial mode."""
@@ -122,9 +128,14 @@ class ModeInstance(Instance):
         self.undriven_out = list(r.undriven_out)
 
     def _switch(self, trigger: str | None, inputs: Mapping[str, object]) -> None:
-        target = self.ctype.mode_transition(self.mode, trigger, inputs, self.params)
-        if target is not None and target in self.routes:
-            self._enter(target)
+        taken = self.ctype.mode_transition(self.mode, trigger, inputs, self.params)
+        if taken is None or taken[1] not in self.routes:
+            return
+        index, target = taken
+        source = self.mode
+        self._enter(target)
+        if self.transition_hook is not None:
+            self.transition_hook(index, source, target)
 
     # -- steps ---------------------------------------------------------------------------
     def _sync_slice(self) -> None:

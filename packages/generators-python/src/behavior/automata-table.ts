@@ -5,12 +5,10 @@
  * serves it with the port topics, and the trace panels and breakpoints resolve `/maa/transitions`
  * (whose `index` is a transition's position here) and `/maa/automaton_states` against it.
  */
-import type { InstanceView } from '@maa/generator-core';
+import type { InstanceView, ModeTransitionView } from '@maa/generator-core';
 import { allStates, allTransitions, ast, sourceOf, statePathName, targetOf, transitionLabel } from '@maa/language-automata';
 import type { AutomatonEntry } from '@maa/protocol';
 import { AstUtils, type AstNode } from 'langium';
-
-/** A state's dotted path from its top state (`Outer.Inner`), as on `/maa/automaton_states`. */
 
 /**
  * A model file relative to the model root: the folder of its package and its file name (MontiArc
@@ -27,8 +25,48 @@ function position(node: AstNode): { line: number; column: number } {
     return { line: (start?.line ?? 0) + 1, column: (start?.character ?? 0) + 1 };
 }
 
-/** The entry of one instance whose component has an automaton; undefined for other instances. */
+/**
+ * The entry of one instance whose component has an automaton or a mode automaton (`kind: 'modes'`);
+ * undefined for other instances.
+ */
 export function automatonEntry(instance: InstanceView, node: string): AutomatonEntry | undefined {
+    return modeAutomatonEntry(instance, node) ?? stateAutomatonEntry(instance, node);
+}
+
+/**
+ * A mode component's entry: its modes as states and its mode transitions in declaration order,
+ * the order the generated `mode_transition` tries them, so a transition's index is its position
+ * there (timesync/mode-transition.njk returns it with the target).
+ */
+function modeAutomatonEntry(instance: InstanceView, node: string): AutomatonEntry | undefined {
+    const component = instance.component;
+    const m = component.modes;
+    if (!m) return undefined;
+    return {
+        instancePath: instance.path.join('.'),
+        node,
+        component: component.qualifiedName,
+        file: modelFile(m.node, component.packageName),
+        states: m.modes.map((x) => ({ path: x.name, line: position(x.node).line })),
+        transitions: m.transitions.map((t, index) => ({
+            index,
+            from: t.source,
+            to: t.target,
+            label: modeTransitionLabel(t),
+            ...position(t.node),
+        })),
+        kind: 'modes',
+    };
+}
+
+/** `trigger [guard]` as written (`""` for neither), like an automaton transition's label. */
+function modeTransitionLabel(t: ModeTransitionView): string {
+    const trigger = t.trigger.kind === 'port' ? t.trigger.port : t.trigger.kind === 'tick' ? 'Tick' : '';
+    const guard = t.guard?.$cstNode?.text;
+    return [trigger, guard ? `[${guard}]` : ''].filter(Boolean).join(' ');
+}
+
+function stateAutomatonEntry(instance: InstanceView, node: string): AutomatonEntry | undefined {
     const component = instance.component;
     const automaton = component.behavior?.node;
     if (!automaton || !ast.isAutomaton(automaton)) return undefined;

@@ -75,7 +75,8 @@ export function modesView(c: ComponentView, datatypes: DataTypeResult, imports: 
 
 /**
  * The body of `mode_transition(mode, trigger, inputs, params)`: the transitions in declaration
- * order, returning the target of the first enabled one (or None). `rte` is the module with
+ * order, returning the index and target of the first enabled one (or None); the index is the
+ * transition's in the automata table (behavior/automata-table.ts). `rte` is the module with
  * `port_value` (maa_timesync.modes, maa_ros2.modes).
  */
 export function modeTransitionBody(c: ComponentView, datatypes: DataTypeResult, imports: Imports, rte: string): string[] {
@@ -87,17 +88,17 @@ export function modeTransitionView(c: ComponentView, datatypes: DataTypeResult, 
     const m = c.modes;
     if (!m) return { unused: ['mode', 'trigger', 'inputs', 'params'], transitions: [] };
     const tr = guardTranslator(c, datatypes, imports, rte);
-    const transitions = m.transitions.map((t) => {
+    const transitions = m.transitions.map((t, index) => {
         const conditions = [`mode == ${str(t.source)}`];
         if (m.timing !== 'sync') {
             // Event-based: a message triggers the transitions of its port; a tick those with `Tick` or no event.
             conditions.push(t.trigger.kind === 'port' ? `trigger == ${str(t.trigger.port)}` : 'trigger == ""');
         }
         if (t.guard) conditions.push(parenthesized(tr.expr(t.guard)));
-        return { conditions, target: t.target };
+        return { index, conditions, target: t.target };
     });
     // (the names in the statements as written, `return "<target>"` included)
-    const used = transitions.map((t) => `if ${t.conditions.join(' and ')}:\n    return ${str(t.target)}`).join('\n');
+    const used = transitions.map((t) => `if ${t.conditions.join(' and ')}:\n    return ${t.index}, ${str(t.target)}`).join('\n');
     const unused = ['mode', 'trigger', 'inputs', 'params'].filter((v) => !new RegExp(`\\b${v}\\b`).test(used));
     return { unused, transitions };
 }

@@ -23,7 +23,8 @@ export interface ModesView {
 export interface ModeTransitionView {
     /** Arguments the body does not read (`del`). */
     readonly unused: readonly string[];
-    readonly transitions: ReadonlyArray<{ readonly conditions: readonly string[]; readonly target: string }>;
+    /** In declaration order: `index` is the position, the automata table's and `/maa/transitions`' index. */
+    readonly transitions: ReadonlyArray<{ readonly index: number; readonly conditions: readonly string[]; readonly target: string }>;
 }
 
 /** A subcomponent of a composed component: name, its type's Python name and its arguments. */

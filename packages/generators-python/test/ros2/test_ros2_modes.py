@@ -74,6 +74,9 @@ class Probe:
             durability=DurabilityPolicy.TRANSIENT_LOCAL,
         )
         self.node.create_subscription(String, "/maa/automaton_states", self._states, states)
+        # the trace: every transition taken as the event "transition <node path>" with from, to, index
+        events = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=100, reliability=ReliabilityPolicy.RELIABLE)
+        self.node.create_subscription(String, "/maa/transitions", self._transition, events)
         self.running = True
         self.thread = threading.Thread(target=self._loop, daemon=True)
         self.thread.start()
@@ -84,6 +87,10 @@ class Probe:
     def _states(self, msg: Any) -> None:
         for node, state in json.loads(msg.data).items():
             self._event(f"state {node}", state)
+
+    def _transition(self, msg: Any) -> None:
+        data = json.loads(msg.data)
+        self._event(f"transition {data.pop('node')}", data)
 
     def _event(self, name: str, value: Any) -> None:
         with self.lock:
@@ -172,6 +179,14 @@ def test_deployment_has_a_mode_manager_and_gated_nodes(package: Path) -> None:
     mode = {"topic": "/gearbox/maa_modes/mode", "type": "std_msgs/msg/String"}
     for n in ("s1", "s10", "t"):
         assert mode in names[n]["subscribes"]
+    # the mode automaton is the root instance's automaton, under the manager's namespace
+    (automaton,) = data["automata"]
+    assert automaton["node"] == "/gearbox" and automaton["kind"] == "modes"
+    assert [s["path"] for s in automaton["states"]] == ["First", "Second"]
+    assert [(t["index"], t["from"], t["to"]) for t in automaton["transitions"]] == [
+        (0, "First", "Second"),
+        (1, "Second", "First"),
+    ]
     publishers: dict[str, str] = {}
     for n in data["nodes"]:
         for t in n["publishes"]:
@@ -229,6 +244,8 @@ def test_a_mode_switch_changes_which_subcomponent_reaches_the_out_port(probe: Pr
     probe.wait_for("mode", "Second", since)
     # the mode is the live state of the mode component's instance (the root: /gearbox), as the IDE reads it
     probe.wait_for("state /gearbox", "Second", since)
+    # and its mode transition is the instance's transition, with its index in the automata table
+    probe.wait_for("transition /gearbox", {"from": "First", "to": "Second", "index": 0}, since)
     # (resent: the relay to s10 carries its first message now, which is lost if its subscription
     # has not been matched yet on a loaded machine; more -1 keep the mode)
     probe.wait_for("o", -10, since, resend=-1)
@@ -247,6 +264,11 @@ def test_a_mode_switch_changes_which_subcomponent_reaches_the_out_port(probe: Pr
     probe.wait_for("o", 4, since)
     after = probe.values("o", since)
     assert set(after) <= {0, 4}, f"only s1's outputs reach o in mode First: {after}"
+    # the two switches are the only transitions taken: a message whose guard does not hold takes none
+    assert probe.values("transition /gearbox") == [
+        {"from": "First", "to": "Second", "index": 0},
+        {"from": "Second", "to": "First", "index": 1},
+    ]
 
 
 def test_the_mode_managers_take_enum_parameters_as_the_nodes_do(selector_package: Path) -> None:

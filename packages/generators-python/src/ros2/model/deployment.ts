@@ -26,12 +26,21 @@ export function deploymentOf(app: Ros2Application, application: string): Deploym
     };
 }
 
-/** The automata table (the IDE's trace and breakpoints): the nodes of instances with an automaton. */
+/**
+ * The automata table (the IDE's trace and breakpoints): the nodes of instances with an automaton,
+ * and the mode automata of mode components under their mode manager's namespace (the instance's
+ * node path, where the manager reports the mode and its transitions).
+ */
 function automataOf(app: Ros2Application): AutomatonEntry[] {
-    return app.nodes.flatMap((n) => {
+    const nodes = app.nodes.flatMap((n) => {
         const entry = automatonEntry(n.instance, `${n.namespace === '/' ? '' : n.namespace}/${n.name}`);
         return entry ? [entry] : [];
     });
+    const managers = app.managers.flatMap((m) => {
+        const entry = automatonEntry(m.instance, m.namespace);
+        return entry ? [entry] : [];
+    });
+    return [...nodes, ...managers];
 }
 
 function deploymentNode(n: ComponentNode | ModeManagerNode): DeploymentNode {

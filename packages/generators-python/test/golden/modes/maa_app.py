@@ -38,9 +38,10 @@ NODE_NAMES: dict[str, str] = {
 
 #: The automata table (@maa/protocol AutomatonEntry, for the IDE): instance path -> its entry as JSON.
 AUTOMATA: dict[str, str] = {
+    "": "{\"instancePath\":\"\",\"node\":\"/gearbox\",\"component\":\"gear.Gearbox\",\"file\":\"gear/Gearbox.arc\",\"states\":[{\"path\":\"First\",\"line\":10},{\"path\":\"Second\",\"line\":15}],\"transitions\":[{\"index\":0,\"from\":\"First\",\"to\":\"Second\",\"label\":\"[speed < 0]\",\"line\":22,\"column\":5},{\"index\":1,\"from\":\"Second\",\"to\":\"First\",\"label\":\"[speed == 0]\",\"line\":23,\"column\":5}],\"kind\":\"modes\"}",
 }
 
 
 def create_controller(parameters: Mapping[str, object]) -> LockstepApp:
     """The simulator's lock-step factory (lockstep.json)."""
-    return LockstepApp(ROOT, parameters, PORT_TOPICS, NODE_NAMES)
+    return LockstepApp(ROOT, parameters, PORT_TOPICS, NODE_NAMES, AUTOMATA)

@@ -40,4 +40,4 @@ AUTOMATA: dict[str, str] = {
 
 def create_controller(parameters: Mapping[str, object]) -> LockstepApp:
     """The simulator's lock-step factory (lockstep.json)."""
-    return LockstepApp(ROOT, parameters, PORT_TOPICS, NODE_NAMES)
+    return LockstepApp(ROOT, parameters, PORT_TOPICS, NODE_NAMES, AUTOMATA)

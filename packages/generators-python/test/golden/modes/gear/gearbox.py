@@ -35,12 +35,12 @@ class Gearbox(ModeComponent):
     }
 
     @classmethod
-    def mode_transition(cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]) -> str | None:
+    def mode_transition(cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]) -> tuple[int, str] | None:
         del trigger, params
         if mode == "First" and (port_value(inputs, "speed", 0) < 0):
-            return "Second"
+            return 0, "Second"
         if mode == "Second" and (port_value(inputs, "speed", 0) == 0):
-            return "First"
+            return 1, "First"
         return None
 
     @classmethod

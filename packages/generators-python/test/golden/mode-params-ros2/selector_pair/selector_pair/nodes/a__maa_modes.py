@@ -37,13 +37,13 @@ def convert_parameters(values: dict[str, object]) -> dict[str, object]:
 
 def mode_transition(
     mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]
-) -> str | None:
-    """The target of the first enabled transition of pick.Selector's mode automaton from `mode`, if any."""
+) -> tuple[int, str] | None:
+    """The first enabled transition of pick.Selector's mode automaton from `mode` (index, target), if any."""
     del trigger
     if mode == "Slow" and ((params["kind"] == Kind.FAST) and (port_value(inputs, "i", 0) > 0)):
-        return "Fast"
+        return 0, "Fast"
     if mode == "Fast" and (port_value(inputs, "i", 0) == 0):
-        return "Slow"
+        return 1, "Slow"
     return None
 
 

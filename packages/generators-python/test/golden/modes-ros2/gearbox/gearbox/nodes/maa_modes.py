@@ -30,13 +30,13 @@ PARAMETERS: dict[str, bool | int | float | str] = {}
 
 def mode_transition(
     mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]
-) -> str | None:
-    """The target of the first enabled transition of gear.Gearbox's mode automaton from `mode`, if any."""
+) -> tuple[int, str] | None:
+    """The first enabled transition of gear.Gearbox's mode automaton from `mode` (index, target), if any."""
     del trigger, params
     if mode == "First" and (port_value(inputs, "speed", 0) < 0):
-        return "Second"
+        return 0, "Second"
     if mode == "Second" and (port_value(inputs, "speed", 0) == 0):
-        return "First"
+        return 1, "First"
     return None
 
 
