@@ -17,11 +17,12 @@ from typing import Any
 import pytest
 from conftest import TOAST_APP
 from rosbridge_client import Client
+from test_generated_lockstep import MODES_APP as MODES_MODEL
 from test_generated_lockstep import TOAST_APP as TOAST_MODEL
 from test_generated_lockstep import generate, lockstep_app
 
 from maa_sim.app import SimApp
-from maa_sim.breakpoints import check_request, reached, within
+from maa_sim.breakpoints import check_request, reached, unresolved, within
 
 CTRL = "/toast_service_robot/ctrl"
 TRANSITIONS = "/maa/transitions"
@@ -65,6 +66,41 @@ def test_requests_are_checked_against_the_contract() -> None:
     ):
         with pytest.raises(ValueError, match="/sim/set_breakpoints"):
             check_request(bad)
+
+
+#: the automata table entry of the modes fixture's root (gear.Gearbox, a mode automaton), as generated
+GEARBOX_ENTRY: dict[str, Any] = {
+    "instancePath": "",
+    "node": "/gearbox",
+    "component": "gear.Gearbox",
+    "file": "gear/Gearbox.arc",
+    "states": [{"path": "First", "line": 10}, {"path": "Second", "line": 15}],
+    "transitions": [
+        {"index": 0, "from": "First", "to": "Second", "label": "[speed < 0]", "line": 22, "column": 5},
+        {"index": 1, "from": "Second", "to": "First", "label": "[speed == 0]", "line": 23, "column": 5},
+    ],
+    "kind": "modes",
+}
+
+
+def test_breakpoints_resolve_against_the_automata_table() -> None:
+    table = [GEARBOX_ENTRY]
+    good: list[Any] = [
+        {"node": "/gearbox", "state": "Second"},
+        {"node": "/gearbox", "from": "Second", "to": "First"},
+        {"node": "/elsewhere", "state": "Anything"},  # no entry: the node check of the service decides
+    ]
+    assert unresolved(good, table) == []
+    bad: list[Any] = [{"node": "/gearbox", "state": "Third"}, {"node": "/gearbox", "from": "First", "to": "Fifth"}]
+    assert unresolved(bad, table) == [
+        "no mode 'Third' in the automaton of /gearbox (First, Second)",
+        "no mode 'Fifth' in the automaton of /gearbox (First, Second)",
+    ]
+    # an automaton's entry (no kind) names its states
+    ctrl = {**GEARBOX_ENTRY, "node": CTRL, "states": [{"path": "Idle", "line": 5}], "kind": None}
+    assert unresolved([{"node": CTRL, "state": "Serving"}], [ctrl]) == [
+        f"no state 'Serving' in the automaton of {CTRL} (Idle)"
+    ]
 
 
 # ----------------------------------------------------------------------------- a run
@@ -178,5 +214,58 @@ def test_a_controller_without_transitions_has_no_breakpoints() -> None:
         assert answer["result"] is False and "lock-step" in str(answer["values"])
         assert client.call("/sim/get_status")["values"]["breakpoint"] is None
         client.close()
+    finally:
+        app.stop()
+
+
+# ----------------------------------------------------------------------------- modes
+
+
+@pytest.fixture(scope="module")
+def modes_build(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return Path(generate(MODES_MODEL, tmp_path_factory.mktemp("modes-breakpoints")))
+
+
+def test_mode_transitions_are_reported_and_a_mode_breakpoint_pauses_the_run(modes_build: Path) -> None:
+    """gear.Gearbox (the root, node /gearbox) switches First -> Second on a negative speed and back
+    on the next slice without one: its mode transitions arrive on /maa/transitions with their index
+    in the automata table, and breakpoints on a mode and on a mode transition pause the run."""
+    app = lockstep_app(modes_build, max_sim_time=60.0, speed=0.0)
+    app.start()
+    try:
+        assert app.rosbridge is not None
+        assert app.runner is not None
+        table = app.runner.controller.automata()  # type: ignore[union-attr]
+        assert table == [GEARBOX_ENTRY]
+        control, watch = Client.of(app.rosbridge), Client.of(app.rosbridge)
+        try:
+            watch.send({"op": "subscribe", "topic": TRANSITIONS, "type": "std_msgs/msg/String"})
+            # a mode the automaton does not have: refused with the modes it has
+            third = control.call("/sim/set_breakpoints", {"breakpoints": [{"node": "/gearbox", "state": "Third"}]})
+            assert third["result"] is False
+            assert "no mode 'Third' in the automaton of /gearbox (First, Second)" in str(third["values"]), third
+            answer = control.call("/sim/set_breakpoints", {"breakpoints": [{"node": "/gearbox", "state": "Second"}]})
+            assert answer["result"] is True, answer
+            watch.call("/sim/get_status")  # its subscription is in place once the endpoint answers its next call
+            control.send({"op": "advertise", "topic": "/gearbox/speed", "type": "std_msgs/msg/Int32"})
+            control.send({"op": "publish", "topic": "/gearbox/speed", "msg": {"data": -1}})
+            assert control.call("/sim/resume")["result"] is True
+            taken = events(watch, TRANSITIONS, lambda e: e["to"] == "Second")
+            assert taken == [{"node": "/gearbox", "from": "First", "to": "Second", "index": 0}]
+            status = control.call("/sim/get_status")["values"]
+            assert status["paused"] is True and status["breakpoint"] == {"node": "/gearbox", "state": "Second"}
+            assert status["automaton_states"] == {"/gearbox": "Second"}
+            # the next slice has no speed (Java's 0 in the guard): the transition back is taken and pauses
+            back = {"node": "/gearbox", "from": "Second", "to": "First"}
+            assert control.call("/sim/set_breakpoints", {"breakpoints": [back]})["result"] is True
+            assert control.call("/sim/resume")["result"] is True
+            taken = events(watch, TRANSITIONS, lambda e: e["to"] == "First")
+            assert taken == [{**back, "index": 1}]
+            status = control.call("/sim/get_status")["values"]
+            assert status["paused"] is True and status["breakpoint"] == back
+            assert status["automaton_states"] == {"/gearbox": "First"}
+        finally:
+            control.close()
+            watch.close()
     finally:
         app.stop()

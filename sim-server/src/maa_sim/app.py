@@ -20,7 +20,7 @@ from typing import Any, Literal
 
 from . import interface
 from .access import AccessPolicy, resolve_token
-from .breakpoints import TRANSITIONS_TOPIC, Breakpoints, check_request
+from .breakpoints import TRANSITIONS_TOPIC, Breakpoints, check_request, unresolved
 from .deployment import Deployment
 from .lockstep import LockstepPackage
 from .messages import JsonMessage, MessageError
@@ -427,6 +427,10 @@ class SimApp:
             unknown = sorted({bp["node"] for bp in breakpoints} - known) if known is not None else []
             if unknown:
                 raise ServiceError(f"/sim/set_breakpoints: no automaton runs on {', '.join(unknown)}")
+            automata = getattr(self._controller, "automata", None)  # the build's automata table
+            problems = unresolved(breakpoints, automata()) if callable(automata) else []
+            if problems:
+                raise ServiceError(f"/sim/set_breakpoints: {'; '.join(problems)}")
             self.breakpoints.set(breakpoints)
             return ok(f"{len(breakpoints)} breakpoint(s)")
 

@@ -9,13 +9,17 @@ them; the first one reached pauses the run after that period, and the status nam
 
 A name in a breakpoint is a state's name or its dotted path (`Serving`, `Outer.Inner`); it
 covers the state and its substates, so a breakpoint on a superstate is reached by its substates.
+A mode component's mode automaton is an automaton here too: its node (the instance's node path)
+reports its mode transitions on `/maa/transitions`, so a breakpoint names a mode as a state.
+Breakpoints are resolved against the build's automata table (@maa/protocol's AutomatonEntry, the
+controller's `automata()`): a name no state (or mode) of the node's automaton has is refused.
 """
 
 from __future__ import annotations
 
 import json
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any, cast
 
 from .contracts import problem, validator
@@ -61,6 +65,28 @@ def reached(breakpoint: Breakpoint, event: dict[str, Any]) -> bool:
     return within(source, breakpoint["from"]) and within(target, breakpoint["to"])
 
 
+def unresolved(breakpoints: Sequence[Breakpoint], automata: Sequence[dict[str, Any]]) -> list[str]:
+    """Why breakpoints do not resolve against the automata table: a state (or mode) name that no
+    state of the node's automaton has. Breakpoints on nodes without an entry are not checked here."""
+    by_node = {str(entry.get("node")): entry for entry in automata}
+    problems: list[str] = []
+    for breakpoint in breakpoints:
+        entry = by_node.get(breakpoint["node"])
+        if entry is None:
+            continue
+        paths = [str(s.get("path", "")) for s in entry.get("states", [])]
+        if "state" in breakpoint:
+            names = [cast(SetBreakpointsBreakpointsItem0, breakpoint)["state"]]
+        else:
+            names = [breakpoint["from"], breakpoint["to"]]
+        what = "mode" if entry.get("kind") == "modes" else "state"
+        known = ", ".join(paths) or "none"
+        for name in names:
+            if not any(within(path, name) for path in paths):
+                problems.append(f"no {what} {name!r} in the automaton of {breakpoint['node']} ({known})")
+    return problems
+
+
 class Breakpoints:
     """The breakpoints of one run: `set` replaces them; `on_transition` (a subscriber of
     `/maa/transitions`, called in the period's delivery) pauses the run through `pause` when one
@@ -103,4 +129,4 @@ class Breakpoints:
                 return
 
 
-__all__ = ["TRANSITIONS_TOPIC", "Breakpoint", "Breakpoints", "check_request", "reached", "within"]
+__all__ = ["TRANSITIONS_TOPIC", "Breakpoint", "Breakpoints", "check_request", "reached", "unresolved", "within"]
