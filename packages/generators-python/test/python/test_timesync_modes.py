@@ -2,12 +2,18 @@
 
 from __future__ import annotations
 
+import importlib
 import json
-from collections.abc import Mapping
+import sys
+from collections.abc import Iterator, Mapping
+from pathlib import Path
+from types import ModuleType
+
+import pytest
 
 from maa_behavior import Behavior
 from maa_timesync import TICK, AtomicComponent, ComponentType, ModeComponent, System
-from maa_timesync.lockstep import STATES_TOPIC, LockstepApp
+from maa_timesync.lockstep import STATES_TOPIC, TRANSITIONS_TOPIC, LockstepApp
 from maa_timesync.modes import ModeInstance, port_value
 from maa_timesync.runtime import Connector
 
@@ -73,13 +79,15 @@ class Switch(ModeComponent):
     }
 
     @classmethod
-    def mode_transition(cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]) -> str | None:
+    def mode_transition(
+        cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]
+    ) -> tuple[int, str] | None:
         del trigger, params
         i = inputs.get("i")
         if mode == "A" and isinstance(i, int) and i < 0:
-            return "B"
+            return 0, "B"
         if mode == "B" and isinstance(i, int) and i > 0:
-            return "A"
+            return 1, "A"
         return None
 
     @classmethod
@@ -104,12 +112,14 @@ class EventSwitch(ModeComponent):
     }
 
     @classmethod
-    def mode_transition(cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]) -> str | None:
+    def mode_transition(
+        cls, mode: str, trigger: str | None, inputs: Mapping[str, object], params: Mapping[str, object]
+    ) -> tuple[int, str] | None:
         del inputs, params
         if mode == "Pass" and trigger == "flip":
-            return "Negate"
+            return 0, "Negate"
         if mode == "Negate" and trigger == "":
-            return "Pass"
+            return 1, "Pass"
         return None
 
     @classmethod
@@ -135,6 +145,19 @@ def test_sync_mode_switches_before_the_slice_and_resting_subcomponents_keep_thei
     top = system.top
     assert isinstance(top, ModeInstance)
     assert top.mode_log == ["A", "B", "A"]
+
+
+def test_the_transition_hook_hears_every_mode_transition_with_its_index() -> None:
+    system = System(Switch)
+    top = system.top
+    assert isinstance(top, ModeInstance)
+    taken: list[tuple[int, str, str]] = []
+    top.transition_hook = lambda index, source, target: taken.append((index, source, target))
+    system.init()
+    # slices whose guard does not hold (5, 7 in A; -2 in B; no message) take no transition
+    feed(system, "i", [5, TICK, 7, TICK, -1, TICK, -2, TICK, 3, TICK, TICK])
+    system.run()
+    assert taken == [(0, "A", "B"), (1, "B", "A")]
 
 
 def test_event_mode_switches_on_its_trigger_ports_and_on_ticks() -> None:
@@ -168,3 +191,49 @@ def test_lockstep_publishes_the_mode_as_the_live_state_of_the_mode_component() -
     switched = app.step({"/switch/i": {"data": -1}})
     assert switched[STATES_TOPIC] == [{"data": json.dumps({"/switch": "B"})}]
     assert app.states() == {"/switch": "B"}
+
+
+def test_lockstep_reports_mode_transitions_as_the_instance_transitions() -> None:
+    # /maa/transitions as an automaton's: the instance's node path, the modes, the transition's index
+    app = LockstepApp(Switch, {}, {"i": ("/switch/i", "std_msgs/msg/Int32")}, {"": "/switch"})
+    assert TRANSITIONS_TOPIC not in app.step({})
+    assert TRANSITIONS_TOPIC not in app.step({"/switch/i": {"data": 4}})  # the guard does not hold
+    switched = app.step({"/switch/i": {"data": -1}})
+    assert [json.loads(str(m["data"])) for m in switched[TRANSITIONS_TOPIC]] == [{"node": "/switch", "from": "A", "to": "B", "index": 0}]
+    back = app.step({"/switch/i": {"data": 2}})
+    assert [json.loads(str(m["data"])) for m in back[TRANSITIONS_TOPIC]] == [{"node": "/switch", "from": "B", "to": "A", "index": 1}]
+    app.reset()  # a reset run reports its own transitions only
+    assert TRANSITIONS_TOPIC not in app.step({})
+
+
+GEARBOX = Path(__file__).resolve().parents[1] / "golden" / "modes"
+
+
+@pytest.fixture
+def gearbox_app() -> Iterator[ModuleType]:
+    """The golden timesync build of the modes fixture (gear.Gearbox) through its generated app module."""
+    sys.path.insert(0, str(GEARBOX))
+    drop = [m for m in sys.modules if m == "maa_app" or m == "gear" or m.startswith("gear.")]
+    for name in drop:
+        del sys.modules[name]
+    try:
+        yield importlib.import_module("maa_app")
+    finally:
+        sys.path.remove(str(GEARBOX))
+        for name in [m for m in sys.modules if m == "maa_app" or m == "gear" or m.startswith("gear.")]:
+            del sys.modules[name]
+
+
+def test_the_generated_build_reports_its_mode_transitions_by_their_table_index(gearbox_app: ModuleType) -> None:
+    app = gearbox_app.create_controller({})
+    (entry,) = app.automata()
+    assert entry["node"] == "/gearbox" and entry["kind"] == "modes"
+    table = {(t["from"], t["to"]): t["index"] for t in entry["transitions"]}
+    assert table == {("First", "Second"): 0, ("Second", "First"): 1}
+    app.step({})
+    switched = app.step({"/gearbox/speed": {"data": -3}})
+    [event] = [json.loads(str(m["data"])) for m in switched[TRANSITIONS_TOPIC]]
+    assert event == {"node": "/gearbox", "from": "First", "to": "Second", "index": table[("First", "Second")]}
+    back = app.step({})  # no speed: Java's 0, the guard of Second -> First
+    [event] = [json.loads(str(m["data"])) for m in back[TRANSITIONS_TOPIC]]
+    assert event == {"node": "/gearbox", "from": "Second", "to": "First", "index": table[("Second", "First")]}
