@@ -89,6 +89,7 @@ export function rowKeyOf(rows: readonly AutomatonRows[], bp: Breakpoint): string
 
 /** The status text of a breakpoint the run paused at: `Paused at ctrl: Toasting → Serving`. */
 export function describeHit(rows: readonly AutomatonRows[], bp: Breakpoint): string {
-    const where = rows.find((a) => a.node === bp.node)?.instancePath ?? bp.node;
+    const inst = rows.find((a) => a.node === bp.node)?.instancePath;
+    const where = inst === undefined ? bp.node : inst === '' ? '(root)' : inst; // a root's mode automaton: instance path ''
     return `Paused at breakpoint ${where}: ${'state' in bp ? bp.state : `${bp.from} → ${bp.to}`}`;
 }
