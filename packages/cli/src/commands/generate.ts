@@ -9,6 +9,7 @@ import { jsonDiagnostic } from '../format/json.js';
 import { displayPath, formatDiagnosticsText } from '../format/text.js';
 import type { CliIo } from '../io.js';
 import { createProgress } from '../progress.js';
+import { loadGenerateServices } from '../generate-loader.js';
 
 export type GenerateFormat = 'text' | 'json';
 
@@ -90,12 +91,9 @@ export async function runGenerator(
     };
     try {
         progress?.update('loading the language services');
-        // Loaded on demand, so that --help and usage errors stay fast.
-        const [{ createMaaServices }, { generate, GenerateInputError }, { NodeFileSystem }] = await Promise.all([
-            import('@maa/language-server'),
-            import('@maa/generator-core/node'),
-            import('langium/node'),
-        ]);
+        // Loaded on demand, so that --help and usage errors stay fast (the bundle where the build
+        // wrote one: see generate-loader.ts).
+        const { createMaaServices, generate, GenerateInputError, NodeFileSystem } = await loadGenerateServices(io.env);
         try {
             return await generate({
                 services: createMaaServices(NodeFileSystem),
