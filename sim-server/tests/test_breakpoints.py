@@ -235,7 +235,7 @@ def test_mode_transitions_are_reported_and_a_mode_breakpoint_pauses_the_run(mode
     try:
         assert app.rosbridge is not None
         assert app.runner is not None
-        table = app.runner.controller.automata()  # type: ignore[union-attr]
+        table = app.runner.controller.automata()
         assert table == [GEARBOX_ENTRY]
         control, watch = Client.of(app.rosbridge), Client.of(app.rosbridge)
         try:
