@@ -1,28 +1,43 @@
 #!/usr/bin/env node
-// Generates the python-timesync builds of a montiarc-io conformance suite
-// (../shared/conformance/montiarc-io, or the folder given as first argument, e.g. montiarc-io-extended):
+// Generates the python-timesync builds of montiarc-io conformance suites
+// (../shared/conformance/montiarc-io, or the folders given, e.g. montiarc-io-extended): per suite
 // one build per component under test and feature configuration (a case's `features`), into
 // <out>/builds/<variant>/timesync (default out: .cache/montiarc-io next to this package's test
 // folder), and writes <out>/generation.json: `builds` (per variant whether generation succeeded,
 // its folder and messages) and `cases` (case id -> variant).
-// Usage: node scripts/generate-io-cases.mjs [SUITE_DIR] [OUT_DIR]
+// Usage: node scripts/generate-io-cases.mjs [SUITE_DIR [OUT_DIR]] [SUITE_DIR OUT_DIR ...]
+// Several suites in one run share the loading of the language services (a second or more of CPU
+// per process); each suite gets services of its own, and its builds share them: only the
+// application file changes from build to build, and generate() reloads the model root each time.
 import { cpSync, existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const pkg = path.resolve(here, '..');
-const suite = path.resolve(process.argv[2] ?? path.join(pkg, '..', '..', '..', 'shared', 'conformance', 'montiarc-io'));
-const out = path.resolve(process.argv[3] ?? path.join(pkg, '.cache', 'montiarc-io'));
-if (!existsSync(path.join(suite, 'io_cases.json'))) {
-    console.error(`generate-io-cases: no suite at ${suite}`);
+const args = process.argv.slice(2);
+const jobs = [];
+if (args.length <= 2) {
+    jobs.push({
+        suite: path.resolve(args[0] ?? path.join(pkg, '..', '..', '..', 'shared', 'conformance', 'montiarc-io')),
+        out: path.resolve(args[1] ?? path.join(pkg, '.cache', 'montiarc-io')),
+    });
+} else if (args.length % 2 === 0) {
+    for (let i = 0; i < args.length; i += 2) jobs.push({ suite: path.resolve(args[i]), out: path.resolve(args[i + 1]) });
+} else {
+    console.error('usage: generate-io-cases.mjs [SUITE_DIR [OUT_DIR]] [SUITE_DIR OUT_DIR ...]');
     process.exit(2);
 }
+for (const { suite } of jobs) {
+    if (!existsSync(path.join(suite, 'io_cases.json'))) {
+        console.error(`generate-io-cases: no suite at ${suite}`);
+        process.exit(2);
+    }
+}
 const { createMaaServices } = await import('@maa/language-server');
-const { generate } = await import('@maa/generator-core/node');
+const { discoverGenerators, generate, installationRoot } = await import('@maa/generator-core/node');
+const { URI } = await import('langium');
 const { NodeFileSystem } = await import('langium/node');
-
-const cases = JSON.parse(readFileSync(path.join(suite, 'io_cases.json'), 'utf8')).cases;
 
 /** The feature configuration of a case, sorted by name (`{}`: no variability). */
 function featuresOf(c) {
@@ -46,61 +61,75 @@ function bindingOf(features) {
     const f = Object.entries(features);
     return f.length === 0 ? '' : `(${f.map(([k, v]) => `${k} = ${v ? 'true' : 'false'}`).join(', ')})`;
 }
-const variants = new Map();
-const caseVariant = {};
-for (const c of cases) {
-    const v = variantOf(c);
-    caseVariant[c.id] = v;
-    if (!variants.has(v)) variants.set(v, { component: c.component, features: featuresOf(c) });
-}
-rmSync(out, { recursive: true, force: true });
-mkdirSync(out, { recursive: true });
-const root = path.join(out, 'models');
-cpSync(path.join(suite, 'models'), root, { recursive: true });
-const appFile = path.join(root, 'IoCase.arcapp');
-const report = {};
-for (const [variant, { component, features }] of [...variants].sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0))) {
-    const header = `application IoCase for ${component}${bindingOf(features)} {`;
-    writeFileSync(
-        appFile,
-        [
-            header,
-            '  platform timesync {',
-            '    timesync.Components;',
-            '    timesync.AutomataBehavior;',
-            '    timesync.RobotArmBehavior;',
-            '    timesync.DataTypes;',
-            '  }',
-            '}',
-            '',
-        ].join('\n'),
-    );
-    const dir = path.join(out, 'builds', variant);
-    try {
-        const result = await generate({
-            services: createMaaServices(NodeFileSystem),
-            appFile,
-            modelRoot: root,
-            outDir: dir,
-            discoveryRoots: [pkg],
-        });
-        const errors = result.diagnostics
-            .filter((d) => d.severity === 'error' || d.severity === 1)
-            .map((d) => `${d.file ?? ''}:${d.range?.start?.line ?? ''} ${d.code ?? ''} ${d.message}`);
-        report[variant] = { ok: result.ok, dir: path.join(dir, 'timesync'), errors };
-    } catch (e) {
-        // Name the application header: with features, the binding is where a generator may differ.
-        report[variant] = {
-            ok: false,
-            dir: path.join(dir, 'timesync'),
-            errors: [`${String(e?.message ?? e)} (application: ${header})`, String(e?.stack ?? e)],
-        };
+
+/** Generates every build of one suite into `out`. */
+async function generateSuite(suite, out) {
+    const cases = JSON.parse(readFileSync(path.join(suite, 'io_cases.json'), 'utf8')).cases;
+    const variants = new Map();
+    const caseVariant = {};
+    for (const c of cases) {
+        const v = variantOf(c);
+        caseVariant[c.id] = v;
+        if (!variants.has(v)) variants.set(v, { component: c.component, features: featuresOf(c) });
     }
+    rmSync(out, { recursive: true, force: true });
+    mkdirSync(out, { recursive: true });
+    const root = path.join(out, 'models');
+    cpSync(path.join(suite, 'models'), root, { recursive: true });
+    const appFile = path.join(root, 'IoCase.arcapp');
+    const services = createMaaServices(NodeFileSystem);
+    // The generators installed for the model root, found once for the suite, as generate() would
+    // find them for each build (the model root and the package's folder; nothing installs any meanwhile).
+    const registry = discoverGenerators(services.shared.workspace.FileSystemProvider, URI.file(root), {
+        extraRoots: [installationRoot(), URI.file(pkg)].filter((r) => r !== undefined),
+    });
+    const report = {};
+    for (const [variant, { component, features }] of [...variants].sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0))) {
+        const header = `application IoCase for ${component}${bindingOf(features)} {`;
+        writeFileSync(
+            appFile,
+            [
+                header,
+                '  platform timesync {',
+                '    timesync.Components;',
+                '    timesync.AutomataBehavior;',
+                '    timesync.RobotArmBehavior;',
+                '    timesync.DataTypes;',
+                '  }',
+                '}',
+                '',
+            ].join('\n'),
+        );
+        const dir = path.join(out, 'builds', variant);
+        try {
+            const result = await generate({
+                services,
+                registry,
+                appFile,
+                modelRoot: root,
+                outDir: dir,
+                discoveryRoots: [pkg],
+            });
+            const errors = result.diagnostics
+                .filter((d) => d.severity === 'error' || d.severity === 1)
+                .map((d) => `${d.file ?? ''}:${d.range?.start?.line ?? ''} ${d.code ?? ''} ${d.message}`);
+            report[variant] = { ok: result.ok, dir: path.join(dir, 'timesync'), errors };
+        } catch (e) {
+            // Name the application header: with features, the binding is where a generator may differ.
+            report[variant] = {
+                ok: false,
+                dir: path.join(dir, 'timesync'),
+                errors: [`${String(e?.message ?? e)} (application: ${header})`, String(e?.stack ?? e)],
+            };
+        }
+    }
+    rmSync(appFile);
+    writeFileSync(path.join(out, 'generation.json'), `${JSON.stringify({ builds: report, cases: caseVariant }, null, 2)}\n`);
+    const failed = Object.entries(report).filter(([, r]) => !r.ok);
+    console.log(
+        `generate-io-cases: ${variants.size - failed.length}/${variants.size} builds (component and feature configuration) generated into ${out}`,
+    );
+    for (const [c, r] of failed) console.log(`  ${c}: ${r.errors.join('; ').slice(0, 300)}`);
 }
-rmSync(appFile);
-writeFileSync(path.join(out, 'generation.json'), `${JSON.stringify({ builds: report, cases: caseVariant }, null, 2)}\n`);
-const failed = Object.entries(report).filter(([, r]) => !r.ok);
-console.log(
-    `generate-io-cases: ${variants.size - failed.length}/${variants.size} builds (component and feature configuration) generated into ${out}`,
-);
-for (const [c, r] of failed) console.log(`  ${c}: ${r.errors.join('; ').slice(0, 300)}`);
+
+for (const { suite, out } of jobs) await generateSuite(suite, out);

@@ -2,7 +2,7 @@ import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { ensureVenv, lintPython, packageDir, repoDir, run, venvPython } from './python-env.js';
+import { ensureVenv, packageDir, pythonFiles, repoDir, ruffConfig, run, venvPython } from './python-env.js';
 
 // The montiarc-io conformance suites (MontiArc's Java simulator's stream tests as data), read
 // from ../shared at test time: every case's component is generated with the timesync family (one
@@ -17,6 +17,7 @@ import { ensureVenv, lintPython, packageDir, repoDir, run, venvPython } from './
 // - test/fixtures/io-harness: a suite of our own in the same format that uses every field of the
 //   format the MontiArc suites do not (yet) use, so the harness itself is tested end to end.
 const conformance = path.resolve(repoDir, '..', 'shared', 'conformance');
+const harnessSuite = path.join(packageDir, 'test', 'fixtures', 'io-harness');
 
 /**
  * Test classes (or single case ids) of montiarc-io-extended whose constructs are supported by the
@@ -56,17 +57,41 @@ function casesOf(suite: string): Case[] {
         : [];
 }
 
-/** Generates and runs one suite in a fresh folder; the results and the generation report. */
+/** The suites of this file that are present (a suite of ../shared may be absent). */
+function presentSuites(): string[] {
+    return [path.join(conformance, 'montiarc-io'), path.join(conformance, 'montiarc-io-extended'), harnessSuite].filter(
+        (s) => casesOf(s).length > 0,
+    );
+}
+
+// A fresh folder per run (concurrent test runs must not share it), a subfolder per suite.
+const work = mkdtempSync(path.join(tmpdir(), 'maa-montiarc-io-'));
+afterAll(() => rmSync(work, { recursive: true, force: true }));
+const cacheOf = (suite: string): string => path.join(work, path.basename(suite));
+
+let generated: Promise<void> | undefined;
+/**
+ * Generates every present suite's builds, once for the file and in one process: loading the
+ * language services costs more than a second of CPU per process, and the builds of a suite share
+ * them (scripts/generate-io-cases.mjs).
+ */
+function generateAll(): Promise<void> {
+    generated ??= (async () => {
+        await ensureVenv();
+        const args = presentSuites().flatMap((s) => [s, cacheOf(s)]);
+        const gen = await run(process.execPath, [path.join(packageDir, 'scripts', 'generate-io-cases.mjs'), ...args], packageDir);
+        if (gen.status !== 0) throw new Error(`generate-io-cases failed:\n${gen.stdout}\n${gen.stderr}`);
+    })();
+    return generated;
+}
+
+/** Runs one suite's cases on its builds: the results and the generation report. */
 function runSuite(suite: string): { results: () => Result[]; generation: () => Generation } {
     let results: Result[] = [];
     let generation: Generation = { builds: {}, cases: {} };
-    // A fresh folder per run: concurrent test runs must not share it.
-    const cache = mkdtempSync(path.join(tmpdir(), `maa-${path.basename(suite)}-`));
-    afterAll(() => rmSync(cache, { recursive: true, force: true }));
     beforeAll(async () => {
-        await ensureVenv();
-        const gen = await run(process.execPath, [path.join(packageDir, 'scripts', 'generate-io-cases.mjs'), suite, cache], packageDir);
-        if (gen.status !== 0) throw new Error(`generate-io-cases failed:\n${gen.stdout}\n${gen.stderr}`);
+        await generateAll();
+        const cache = cacheOf(suite);
         generation = JSON.parse(readFileSync(path.join(cache, 'generation.json'), 'utf8')) as Generation;
         const report = path.join(cache, 'report.json');
         const py = await run(venvPython, [path.join(packageDir, 'test', 'python', 'io_cases.py'), suite, cache, report], packageDir);
@@ -85,13 +110,44 @@ function runSuite(suite: string): { results: () => Result[]; generation: () => G
     return { results: () => results, generation: () => generation };
 }
 
-/** ruff and py_compile over every build that generated. */
+/**
+ * `ruff check` (the package's settings) and `py_compile` of every build that generated: one run
+ * of each over all builds (a Python process costs more than checking a build). ruff runs once
+ * with every build folder as a source root, so each build's own packages count as first-party
+ * in its import sorting, as when ruff runs inside the folder (python-env.ts, lintPython).
+ */
 async function lintBuilds(generation: Generation): Promise<string[]> {
-    const problems: string[] = [];
-    for (const b of Object.values(generation.builds)
+    const dirs = Object.values(generation.builds)
         .filter((x) => x.ok)
-        .sort((x, y) => (x.dir < y.dir ? -1 : 1)))
-        problems.push(...(await lintPython(b.dir)));
+        .map((x) => x.dir)
+        .sort();
+    if (dirs.length === 0) return [];
+    const problems: string[] = [];
+    const settings = ['--config', ruffConfig, '--config', `src = ${JSON.stringify(dirs)}`, '--no-cache'];
+    const ruff = await run(venvPython, ['-m', 'ruff', 'check', ...settings, '--output-format', 'concise', ...dirs], packageDir);
+    if (ruff.status !== 0) problems.push(`ruff check:\n${ruff.stdout}${ruff.stderr}`);
+    // Compiled into a temporary folder, so the generated folders stay free of __pycache__; a text
+    // compiled once is not compiled again (the run-time environment every build holds a copy of).
+    const compile = await run(
+        venvPython,
+        [
+            '-c',
+            [
+                'import os, sys, py_compile, tempfile',
+                'seen = set()',
+                'with tempfile.TemporaryDirectory() as d:',
+                '    for i, f in enumerate(sys.stdin.read().splitlines()):',
+                '        with open(f, "rb") as h:',
+                '            text = h.read()',
+                '        if text not in seen:',
+                '            seen.add(text)',
+                '            py_compile.compile(f, cfile=os.path.join(d, f"{i}.pyc"), doraise=True)',
+            ].join('\n'),
+        ],
+        packageDir,
+        dirs.flatMap((d) => pythonFiles(d)).join('\n'),
+    );
+    if (compile.status !== 0) problems.push(`py_compile:\n${compile.stderr}`);
     return problems;
 }
 
@@ -162,8 +218,6 @@ describe.skipIf(extendedCases.length === 0)('montiarc-io-extended conformance (p
         expect(await lintBuilds(s.generation())).toEqual([]);
     }, 300_000);
 });
-
-const harnessSuite = path.join(packageDir, 'test', 'fixtures', 'io-harness');
 
 describe('the io-case harness on a suite of its own (every field of the format)', () => {
     const s = runSuite(harnessSuite);

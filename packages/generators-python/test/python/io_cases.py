@@ -1,7 +1,7 @@
 """Runs the montiarc-io conformance cases against generated python-timesync builds.
 
 ``python io_cases.py SUITE_DIR CACHE_DIR [REPORT]``: for every component of the suite, runs its
-cases in a fresh interpreter on the build that ``scripts/generate-io-cases.mjs`` wrote to
+cases in a process of its own (forked from this one) on the build that ``scripts/generate-io-cases.mjs`` wrote to
 ``CACHE_DIR/builds/<variant>/timesync`` (``generation.json`` maps each case to its build: one per
 component and feature configuration), compares every expected output stream item by item (value
 types respected, ``compare: values_only`` dropping ticks, ``observed_value_transform`` applied),
@@ -14,9 +14,12 @@ from __future__ import annotations
 
 import json
 import math
+import os
+import selectors
 import struct
-import subprocess
 import sys
+import time
+import traceback
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -164,7 +167,7 @@ def compare(case: Mapping[str, Any], result: Mapping[str, Any], port_types: Mapp
 
 
 def run_component(build: Path, cases: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    """Runs inside a fresh interpreter whose sys.path holds the build."""
+    """Runs inside a process of the build's own (see run_isolated), with the build on sys.path."""
     import importlib
 
     sys.path.insert(0, str(build))
@@ -185,12 +188,68 @@ def run_component(build: Path, cases: list[dict[str, Any]]) -> list[dict[str, An
     return results
 
 
+#: The standard library the run-time environment imports: imported here once, before the forks,
+#: so no build's process imports it again (the build's own modules are imported in its process).
+_RTE_STDLIB = ("collections", "dataclasses", "decimal", "enum", "importlib", "re", "typing")
+TIMEOUT_S = 120
+
+
+def run_isolated(build: str, cases: list[dict[str, Any]]) -> list[dict[str, Any]] | str:
+    """The results of ``run_component`` in a child forked from this interpreter, or why it failed.
+
+    Every build has its own ``maa_app`` and copy of the run-time environment under the same module
+    names, so each runs in a process of its own, as in a fresh interpreter; a fork costs neither
+    the interpreter's start nor the standard library's imports. The child answers through a pipe:
+    its result or its traceback as JSON.
+    """
+    read_end, write_end = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: never returns
+        os.close(read_end)
+        code = 0
+        try:
+            answer: dict[str, Any] = {"results": run_component(Path(build), cases)}
+        except BaseException:  # a crash of the runner is reported, whatever it is
+            answer, code = {"crash": traceback.format_exc()[-500:]}, 1
+        with os.fdopen(write_end, "wb") as out:
+            out.write(json.dumps(answer).encode("utf-8"))
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(code)
+    os.close(write_end)
+    data = _read_all(read_end, pid)
+    _, status = os.waitpid(pid, 0)
+    if data is None:
+        return f"timed out after {TIMEOUT_S} s"
+    try:
+        answer = json.loads(data)
+    except ValueError:
+        return f"exit status {os.waitstatus_to_exitcode(status)}, no answer"
+    return answer["results"] if "results" in answer else str(answer["crash"])
+
+
+def _read_all(fd: int, pid: int) -> bytes | None:
+    """Everything the child writes to ``fd`` until it closes it; None (and the child killed) after the timeout."""
+    chunks: list[bytes] = []
+    deadline = time.monotonic() + TIMEOUT_S
+    with selectors.DefaultSelector() as sel:
+        sel.register(fd, selectors.EVENT_READ)
+        while True:
+            left = deadline - time.monotonic()
+            if left <= 0 or not sel.select(left):
+                os.kill(pid, 9)
+                os.close(fd)
+                return None
+            chunk = os.read(fd, 1 << 16)
+            if not chunk:
+                os.close(fd)
+                return b"".join(chunks)
+            chunks.append(chunk)
+
+
 def main(argv: list[str]) -> int:
-    if len(argv) >= 2 and argv[0] == "--component":
-        build = Path(argv[1])
-        cases = json.loads(sys.stdin.read())
-        print(json.dumps(run_component(build, cases)))
-        return 0
+    for name in _RTE_STDLIB:
+        __import__(name)
     suite, cache = Path(argv[0]), Path(argv[1])
     report_file = Path(argv[2]) if len(argv) > 2 else cache / "report.json"
     cases = json.loads((suite / "io_cases.json").read_text(encoding="utf-8"))["cases"]
@@ -205,17 +264,11 @@ def main(argv: list[str]) -> int:
             why = "; ".join(gen["errors"]) if gen else "not generated"
             results += [{"id": c["id"], "passed": False, "reason": f"generation failed: {why}"} for c in group]
             continue
-        proc = subprocess.run(
-            [sys.executable, __file__, "--component", gen["dir"]],
-            input=json.dumps(group),
-            capture_output=True,
-            text=True,
-            timeout=120,
-        )
-        if proc.returncode != 0:
-            results += [{"id": c["id"], "passed": False, "reason": f"runner crashed: {proc.stderr[-500:]}"} for c in group]
+        outcome = run_isolated(gen["dir"], group)
+        if isinstance(outcome, str):
+            results += [{"id": c["id"], "passed": False, "reason": f"runner crashed: {outcome}"} for c in group]
             continue
-        results += json.loads(proc.stdout)
+        results += outcome
     report_file.write_text(json.dumps(results, indent=1) + "\n", encoding="utf-8")
     passed = sum(1 for r in results if r["passed"])
     print(f"{suite.name}: {passed}/{len(results)} cases passed")
