@@ -17,7 +17,8 @@ const AFTER_GOAL = 0.01;
 /**
  * What the recording holds when the toast first lies on the plate, read with the mcap libraries
  * (not maa-sim's code): that time, the bread's poses around it ([t, x, y, z]), the last message
- * of every topic then (`last`) and at AFTER_GOAL seconds later, where the slider goes (`at`).
+ * of every topic then (`last`) and at AFTER_GOAL seconds later, where the slider goes (`at`), and
+ * the time of the first message after that the view loads (`next`: not the scene poses, not /clock).
  */
 function recordedAtGoal(file) {
     const script = `
@@ -29,11 +30,12 @@ def plain(v):
     if isinstance(v, (list, tuple)): return [plain(x) for x in v]
     return {k: plain(getattr(v, k)) for k in getattr(type(v), "__slots__", ()) if not k.startswith("_")}
 AFTER = float(sys.argv[2])
-goal, last, at, breads = None, {}, {}, []
+goal, last, at, breads, after = None, {}, {}, [], None
 with open(sys.argv[1], "rb") as f:
     for _s, ch, m, msg in make_reader(f, decoder_factories=[DecoderFactory()]).iter_decoded_messages(log_time_order=True):
         t = m.log_time / 1e9
         if goal is not None and t > goal + 0.2: break
+        if goal is not None and after is None and t > goal + AFTER and ch.topic not in ("/sim/scene", "/clock"): after = t
         if ch.topic == "/sim/scene":
             if msg.toast_on_plate and goal is None: goal = t
             pose = msg.body_poses[list(msg.body_names).index("bread")]
@@ -42,7 +44,7 @@ with open(sys.argv[1], "rb") as f:
         if not hasattr(msg, "data"): continue
         if goal is None: last[ch.topic] = plain(msg.data)
         if goal is None or t <= goal + AFTER: at[ch.topic] = plain(msg.data)
-print(json.dumps({"goal": goal, "breads": breads, "last": last, "at": at}))
+print(json.dumps({"goal": goal, "breads": breads, "last": last, "at": at, "next": after}))
 `;
     const python = path.join(repo, 'sim-server', '.venv', 'bin', 'python');
     return JSON.parse(execFileSync(python, ['-c', script, file, String(AFTER_GOAL)], { encoding: 'utf8' }));
@@ -217,6 +219,19 @@ export const replayScenarios = [
             await page.locator('.tabs-container .tab', { hasText: 'MontiArc Diagram' }).first().click();
             await shot('replay-diagram');
             await page.locator('.tabs-container .tab', { hasText: 'MontiArc Simulation' }).first().click();
+
+            // → on the focused slider steps to the next recorded message: later, but not past the file's next one.
+            const slider = view.locator('[data-testid=replay-slider]');
+            const from = Number(await slider.inputValue());
+            await slider.focus();
+            await page.keyboard.press('ArrowRight');
+            let to = from;
+            await until(page, '→ on the slider did not step', async () => {
+                to = Number(await slider.inputValue());
+                return to > from;
+            }).catch(() => fail(`→ on the slider did not move it from ${from} s`));
+            if (expected.next !== null && to > expected.next + 1e-6)
+                await fail(`→ stepped from ${from} s to ${to} s, past the next recorded message at ${expected.next} s`);
 
             // Close: the replay session ends.
             await view.locator('[data-testid=replay-close]').click();
