@@ -75,6 +75,9 @@ describe('maa-gen sim: usage', () => {
     });
 });
 
+// The first run goes through the bin (its exit code and output as a user sees them); the later ones
+// run maa-gen in the test's warm worker thread (runCliInProcess), which saves loading the language
+// services for each (the simulator is a process of its own either way).
 describe.skipIf(!haveSim)('maa-gen sim: the toast service on the timesync platform (lock-step)', () => {
     let dir: string;
     beforeAll(() => {
@@ -113,7 +116,7 @@ describe.skipIf(!haveSim)('maa-gen sim: the toast service on the timesync platfo
     });
 
     it('stops at --duration: exit 1 with --until-goal (not reached), 0 without; reuses the generated output', async () => {
-        const untilGoal = await runCli(
+        const untilGoal = await runCliInProcess(
             ['sim', 'TR.arcapp', '--platform', 'timesync', '--until-goal', '--duration', '0.5', '--format', 'json'],
             dir,
         );
@@ -130,7 +133,7 @@ describe.skipIf(!haveSim)('maa-gen sim: the toast service on the timesync platfo
         expect(simulatorFinishedContract.check({ event: 'finished', ...(summary as object) })).toBe(true);
 
         // paced at real time, so the run lasts more than a second and shows its progress (stderr is a pipe: plain lines)
-        const completed = await runCli(['sim', 'TR.arcapp', '--platform', 'timesync', '--duration', '1.5', '--speed', '1'], dir);
+        const completed = await runCliInProcess(['sim', 'TR.arcapp', '--platform', 'timesync', '--duration', '1.5', '--speed', '1'], dir);
         expect(completed.code, completed.stderr).toBe(0);
         expect(completed.stdout).toContain('timesync (lockstep mode): time limit reached');
         expect(completed.stdout).toMatch(/^ {2}goal {14}not reached \(not waited for\)$/m);
@@ -142,12 +145,12 @@ describe.skipIf(!haveSim)('maa-gen sim: the toast service on the timesync platfo
         expect(existsSync(model)).toBe(true);
         const now = new Date();
         utimesSync(model, now, now); // saved without a change
-        const r = await runCli(['sim', 'TR.arcapp', '--platform', 'timesync', '--duration', '0.1'], dir);
+        const r = await runCliInProcess(['sim', 'TR.arcapp', '--platform', 'timesync', '--duration', '0.1'], dir);
         expect(r.code, r.stderr).toBe(0);
         expect(r.stderr).toContain('maa-gen: generating timesync');
         expect(r.stderr).toMatch(/\(0 written, \d+ unchanged\)/);
         // the output counts as checked against the models now
-        const again = await runCli(['sim', 'TR.arcapp', '--platform', 'timesync', '--duration', '0.1'], dir);
+        const again = await runCliInProcess(['sim', 'TR.arcapp', '--platform', 'timesync', '--duration', '0.1'], dir);
         expect(again.code, again.stderr).toBe(0);
         expect(again.stderr).not.toContain('generating');
     });

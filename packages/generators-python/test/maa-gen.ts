@@ -5,6 +5,7 @@ import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll } from 'vitest';
+import { runCliInProcess } from '../../cli/test/helpers.js';
 import { repoDir, run, venvPython, type RunResult } from './python-env.js';
 
 export const maaGen = path.join(repoDir, 'packages', 'cli', 'bin', 'maa-gen.js');
@@ -81,4 +82,14 @@ export async function streamTests(
 /** `maa-gen generate <app> --platform <platform> --out <out>`. */
 export function generate(app: string, platform: string, out: string, cwd: string): Promise<RunResult> {
     return run(process.execPath, [maaGen, 'generate', app, '--platform', platform, '--out', out], cwd);
+}
+
+/**
+ * `maa-gen <args>` in a warm worker thread of the test process (the CLI tests' runCliInProcess):
+ * the language services load once per test file instead of once per command (a second or two of
+ * CPU each). For tests of what a command does; its exit code is what the bin would exit with.
+ */
+export async function maaGenInProcess(args: readonly string[], cwd: string): Promise<RunResult> {
+    const r = await runCliInProcess([...args], cwd);
+    return { status: r.code ?? 1, stdout: r.stdout, stderr: r.stderr };
 }

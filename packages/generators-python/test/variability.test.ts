@@ -2,8 +2,8 @@ import { cpSync, mkdtempSync, readFileSync, readdirSync, rmSync, statSync, write
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, describe, expect, it } from 'vitest';
-import { maaGen, type StreamResult } from './maa-gen.js';
-import { ensureVenv, repoDir, run, venvPython } from './python-env.js';
+import { maaGenInProcess, type StreamResult } from './maa-gen.js';
+import { ensureVenv, repoDir, venvPython } from './python-env.js';
 
 const fixture = path.join(repoDir, 'packages', 'generators-python', 'test', 'fixtures', 'variability');
 const work = mkdtempSync(path.join(tmpdir(), 'maa-variability-'));
@@ -36,7 +36,7 @@ describe('feature configurations on python-timesync (maa-gen test)', () => {
     for (const dim of [true, false]) {
         it(`dim = ${dim}: the tests of that configuration pass, those of the other are refused`, async () => {
             await ensureVenv();
-            const r = await run(process.execPath, [maaGen, 'test', configured(dim), '--format', 'json', '--python', venvPython], repoDir);
+            const r = await maaGenInProcess(['test', configured(dim), '--format', 'json', '--python', venvPython], repoDir);
             const out = JSON.parse(r.stdout) as { results: StreamResult[] };
             const own = out.results.filter((x) => x.file.endsWith(dim ? 'RoomDimmed.stream' : 'RoomPlain.stream'));
             const other = out.results.filter((x) => x.file.endsWith(dim ? 'RoomPlain.stream' : 'RoomDimmed.stream'));
@@ -57,7 +57,7 @@ const instancesApp = path.join(repoDir, 'packages', 'generators-python', 'test',
 describe('instances of one type in different configurations (maa-gen test)', () => {
     it("python-timesync: each lamp behaves per its instance's configuration; a stream test of the type finds the variant of its features", async () => {
         await ensureVenv();
-        const r = await run(process.execPath, [maaGen, 'test', instancesApp, '--format', 'json', '--python', venvPython], repoDir);
+        const r = await maaGenInProcess(['test', instancesApp, '--format', 'json', '--python', venvPython], repoDir);
         const out = JSON.parse(r.stdout) as { results: StreamResult[] };
         // LampPlain.stream names hall.Lamp with dimmable = false: it runs against the variant Lamp__no_dimmable.
         expect(out.results.map((x) => x.file.split(/[\\/]/).pop()).sort()).toEqual([
@@ -72,7 +72,7 @@ describe('instances of one type in different configurations (maa-gen test)', () 
     it('both platforms generate one variant per configuration, named after its features', async () => {
         for (const platform of ['timesync', 'rospython']) {
             const dir = path.join(work, `instances-${platform}`);
-            const r = await run(process.execPath, [maaGen, 'generate', instancesApp, '--platform', platform, '--out', dir], repoDir);
+            const r = await maaGenInProcess(['generate', instancesApp, '--platform', platform, '--out', dir], repoDir);
             expect(r.status, r.stdout + r.stderr).toBe(0);
             const text = allText(dir);
             for (const cls of ['class LampBehavior', 'class Lamp__no_dimmableBehavior']) expect(text).toContain(cls);
@@ -87,7 +87,7 @@ describe('feature configurations on ROS 2', () => {
         const texts: Record<string, string> = {};
         for (const dim of [true, false]) {
             const out = path.join(work, `ros2-${dim}`);
-            const r = await run(process.execPath, [maaGen, 'generate', configured(dim), '--platform', 'rospython', '--out', out], repoDir);
+            const r = await maaGenInProcess(['generate', configured(dim), '--platform', 'rospython', '--out', out], repoDir);
             expect(r.status, r.stdout + r.stderr).toBe(0);
             texts[String(dim)] = allText(out);
         }
@@ -98,11 +98,7 @@ describe('feature configurations on ROS 2', () => {
     it('a binding of an unknown feature is refused (app/unknown-feature)', async () => {
         const app = configured(true);
         writeFileSync(app, readFileSync(app, 'utf8').replace('lamp.Room(dim = true)', 'lamp.Room(dimmed = true)'));
-        const r = await run(
-            process.execPath,
-            [maaGen, 'generate', app, '--platform', 'timesync', '--out', path.join(work, 'unknown')],
-            repoDir,
-        );
+        const r = await maaGenInProcess(['generate', app, '--platform', 'timesync', '--out', path.join(work, 'unknown')], repoDir);
         expect(r.stdout + r.stderr).toContain('app/unknown-feature');
         expect(r.status).toBe(1);
     }, 180_000);
