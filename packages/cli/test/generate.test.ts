@@ -1,14 +1,15 @@
 import { execFile } from 'node:child_process';
 import { chmodSync, existsSync, readdirSync, readFileSync, readlinkSync, statSync } from 'node:fs';
 import path from 'node:path';
-import { killWhenPaused } from '@maa/generator-core/node';
+// The subpath: '@maa/generator-core/node' would have Vitest load all of generator-core and Langium into the test.
+import { killWhenPaused } from '@maa/generator-core/pause';
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
 import { BIN, ModelDir, parseTextLines, requireBuiltCli, runCli, runCliInProcess } from './helpers.js';
 
 // `maa-gen generate` and `maa-gen generators` against a generator package installed in the
 // test folder's node_modules (small generators written here; the real ones are separate packages).
 // maa-gen runs in a warm worker thread (runCliInProcess) except where the process itself is tested:
-// usage errors and help through the bin, a generator failing by its environment, a run without
+// a usage error and help through the bin, a generator failing by its environment, a run without
 // write permission, and runs killed while writing.
 
 const MODELS: Record<string, string> = {
@@ -269,13 +270,14 @@ describe('maa-gen generate', () => {
 
     it('usage problems exit 2', async () => {
         const w = workspace();
+        // the first through the bin (its exit code and stderr), the others in the warm worker thread
         const missing = await runCli(['generate', 'nope.arcapp'], w.dir);
         expect(missing.code).toBe(2);
         expect(missing.stderr).toBe('maa-gen: error: path not found: nope.arcapp\n');
-        const wrong = await runCli(['generate', 'models/robot/Ctrl.arc'], w.dir);
+        const wrong = await runCliInProcess(['generate', 'models/robot/Ctrl.arc'], w.dir);
         expect(wrong.code).toBe(2);
         expect(wrong.stderr).toContain('not an application configuration (expected .arcapp)');
-        const platform = await runCli(['generate', 'models/App.arcapp', '--platform', 'gamma'], w.dir);
+        const platform = await runCliInProcess(['generate', 'models/App.arcapp', '--platform', 'gamma'], w.dir);
         expect(platform.code).toBe(2);
         expect(platform.stderr).toBe("maa-gen: error: application 'Demo' has no platform 'gamma' (platforms: alpha, beta)\n");
     });
