@@ -31,9 +31,15 @@ export function buildVersion(
     checkpoints: Checkpoints,
     shown: (rel: string) => string,
 ): void {
+    // Each folder made once (a model's files share a few folders: one mkdir per file would be ~1,000 calls).
+    const made = new Set<string>();
     for (const f of plan.write) {
         const target = path.join(version, ...f.path.split('/'));
-        mkdirSync(path.dirname(target), { recursive: true });
+        const folder = path.dirname(target);
+        if (!made.has(folder)) {
+            mkdirSync(folder, { recursive: true });
+            made.add(folder);
+        }
         writeFileSync(target, f.content, { flag: 'wx' });
         checkpoints.reached('staging');
     }
