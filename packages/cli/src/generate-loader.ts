@@ -50,7 +50,15 @@ async function loadBundle(): Promise<GenerateServices> {
     const { family, modules } = JSON.parse(readFileSync(MODULES, 'utf8')) as BundleModules;
     const entry = (file: string): string => new URL(file, BUNDLE_DIR).href;
     const redirects: Record<string, string> = {};
-    for (const [specifier, file] of Object.entries(modules)) redirects[import.meta.resolve(specifier)] = entry(file);
+    for (const [specifier, file] of Object.entries(modules)) {
+        let resolved: string;
+        try {
+            resolved = import.meta.resolve(specifier);
+        } catch {
+            continue; // not installed beside maa-gen: a generator importing it has a copy of its own either way
+        }
+        redirects[resolved] = entry(file);
+    }
     const data: RedirectData = { redirects };
     register(new URL('./generate-hooks.js', import.meta.url), { data });
     // Variable specifiers: the bundle is a build output, not modules TypeScript resolves.
