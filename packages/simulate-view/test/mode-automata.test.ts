@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { setBreakpointsContract } from '@maa/protocol';
 import { breakpointRows, breakpointsRequest, describeHit } from '../src/breakpoints/model.js';
-import { findTransition, parseAutomata } from '../src/timeline/automata.js';
+import { findTransition, instanceLabel, parseAutomata } from '../src/timeline/automata.js';
 
 // The automata table entry of a decomposed component's mode automaton (generators-python's
 // AUTOMATA / deployment.json of the modes fixture: the root gear.Gearbox): its modes are the
@@ -54,5 +54,11 @@ describe('a mode automaton in the simulate view', () => {
         expect(setBreakpointsContract.issues(request)).toEqual([]);
         // the root instance (path '') is named as the panels name it
         expect(describeHit(rows, { node: GEARBOX, state: 'Second' })).toBe('Paused at breakpoint (root): Second');
+    });
+
+    it('names the root instance (root) and any other by its path, in the list, the panels and the status', () => {
+        expect(instanceLabel('')).toBe('(root)');
+        expect(instanceLabel('ctrl')).toBe('ctrl');
+        expect(instanceLabel('a.b')).toBe('a.b');
     });
 });

@@ -12,7 +12,7 @@ import type { Breakpoint } from '@maa/protocol';
 import type { Disposable } from '../contracts.js';
 import { el, errorText } from '../dom.js';
 import { RosConnection, type SimServiceResponse } from '../ros/index.js';
-import type { AutomatonInfo } from '../timeline/automata.js';
+import { type AutomatonInfo, instanceLabel } from '../timeline/automata.js';
 import {
     breakpointOfStatus,
     breakpointRows,
@@ -91,7 +91,7 @@ export class BreakpointsView implements Disposable {
             el(
                 'div',
                 { class: 'maa-bp-automaton', 'data-testid': `breakpoints-${a.instancePath}` },
-                el('div', { class: 'maa-bp-title' }, `${a.instancePath}: ${a.component}`),
+                el('div', { class: 'maa-bp-title' }, `${instanceLabel(a.instancePath)}: ${a.component}`),
                 el('div', { class: 'maa-bp-group' }, ...a.states.map((r) => this.row(a, r))),
                 el('div', { class: 'maa-bp-group' }, ...a.transitions.map((r) => this.row(a, r))),
             ),

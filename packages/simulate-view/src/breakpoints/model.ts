@@ -6,7 +6,7 @@
  * transitions between the same two states share one entry. Pure.
  */
 import type { Breakpoint } from '@maa/protocol';
-import type { AutomatonInfo } from '../timeline/automata.js';
+import { type AutomatonInfo, instanceLabel } from '../timeline/automata.js';
 
 /** One possible breakpoint of the list. */
 export interface BreakpointRow {
@@ -90,6 +90,6 @@ export function rowKeyOf(rows: readonly AutomatonRows[], bp: Breakpoint): string
 /** The status text of a breakpoint the run paused at: `Paused at ctrl: Toasting → Serving`. */
 export function describeHit(rows: readonly AutomatonRows[], bp: Breakpoint): string {
     const inst = rows.find((a) => a.node === bp.node)?.instancePath;
-    const where = inst === undefined ? bp.node : inst === '' ? '(root)' : inst; // a root's mode automaton: instance path ''
+    const where = inst === undefined ? bp.node : instanceLabel(inst);
     return `Paused at breakpoint ${where}: ${'state' in bp ? bp.state : `${bp.from} → ${bp.to}`}`;
 }

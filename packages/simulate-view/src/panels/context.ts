@@ -3,7 +3,7 @@
  * draw, the transitions index, the run's automata table and node names, and the selected
  * transition. Selecting moves the cursor there and reveals the transition in the model.
  */
-import type { AutomatonInfo } from '../timeline/automata.js';
+import { type AutomatonInfo, instanceLabel } from '../timeline/automata.js';
 import type { TimelineStore } from '../timeline/store.js';
 import type { ProgramStep, TakenTransition, TransitionIndex } from '../timeline/transitions.js';
 import type { TimeWindow } from '../timeline/window.js';
@@ -37,5 +37,5 @@ export interface Panel {
 /** How a panel names a node: its instance path, else the node. */
 export function nodeLabel(ctx: PanelContext, node: string): string {
     const inst = ctx.instanceOf(node) ?? ctx.automata().find((a) => a.node === node)?.instancePath;
-    return inst === undefined ? node : inst === '' ? '(root)' : inst;
+    return inst === undefined ? node : instanceLabel(inst);
 }

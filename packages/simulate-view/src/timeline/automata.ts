@@ -35,6 +35,11 @@ export interface AutomatonInfo {
     transitions: AutomatonTransitionInfo[];
 }
 
+/** How the view names an automaton's instance: a root component's mode automaton has the path ''. */
+export function instanceLabel(instancePath: string): string {
+    return instancePath === '' ? '(root)' : instancePath;
+}
+
 type Fields = Record<string, unknown>;
 const isRecord = (x: unknown): x is Fields => typeof x === 'object' && x !== null && !Array.isArray(x);
 const isString = (x: unknown): x is string => typeof x === 'string';
