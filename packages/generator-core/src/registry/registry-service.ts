@@ -2,6 +2,21 @@ import { UriUtils, type AstNode, type LangiumSharedCoreServices, type URI } from
 import { discoverGenerators, type DiscoveryOptions } from './discovery.js';
 import { GeneratorRegistry, type RegisteredGenerator } from './registry.js';
 
+/**
+ * How old a discovery must be before a workspace change discards it. Discovery reads the
+ * package.json of every installed package (hundreds in a development checkout, about 20 ms):
+ * after each keystroke that was most of a small re-validation. Packages are installed by hand
+ * (npm install), so a generator installed meanwhile is found at the first change made this long
+ * after the last discovery.
+ */
+export const REDISCOVER_AFTER_MS = 2000;
+
+/** Where the service finds generators when not configured with a registry. */
+export interface RegistryServiceOptions extends DiscoveryOptions {
+    /** How old a discovery must be before a workspace change discards it (default REDISCOVER_AFTER_MS). */
+    readonly rediscoverAfterMs?: number;
+}
+
 /** The registry an application configuration document resolves its generator names against. */
 export type RegistryProvider = (documentUri: URI) => GeneratorRegistry;
 
@@ -29,18 +44,24 @@ export interface GeneratorDeclarationNode extends AstNode {
  */
 export class GeneratorRegistryService {
     private provider: RegistryProvider | undefined;
-    private options: DiscoveryOptions = {};
-    private readonly discovered = new Map<string, GeneratorRegistry>();
+    private options: RegistryServiceOptions = {};
+    /** The discovered registries by folder, with when they were discovered (Date.now()). */
+    private readonly discovered = new Map<string, { readonly registry: GeneratorRegistry; readonly at: number }>();
     private readonly declarations = new WeakMap<RegisteredGenerator, GeneratorDeclarationNode>();
 
     constructor(private readonly shared: LangiumSharedCoreServices) {
-        // Installed packages may change between builds (npm install): discover afresh after
-        // every workspace change, at most once per folder and build.
-        shared.workspace.DocumentBuilder.onUpdate(() => this.discovered.clear());
+        // Installed packages may change between builds (npm install): discover afresh after a
+        // workspace change, at most once per folder and REDISCOVER_AFTER_MS.
+        shared.workspace.DocumentBuilder.onUpdate(() => this.discardOld());
+    }
+
+    private discardOld(): void {
+        const oldest = Date.now() - (this.options.rediscoverAfterMs ?? REDISCOVER_AFTER_MS);
+        for (const [key, entry] of this.discovered) if (entry.at <= oldest) this.discovered.delete(key);
     }
 
     /** Sets where the family's `.arcapp` documents find their generators (undefined: discovery). */
-    configure(registry: GeneratorRegistry | RegistryProvider | undefined, options: DiscoveryOptions = {}): void {
+    configure(registry: GeneratorRegistry | RegistryProvider | undefined, options: RegistryServiceOptions = {}): void {
         this.provider = registry instanceof GeneratorRegistry ? () => registry : registry;
         this.options = options;
         this.discovered.clear();
@@ -51,14 +72,11 @@ export class GeneratorRegistryService {
         if (this.provider) return this.provider(documentUri);
         const dir = UriUtils.dirname(documentUri);
         const key = dir.toString();
-        let registry = this.discovered.get(key);
-        if (!registry) {
-            registry =
-                dir.scheme === 'file'
-                    ? discoverGenerators(this.shared.workspace.FileSystemProvider, dir, this.options)
-                    : GeneratorRegistry.EMPTY;
-            this.discovered.set(key, registry);
-        }
+        const known = this.discovered.get(key);
+        if (known) return known.registry;
+        const registry =
+            dir.scheme === 'file' ? discoverGenerators(this.shared.workspace.FileSystemProvider, dir, this.options) : GeneratorRegistry.EMPTY;
+        this.discovered.set(key, { registry, at: Date.now() });
         return registry;
     }
 
