@@ -75,7 +75,9 @@ export class GeneratorRegistryService {
         const known = this.discovered.get(key);
         if (known) return known.registry;
         const registry =
-            dir.scheme === 'file' ? discoverGenerators(this.shared.workspace.FileSystemProvider, dir, this.options) : GeneratorRegistry.EMPTY;
+            dir.scheme === 'file'
+                ? discoverGenerators(this.shared.workspace.FileSystemProvider, dir, this.options)
+                : GeneratorRegistry.EMPTY;
         this.discovered.set(key, { registry, at: Date.now() });
         return registry;
     }
