@@ -5,6 +5,7 @@ import { TRACE_FILE_NAME } from '@maa/protocol/formats';
 import { findSimPackage, type SimPackageMode } from '@maa/protocol/sim-package';
 import { runGenerate } from '../commands/generate.js';
 import { CliError, ExitCode } from '../errors.js';
+import { loadGenerateServices } from '../generate-loader.js';
 import type { CliIo } from '../io.js';
 import { appFileArg, modelRootOfApp } from '../roots.js';
 import { listModelFiles } from '../summary.js';
@@ -23,13 +24,15 @@ export interface PrepareOptions {
     readonly root?: string;
 }
 
-/** The platform names of an application configuration, in their order (parsed, not linked). */
-export async function appPlatforms(appFile: string): Promise<string[]> {
-    const [{ createMaaServices }, { NodeFileSystem }, { URI }] = await Promise.all([
-        import('@maa/language-server'),
-        import('langium/node'),
-        import('langium'),
-    ]);
+/**
+ * The platform names of an application configuration, in their order (parsed, not linked). It
+ * loads the generation path the generation after it uses (the bundle when current), so a cold
+ * `maa-gen sim` loads the packages once, not twice; `langium` imported after that is the one the
+ * generation path redirects to.
+ */
+export async function appPlatforms(appFile: string, env: NodeJS.ProcessEnv = process.env): Promise<string[]> {
+    const { createMaaServices, NodeFileSystem } = await loadGenerateServices(env);
+    const { URI } = await import('langium');
     const services = createMaaServices(NodeFileSystem);
     const document = services.shared.workspace.LangiumDocumentFactory.fromString<appAst.ArcAppModel>(
         readFileSync(appFile, 'utf8'),
@@ -95,7 +98,7 @@ function reportOnStderr(io: CliIo): CliIo {
  */
 export async function prepareTarget(appArg: string, options: PrepareOptions, io: CliIo): Promise<SimTarget | ExitCode> {
     const appFile = appFileArg(appArg, io.cwd);
-    const platform = choosePlatform(await appPlatforms(appFile), options.platform, appArg);
+    const platform = choosePlatform(await appPlatforms(appFile, io.env), options.platform, appArg);
     const outDir = path.resolve(io.cwd, options.out ?? path.join(path.dirname(appFile), 'generated'));
     const platformDir = path.join(outDir, platform);
     const modelRoot = options.root ? path.resolve(io.cwd, options.root) : modelRootOfApp(appFile);
