@@ -15,7 +15,7 @@ from types import ModuleType
 
 import pytest
 
-from maa_timesync.lockstep import STATES_TOPIC, port_message, port_value
+from maa_timesync.lockstep import STATES_TOPIC, TRANSITIONS_TOPIC, port_message, port_value
 
 FEATURES = Path(__file__).resolve().parents[1] / "golden" / "features"
 
@@ -80,6 +80,16 @@ def test_every_slice_shows_its_port_values_and_changed_states(features_app: Modu
     assert app.states() == {"/features/lamp": "Off"}
     app.reset()
     assert states_of(app.step({})) == {"/features/lamp": "Off"}  # a fresh first slice
+
+
+def test_transitions_name_their_source_state_when_an_action_declares_a_local_state(features_app: ModuleType) -> None:
+    """Lamp's `Dim -> Bright` declares `String state` in its action: the event still names the state
+    the transition left (the generated code kept it in a local of the same name before)."""
+    app = features_app.create_controller({})
+    first = app.step({"/features/press": {"data": True}, "/features/level": {"data": 7}})
+    events = [json.loads(str(m["data"])) for m in first[TRANSITIONS_TOPIC]]
+    assert [(e["from"], e["to"]) for e in events] == [("Off", "On.Dim"), ("On.Dim", "On.Dim"), ("On.Dim", "On.Bright")]
+    assert first["/features/lamp/log"][-1] == {"data": "brighter"}
 
 
 def test_bad_injected_values_are_refused(features_app: ModuleType) -> None:

@@ -49,7 +49,7 @@ NODE_NAMES: dict[str, str] = {
 
 #: The automata table (@maa/protocol AutomatonEntry, for the IDE): instance path -> its entry as JSON.
 AUTOMATA: dict[str, str] = {
-    "lamp": "{\"instancePath\":\"lamp\",\"node\":\"/features/lamp\",\"component\":\"feat.Lamp\",\"file\":\"feat/Lamp.arc\",\"states\":[{\"path\":\"Off\",\"line\":13},{\"path\":\"On\",\"line\":16},{\"path\":\"On.Dim\",\"line\":20},{\"path\":\"On.Bright\",\"line\":21}],\"transitions\":[{\"index\":0,\"from\":\"On\",\"to\":\"On\",\"label\":\"level [level > 5] / { presses++; log = \\\"internal\\\"; }\",\"line\":24,\"column\":7},{\"index\":1,\"from\":\"On.Dim\",\"to\":\"On.Bright\",\"label\":\"Tick / log = \\\"brighter\\\";\",\"line\":25,\"column\":7},{\"index\":2,\"from\":\"Off\",\"to\":\"On\",\"label\":\"press [press] / { presses++; }\",\"line\":27,\"column\":5},{\"index\":3,\"from\":\"On\",\"to\":\"Off\",\"label\":\"press [press]\",\"line\":28,\"column\":5}]}",
+    "lamp": "{\"instancePath\":\"lamp\",\"node\":\"/features/lamp\",\"component\":\"feat.Lamp\",\"file\":\"feat/Lamp.arc\",\"states\":[{\"path\":\"Off\",\"line\":13},{\"path\":\"On\",\"line\":16},{\"path\":\"On.Dim\",\"line\":20},{\"path\":\"On.Bright\",\"line\":21}],\"transitions\":[{\"index\":0,\"from\":\"On\",\"to\":\"On\",\"label\":\"level [level > 5] / { presses++; log = \\\"internal\\\"; }\",\"line\":24,\"column\":7},{\"index\":1,\"from\":\"On.Dim\",\"to\":\"On.Bright\",\"label\":\"Tick / { String state = \\\"brighter\\\"; log = state; }\",\"line\":26,\"column\":7},{\"index\":2,\"from\":\"Off\",\"to\":\"On\",\"label\":\"press [press] / { presses++; }\",\"line\":28,\"column\":5},{\"index\":3,\"from\":\"On\",\"to\":\"Off\",\"label\":\"press [press]\",\"line\":29,\"column\":5}]}",
 }
 
 

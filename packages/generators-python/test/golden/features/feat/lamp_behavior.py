@@ -64,18 +64,19 @@ class LampBehavior(Behavior):
             state = self._PARENT[state]
 
     def _fire(self, event: str | None) -> bool:
-        state = self._state
+        state = self._fired_in = self._state
         if state in ("On", "Dim", "Bright") and event == "level" and (self.level > 5):
             self.presses = (self.presses + 1)
             self._emit("log", "internal")
-            self._taken(0, state)
+            self._taken(0, self._fired_in)
             return True
         if state == "Dim" and event is None:
             self._exit_until("On")
-            self._emit("log", "brighter")
+            state = "brighter"
+            self._emit("log", state)
             self._entry("Bright")
             self._state = "Bright"
-            self._taken(1, state)
+            self._taken(1, self._fired_in)
             return True
         if state == "Off" and event == "press" and self.press:
             self._exit_until(None)
@@ -83,13 +84,13 @@ class LampBehavior(Behavior):
             self._entry("On")
             self._entry("Dim")
             self._state = "Dim"
-            self._taken(2, state)
+            self._taken(2, self._fired_in)
             return True
         if state in ("On", "Dim", "Bright") and event == "press" and self.press:
             self._exit_until(None)
             self._entry("Off")
             self._state = "Off"
-            self._taken(3, state)
+            self._taken(3, self._fired_in)
             return True
         return False
 

@@ -60,20 +60,20 @@ class ControllerBehavior(Behavior):
             state = self._PARENT[state]
 
     def _fire(self, event: str | None) -> bool:
-        state = self._state
+        state = self._fired_in = self._state
         if state == "Idle" and (self.distance < self.threshold):
             self._exit_until(None)
             self._emit("arm", ArmProgram.LOAD_BREAD)
             self._entry("Loading")
             self._state = "Loading"
-            self._taken(0, state)
+            self._taken(0, self._fired_in)
             return True
         if state == "Loading" and (self.armStatus == ArmStatus.DONE):
             self._exit_until(None)
             self._emit("toaster", ToasterCmd.START)
             self._entry("Toasting")
             self._state = "Toasting"
-            self._taken(1, state)
+            self._taken(1, self._fired_in)
             return True
         if state == "Toasting" and (self.color == ToastColor.GOLDEN):
             self._exit_until(None)
@@ -81,14 +81,14 @@ class ControllerBehavior(Behavior):
             self._emit("arm", ArmProgram.PICKUP_AND_DEPLOY)
             self._entry("Serving")
             self._state = "Serving"
-            self._taken(2, state)
+            self._taken(2, self._fired_in)
             return True
         if state == "Serving" and (self.armStatus == ArmStatus.DONE):
             self._exit_until(None)
             self.served = (self.served + 1)
             self._entry("Idle")
             self._state = "Idle"
-            self._taken(3, state)
+            self._taken(3, self._fired_in)
             return True
         return False
 

@@ -60,28 +60,28 @@ class ToasterControllerBehavior(Behavior):
             state = self._PARENT[state]
 
     def _fire(self, event: str | None) -> bool:
-        state = self._state
+        state = self._fired_in = self._state
         if state == "On" and ((self.cmd != ToasterCmd.STOP) and (self.slices < self.maxSlices)):
             self.slices = (self.slices + 1)
-            self._taken(0, state)
+            self._taken(0, self._fired_in)
             return True
         if state == "Off" and (self.cmd == ToasterCmd.START):
             self._exit_until(None)
             self._entry("On")
             self._state = "On"
-            self._taken(1, state)
+            self._taken(1, self._fired_in)
             return True
         if state == "On" and (self.cmd == ToasterCmd.STOP):
             self._exit_until(None)
             self._entry("Off")
             self._state = "Off"
-            self._taken(2, state)
+            self._taken(2, self._fired_in)
             return True
         if state == "On" and (self.slices >= self.maxSlices):
             self._exit_until(None)
             self._entry("Off")
             self._state = "Off"
-            self._taken(3, state)
+            self._taken(3, self._fired_in)
             return True
         return False
 

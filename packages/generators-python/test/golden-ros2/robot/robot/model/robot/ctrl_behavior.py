@@ -61,21 +61,21 @@ class CtrlBehavior(Behavior):
             state = self._PARENT[state]
 
     def _fire(self, event: str | None) -> bool:
-        state = self._state
+        state = self._fired_in = self._state
         if state == "Low" and ((self.raw * self.gain) > self.limit):
             self._exit_until(None)
             self._emit("level", self.mode)
             self.count = (self.count + 1)
             self._entry("High")
             self._state = "High"
-            self._taken(0, state)
+            self._taken(0, self._fired_in)
             return True
         if state == "High" and ((self.raw * self.gain) <= self.limit):
             self._exit_until(None)
             self._emit("level", Mode.SLOW)
             self._entry("Low")
             self._state = "Low"
-            self._taken(1, state)
+            self._taken(1, self._fired_in)
             return True
         return False
 
