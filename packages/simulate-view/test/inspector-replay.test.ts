@@ -5,37 +5,12 @@
  * again once cleared for a run.
  */
 import { afterEach, describe, expect, it } from 'vitest';
-import type { TopicMapAnswer } from '../src/backend.js';
 import { Inspector } from '../src/inspector.js';
 import { PortMap } from '../src/port-map.js';
 import { TimelineStore } from '../src/timeline/store.js';
+import { toastTopicMap } from './toast-topics.js';
 
-const map: TopicMapAnswer = {
-    app: 'toast-service/TR.arcapp',
-    platform: 'timesync',
-    mode: 'lockstep',
-    ports: [
-        {
-            portPath: 'ctrl.leverDown',
-            instancePath: 'ctrl',
-            port: 'leverDown',
-            direction: 'out',
-            topic: '/tsr/ctrl/lever_down',
-            type: 'std_msgs/msg/Bool',
-            external: false,
-        },
-        {
-            portPath: 'distance',
-            instancePath: '',
-            port: 'distance',
-            direction: 'in',
-            topic: '/tsr/distance',
-            type: 'std_msgs/msg/Float64',
-            external: true,
-        },
-    ],
-    nodes: [{ instancePath: 'ctrl', node: '/tsr/ctrl' }],
-};
+const map = toastTopicMap([{ instancePath: 'ctrl', node: '/tsr/ctrl' }]);
 
 /** A recording: the lever goes down at 1 s, the distance is first sent at 0.5 s and falls at 2 s. */
 function recording(): TimelineStore {

@@ -1,39 +1,14 @@
 import { AUTOMATON_STATES_TOPIC } from '@maa/protocol';
 import { describe, expect, it } from 'vitest';
-import type { TopicMapAnswer } from '../src/backend.js';
 import { PortMap } from '../src/port-map.js';
 import { activeStatesAt, advance, arrowDirection, diagramValuesAt, LatestOnly, replayStatusLine, timeLabel } from '../src/replay/logic.js';
 import { TimelineStore } from '../src/timeline/store.js';
+import { toastTopicMap } from './toast-topics.js';
 
-const map: TopicMapAnswer = {
-    app: 'toast-service/TR.arcapp',
-    platform: 'timesync',
-    mode: 'lockstep',
-    ports: [
-        {
-            portPath: 'ctrl.leverDown',
-            instancePath: 'ctrl',
-            port: 'leverDown',
-            direction: 'out',
-            topic: '/tsr/ctrl/lever_down',
-            type: 'std_msgs/msg/Bool',
-            external: false,
-        },
-        {
-            portPath: 'distance',
-            instancePath: '',
-            port: 'distance',
-            direction: 'in',
-            topic: '/tsr/distance',
-            type: 'std_msgs/msg/Float64',
-            external: true,
-        },
-    ],
-    nodes: [
-        { instancePath: 'ctrl', node: '/tsr/ctrl' },
-        { instancePath: 'arm', node: '/tsr/arm' },
-    ],
-};
+const map = toastTopicMap([
+    { instancePath: 'ctrl', node: '/tsr/ctrl' },
+    { instancePath: 'arm', node: '/tsr/arm' },
+]);
 
 const states = (o: Record<string, string>) => ({ data: JSON.stringify(o) });
 
