@@ -13,20 +13,14 @@ import { writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { esbuildOrSkip, NODE_ESM, workspaceInputs } from './bundle-common.mjs';
 
 const packageDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const require = createRequire(path.join(packageDir, 'package.json'));
 const serverDir = path.dirname(require.resolve('@maa/language-server/package.json'));
 const outfile = path.join(packageDir, 'dist', 'check-bundle.js');
 
-let build;
-try {
-    ({ build } = await import('esbuild'));
-} catch {
-    // Without esbuild (a devDependency), maa-gen check loads @maa/language-server unbundled.
-    console.warn('bundle-check: esbuild is not installed; maa-gen check will load the language services unbundled');
-    process.exit(0);
-}
+const build = await esbuildOrSkip('bundle-check', 'maa-gen check will load the language services unbundled');
 
 const result = await build({
     stdin: {
@@ -38,26 +32,13 @@ const result = await build({
         sourcefile: 'check-entry.js',
         loader: 'js',
     },
-    bundle: true,
-    platform: 'node',
-    format: 'esm',
-    target: 'node20',
+    ...NODE_ESM,
     outfile,
     absWorkingDir: packageDir,
-    metafile: true,
-    legalComments: 'none',
-    logLevel: 'warning',
-    // Some dependencies are CommonJS and call require(): give the ES module bundle one.
-    banner: {
-        js: "import { createRequire as __maaCreateRequire } from 'node:module';\nconst require = __maaCreateRequire(import.meta.url);",
-    },
 });
 
 // The workspace modules inside the bundle (not those of node_modules), relative to dist/, so the
 // loader can tell a bundle older than a rebuild of one of them.
-const inputs = Object.keys(result.metafile.inputs)
-    .filter((input) => input !== 'check-entry.js' && !input.split(/[\\/]/).includes('node_modules'))
-    .map((input) => path.relative(path.dirname(outfile), path.resolve(packageDir, input)).split(path.sep).join('/'))
-    .sort();
+const inputs = workspaceInputs(result.metafile, packageDir, path.dirname(outfile), ['check-entry.js']);
 writeFileSync(path.join(packageDir, 'dist', 'check-bundle.inputs.json'), `${JSON.stringify({ inputs }, null, 1)}\n`);
 console.log(`bundle-check: ${path.relative(packageDir, outfile)} (${Object.keys(result.metafile.inputs).length} modules)`);

@@ -15,6 +15,7 @@
 import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { esbuildOrSkip, NODE_ESM, workspaceInputs } from './bundle-common.mjs';
 
 const packageDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const outdir = path.join(packageDir, 'dist', 'generate-bundle');
@@ -37,13 +38,7 @@ const SHARED = [
 /** What maa-gen itself imports besides the shared packages: the family's services (not the whole language server). */
 const FAMILY = fileURLToPath(new URL('family.js', import.meta.resolve('@maa/language-server')));
 
-let build;
-try {
-    ({ build } = await import('esbuild'));
-} catch {
-    console.warn('bundle-generate: esbuild is not installed; maa-gen generate will load the packages unbundled');
-    process.exit(0);
-}
+const build = await esbuildOrSkip('bundle-generate', 'maa-gen generate will load the packages unbundled');
 
 /** `@maa/generator-core/node` -> `maa-generator-core--node` (a file name). */
 const entryName = (specifier) => specifier.replace(/^@/, '').replace(/\//, '-').replace(/\//g, '--');
@@ -53,31 +48,18 @@ mkdirSync(outdir, { recursive: true });
 const entries = SHARED.map((specifier) => ({ specifier, in: fileURLToPath(import.meta.resolve(specifier)), out: entryName(specifier) }));
 const result = await build({
     entryPoints: [...entries.map((e) => ({ in: e.in, out: e.out })), { in: FAMILY, out: 'family' }],
-    bundle: true,
+    ...NODE_ESM,
     splitting: true,
-    platform: 'node',
-    format: 'esm',
-    target: 'node20',
     outdir,
     chunkNames: 'chunk-[hash]',
     absWorkingDir: packageDir,
-    metafile: true,
-    legalComments: 'none',
-    logLevel: 'warning',
-    // Some dependencies are CommonJS and call require(): give each ES module of the bundle one.
-    banner: {
-        js: "import { createRequire as __maaCreateRequire } from 'node:module';\nconst require = __maaCreateRequire(import.meta.url);",
-    },
 });
 
 const modules = Object.fromEntries(entries.map((e) => [e.specifier, `${e.out}.js`]));
 writeFileSync(path.join(outdir, 'modules.json'), `${JSON.stringify({ family: 'family.js', modules }, null, 1)}\n`);
 // The workspace modules inside the bundle (not those of node_modules), relative to the bundle's
 // folder, so the loader can tell a bundle older than a rebuild of one of them.
-const inputs = Object.keys(result.metafile.inputs)
-    .filter((input) => !input.split(/[\\/]/).includes('node_modules'))
-    .map((input) => path.relative(outdir, path.resolve(packageDir, input)).split(path.sep).join('/'))
-    .sort();
+const inputs = workspaceInputs(result.metafile, packageDir, outdir);
 writeFileSync(path.join(outdir, 'inputs.json'), `${JSON.stringify({ inputs }, null, 1)}\n`);
 const outputs = Object.keys(result.metafile.outputs).filter((o) => o.endsWith('.js'));
 console.log(
