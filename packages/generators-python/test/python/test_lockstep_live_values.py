@@ -8,29 +8,18 @@ from __future__ import annotations
 
 import importlib
 import json
-import sys
 from collections.abc import Iterator
-from pathlib import Path
 from types import ModuleType
 
 import pytest
+from conftest import import_golden_app
 
 from maa_timesync.lockstep import STATES_TOPIC, TRANSITIONS_TOPIC, port_message, port_value
-
-FEATURES = Path(__file__).resolve().parents[1] / "golden" / "features"
 
 
 @pytest.fixture
 def features_app() -> Iterator[ModuleType]:
-    sys.path.insert(0, str(FEATURES))
-    for name in [m for m in sys.modules if m == "maa_app" or m == "feat" or m.startswith("feat.")]:
-        del sys.modules[name]
-    try:
-        yield importlib.import_module("maa_app")
-    finally:
-        sys.path.remove(str(FEATURES))
-        for name in [m for m in sys.modules if m == "maa_app" or m == "feat" or m.startswith("feat.")]:
-            del sys.modules[name]
+    yield from import_golden_app("features", "feat")
 
 
 def states_of(out: dict[str, list[dict[str, object]]]) -> dict[str, str] | None:

@@ -2,14 +2,12 @@
 
 from __future__ import annotations
 
-import importlib
 import json
-import sys
 from collections.abc import Iterator, Mapping
-from pathlib import Path
 from types import ModuleType
 
 import pytest
+from conftest import import_golden_app
 
 from maa_behavior import Behavior
 from maa_timesync import TICK, AtomicComponent, ComponentType, ModeComponent, System
@@ -206,22 +204,10 @@ def test_lockstep_reports_mode_transitions_as_the_instance_transitions() -> None
     assert TRANSITIONS_TOPIC not in app.step({})
 
 
-GEARBOX = Path(__file__).resolve().parents[1] / "golden" / "modes"
-
-
 @pytest.fixture
 def gearbox_app() -> Iterator[ModuleType]:
     """The golden timesync build of the modes fixture (gear.Gearbox) through its generated app module."""
-    sys.path.insert(0, str(GEARBOX))
-    drop = [m for m in sys.modules if m == "maa_app" or m == "gear" or m.startswith("gear.")]
-    for name in drop:
-        del sys.modules[name]
-    try:
-        yield importlib.import_module("maa_app")
-    finally:
-        sys.path.remove(str(GEARBOX))
-        for name in [m for m in sys.modules if m == "maa_app" or m == "gear" or m.startswith("gear.")]:
-            del sys.modules[name]
+    yield from import_golden_app("modes", "gear")
 
 
 def test_the_generated_build_reports_its_mode_transitions_by_their_table_index(gearbox_app: ModuleType) -> None:
