@@ -8,21 +8,21 @@ import { packageDir } from './python-env.js';
 // templates/timesync): exact output of small views (the golden tests check whole builds), and
 // that every template file is used and ships with the package.
 describe('Python templates', () => {
-    it('render a mode transition body: unused arguments deleted, transitions in order, None last', () => {
+    it('render a mode transition body: unused arguments deleted, transitions in order with their indexes, None last', () => {
         expect(
             renderLines('timesync/mode-transition.njk', {
                 unused: ['trigger', 'params'],
                 transitions: [
-                    { conditions: ['mode == "A"', '(inputs.get("go") == 1)'], target: 'B' },
-                    { conditions: ['mode == "B"'], target: 'A' },
+                    { index: 0, conditions: ['mode == "A"', '(inputs.get("go") == 1)'], target: 'B' },
+                    { index: 1, conditions: ['mode == "B"'], target: 'A' },
                 ],
             }),
         ).toEqual([
             'del trigger, params',
             'if mode == "A" and (inputs.get("go") == 1):',
-            '    return "B"',
+            '    return 0, "B"',
             'if mode == "B":',
-            '    return "A"',
+            '    return 1, "A"',
             'return None',
         ]);
         expect(renderLines('timesync/mode-transition.njk', { unused: [], transitions: [] })).toEqual(['return None']);
