@@ -156,6 +156,21 @@ describe('the state timeline panel', () => {
         ).toBe(true);
     });
 
+    it("a click in a row between marks shows that row's transition taken last by then, the cursor staying there", async () => {
+        const { q, drawn, store, reveals } = mount();
+        await drawn();
+        const row = q('states-row').find((r) => r.dataset['node'] === CTRL)!;
+        const track = row.querySelector('.maa-states-track')!;
+        Object.defineProperty(track, 'getBoundingClientRect', { value: () => ({ left: 0, top: 0, width: 400, height: 20 }) });
+        const [t0, t1] = windowOf(mounted[0]!);
+        const x = ((3 - t0!) / (t1! - t0!)) * 400;
+        for (const type of ['pointerdown', 'pointerup'])
+            track.dispatchEvent(new PointerEvent(type, { bubbles: true, button: 0, clientX: x, pointerId: 1 }));
+        expect(store.cursor).toBeCloseTo(3, 6);
+        // ctrl's Toasting -> Serving at 2.5 s, not the arm's transition at the same time
+        expect(reveals.map((r) => [r.line, r.highlight?.state])).toEqual([[20, 'Serving']]);
+    });
+
     it('a transition of an automaton the run does not describe moves the cursor but reveals nothing', async () => {
         const { q, drawn, store, reveals } = mount();
         await drawn();
@@ -225,6 +240,26 @@ describe('the plots panel', () => {
         await drawn();
         expect(q('plot-series')).toHaveLength(0);
         expect(panels.element.querySelector('.maa-plot-line')).toBeNull();
+    });
+
+    it('a click on a point of a plot sets the cursor there and shows the transition taken last by then', async () => {
+        const { panels, drawn, store, reveals } = mount();
+        panels.show('plots');
+        await drawn();
+        const drawing = panels.element.querySelector('svg.maa-plot-svg')!;
+        Object.defineProperty(drawing, 'getBoundingClientRect', { value: () => ({ left: 0, top: 0, width: 400, height: 140 }) });
+        const [t0, t1] = windowOf(panels);
+        const xAt = (t: number) => ((t - t0!) / (t1! - t0!)) * 400;
+        // at 2 s: ctrl went Idle -> Toasting at 1 s, the arm has not moved yet
+        for (const type of ['pointerdown', 'pointerup'])
+            drawing.dispatchEvent(new PointerEvent(type, { bubbles: true, button: 0, clientX: xAt(2), pointerId: 1 }));
+        expect(store.cursor).toBeCloseTo(2, 6);
+        expect(reveals.map((r) => [r.line, r.highlight?.transition])).toEqual([[18, { from: 'Idle', to: 'Toasting', index: 0 }]]);
+        // before any transition: the cursor moves, nothing is shown
+        for (const type of ['pointerdown', 'pointerup'])
+            drawing.dispatchEvent(new PointerEvent(type, { bubbles: true, button: 0, clientX: xAt(0.5), pointerId: 1 }));
+        expect(store.cursor).toBeCloseTo(0.5, 6);
+        expect(reveals).toHaveLength(1);
     });
 
     it('the wheel zooms the time window (and keeps the page from scrolling), a drag pans it', async () => {

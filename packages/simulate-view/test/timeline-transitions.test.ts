@@ -2,7 +2,14 @@ import { describe, expect, it } from 'vitest';
 import { findTransition, parseAutomata, type AutomatonInfo } from '../src/timeline/automata.js';
 import { TimelineStore } from '../src/timeline/store.js';
 import { AUTOMATON_STATES_TOPIC, PROGRAM_STEPS_TOPIC, TRANSITIONS_TOPIC } from '@maa/protocol';
-import { TransitionIndex, parseProgramStep, parseTransitionEvent, stateAt, stepTransition } from '../src/timeline/transitions.js';
+import {
+    TransitionIndex,
+    lastAtOrBefore,
+    parseProgramStep,
+    parseTransitionEvent,
+    stateAt,
+    stepTransition,
+} from '../src/timeline/transitions.js';
 
 const CTRL = '/toast_service_robot/ctrl';
 const ARM = '/toast_service_robot/arm';
@@ -179,5 +186,14 @@ describe('stateAt', () => {
 
     it('names none before the first band', () => {
         expect(stateAt(history, 0.5)).toBeUndefined();
+    });
+
+    it('finds the transition taken last at or before a time, none before the first', () => {
+        const list = [1, 2.5, 2.5, 4].map((t, i) => ({ t, node: '/n', from: `S${i}`, to: `S${i + 1}` }));
+        expect(lastAtOrBefore(list, 3)).toBe(list[2]);
+        expect(lastAtOrBefore(list, 2.5)).toBe(list[2]);
+        expect(lastAtOrBefore(list, 10)).toBe(list[3]);
+        expect(lastAtOrBefore(list, 0.5)).toBeUndefined();
+        expect(lastAtOrBefore([], 1)).toBeUndefined();
     });
 });

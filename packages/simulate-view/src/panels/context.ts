@@ -20,6 +20,12 @@ export interface PanelContext {
     readonly selected: TakenTransition | undefined;
     /** Selects a transition: the cursor moves to its time and the model shows it. */
     select(t: TakenTransition): void;
+    /**
+     * A click at time `t` (a plot, a state row): the cursor moves there, and the transition taken
+     * last by then (of `node`, else of the selected transition's component, else of any) is
+     * selected and shown in the model; the cursor stays at `t`.
+     */
+    pointAt(t: number, node?: string): void;
     /** Moves the cursor to a program step and shows its line when known. */
     selectStep(step: ProgramStep): void;
     /** Something the panels show changed (zoom, pan, selection): draw again. */

@@ -11,7 +11,7 @@ import { el } from '../dom.js';
 import type { RevealMessage } from '../host-messages.js';
 import type { AutomatonInfo } from '../timeline/automata.js';
 import type { TimelineStore } from '../timeline/store.js';
-import { TransitionIndex, type ProgramStep, type TakenTransition } from '../timeline/transitions.js';
+import { lastAtOrBefore, TransitionIndex, type ProgramStep, type TakenTransition } from '../timeline/transitions.js';
 import { TimeWindow, formatTime } from '../timeline/window.js';
 import type { Panel, PanelContext } from './context.js';
 import { LogPanel } from './log-panel.js';
@@ -190,6 +190,7 @@ export class Panels implements Disposable {
                 return self.selected;
             },
             select: (t) => self.select(t),
+            pointAt: (t, node) => self.pointAt(t, node),
             selectStep: (s) => self.selectStep(s),
             redraw: () => self.redraw(),
         };
@@ -201,6 +202,18 @@ export class Panels implements Disposable {
         this.keepInWindow(t.t);
         const message = revealTransition(this.automata, t);
         if (message) this.host.reveal?.(message);
+        this.redraw();
+    }
+
+    private pointAt(t: number, node?: string): void {
+        this.store.cursor = t;
+        const of = node ?? this.selected?.node;
+        const last = lastAtOrBefore(of ? this.index.transitions(of) : this.index.allTransitions(), t);
+        if (last && last !== this.selected) {
+            this.selected = last;
+            const message = revealTransition(this.automata, last);
+            if (message) this.host.reveal?.(message);
+        }
         this.redraw();
     }
 

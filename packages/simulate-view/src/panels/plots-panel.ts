@@ -1,8 +1,8 @@
 /**
  * The plots panel: plots of numeric message fields over simulated time, several series per plot
  * (picked by topic and field), all sharing the time window (wheel: zoom, drag: pan) and the time
- * cursor (click: set it; "Live" in the time bar follows again). The legend shows each series'
- * value at the cursor.
+ * cursor (click: set it, and show the transition taken last by then; "Live" in the time bar
+ * follows again). The legend shows each series' value at the cursor.
  */
 import { SVG_NS, el } from '../dom.js';
 import { fieldValue, numericFields, seriesPath, seriesPoints, valueRange, type SeriesKey } from '../timeline/series.js';
@@ -162,7 +162,7 @@ export class PlotsPanel implements Panel {
                 'div',
                 { class: 'maa-panel-toolbar' },
                 add,
-                el('span', { class: 'maa-panel-hint' }, 'wheel: zoom · drag: pan · click: set the cursor'),
+                el('span', { class: 'maa-panel-hint' }, 'wheel: zoom · drag: pan · click: the cursor and the transition taken by then'),
             ),
             this.list,
         );

@@ -103,13 +103,13 @@ export class StatesPanel implements Panel {
             this.focusNode = node;
             this.ctx.redraw();
         });
-        attachTimeInput(track, this.ctx, (ev) => {
+        attachTimeInput(track, this.ctx, (ev, t) => {
             const hit = (ev.target as HTMLElement | null)?.closest?.('[data-transition]') as HTMLElement | null;
             const i = hit ? Number(hit.dataset['transition']) : Number.NaN;
             const taken = this.ctx.index.transitions(node)[i];
-            if (!taken) return false;
             this.focusNode = node;
-            this.ctx.select(taken);
+            if (taken) this.ctx.select(taken);
+            else this.ctx.pointAt(t, node); // a point in the row: the row's transition taken by then
             return true;
         });
         return row;

@@ -1,7 +1,8 @@
 /**
  * The pointer and wheel input of a time-based drawing (plots, state timeline): the wheel zooms
- * around the pointer's time, a drag pans, a click (no drag) sets the cursor, or does what the
- * panel's `click` says for the element under the pointer.
+ * around the pointer's time, a drag pans, a click (no drag) points at its time (the cursor, and the
+ * transition taken last by then: PanelContext.pointAt), or does what the panel's `click` says for
+ * the element under the pointer.
  */
 import { tOf } from '../timeline/window.js';
 import type { PanelContext } from './context.js';
@@ -46,7 +47,7 @@ export function attachTimeInput(target: HTMLElement | SVGElement, ctx: PanelCont
         if (!was || was.moved) return;
         const t = timeAt(e.clientX);
         if (click?.(e, t)) return;
-        ctx.store.cursor = t;
+        ctx.pointAt(t);
     });
     target.addEventListener('pointercancel', () => {
         drag = undefined;

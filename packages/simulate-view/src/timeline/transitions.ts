@@ -177,6 +177,12 @@ export class TransitionIndex {
     }
 }
 
+/** The transition taken last at or before `t` in a time-ordered list, `undefined` before the first. */
+export function lastAtOrBefore(list: readonly TakenTransition[], t: number): TakenTransition | undefined {
+    for (let j = list.length - 1; j >= 0; j--) if (list[j]!.t <= t) return list[j];
+    return undefined;
+}
+
 /**
  * The transition after (`+1`) or before (`-1`) the selected one in a time-ordered list (from time
  * `t` when none is selected or it is not in the list), `undefined` at either end.
