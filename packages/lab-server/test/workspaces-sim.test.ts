@@ -151,11 +151,13 @@ describe.skipIf(!haveSim)(`students’ simulations${haveSim ? '' : ` (skipped: $
     }, 300_000);
 
     it('ends the simulation when its student’s session expires', async () => {
-        const short = await lab.serverWith({ sessionHours: 20 / 3600, workspaces: { sweepMs: 200 } });
+        // a session of 60 s: long enough for the start and the connection on a loaded machine (a
+        // fresh-clone run at 20 s saw the connection refused, the session already over)
+        const short = await lab.serverWith({ sessionHours: 60 / 3600, workspaces: { sweepMs: 200 } });
         const bob = await lab.as('bob', short);
         const groups = await start(bob, 'bob', short);
         const socket = await connect(bob, 'bob', short);
-        await until(() => gone(groups), 'the simulation to end after the session expired', 120_000);
+        await until(() => gone(groups), 'the simulation to end after the session expired', 180_000);
         expect((await bob.send(`${lab.ws('bob')}/sim/status`)).status).toBe(401);
         await until(async () => /session expired/.test(await latestDetails('bob')), 'the recorded result');
         socket.destroy();
