@@ -77,10 +77,33 @@ export class GuardedFadeAnimation extends FadeAnimation {
     }
 }
 
-/** Sprotty's model update, with its fades made safe against elements that are already gone. */
+/**
+ * Above this many elements an update is not animated: Sprotty renders the whole diagram in every
+ * frame of an animation (250 ms, about 15 frames), and a frame of a diagram this large takes
+ * longer than a frame (issue 18: the System of 200 components, 300 ms per frame while typing).
+ */
+export const ANIMATED_UPDATE_MAX_ELEMENTS = 600;
+
+/** How many elements a model schema has, counting up to `limit` + 1 at most. */
+export function countElements(root: { children?: readonly unknown[] } | undefined, limit: number): number {
+    let count = 0;
+    const stack: unknown[] = root ? [root] : [];
+    while (stack.length > 0 && count <= limit) {
+        const el = stack.pop() as { children?: readonly unknown[] };
+        count++;
+        for (const c of el.children ?? []) stack.push(c);
+    }
+    return count;
+}
+
+/**
+ * Sprotty's model update, with its fades made safe against elements that are already gone, and
+ * not animated for large models ({@link ANIMATED_UPDATE_MAX_ELEMENTS}).
+ */
 export class GuardedUpdateModelCommand extends UpdateModelCommand {
     constructor(action: UpdateModelAction) {
-        super(action);
+        const large = countElements(action.newRoot, ANIMATED_UPDATE_MAX_ELEMENTS) > ANIMATED_UPDATE_MAX_ELEMENTS;
+        super(large && action.animate !== false ? { ...action, animate: false } : action);
     }
     protected override createAnimations(
         data: Parameters<UpdateModelCommand['createAnimations']>[0],
