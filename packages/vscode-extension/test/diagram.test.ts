@@ -37,7 +37,7 @@ import {
 import { contributions } from '../src/contributions.js';
 import { iconFiles, languageIconOf } from '../src/diagram/contributions.js';
 import { contentSecurityPolicy, newNonce, webviewHtml } from '../src/diagram/html.js';
-import { highlightMessage, parseFromWebview } from '../src/diagram/protocol.js';
+import { highlightMessage, packServerAction, parseFromWebview, unpackServerAction } from '../src/diagram/protocol.js';
 import { DiagramRelay } from '../src/diagram/relay.js';
 import { componentAt, inAutomaton, packageOf, selectionSource, type SymbolNode, targetAt } from '../src/diagram/selection.js';
 
@@ -274,6 +274,29 @@ describe('the webview messages and page', () => {
         ]) {
             expect(parseFromWebview(bad)).toBeUndefined();
         }
+    });
+
+    it("carries a server model's root as JSON text beside its action, and other actions unchanged (issue 18)", () => {
+        const root = {
+            type: 'graph',
+            id: 'g',
+            revision: 3,
+            children: [{ type: 'node:component', id: 'root.a', size: { width: 10, height: 5 } }],
+        };
+        for (const kind of ['setModel', 'updateModel']) {
+            const message = { clientId: 'maa-diagram-1', action: { kind, newRoot: root, animate: true } } as unknown as ActionMessage;
+            const packed = packServerAction(message);
+            // the posted message holds no object tree of the model: the text is what is copied into the webview
+            expect(packed.model).toBe(JSON.stringify(root));
+            expect(packed.message.action).toEqual({ kind, animate: true });
+            expect(packed.message.clientId).toBe('maa-diagram-1');
+            // a message listener in the webview still sees which action it is
+            expect(packed.message.action.kind).toBe(kind);
+            expect(unpackServerAction(structuredClone(packed))).toEqual(message);
+        }
+        const select: ActionMessage = { clientId: 'maa-diagram-1', action: SelectAction.create({ selectedElementsIDs: ['a'] }) };
+        expect(packServerAction(select)).toEqual({ type: 'action', message: select });
+        expect(unpackServerAction({ type: 'action', message: select })).toBe(select);
     });
 
     it('turns the argument of maa.diagram.highlightTrace into the highlight message, undefined into clear, and rejects others', () => {

@@ -7,7 +7,7 @@ import type { DiagramTarget, TextPosition } from '@maa/diagram-view/contracts';
 import * as vscode from 'vscode';
 import { newNonce, webviewHtml } from './html.js';
 import { diagramIcon } from './icons.js';
-import { type FromWebview, parseFromWebview, type ToWebview } from './protocol.js';
+import { type FromWebview, packServerAction, parseFromWebview, type ToWebview } from './protocol.js';
 import type { DiagramRelay } from './relay.js';
 import { selectionSource } from './selection.js';
 
@@ -50,7 +50,7 @@ export class DiagramPanel implements vscode.Disposable {
             scriptUri: webview.asWebviewUri(vscode.Uri.joinPath(webviewRoot, 'diagram.js')).toString(),
             styleUri: webview.asWebviewUri(vscode.Uri.joinPath(webviewRoot, 'diagram.css')).toString(),
         });
-        relay.addPanel(this.id, (message) => this.post({ type: 'action', message }));
+        relay.addPanel(this.id, (message) => this.post(packServerAction(message)));
         this.subscriptions.push(
             webview.onDidReceiveMessage((data: unknown) => {
                 const message = parseFromWebview(data);

@@ -1,12 +1,13 @@
 /**
  * The messages between the diagram webview (webview/main.ts) and the extension (panel.ts), in
- * both directions through `postMessage`. The Sprotty action messages themselves travel unchanged:
- * the extension relays them between the webview and the language server's `diagram/accept`
- * notifications (relay.ts).
+ * both directions through `postMessage`. The Sprotty action messages travel unchanged but for
+ * the models the server sends (`setModel`, `updateModel`): their root travels as JSON text beside
+ * the action ({@link packServerAction}). The extension relays the messages between the webview and
+ * the language server's `diagram/accept` notifications (relay.ts).
  */
 import type { DiagramHighlight, DiagramTarget, TextPosition } from '@maa/diagram-view/contracts';
 import { parseHighlight } from '@maa/diagram-view/highlight';
-import type { ActionMessage } from 'sprotty-protocol';
+import type { Action, ActionMessage } from 'sprotty-protocol';
 
 /** Webview → extension. */
 export type FromWebview =
@@ -23,8 +24,11 @@ export type FromWebview =
 export type ToWebview =
     /** Show (or switch to) a diagram. */
     | { readonly type: 'show'; readonly target: DiagramTarget }
-    /** An action message from the diagram server (a `diagram/accept` notification for this webview's client). */
-    | { readonly type: 'action'; readonly message: ActionMessage }
+    /**
+     * An action message from the diagram server (a `diagram/accept` notification for this
+     * webview's client); a model's root as JSON text in `model`, not in the action.
+     */
+    | { readonly type: 'action'; readonly message: ActionMessage; readonly model?: string }
     /** The editor's cursor moved: select the innermost element there. */
     | { readonly type: 'revealPosition'; readonly uri: string; readonly position: TextPosition }
     /** Live port values by port path (`"ctrl.arm"`); an empty list clears them. */
@@ -43,6 +47,29 @@ export type ToWebview =
 export function highlightMessage(argument: unknown): Extract<ToWebview, { type: 'highlight' }> {
     const highlight = parseHighlight(argument);
     return highlight ? { type: 'highlight', highlight } : { type: 'highlight' };
+}
+
+type ServerAction = Extract<ToWebview, { type: 'action' }>;
+
+/**
+ * A server's action message for the webview, a model's root (`newRoot` of `setModel` and
+ * `updateModel`) taken out as JSON text: the way into the webview serializes and copies the
+ * message three times (the extension host's call to the workbench, the workbench's post to the
+ * webview's frame, that frame's to the inner one), and a text of the System diagram of 200
+ * components is far cheaper to serialize and copy than its object tree (issue 18: keystroke →
+ * diagram).
+ */
+export function packServerAction(message: ActionMessage): ServerAction {
+    const action = message.action as Action & { newRoot?: unknown };
+    if ((action.kind !== 'setModel' && action.kind !== 'updateModel') || action.newRoot === undefined) return { type: 'action', message };
+    const { newRoot, ...rest } = action;
+    return { type: 'action', message: { ...message, action: rest }, model: JSON.stringify(newRoot) };
+}
+
+/** The action message {@link packServerAction} packed, with its model's root again. */
+export function unpackServerAction(packed: ServerAction): ActionMessage {
+    if (packed.model === undefined) return packed.message;
+    return { ...packed.message, action: { ...packed.message.action, newRoot: JSON.parse(packed.model) } as Action };
 }
 
 function isRecord(value: unknown): value is Record<string, unknown> {

@@ -7,7 +7,7 @@
  */
 import { type DiagramHost, type Disposable, mountDiagram } from '@maa/diagram-view';
 import type { ActionMessage } from 'sprotty-protocol';
-import type { FromWebview, ToWebview } from '../protocol.js';
+import { type FromWebview, type ToWebview, unpackServerAction } from '../protocol.js';
 import './webview.css';
 
 interface VsCodeApi {
@@ -48,9 +48,11 @@ window.addEventListener('message', (event: MessageEvent<ToWebview>) => {
         case 'show':
             view.show(message.target);
             break;
-        case 'action':
-            for (const handler of [...actionHandlers]) handler(message.message);
+        case 'action': {
+            const action = unpackServerAction(message);
+            for (const handler of [...actionHandlers]) handler(action);
             break;
+        }
         case 'revealPosition':
             view.revealPosition(message.uri, message.position);
             break;
