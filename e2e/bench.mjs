@@ -13,7 +13,9 @@
 //
 // The IDE is VS Code's workbench with the MontiArc extension; the diagram is the extension's webview.
 //
-//   node e2e/bench.mjs [--runs N] [--components N] [--json] [--no-sim] [--run-seconds N] [--profile]
+//   node e2e/bench.mjs [--runs N] [--loads N] [--components N] [--json] [--no-sim] [--no-generate] [--no-large]
+//                      [--run-seconds N] [--profile]
+// (--loads N: N cold and N warm loads per workspace; the default is the runs, between 2 and 3)
 import { readdirSync, statSync, readFileSync, writeFileSync, mkdirSync } from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
@@ -31,6 +33,8 @@ const SIMULATE = !args.includes('--no-sim');
 const RUN_SECONDS = Number(option('--run-seconds', '20'));
 const PROFILE = args.includes('--profile');
 const LARGE = !args.includes('--no-large');
+const GENERATE = !args.includes('--no-generate');
+const LOADS = option('--loads', undefined);
 const PAGE = 'index.html';
 
 const progress = (line) => process.stderr.write(`bench: ${line}\n`);
@@ -183,7 +187,7 @@ async function benchWorkspace(label, workspaceFrom, startFile, edits, browser, a
     try {
         const { page } = browser;
         await ide.login(page);
-        const loads = Math.max(2, Math.min(RUNS, 3));
+        const loads = LOADS ? Math.max(1, Number(LOADS)) : Math.max(2, Math.min(RUNS, 3));
         const network = await page.context().newCDPSession(page);
         for (let i = 0; i < 2 * loads; i++) {
             // the first half cold (the HTTP cache emptied), the second half warm
@@ -219,12 +223,12 @@ async function benchWorkspace(label, workspaceFrom, startFile, edits, browser, a
                 await page.waitForTimeout(1500);
             }
             const runs = [];
-            const typingProfile = PROFILE && edit.name === 'systemDiagram' ? await startProfile(page) : undefined;
+            const typingProfile = PROFILE && edit.name !== 'diagnostics' ? await startProfile(page) : undefined;
             for (let i = 0; i < (edit.runs ?? RUNS); i++) {
                 runs.push(await longTasks.phase('typing', page, () => keystroke(page, edit)));
                 progress(`${label}: ${edit.name} ${i + 1}: ${JSON.stringify(runs.at(-1))}`);
             }
-            if (typingProfile) await stopProfile(typingProfile, 'bench-typing-system');
+            if (typingProfile) await stopProfile(typingProfile, `bench-typing-${label.split(/\W/)[0]}-${edit.name}`);
             result.edits[edit.name] = runs;
         }
         if (after) await after(page, result, ide);
@@ -403,8 +407,10 @@ let servedBundle;
 let sim;
 /** The example's steps after its loads and keystrokes: generation, a simulation, the bundle as served. */
 async function exampleAfter(page, result, ide) {
-    result.generationMs = await longTasks.phase('generation', page, () => generation(page));
-    progress(`generation: ${result.generationMs} ms`);
+    if (GENERATE) {
+        result.generationMs = await longTasks.phase('generation', page, () => generation(page));
+        progress(`generation: ${result.generationMs} ms`);
+    }
     if (SIMULATE) {
         sim = {};
         const cdp = PROFILE ? await startProfile(page) : undefined;
