@@ -25,6 +25,7 @@ import {
 import { SelectAction } from 'sprotty-protocol';
 import { ClearHiddenCommand, GuardedUpdateModelCommand, RedrawCommand } from './commands.js';
 import { ComponentNode, ConnectorEdge, MaaGraph, MaaPort, StateNode, TransitionEdge } from './model.js';
+import { CachedSModelFactory } from './model-factory.js';
 import { MaaDiagramProxy } from './proxy.js';
 import { StandaloneSvgExporter } from './svg-exporter.js';
 import type { createViews } from './views.js';
@@ -47,6 +48,7 @@ export function createDiagramContainer(
         const context = { bind, unbind, isBound, rebind };
         bind(TYPES.ModelSource).to(MaaDiagramProxy).inSingletonScope();
         rebind(TYPES.SvgExporter).to(StandaloneSvgExporter).inSingletonScope();
+        rebind(TYPES.IModelFactory).to(CachedSModelFactory).inSingletonScope();
         const fixed = { disable: [moveFeature, popupFeature] };
         const fixedEdge = { disable: [moveFeature, editFeature, popupFeature] };
         configureModelElement(context, 'graph', MaaGraph, views.GraphView);
