@@ -75,9 +75,9 @@ describe('maa-gen sim: usage', () => {
     });
 });
 
-// The first run goes through the bin (its exit code and output as a user sees them); the later ones
-// run maa-gen in the test's warm worker thread (runCliInProcess), which saves loading the language
-// services for each (the simulator is a process of its own either way).
+// The first run goes through the bin (its exit code and output as a user sees them); the later ones,
+// the ROS 2 run too, run maa-gen in the test's warm worker thread (runCliInProcess), which saves
+// loading the language services for each (the simulator is a process of its own either way).
 describe.skipIf(!haveSim)('maa-gen sim: the toast service on the timesync platform (lock-step)', () => {
     let dir: string;
     beforeAll(() => {
@@ -170,7 +170,8 @@ describe.skipIf(!haveSim || !haveRos2)('maa-gen sim: the toast service on the ro
 
     it('installs the interface package into the ROS 2 environment, runs the nodes until the goal and records their port topics', async () => {
         const args = ['sim', 'TR.arcapp', '--platform', 'rospython', '--until-goal', '--duration', '90', '--record', 'ros2.mcap'];
-        const r = await runCli(args, dir);
+        // in the warm worker thread: the bin's exit code and output are the first timesync run's test
+        const r = await runCliInProcess(args, dir);
         expect(r.code, r.stderr).toBe(0);
         expect(r.stderr).toContain('maa-gen: installing the interface package toast_service_robot_interfaces');
         expect(r.stdout).toMatch(/^rospython \(ros2 mode\): goal reached\n/);
