@@ -22,6 +22,7 @@ import { ExpressionTyper } from './types/expression-typer.js';
 import { TypeRelations } from './types/type-relations.js';
 import { AdlLinker, AdlValidationRegistry } from './validation/check-failures.js';
 import { AdlDocumentValidator } from './validation/document-validator.js';
+import { AdlReferenceDescriptionProvider } from './workspace/reference-descriptions.js';
 import { ReservedNames } from './validation/reserved-names.js';
 
 /** Services the host language adds to every language of a family (arc, cd, behavior languages). */
@@ -89,6 +90,9 @@ export const AdlModule: Module<AdlServices, PartialLangiumCoreServices & AdlAdde
         ScopeComputation: (s) => new AdlScopeComputation(s),
         ScopeProvider: (s) =>
             new AdlScopeProvider(s.maa.NameResolver, s.workspace.AstNodeDescriptionProvider, s.shared, () => s.maa.ExpressionTyper),
+    },
+    workspace: {
+        ReferenceDescriptionProvider: (s) => new AdlReferenceDescriptionProvider(s),
     },
     validation: {
         DocumentValidator: (s) => new AdlDocumentValidator(s),

@@ -51,6 +51,26 @@ describe('an exception in a check becomes one internal/check-failed diagnostic',
         expect(log.mock.calls.filter((c) => String(c[0]).includes('BrokenChecks.checkPorts'))).toHaveLength(1);
     });
 
+    test('an asynchronous check that rejects is reported the same way', async () => {
+        vi.spyOn(console, 'error').mockImplementation(() => undefined);
+        const asyncBench = new ModelTestBench(() => {
+            const s = createAdlServices(EmptyFileSystem);
+            const broken = new BrokenChecks();
+            s.Arc.validation.ValidationRegistry.register({
+                PortDeclaration: async (d, accept) => {
+                    await Promise.resolve();
+                    broken.checkPorts(d, accept);
+                },
+            });
+            return s;
+        }, 'broken-async');
+        const found = await asyncBench.validate({ 'A.arc': 'component A {\n  port in int bad1;\n  port in Missing m;\n}' });
+        const failed = found.filter((f) => f.code === 'internal/check-failed');
+        expect(failed, dump(found)).toHaveLength(1);
+        expect(failed[0]!.message).toContain('boom');
+        expect(found.map((f) => f.code)).toContain('arc/unresolved-type');
+    });
+
     test('a model the check does not fail on has no internal/check-failed', async () => {
         const found = await bench.validate({ 'A.arc': 'component A {\n  port in int good;\n}' });
         expect(found, dump(found)).toEqual([]);

@@ -1,15 +1,20 @@
 import {
+    Cancellation,
     DefaultLinker,
     ValidationRegistry,
     isOperationCancelled,
     type AstNode,
     type AstNodeDescription,
+    type LangiumDocument,
     type LinkingError,
     type MaybePromise,
     type ReferenceInfo,
     type ValidationAcceptor,
+    type ValidationCategory,
+    type ValidationCheck,
 } from 'langium';
 import { Codes } from './codes.js';
+import { betweenNodes, forEachReference, pushChildren } from '../workspace/ast-walk.js';
 
 /**
  * A check or a name lookup that threw is a bug, but one that must not take the document's other
@@ -49,6 +54,42 @@ export function checkFailedMessage(check: string, err: unknown): string {
 
 /** The registry of every language of the family: failing checks become `internal/check-failed`. */
 export class AdlValidationRegistry extends ValidationRegistry {
+    /** The checks per node type and categories, as getChecks yields them (asked once per AST node). */
+    private readonly checksByType = new Map<string, readonly ValidationCheck[]>();
+
+    protected override addEntry(type: string, entry: Parameters<ValidationRegistry['addEntry']>[1]): void {
+        super.addEntry(type, entry);
+        this.checksByType.clear();
+    }
+
+    /** `getChecks(type, categories)` as an array, computed once per type and categories. */
+    checksOf(type: string, categories?: readonly ValidationCategory[]): readonly ValidationCheck[] {
+        const key = categories ? `${type}\u0000${categories.join(',')}` : type;
+        let checks = this.checksByType.get(key);
+        if (!checks) {
+            checks = this.getChecks(type, categories ? [...categories] : undefined).toArray();
+            this.checksByType.set(key, checks);
+        }
+        return checks;
+    }
+
+    /**
+     * Most checks are synchronous: wrapped so that they return no promise (Langium's wrapper makes
+     * two per check and node); an asynchronous check's promise is returned, its failure handled.
+     */
+    protected override wrapValidationException(check: ValidationCheck, thisObj: unknown): ValidationCheck {
+        return (node, accept, cancelToken) => {
+            let result: MaybePromise<void>;
+            try {
+                result = check.call(thisObj, node, accept, cancelToken);
+            } catch (err) {
+                reportCheckFailure(err, accept, node);
+                return undefined;
+            }
+            return result instanceof Promise ? result.catch((err: unknown) => reportCheckFailure(err, accept, node)) : undefined;
+        };
+    }
+
     protected override async handleException(
         functionality: () => MaybePromise<void>,
         _context: string,
@@ -58,12 +99,17 @@ export class AdlValidationRegistry extends ValidationRegistry {
         try {
             await functionality();
         } catch (err) {
-            if (isOperationCancelled(err)) throw err;
-            const check = failedCheck(err, `the check of ${node.$type}`);
-            logFailureOnce(check, err);
-            accept('error', checkFailedMessage(check, err), { node, code: Codes.InternalError, data: { check } });
+            reportCheckFailure(err, accept, node);
         }
     }
+}
+
+/** A check that threw: one `internal/check-failed` diagnostic on its node (a cancellation goes on). */
+function reportCheckFailure(err: unknown, accept: ValidationAcceptor, node: AstNode): void {
+    if (isOperationCancelled(err)) throw err;
+    const check = failedCheck(err, `the check of ${node.$type}`);
+    logFailureOnce(check, err);
+    accept('error', checkFailedMessage(check, err), { node, code: Codes.InternalError, data: { check } });
 }
 
 /** A linking error that stands for an exception in a name lookup (see AdlLinker). */
@@ -77,6 +123,20 @@ export function isFailedLinkingError(e: LinkingError): e is FailedLinkingError {
 
 /** The linker of the family: a lookup that throws becomes one `internal/check-failed` diagnostic. */
 export class AdlLinker extends DefaultLinker {
+    /** Langium's linking walk (every reference, pre-order) without its per-node streams and promises. */
+    override async link(document: LangiumDocument, cancelToken = Cancellation.CancellationToken.None): Promise<void> {
+        if (this.profiler?.isActive('linking')) return super.link(document, cancelToken);
+        const stack: AstNode[] = [document.parseResult.value];
+        const linkOne = (ref: ReferenceInfo): void => this.doLink(ref, document);
+        while (stack.length > 0) {
+            const wait = betweenNodes(cancelToken);
+            if (wait) await wait;
+            const node = stack.pop()!;
+            forEachReference(node, linkOne);
+            pushChildren(node, stack);
+        }
+    }
+
     override getCandidate(refInfo: ReferenceInfo): AstNodeDescription | LinkingError {
         try {
             return super.getCandidate(refInfo);

@@ -1,17 +1,21 @@
 import {
+    Cancellation,
     DefaultDocumentValidator,
     DocumentValidator,
     GrammarAST,
+    type AstNode,
     type LangiumCoreServices,
     type LangiumDocument,
     type LinkingError,
     type ParseResult,
+    type ValidationAcceptor,
     type ValidationOptions,
 } from 'langium';
 import type { Diagnostic } from 'vscode-languageserver-types';
 import { Codes } from './codes.js';
 import { isGuardError } from '../parser/guarded-lexer.js';
-import { isFailedLinkingError } from './check-failures.js';
+import { AdlValidationRegistry, isFailedLinkingError } from './check-failures.js';
+import { betweenNodes, pushChildren } from '../workspace/ast-walk.js';
 
 /**
  * Gives every diagnostic of the family a stable code: lexer and parser errors become
@@ -61,6 +65,33 @@ export class AdlDocumentValidator extends DefaultDocumentValidator {
             const atEnd = /but found:? ?[`']{2}/.test(d.message);
             d.message = concise(d.message, atEnd, this.softKeywords);
             retag(d, atEnd ? Codes.SyntaxUnexpectedEnd : Codes.SyntaxUnexpected);
+        }
+    }
+
+    /** Langium's walk over the nodes (pre-order, children skipped as validateSingleNodeOptions says) without its per-node streams and promises. */
+    protected override async validateAstNodes(
+        rootNode: AstNode,
+        options: ValidationOptions,
+        acceptor: ValidationAcceptor,
+        cancelToken = Cancellation.CancellationToken.None,
+    ): Promise<void> {
+        const registry = this.validationRegistry;
+        if (this.profiler?.isActive('validating') || !(registry instanceof AdlValidationRegistry)) {
+            return super.validateAstNodes(rootNode, options, acceptor, cancelToken);
+        }
+        const stack: AstNode[] = [rootNode];
+        while (stack.length > 0) {
+            const wait = betweenNodes(cancelToken);
+            if (wait) await wait;
+            const node = stack.pop()!;
+            const nodeOptions = this.validateSingleNodeOptions(node, options);
+            if (nodeOptions.validateNode) {
+                for (const check of registry.checksOf(node.$type, options.categories)) {
+                    const pending = check(node, acceptor, cancelToken);
+                    if (pending) await pending;
+                }
+            }
+            if (nodeOptions.validateChildren) pushChildren(node, stack);
         }
     }
 
