@@ -30,28 +30,45 @@ export const BUILD_SECONDS = {
 };
 
 /**
- * The workspaces of the repository in the root package.json's order, each with whether it has a
- * build script and the workspaces it depends on (dependencies, devDependencies, peerDependencies).
+ * Dependencies that a workspace's build does not read, though the workspace needs them at run
+ * time: its build need not wait for theirs.
  */
-export function workspaceGraph(repo) {
+export const RUN_TIME_ONLY = {
+    // maa-ide serves @maa/ide-web's dist/; its build (tsc -b) compiles nothing of the web app, so
+    // it (and the lab server and the VS Code extension after it) build beside the web app's build
+    'packages/ide-server': ['packages/ide-web'],
+};
+
+/** A build script that only type-checks (writes nothing another build could read). */
+const CHECK_ONLY = /^tsc --noEmit -p \.$/;
+
+/**
+ * The workspaces of the repository in the root package.json's order, each with whether it has a
+ * build script, whether that build only type-checks (`checkOnly`), and the workspaces it depends
+ * on (dependencies, devDependencies, peerDependencies; without those of RUN_TIME_ONLY).
+ */
+export function workspaceGraph(repo, runTimeOnly = RUN_TIME_ONLY) {
     const root = JSON.parse(readFileSync(path.join(repo, 'package.json'), 'utf8'));
     const manifests = root.workspaces.map((dir) => ({ dir, pkg: JSON.parse(readFileSync(path.join(repo, dir, 'package.json'), 'utf8')) }));
     const dirOf = new Map(manifests.map(({ dir, pkg }) => [pkg.name, dir]));
     return manifests.map(({ dir, pkg }) => ({
         dir,
         build: typeof pkg.scripts?.build === 'string',
+        checkOnly: CHECK_ONLY.test(pkg.scripts?.build ?? ''),
         deps: Object.keys({ ...pkg.dependencies, ...pkg.devDependencies, ...pkg.peerDependencies })
             .filter((name) => dirOf.has(name) && dirOf.get(name) !== dir)
-            .map((name) => dirOf.get(name)),
+            .map((name) => dirOf.get(name))
+            .filter((dep) => !(runTimeOnly[dir] ?? []).includes(dep)),
     }));
 }
 
 /**
  * Runs `run(dir)` for each workspace with a build script once every workspace it depends on
  * (directly or through workspaces without one) is built, at most `jobs` at a time; among ready
- * builds the one with the longest chain of builds behind it goes first. After a failure no new
- * build starts. Resolves to the first failing exit status, or 0.
- * @param {Array<{ dir: string, build: boolean, deps: string[] }>} graph
+ * builds the one with the longest chain of builds behind it goes first. A build that only
+ * type-checks (`checkOnly`) holds back no other: its dependents wait only for what it waits for.
+ * After a failure no new build starts. Resolves to the first failing exit status, or 0.
+ * @param {Array<{ dir: string, build: boolean, checkOnly?: boolean, deps: string[] }>} graph
  * @param {{ jobs: number, run: (dir: string) => Promise<number>, seconds?: Record<string, number> }} options
  */
 export async function runGraph(graph, { jobs, run, seconds = BUILD_SECONDS }) {
@@ -62,14 +79,17 @@ export async function runGraph(graph, { jobs, run, seconds = BUILD_SECONDS }) {
     const dependents = new Map(graph.map((node) => [node.dir, []]));
     for (const node of graph) for (const dep of node.deps) dependents.get(dep).push(node.dir);
     const cost = (dir) => (byDir.get(dir).build ? (seconds[dir] ?? 10) : 0);
-    // the longest chain of build seconds from a workspace to the end of the graph (it included)
+    const holdsBack = (dir) => byDir.get(dir).build && !byDir.get(dir).checkOnly;
+    // the longest chain of build seconds from a workspace to the end of the graph (it included;
+    // a check-only build runs beside its dependents)
     const chain = new Map();
     const visiting = new Set();
     const chainOf = (dir) => {
         if (chain.has(dir)) return chain.get(dir);
         if (visiting.has(dir)) throw new Error(`the workspaces depend on each other in a cycle through ${dir}`);
         visiting.add(dir);
-        const longest = cost(dir) + Math.max(0, ...dependents.get(dir).map(chainOf));
+        const after = Math.max(0, ...dependents.get(dir).map(chainOf));
+        const longest = holdsBack(dir) ? cost(dir) + after : Math.max(cost(dir), after);
         visiting.delete(dir);
         chain.set(dir, longest);
         return longest;
@@ -77,7 +97,7 @@ export async function runGraph(graph, { jobs, run, seconds = BUILD_SECONDS }) {
     for (const node of graph) chainOf(node.dir);
 
     const waitingOn = new Map(graph.map((node) => [node.dir, new Set(node.deps)]));
-    const ready = graph.filter((node) => node.deps.length === 0).map((node) => node.dir);
+    const ready = [];
     let running = 0;
     let failed = 0;
     let finishAll;
@@ -85,19 +105,25 @@ export async function runGraph(graph, { jobs, run, seconds = BUILD_SECONDS }) {
         finishAll = resolve;
     });
     let left = graph.length;
-    const done = (dir) => {
-        left -= 1;
+    /** Its dependents no longer wait for `dir`. */
+    const release = (dir) => {
         for (const next of dependents.get(dir)) {
             const waiting = waitingOn.get(next);
             waiting.delete(dir);
-            if (waiting.size === 0) ready.push(next);
+            if (waiting.size === 0) becameReady(next);
         }
     };
-    const pump = () => {
-        // workspaces without a build script are done as soon as they are ready
-        for (let i = ready.findIndex((dir) => !byDir.get(dir).build); i >= 0; i = ready.findIndex((dir) => !byDir.get(dir).build)) {
-            done(ready.splice(i, 1)[0]);
+    /** `dir` waits for nothing more: without a build it is done, a check-only build releases its dependents at once. */
+    const becameReady = (dir) => {
+        if (!byDir.get(dir).build) {
+            left -= 1;
+            release(dir);
+            return;
         }
+        ready.push(dir);
+        if (!holdsBack(dir)) release(dir);
+    };
+    const pump = () => {
         while (failed === 0 && running < jobs && ready.length > 0) {
             ready.sort((a, b) => chain.get(b) - chain.get(a));
             const dir = ready.shift();
@@ -114,9 +140,13 @@ export async function runGraph(graph, { jobs, run, seconds = BUILD_SECONDS }) {
         running -= 1;
         if (status !== 0) {
             if (failed === 0) failed = status;
-        } else done(dir);
+        } else {
+            left -= 1;
+            if (holdsBack(dir)) release(dir);
+        }
         pump();
     };
+    for (const node of graph) if (node.deps.length === 0) becameReady(node.dir);
     pump();
     return allDone;
 }

@@ -1,6 +1,7 @@
 // `npm test` builds the workspaces two at a time in the order of their dependencies
 // (scripts/build-graph.mjs): no build starts before those it depends on have ended, at most
-// `jobs` run at once, a failure stops new builds, and a cycle is refused.
+// `jobs` run at once, a failure stops new builds, a cycle is refused, and a build that only
+// type-checks holds back no other.
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
@@ -12,6 +13,7 @@ const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '.
 interface Node {
     dir: string;
     build: boolean;
+    checkOnly?: boolean;
     deps: string[];
 }
 
@@ -46,14 +48,42 @@ describe('the build graph', () => {
         const built = graph.filter((n) => n.build);
         expect(events.filter((e) => e.startsWith('start')).sort()).toEqual(built.map((n) => `start ${n.dir}`).sort());
         const byDir = new Map(graph.map((n) => [n.dir, n]));
-        /** The workspaces with a build script that `dir` depends on, through those without one. */
+        /** The workspaces with a build that writes something that `dir` depends on, through those without one. */
         const builtDeps = (dir: string): string[] =>
-            byDir.get(dir)!.deps.flatMap((d) => (byDir.get(d)!.build ? [d] : builtDeps(d)));
+            byDir.get(dir)!.deps.flatMap((d) => (byDir.get(d)!.build && !byDir.get(d)!.checkOnly ? [d] : builtDeps(d)));
         for (const n of built) {
             for (const dep of builtDeps(n.dir)) {
                 expect(events.indexOf(`end ${dep}`), `${n.dir} after ${dep}`).toBeLessThan(events.indexOf(`start ${n.dir}`));
             }
         }
+    });
+
+    it("of this repository: the type-check-only builds and the IDE server's run-time dependency on the web app hold back no build", () => {
+        const graph = workspaceGraph(repo) as Node[];
+        const byDir = new Map(graph.map((n) => [n.dir, n]));
+        expect(graph.filter((n) => n.checkOnly).map((n) => n.dir)).toEqual(['packages/diagram-view', 'packages/simulate-view']);
+        expect(byDir.get('packages/ide-server')!.deps).not.toContain('packages/ide-web');
+        expect(byDir.get('packages/ide-server')!.deps).toContain('packages/language-server');
+        expect(byDir.get('packages/ide-web')!.deps).toContain('packages/diagram-view');
+        // without the exception the edge is there (it comes from ide-server's package.json)
+        const plain = workspaceGraph(repo, {}) as Node[];
+        expect(plain.find((n) => n.dir === 'packages/ide-server')!.deps).toContain('packages/ide-web');
+    });
+
+    it('starts the dependents of a check-only build beside it, once what it depends on is built', async () => {
+        const graph: Node[] = [
+            { dir: 'lib', build: true, deps: [] },
+            { dir: 'check', build: true, checkOnly: true, deps: ['lib'] },
+            { dir: 'app', build: true, deps: ['check'] },
+        ];
+        const { status, events, most } = simulate(graph, 2);
+        expect(await status).toBe(0);
+        expect(most()).toBe(2);
+        expect(events.slice(0, 4)).toEqual(['start lib', 'end lib', 'start check', 'start app']);
+        expect(events.filter((e) => e.startsWith('end')).sort()).toEqual(['end app', 'end check', 'end lib']);
+        // a failed check still fails the build
+        const failing = simulate(graph, 2, ['check']);
+        expect(await failing.status).toBe(3);
     });
 
     it('runs one at a time with one job, skips workspaces without a build script but waits for what they depend on', async () => {
