@@ -15,6 +15,8 @@
 //
 // Options: --components N (1000)  --sizes 250,1000,4000  --cli-runs N (3)  --changes N (5)
 //          --import-runs N (3)  --keep (keep the models)  --json (the raw figures after the table)
+//          --profile (also: where the time of parse-only and of an in-process check goes, from a CPU
+//          profile of each, by stage: garbage collection, parsing, linking, validation ...)
 import { execFile } from 'node:child_process';
 import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -22,6 +24,7 @@ import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { performance } from 'node:perf_hooks';
 import { EDITABLE_LINE, generateModels } from './generate-models.mjs';
+import { profileStages } from './profile-summary.mjs';
 import { printTable } from './table.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -333,6 +336,25 @@ function tableRows(m, primary) {
     return rows;
 }
 
+/** With --profile: one more parse-only and in-process check run each under `--cpu-prof`, by stage. */
+async function printProfiles(work, root) {
+    for (const [title, args] of [
+        ['parse only (a warm-up and 3 passes)', ['--phase', 'parse', root, '3']],
+        ['cold check, in-process (import, 1st and 2nd call)', ['--phase', 'check', root]],
+    ]) {
+        const dir = mkdtempSync(path.join(work, 'profile-'));
+        process.stderr.write(`profiling ${title}...\n`);
+        phaseResult(title, await run(['--cpu-prof', '--cpu-prof-dir', dir, SELF, ...args], { cwd: work }));
+        const [file] = readdirSync(dir).filter((f) => f.endsWith('.cpuprofile'));
+        if (!file) throw new Error(`no CPU profile was written for ${title}`);
+        console.log(`\nWhere the time goes: ${title} (CPU profile, ${path.join(dir, file)})`);
+        console.log('| stage | ms | share |\n|---|---|---|');
+        for (const [stage, ms, share] of profileStages(path.join(dir, file))) {
+            console.log(`| ${stage} | ${ms.toFixed(0)} | ${(share * 100).toFixed(1)} % |`);
+        }
+    }
+}
+
 async function driver() {
     const primary = Number(option('components', '1000'));
     const sizes = [...new Set([primary, ...option('sizes', '250,1000,4000').split(',').map(Number)])].sort((a, b) => a - b);
@@ -366,6 +388,7 @@ async function driver() {
             `Changed file: ${m.incr.changedFile}; its errors after each change: ${m.incr.errorsAfterEachChange.join(', ')} (odd changes break the line, even ones repair it).`,
         );
         if (inproc.sample.length > 0) console.log(`First diagnostics:\n  ${inproc.sample.join('\n  ')}`);
+        if (flag('profile')) await printProfiles(work, roots.get(primary).root);
         if (flag('json')) {
             const raw = { ...m, checks: Object.fromEntries(m.checks), generated: { ...gen, files: gen.files.length, editable: undefined } };
             console.log(JSON.stringify(raw, null, 2));

@@ -314,7 +314,9 @@ export class ConnectorChecks {
         seen.add(decl);
         const edges = new Map<string, string[]>();
         const add = (a: string, b: string): void => {
-            edges.set(a, [...(edges.get(a) ?? []), b]);
+            const targets = edges.get(a);
+            if (targets) targets.push(b);
+            else edges.set(a, [b]);
         };
         for (const con of elementsOf(decl)) {
             if (con.$type !== 'Connector') continue;
