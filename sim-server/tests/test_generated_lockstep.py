@@ -12,19 +12,18 @@ from __future__ import annotations
 import itertools
 import json
 import shutil
-import subprocess
 import time
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
 import pytest
+import warm_maa_gen
 from rosbridge_client import Client
 
 from maa_sim.app import RunOptions, SimApp
 
 REPO = Path(__file__).resolve().parents[2]
-MAA_GEN = REPO / "packages" / "cli" / "bin" / "maa-gen.js"
 TOAST_APP = REPO / "examples" / "toast-service" / "TR.arcapp"
 FEATURES_APP = REPO / "packages" / "generators-python" / "test" / "fixtures" / "features" / "Features.arcapp"
 MODES_APP = REPO / "packages" / "generators-python" / "test" / "fixtures" / "modes" / "Modes.arcapp"
@@ -36,13 +35,7 @@ TIME_BOUND = 30.0
 def generate(app: Path, out: Path) -> Path:
     if shutil.which("node") is None:
         pytest.skip("node is needed to generate the timesync build")
-    result = subprocess.run(
-        ["node", str(MAA_GEN), "generate", str(app), "--platform", "timesync", "--out", str(out)],
-        capture_output=True,
-        text=True,
-        check=False,
-        timeout=300,
-    )
+    result = warm_maa_gen.run(["generate", str(app), "--platform", "timesync", "--out", str(out)])
     assert result.returncode == 0, f"maa-gen generate failed:\n{result.stdout}\n{result.stderr}"
     return out / "timesync"
 

@@ -23,6 +23,7 @@ from typing import Any
 
 import pytest
 import ray
+import warm_maa_gen
 
 from maa_sim.contracts import problem, validator
 from maa_sim.grading.bundle import BundleError, pack_input, pack_outputs, unpack
@@ -32,7 +33,6 @@ from maa_sim.grading.job import JobTask, check_job
 from maa_sim.protocol import GRADE_DRIVER_LINE_SCHEMA
 
 REPO = Path(__file__).resolve().parents[2]
-MAA_GEN = REPO / "packages" / "cli" / "bin" / "maa-gen.js"
 TOAST_APP = REPO / "examples" / "toast-service" / "TR.arcapp"
 CONTROLLER_STREAM = REPO / "examples" / "toast-service" / "toast" / "Controller.stream"
 LINE = validator(GRADE_DRIVER_LINE_SCHEMA)
@@ -97,13 +97,7 @@ def toast_build(tmp_path_factory: pytest.TempPathFactory) -> Path:
         pytest.skip("node is needed to generate the timesync build")
     root = tmp_path_factory.mktemp("toast-input")
     gen = tmp_path_factory.mktemp("toast-gen")
-    result = subprocess.run(
-        ["node", str(MAA_GEN), "generate", str(TOAST_APP), "--platform", "timesync", "--out", str(gen)],
-        capture_output=True,
-        text=True,
-        check=False,
-        timeout=300,
-    )
+    result = warm_maa_gen.run(["generate", str(TOAST_APP), "--platform", "timesync", "--out", str(gen)])
     assert result.returncode == 0, f"maa-gen generate failed:\n{result.stdout}\n{result.stderr}"
     shutil.copytree(gen / "timesync", root / "build")
     shutil.copy(CONTROLLER_STREAM, root / "Controller.stream")

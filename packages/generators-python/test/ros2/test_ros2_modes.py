@@ -12,7 +12,6 @@ from __future__ import annotations
 import contextlib
 import json
 import os
-import subprocess
 import threading
 import time
 from collections.abc import Iterator, Mapping
@@ -20,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from ros2_support import MAA_GEN, PACKAGE_DIR
+from ros2_support import PACKAGE_DIR, maa_gen
 from test_ros2_toast_service import deployed_nodes
 
 rclpy = pytest.importorskip("rclpy")
@@ -148,12 +147,7 @@ class Probe:
 
 def generate_package(app: Path, out: Path, name: str) -> Path:
     """The ament package ``name`` of ``app`` generated for rospython into ``out``."""
-    result = subprocess.run(
-        ["node", str(MAA_GEN), "generate", str(app), "--platform", "rospython", "--out", str(out)],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    result = maa_gen(["generate", str(app), "--platform", "rospython", "--out", str(out)])
     assert result.returncode == 0, f"maa-gen generate failed:\n{result.stdout}\n{result.stderr}"
     return out / "rospython" / name
 
