@@ -6,12 +6,14 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterAll, describe, expect, it } from 'vitest';
+import { LIFTOFF_ONLY } from './liftoff.js';
 
 const BIN = fileURLToPath(new URL('../bin/maa-lab.js', import.meta.url));
 
 function run(args: string[], stdin = ''): Promise<{ code: number | null; out: string; err: string }> {
     return new Promise((resolve, reject) => {
-        const child = spawn(process.execPath, [BIN, ...args], {
+        // Liftoff only: the bin's PGlite without V8's optimizing tier (test/liftoff.ts says why)
+        const child = spawn(process.execPath, [LIFTOFF_ONLY, BIN, ...args], {
             stdio: ['pipe', 'pipe', 'pipe'],
             env: { ...process.env, DATABASE_URL: '' },
         });

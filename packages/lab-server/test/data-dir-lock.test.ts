@@ -7,6 +7,7 @@ import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { lockDataDir } from '../src/storage/data-dir-lock.js';
 import { LOCK_FILE, openLabStore, StorageConflictError, storageFromEnvironment } from '../src/storage/index.js';
+import './liftoff.js';
 
 let root: string;
 let count = 0;

@@ -5,6 +5,7 @@
 // when its parent closes stdin or after MAX_SAVES, so it never outlives a failed test.
 import { openLabStore, type StorageOptions } from '../src/storage/index.js';
 import { DURABLE_LOGIN, DURABLE_PATH, durableContent } from './durability-shared.js';
+import './liftoff.js';
 
 const MAX_SAVES = 5000;
 

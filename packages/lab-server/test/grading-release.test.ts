@@ -13,6 +13,7 @@ import { releaseExercise } from '../src/exercises/release.js';
 import { updateExercise } from '../src/exercises/update.js';
 import { gradeCommand, scoreTable } from '../src/grading/command.js';
 import { openLabStore } from '../src/storage/index.js';
+import { copyPgliteTemplate } from './backends.js';
 import { MANIFEST, STARTER, writeExercise, writeFiles } from './exercise-folder.js';
 import { engine } from './grading-engine.js';
 import { repo } from './workspace-setup.js';
@@ -45,6 +46,7 @@ describe('an exercise’s grading folder', () => {
         const loaded = await loadExercise(folder);
         expect(loaded.grading).toEqual({ spec: SPEC, files: HIDDEN });
         expect(Object.keys(loaded.files).some((f) => f.includes('hidden') || f.startsWith('grading'))).toBe(false);
+        await copyPgliteTemplate(path.join(dir, 'db'));
         const store = await openLabStore({ dataDir: path.join(dir, 'db') });
         try {
             const teacher = await store.createUser({ login: 't', name: 'T', role: 'instructor' });
@@ -127,6 +129,7 @@ describe('maa-lab grade', () => {
 
     beforeAll(async () => {
         dir = mkdtempSync(path.join(tmpdir(), 'maa-lab-grade-'));
+        await copyPgliteTemplate(path.join(dir, 'lab-data'));
         const store = await openLabStore({ dataDir: path.join(dir, 'lab-data') });
         try {
             const teacher = await store.createUser({ login: 'teacher', name: 'Teacher', role: 'instructor' });

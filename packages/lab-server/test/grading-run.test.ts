@@ -13,6 +13,7 @@ import { releaseExercise } from '../src/exercises/release.js';
 import { openExerciseWorkspace } from '../src/exercises/workspace.js';
 import { GradingService } from '../src/grading/index.js';
 import { type LabStore, openLabStore } from '../src/storage/index.js';
+import { copyPgliteTemplate } from './backends.js';
 import { repo } from './workspace-setup.js';
 
 const VENV_PYTHON = path.join(repo, 'sim-server', '.venv', 'bin', 'python');
@@ -26,6 +27,7 @@ describe.skipIf(!HAS_VENV)('a real grading run through the lab', () => {
 
     beforeAll(async () => {
         dir = await mkdtemp(path.join(tmpdir(), 'maa-lab-grading-run-'));
+        await copyPgliteTemplate(path.join(dir, 'lab-data'));
         store = await openLabStore({ dataDir: path.join(dir, 'lab-data') });
     });
     afterAll(async () => {

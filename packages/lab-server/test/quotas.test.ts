@@ -8,6 +8,7 @@ import { HttpError } from '@maa/ide-server/http';
 import { afterAll, describe, expect, it } from 'vitest';
 import { type LabIo, runLab } from '../src/cli/main.js';
 import { DEFAULT_QUOTAS, HOUR_MS, quotaOptions, SimulatedTimeLedger, SimulationSlots } from '../src/quotas/index.js';
+import { copyPgliteTemplate } from './backends.js';
 import { Client } from './http-client.js';
 import { PASSWORD, startLab } from './workspace-setup.js';
 
@@ -93,6 +94,7 @@ describe('maa-lab serve’s quota options', () => {
 
     it('serves with the given limits', async () => {
         // The lab's users and exercise, written to the data directory before the command opens it.
+        await copyPgliteTemplate(path.join(dir, 'data'));
         const seeded = await startLab({ dataDir: path.join(dir, 'data') });
         await seeded.dispose();
         let stop: (() => Promise<void>) | undefined;

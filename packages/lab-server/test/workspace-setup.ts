@@ -11,6 +11,7 @@ import { releaseExercise } from '../src/exercises/release.js';
 import { type LabServer, type LabServerOptions, startLabServer } from '../src/http/server.js';
 import { type LabStore, openLabStore, type StorageOptions } from '../src/storage/index.js';
 import { Client } from './http-client.js';
+import './liftoff.js';
 
 export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../..');
 export const MAA_SIM = path.join(repo, 'sim-server', '.venv', 'bin', 'maa-sim');
