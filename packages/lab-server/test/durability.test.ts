@@ -13,7 +13,7 @@ import { fileURLToPath } from 'node:url';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { durableFsyncCount } from '../src/storage/durable-nodefs.js';
 import { type LabStore, openLabStore, type StorageOptions } from '../src/storage/index.js';
-import { BACKENDS, startBackend } from './backends.js';
+import { BACKENDS, copyPgliteTemplate, startBackend } from './backends.js';
 import { DURABLE_LOGIN, DURABLE_PATH, durableContent } from './durability-shared.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -100,6 +100,7 @@ describe('PGlite durability settings', () => {
     afterAll(() => rmSync(dataRoot, { recursive: true, force: true }));
 
     it('syncs every commit to the disk (PostgreSQL fsync on, reaching the host file)', async () => {
+        await copyPgliteTemplate(path.join(dataRoot, 'fsync'));
         const store = await openLabStore({ dataDir: path.join(dataRoot, 'fsync') });
         try {
             const student = await store.createUser({ login: 'fsync', name: 'F', role: 'student' });

@@ -151,17 +151,22 @@ describe.skipIf(!haveSim)(`students’ simulations${haveSim ? '' : ` (skipped: $
     }, 300_000);
 
     it('ends the simulation when its student’s session expires', async () => {
-        // a session of 60 s: long enough for the start and the connection on a loaded machine (a
-        // fresh-clone run at 20 s saw the connection refused, the session already over)
-        const short = await lab.serverWith({ sessionHours: 60 / 3600, workspaces: { sweepMs: 200 } });
-        const bob = await lab.as('bob', short);
-        const groups = await start(bob, 'bob', short);
-        const socket = await connect(bob, 'bob', short);
-        await until(() => gone(groups), 'the simulation to end after the session expired', 180_000);
+        // The server's clock is moved past the session's end once the simulation runs and its
+        // student is connected: no race with a short session (a fresh-clone run with 20 s saw the
+        // connection refused, the session already over) and no simulation held for a minute.
+        let ahead = 0;
+        const clocked = await lab.serverWith({ now: () => Date.now() + ahead, workspaces: { sweepMs: 200 } });
+        const bob = await lab.as('bob', clocked);
+        const groups = await start(bob, 'bob', clocked);
+        const socket = await connect(bob, 'bob', clocked);
+        expect((await bob.send(`${lab.ws('bob')}/sim/status`)).status).toBe(200);
+        expect(gone(groups)).toBe(false);
+        ahead = 13 * 3600_000; // past the session's 12 hours
+        await until(() => gone(groups), 'the simulation to end after the session expired');
         expect((await bob.send(`${lab.ws('bob')}/sim/status`)).status).toBe(401);
         await until(async () => /session expired/.test(await latestDetails('bob')), 'the recorded result');
         socket.destroy();
-        await short.close();
+        await clocked.close();
     }, 300_000);
 
     it('ends every simulation when the server stops', async () => {

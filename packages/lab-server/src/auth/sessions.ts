@@ -15,6 +15,8 @@ export interface SessionCookieOptions {
     secure: boolean;
     /** how long a session lasts */
     ttlMs: number;
+    /** the clock sessions start and expire by (default Date.now; a test moves it to expire one) */
+    now?: () => number;
 }
 
 /** A logged-in request: who, and the session it came with. */
@@ -42,7 +44,7 @@ export class SessionService {
             id: secretHash(token),
             userId: user.id,
             csrfSecret: csrfToken,
-            expiresAt: new Date(Date.now() + this.options.ttlMs),
+            expiresAt: new Date(this.now() + this.options.ttlMs),
         });
         return { setCookie: this.cookie(token, Math.floor(this.options.ttlMs / 1000)), csrfToken };
     }
@@ -51,10 +53,19 @@ export class SessionService {
     async authenticate(req: IncomingMessage): Promise<Authenticated | undefined> {
         const token = readCookie(req.headers.cookie, this.cookieName);
         if (token === undefined || !isSecretSyntax(token)) return undefined;
-        const session = await this.store.findSession(secretHash(token));
+        const session = await this.find(secretHash(token));
         if (!session) return undefined;
         const user = await this.store.findUserById(session.userId);
         return user && { user, session };
+    }
+
+    /** The session of the id (the token's hash) while it has not expired, else undefined. */
+    find(id: string): Promise<Session | undefined> {
+        return this.store.findSession(id, new Date(this.now()));
+    }
+
+    private now(): number {
+        return (this.options.now ?? Date.now)();
     }
 
     /** Whether the request carries the session's CSRF token in its header (constant-time comparison). */

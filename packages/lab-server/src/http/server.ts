@@ -30,6 +30,8 @@ export interface LabServerOptions {
     /** behind a reverse proxy: the client address is the last X-Forwarded-For entry, cookies are Secure */
     trustProxy?: boolean;
     sessionHours?: number;
+    /** the clock sessions start and expire by (default Date.now; a test moves it to expire a session at once) */
+    now?: () => number;
     rateLimits?: RateLimitOptions;
     /** single sign-on (OpenID Connect); off when absent */
     oidc?: OidcSettings;
@@ -71,7 +73,11 @@ export async function startLabServer(options: LabServerOptions): Promise<LabServ
     const url = `http://${host.includes(':') ? `[${host}]` : host}:${port}`;
     const publicUrl = (options.publicUrl ?? url).replace(/\/+$/, '');
     const secure = publicUrl.startsWith('https:') || options.trustProxy === true;
-    const sessions = new SessionService(options.store, { secure, ttlMs: (options.sessionHours ?? DEFAULT_SESSION_HOURS) * 3600_000 });
+    const sessions = new SessionService(options.store, {
+        secure,
+        ttlMs: (options.sessionHours ?? DEFAULT_SESSION_HOURS) * 3600_000,
+        ...(options.now ? { now: options.now } : {}),
+    });
     const routes = new LabRoutes();
     addAuthRoutes(routes, { sessions, limiter: new LoginRateLimiter(options.rateLimits ?? DEFAULT_RATE_LIMITS), log });
     addCourseRoutes(routes);

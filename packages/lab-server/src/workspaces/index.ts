@@ -94,7 +94,7 @@ export class LabWorkspaces {
             },
             (options.workspaceIdleSeconds ?? WORKSPACE_DEFAULTS.workspaceIdleSeconds) * 1000,
         );
-        this.simulations = new LabSimulations(deps.store, this.pool, this.quotas, deps.log);
+        this.simulations = new LabSimulations(deps.store, deps.sessions, this.pool, this.quotas, deps.log);
         this.upgrades = new WorkspaceUpgrades(this.pool, deps);
         addInfoRoute(deps.routes);
         addFileRoutes(deps.routes, this.pool, this.quotas);

@@ -5,7 +5,7 @@
 // session, a crash), and records each one's result (goal reached, simulated seconds) in LabStore.
 import type { SimStartAnswer, SimStartRequest } from '@maa/protocol';
 import { ROSBRIDGE_PATH, startSimulation, VISER_PATH } from '@maa/ide-server';
-import type { Authenticated } from '../auth/sessions.js';
+import type { Authenticated, SessionService } from '../auth/sessions.js';
 import { SimulatedTimeLedger, SimulationSlots } from '../quotas/index.js';
 import type { QuotaOptions } from '../quotas/index.js';
 import type { LabStore } from '../storage/index.js';
@@ -30,6 +30,7 @@ export class LabSimulations {
 
     constructor(
         private readonly store: LabStore,
+        private readonly sessions: Pick<SessionService, 'find'>,
         private readonly pool: RuntimePool,
         quotas: QuotaOptions,
         private readonly log: (line: string) => void,
@@ -95,7 +96,7 @@ export class LabSimulations {
                 const sim = runtime.sim;
                 if (!sim) continue;
                 if (runtime.sims.processGroup() === undefined) await this.finish(runtime, 'ended');
-                else if (!(await this.store.findSession(sim.sessionId)))
+                else if (!(await this.sessions.find(sim.sessionId)))
                     await this.stop(runtime, 'its student logged out or their session expired');
                 else if (this.ledger.remaining(sim.userId, this.runningSeconds(sim.userId)) <= 0)
                     await this.stop(runtime, 'the simulated time quota of the hour is used up');
