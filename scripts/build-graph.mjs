@@ -67,11 +67,12 @@ export function workspaceGraph(repo, runTimeOnly = RUN_TIME_ONLY) {
  * (directly or through workspaces without one) is built, at most `jobs` at a time; among ready
  * builds the one with the longest chain of builds behind it goes first. A build that only
  * type-checks (`checkOnly`) holds back no other: its dependents wait only for what it waits for.
- * After a failure no new build starts. Resolves to the first failing exit status, or 0.
+ * A ready build named in `first` (one that work outside the graph waits for) goes before the
+ * others. After a failure no new build starts. Resolves to the first failing exit status, or 0.
  * @param {Array<{ dir: string, build: boolean, checkOnly?: boolean, deps: string[] }>} graph
- * @param {{ jobs: number, run: (dir: string) => Promise<number>, seconds?: Record<string, number> }} options
+ * @param {{ jobs: number, run: (dir: string) => Promise<number>, seconds?: Record<string, number>, first?: string[] }} options
  */
-export async function runGraph(graph, { jobs, run, seconds = BUILD_SECONDS }) {
+export async function runGraph(graph, { jobs, run, seconds = BUILD_SECONDS, first = [] }) {
     const byDir = new Map(graph.map((node) => [node.dir, node]));
     for (const node of graph) {
         for (const dep of node.deps) if (!byDir.has(dep)) throw new Error(`${node.dir} depends on ${dep}, which is not a workspace`);
@@ -125,7 +126,7 @@ export async function runGraph(graph, { jobs, run, seconds = BUILD_SECONDS }) {
     };
     const pump = () => {
         while (failed === 0 && running < jobs && ready.length > 0) {
-            ready.sort((a, b) => chain.get(b) - chain.get(a));
+            ready.sort((a, b) => Number(first.includes(b)) - Number(first.includes(a)) || chain.get(b) - chain.get(a));
             const dir = ready.shift();
             running += 1;
             run(dir).then(

@@ -131,6 +131,8 @@ async function buildStage() {
     try {
         status = await runGraph(workspaceGraph(repo), {
             jobs,
+            // the side lane's Python suites wait for maa-gen: among ready builds it goes first
+            first: ['packages/cli'],
             run: async (dir) => {
                 const from = Date.now();
                 const r = await runTimed(npm, ['run', 'build', '-w', dir], { capture: true });

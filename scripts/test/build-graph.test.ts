@@ -18,13 +18,14 @@ interface Node {
 }
 
 /** Runs the graph with builds that end when the test says so; records starts and ends. */
-function simulate(graph: Node[], jobs: number, fail: string[] = [], seconds?: Record<string, number>) {
+function simulate(graph: Node[], jobs: number, fail: string[] = [], seconds?: Record<string, number>, first?: string[]) {
     const events: string[] = [];
     let running = 0;
     let most = 0;
     const status = runGraph(graph, {
         jobs,
         seconds,
+        first,
         run: async (dir: string) => {
             running += 1;
             most = Math.max(most, running);
@@ -107,6 +108,17 @@ describe('the build graph', () => {
         const { status, events } = simulate(graph, 1, [], { short: 5, long: 10, 'after-long': 10 });
         expect(await status).toBe(0);
         expect(events.filter((e) => e.startsWith('start'))).toEqual(['start long', 'start after-long', 'start short']);
+    });
+
+    it('starts a ready build named first before those with longer chains', async () => {
+        const graph: Node[] = [
+            { dir: 'long', build: true, deps: [] },
+            { dir: 'awaited', build: true, deps: [] },
+            { dir: 'after-long', build: true, deps: ['long'] },
+        ];
+        const { status, events } = simulate(graph, 1, [], { long: 10, awaited: 5, 'after-long': 10 }, ['awaited']);
+        expect(await status).toBe(0);
+        expect(events.filter((e) => e.startsWith('start'))).toEqual(['start awaited', 'start long', 'start after-long']);
     });
 
     it('after a failed build starts no other and resolves to its exit status', async () => {
