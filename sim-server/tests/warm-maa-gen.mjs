@@ -5,32 +5,19 @@
 // of a cold process (the CLI's own tests do the same in a worker thread: runCliInProcess).
 import { createInterface } from 'node:readline';
 
-const { main } = await import(new URL('../../packages/cli/dist/main.js', import.meta.url).href);
+const { main, CapturedIo } = await import(new URL('../../packages/cli/dist/main.js', import.meta.url).href);
 
 for await (const line of createInterface({ input: process.stdin })) {
     const { args, cwd } = JSON.parse(line);
-    let stdout = '';
-    let stderr = '';
-    const io = {
-        cwd,
-        env: { ...process.env, NO_COLOR: '1' },
-        // pipes, as for a maa-gen process started by subprocess.run
-        stdoutIsTTY: false,
-        stderrIsTTY: false,
-        out: (text) => {
-            stdout += text;
-        },
-        err: (text) => {
-            stderr += text;
-        },
-    };
+    // pipes, as for a maa-gen process started by subprocess.run
+    const io = new CapturedIo(cwd, { ...process.env, NO_COLOR: '1' });
     let code;
     try {
         code = await main(['node', 'maa-gen', ...args], io);
     } catch (error) {
         // main() catches what a command throws; this would be a bug of maa-gen itself
         code = 3; // ExitCode.internal
-        stderr += `warm-maa-gen: ${error instanceof Error ? (error.stack ?? error.message) : String(error)}\n`;
+        io.stderr += `warm-maa-gen: ${error instanceof Error ? (error.stack ?? error.message) : String(error)}\n`;
     }
-    process.stdout.write(`${JSON.stringify({ code, stdout, stderr })}\n`);
+    process.stdout.write(`${JSON.stringify({ code, stdout: io.stdout, stderr: io.stderr })}\n`);
 }

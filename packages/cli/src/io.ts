@@ -21,3 +21,27 @@ export function processIo(): CliIo {
         err: (text) => void process.stderr.write(text),
     };
 }
+
+/**
+ * What a command writes, kept (pipes, not terminals): for running `main()` in-process with the
+ * output of a `maa-gen` process, as the CLI's tests and the Python suites' warm maa-gen do.
+ */
+export class CapturedIo implements CliIo {
+    readonly stdoutIsTTY = false;
+    readonly stderrIsTTY = false;
+    stdout = '';
+    stderr = '';
+
+    constructor(
+        readonly cwd: string,
+        readonly env: NodeJS.ProcessEnv,
+    ) {}
+
+    out(text: string): void {
+        this.stdout += text;
+    }
+
+    err(text: string): void {
+        this.stderr += text;
+    }
+}

@@ -21,6 +21,7 @@ export { runLsp, type LspCommandOptions } from './commands/lsp.js';
 export { runSim, type SimCommandOptions } from './commands/sim.js';
 export { ExitCode, CliError } from './errors.js';
 export type { CliIo } from './io.js';
+export { CapturedIo } from './io.js';
 
 export function createProgram(io: CliIo, setExitCode: (code: ExitCode) => void): Command {
     const program = new Command('maa-gen')

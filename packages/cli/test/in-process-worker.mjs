@@ -6,27 +6,14 @@
 // talks to Vitest.
 import { parentPort } from 'node:worker_threads';
 
-const { main } = await import(new URL('../dist/main.js', import.meta.url).href);
+const { main, CapturedIo } = await import(new URL('../dist/main.js', import.meta.url).href);
 
 parentPort.on('message', async ({ id, args, cwd, env }) => {
-    let stdout = '';
-    let stderr = '';
-    const io = {
-        cwd,
-        env,
-        // the pipes of runCli: not terminals
-        stdoutIsTTY: false,
-        stderrIsTTY: false,
-        out: (text) => {
-            stdout += text;
-        },
-        err: (text) => {
-            stderr += text;
-        },
-    };
+    // the pipes of runCli: not terminals
+    const io = new CapturedIo(cwd, env);
     try {
         const code = await main(['node', 'maa-gen', ...args], io);
-        parentPort.postMessage({ id, code, stdout, stderr });
+        parentPort.postMessage({ id, code, stdout: io.stdout, stderr: io.stderr });
     } catch (error) {
         // main() catches everything a command throws; this would be a bug of the runner itself
         parentPort.postMessage({ id, error: error instanceof Error ? (error.stack ?? error.message) : String(error) });

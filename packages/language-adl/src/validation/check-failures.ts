@@ -14,7 +14,7 @@ import {
     type ValidationCheck,
 } from 'langium';
 import { Codes } from './codes.js';
-import { betweenNodes, forEachReference, pushChildren } from '../workspace/ast-walk.js';
+import { forEachReferenceBelow } from '../workspace/ast-walk.js';
 
 /**
  * A check or a name lookup that threw is a bug, but one that must not take the document's other
@@ -126,15 +126,7 @@ export class AdlLinker extends DefaultLinker {
     /** Langium's linking walk (every reference, pre-order) without its per-node streams and promises. */
     override async link(document: LangiumDocument, cancelToken = Cancellation.CancellationToken.None): Promise<void> {
         if (this.profiler?.isActive('linking')) return super.link(document, cancelToken);
-        const stack: AstNode[] = [document.parseResult.value];
-        const linkOne = (ref: ReferenceInfo): void => this.doLink(ref, document);
-        while (stack.length > 0) {
-            const wait = betweenNodes(cancelToken);
-            if (wait) await wait;
-            const node = stack.pop()!;
-            forEachReference(node, linkOne);
-            pushChildren(node, stack);
-        }
+        await forEachReferenceBelow(document.parseResult.value, cancelToken, (ref) => this.doLink(ref, document));
     }
 
     override getCandidate(refInfo: ReferenceInfo): AstNodeDescription | LinkingError {

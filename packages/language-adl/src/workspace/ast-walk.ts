@@ -53,6 +53,22 @@ export function betweenNodes(token: Cancellation.CancellationToken): Promise<voi
     return token === Cancellation.CancellationToken.None ? undefined : interruptAndCheck(token);
 }
 
+/** Calls `visit` on every reference below and including `root`, in Langium's order, between nodes as Langium does. */
+export async function forEachReferenceBelow(
+    root: AstNode,
+    cancelToken: Cancellation.CancellationToken,
+    visit: (ref: ReferenceInfo) => void,
+): Promise<void> {
+    const stack: AstNode[] = [root];
+    while (stack.length > 0) {
+        const wait = betweenNodes(cancelToken);
+        if (wait) await wait;
+        const node = stack.pop()!;
+        forEachReference(node, visit);
+        pushChildren(node, stack);
+    }
+}
+
 /** Every node of a tree, pre-order, as `AstUtils.streamAst(root).toArray()`. */
 export function astNodesOf(root: AstNode): AstNode[] {
     const out: AstNode[] = [];

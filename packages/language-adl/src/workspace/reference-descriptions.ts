@@ -1,12 +1,11 @@
 import {
     Cancellation,
     DefaultReferenceDescriptionProvider,
-    type AstNode,
     type LangiumDocument,
     type ReferenceDescription,
     type ReferenceInfo,
 } from 'langium';
-import { betweenNodes, forEachReference, pushChildren } from './ast-walk.js';
+import { forEachReferenceBelow } from './ast-walk.js';
 
 /** Langium's index of a document's references (what find-references reads), without its per-node streams and promises. */
 export class AdlReferenceDescriptionProvider extends DefaultReferenceDescriptionProvider {
@@ -18,14 +17,7 @@ export class AdlReferenceDescriptionProvider extends DefaultReferenceDescription
         const collect = (refInfo: ReferenceInfo): void => {
             if (!refInfo.reference.error) out.push(...this.createInfoDescriptions(refInfo));
         };
-        const stack: AstNode[] = [document.parseResult.value];
-        while (stack.length > 0) {
-            const wait = betweenNodes(cancelToken);
-            if (wait) await wait;
-            const node = stack.pop()!;
-            forEachReference(node, collect);
-            pushChildren(node, stack);
-        }
+        await forEachReferenceBelow(document.parseResult.value, cancelToken, collect);
         return out;
     }
 }
