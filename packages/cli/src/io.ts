@@ -37,11 +37,12 @@ export class CapturedIo implements CliIo {
         readonly env: NodeJS.ProcessEnv,
     ) {}
 
-    out(text: string): void {
+    // Own properties, not methods: commands pass copies of their io on (`{ ...io, ... }`).
+    readonly out = (text: string): void => {
         this.stdout += text;
-    }
+    };
 
-    err(text: string): void {
+    readonly err = (text: string): void => {
         this.stderr += text;
-    }
+    };
 }
